@@ -1,0 +1,54 @@
+// Sampled R(θ) curves for plots and CSV export, all from the float64 reference functions.
+import {
+  brewsterAngle, criticalAngle, fresnelExact, fresnelPolarized, fresnelSchlick,
+} from './fresnel.js';
+
+const DEG = Math.PI / 180;
+
+/** θ in degrees from 0 to 90 in `count` steps, with the critical and Brewster angles inserted
+ *  so the curves' corner and dip are drawn exactly where they are. */
+export function sampleAngles(nI, nT, count = 361) {
+  const angles = Array.from({ length: count }, (_, i) => (90 * i) / (count - 1));
+  const critical = criticalAngle(nI, nT);
+  const extra = [brewsterAngle(nI, nT) / DEG];
+  if (critical !== null) extra.push(critical / DEG);
+  return [...new Set([...angles, ...extra])].sort((a, b) => a - b);
+}
+
+/** Exact, Schlick, Rs, Rp and |exact − Schlick| at each angle (degrees). */
+export function reflectanceCurves(nI, nT, count = 361) {
+  const theta = sampleAngles(nI, nT, count);
+  const exact = [];
+  const schlick = [];
+  const s = [];
+  const p = [];
+  const error = [];
+  for (const t of theta) {
+    const c = Math.cos(t * DEG);
+    const e = fresnelExact(c, nI, nT);
+    const sc = fresnelSchlick(c, nI, nT);
+    const sp = fresnelPolarized(c, nI, nT);
+    exact.push(e);
+    schlick.push(sc);
+    s.push(sp.s);
+    p.push(sp.p);
+    error.push(Math.abs(e - sc));
+  }
+  return { theta, exact, schlick, s, p, error };
+}
+
+/** Largest |exact − Schlick| over the sampled curve and the angle (degrees) where it occurs. */
+export function maxError({ theta, error }) {
+  let at = 0;
+  for (let i = 1; i < error.length; i += 1) if (error[i] > error[at]) at = i;
+  return { value: error[at], theta: theta[at] };
+}
+
+/** A round number at or above x on the 1-2-5 ladder, for a legend's top value. */
+export function niceCeil(x) {
+  if (!(x > 0)) return 0.01;
+  const exponent = Math.floor(Math.log10(x));
+  const base = 10 ** exponent;
+  const step = [1, 2, 5, 10].find((k) => k * base >= x * (1 - 1e-12));
+  return step * base;
+}
