@@ -2,7 +2,8 @@
 // soft horizon, and a sun disc in the light's direction. Linear RGB; direction need not be unit.
 uniform vec3 uSunDir;
 
-vec3 environment(vec3 dir) {
+// Sky and ground without the sun: the soft light a diffuse surface sees.
+vec3 skyLight(vec3 dir) {
   vec3 d = normalize(dir);
   float y = d.y;
   vec3 zenith = vec3(0.10, 0.28, 0.70);
@@ -10,7 +11,11 @@ vec3 environment(vec3 dir) {
   vec3 ground = vec3(0.16, 0.13, 0.10);
   vec3 sky = mix(horizon, zenith, pow(clamp(y, 0.0, 1.0), 0.5));
   vec3 below = mix(horizon * 0.5, ground, clamp(-y * 4.0, 0.0, 1.0));
-  vec3 color = y >= 0.0 ? sky : below;
-  float sun = smoothstep(0.9990, 0.9996, dot(d, normalize(uSunDir)));
-  return color + sun * vec3(6.0, 5.6, 5.0);
+  return y >= 0.0 ? sky : below;
+}
+
+vec3 environment(vec3 dir) {
+  vec3 d = normalize(dir);
+  float sun = smoothstep(0.9955, 0.9975, dot(d, normalize(uSunDir)));
+  return skyLight(d) + sun * vec3(6.0, 5.6, 5.0);
 }

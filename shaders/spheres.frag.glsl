@@ -33,7 +33,7 @@ void main() {
   vec3 L = normalize(uSunDir);
   vec3 R = reflect(-V, N);
   // Diffuse layer: the sun plus a little sky light from above; coating: the mirrored environment.
-  vec3 diffuse = uKd * (max(dot(N, L), 0.0) + 0.3 * uEnvStrength * environment(N));
+  vec3 diffuse = uKd * (max(dot(N, L), 0.0) + 0.3 * uEnvStrength * skyLight(N));
   vec3 coat = uKs * uEnvStrength * environment(R);
   fragColor = vec4(linearToSrgb(mix(diffuse, coat, F)), 1.0);
 }

@@ -47,7 +47,7 @@ export function createSphereTrio(canvas, { onChange } = {}) {
   const sphere = new Mesh(new SphereGeometry(1, 96, 64), sphereMaterial);
   scene.add(sky, sphere);
 
-  const view = { azimuth: 0, elevation: 15, distance: 4.5 };
+  const view = { azimuth: 0, elevation: 15, distance: 6 };
   const size = { width: 1, height: 1 };
 
   function placeCamera() {

@@ -1,0 +1,27 @@
+// Panel state in the page URL: read once at start, rewritten (replaceState, no history spam)
+// a moment after each change, so a copied link always reproduces what is on screen.
+import { readParams, writeParams } from './params.js';
+
+export function readUrlState(schema, prefix = '') {
+  return readParams(schema, new URLSearchParams(window.location.search), prefix);
+}
+
+/** Returns write(values): coalesces rapid changes (slider drags) into one URL update. */
+export function urlWriter(schema, prefix = '', delayMs = 150) {
+  let timer = 0;
+  return (values) => {
+    clearTimeout(timer);
+    timer = setTimeout(() => {
+      const url = new URL(window.location.href);
+      writeParams(schema, values, url.searchParams, prefix);
+      window.history.replaceState(window.history.state, '', url);
+    }, delayMs);
+  };
+}
+
+/** A link to the current page with these values in its query. */
+export function linkFor(schema, values, prefix = '') {
+  const url = new URL(window.location.href);
+  writeParams(schema, values, url.searchParams, prefix);
+  return url.toString();
+}
