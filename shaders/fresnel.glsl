@@ -25,9 +25,11 @@ float fresnelExact(float cosThetaI, float nI, float nT) {
   float g = sqrt(g2);
   float c = nI * ci / nT;
   float a = (g - c) / (g + c);
-  // (c(g+c) − m²)/(c(g−c) + m²) with c² − m² = g² − 1 substituted (no difference of two near-m² terms).
+  // (c(g+c) − m²)/(c(g−c) + m²) with c² − m² = −m²sin²θi substituted (no cancellation).
+  float m = nI / nT;
+  float ms2 = m * m * ((1.0 - ci) * (1.0 + ci));
   float cg = c * g;
-  float b = (cg + (g2 - 1.0)) / (cg + (1.0 - g2));
+  float b = (cg - ms2) / (cg + ms2);
   return clamp(0.5 * a * a * (1.0 + b * b), 0.0, 1.0);
 }
 

@@ -52,10 +52,12 @@ export function fresnelExact(cosThetaI, nI, nT) {
   const g = Math.sqrt(g2);
   const c = (nI * ci) / nT;
   const a = (g - c) / (g + c);
-  // The lecture's (c(g+c) − m²)/(c(g−c) + m²) with c² − m² = g² − 1 substituted: near the critical
-  // angle c² and m² are both large and nearly equal, and their difference would lose digits.
+  // The lecture's (c(g+c) − m²)/(c(g−c) + m²) with c² − m² = −m²sin²θi substituted: no difference
+  // of two large, nearly equal terms (c² and m² near the critical angle, g² and 1 for small m).
+  const m = nI / nT;
+  const ms2 = m * m * ((1 - ci) * (1 + ci));
   const cg = c * g;
-  const b = (cg + (g2 - 1)) / (cg + (1 - g2));
+  const b = (cg - ms2) / (cg + ms2);
   return unit(0.5 * a * a * (1 + b * b));
 }
 
