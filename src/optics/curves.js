@@ -24,7 +24,7 @@ export function reflectanceCurves(nI, nT, count = 361) {
   const p = [];
   const error = [];
   for (const t of theta) {
-    const c = Math.cos(t * DEG);
+    const c = t === 90 ? 0 : Math.cos(t * DEG); // cos(π/2) in float64 is 6e-17, not 0
     const e = fresnelExact(c, nI, nT);
     const sc = fresnelSchlick(c, nI, nT);
     const sp = fresnelPolarized(c, nI, nT);

@@ -1,0 +1,62 @@
+import { describe, expect, it } from 'vitest';
+import {
+  applyParams, defaults, describeProblem, formatValue, parseValue, readParams, stepDecimals, writeParams,
+} from '../../src/ui/params.js';
+import { schema } from '../../src/panels/spheresSchema.js';
+
+const q = (s) => new URLSearchParams(s);
+
+describe('URL schema parsing', () => {
+  it('reads good values of every type', () => {
+    const { values, problems } = readParams(schema, q('nI=1.333&nT=1&kd=00ff80&errScale=0.1'));
+    expect(problems).toEqual([]);
+    expect(values).toMatchObject({ nI: 1.333, nT: 1, kd: '#00ff80', errScale: '0.1', lightAz: 35 });
+  });
+  it('absent keys take their defaults silently', () => {
+    expect(readParams(schema, q(''))).toEqual({ values: defaults(schema), problems: [] });
+  });
+  it('bad values fall back to the default and are reported by name', () => {
+    const { values, problems } = readParams(schema, q('nI=abc&nT=9&kd=red&errScale=huge&viewEl=&lightAz=1e999'));
+    expect(values).toEqual(defaults(schema));
+    expect(problems.map((p) => p.key)).toEqual(['nI', 'nT', 'kd', 'lightAz', 'errScale', 'viewEl']);
+    expect(describeProblem(problems[0])).toBe('nI=abc is not a number; using 1.');
+    expect(describeProblem(problems[1])).toBe('nT=9 is outside 1 to 3; using 1.5.');
+    expect(describeProblem(problems[2])).toMatch(/kd=red is not a colour/);
+    expect(problems[5].reason).toBe('is not a number');
+  });
+  it('parses booleans and rejects nonsense', () => {
+    const spec = { type: 'boolean', default: false };
+    expect(parseValue(spec, 'true')).toEqual({ ok: true, value: true });
+    expect(parseValue(spec, '0')).toEqual({ ok: true, value: false });
+    expect(parseValue(spec, 'maybe').ok).toBe(false);
+  });
+  it('writes short values that read back to the same state', () => {
+    const values = { ...defaults(schema), nI: 1.3333, nT: 2.4166, kd: '#123abc' };
+    const search = writeParams(schema, values, new URLSearchParams());
+    expect(search.get('nI')).toBe('1.3333');
+    expect(search.get('nT')).toBe('2.4166');
+    expect(search.get('kd')).toBe('123abc');
+    expect(search.get('viewDist')).toBe('6');
+    expect(readParams(schema, search)).toEqual({ values, problems: [] });
+  });
+  it('prefixes keys for panels that share a page', () => {
+    const search = writeParams(schema, defaults(schema), new URLSearchParams(), 'spheres.');
+    expect(search.has('spheres.nT')).toBe(true);
+    expect(readParams(schema, q('spheres.nT=2'), 'spheres.').values.nT).toBe(2);
+  });
+  it('step decimals and number formatting', () => {
+    expect(stepDecimals(0.0001)).toBe(4);
+    expect(stepDecimals(0.01)).toBe(2);
+    expect(stepDecimals(1)).toBe(0);
+    expect(formatValue({ type: 'number', step: 0.01 }, 1.5)).toBe('1.5');
+    expect(formatValue({ type: 'number', step: 1 }, -35)).toBe('-35');
+  });
+  it('applies partial updates, rejecting unknown keys and bad values', () => {
+    const values = defaults(schema);
+    const { applied, rejected } = applyParams(schema, values, { nT: 2, nI: -1, bogus: 3 });
+    expect(applied).toEqual({ nT: 2 });
+    expect(values.nT).toBe(2);
+    expect(values.nI).toBe(1);
+    expect(rejected.map((r) => r.key)).toEqual(['nI', 'bogus']);
+  });
+});
