@@ -71,6 +71,7 @@ function drawMarks(u, { brewster, critical, hover }) {
   ctx.save();
   ctx.font = `${Math.round(15 * ratio)}px system-ui, sans-serif`;
   ctx.textBaseline = 'top';
+  ctx.textAlign = 'left'; // uPlot leaves its axis alignment on the context
   if (critical != null) {
     // Past the critical angle no light is transmitted: shade that range.
     ctx.fillStyle = 'rgba(239, 71, 111, 0.12)';
@@ -85,11 +86,14 @@ function drawMarks(u, { brewster, critical, hover }) {
     ctx.moveTo(x, top);
     ctx.lineTo(x, top + height);
     ctx.stroke();
-    ctx.fillStyle = color;
     const label = `${text} ${deg.toFixed(1)}°`;
     const w = ctx.measureText(label).width;
     const tx = x + 6 * ratio + w > left + width ? x - 6 * ratio - w : x + 6 * ratio;
-    ctx.fillText(label, tx, top + (6 + row * 20) * ratio);
+    const ty = top + (6 + row * 22) * ratio;
+    ctx.fillStyle = 'rgba(13, 17, 23, 0.85)'; // a backing so labels stay legible over the curves
+    ctx.fillRect(tx - 3 * ratio, ty - 2 * ratio, w + 6 * ratio, 20 * ratio);
+    ctx.fillStyle = color;
+    ctx.fillText(label, tx, ty);
   };
   if (brewster != null) vline(brewster, '#06d6a0', 'Brewster', 0);
   if (critical != null) vline(critical, '#ef476f', 'Critical', 1);
