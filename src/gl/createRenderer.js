@@ -30,9 +30,3 @@ export function createRenderer(canvas) {
   renderer.autoClear = false;
   return renderer;
 }
-
-/** The renderer's description of the GPU (unmasked where the browser allows), for logs and reports. */
-export function rendererString(gl) {
-  const info = gl.getExtension('WEBGL_debug_renderer_info');
-  return info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER);
-}
