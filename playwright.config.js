@@ -35,8 +35,11 @@ export default defineConfig({
       ],
     },
   },
+  // The built site by default (what users get); FRESNEL_LAB_DEV=1 serves the sources instead.
   webServer: {
-    command: `npx vite preview --host 127.0.0.1 --port ${port} --strictPort`,
+    command: process.env.FRESNEL_LAB_DEV
+      ? `npx vite --host 127.0.0.1 --port ${port} --strictPort`
+      : `npx vite preview --host 127.0.0.1 --port ${port} --strictPort`,
     url: `http://127.0.0.1:${port}/`,
     reuseExistingServer: false,
     timeout: 60_000,

@@ -1,12 +1,50 @@
-// The lecture page: mount every panel section in order.
+// The lecture page: every panel section in lecture order, mounted as it approaches the screen,
+// plus the page controls and lecture-mode keys.
 import './styles.css';
-import { mountPanel } from './ui/mountPanel.js';
+import { panelLoaders } from './panels/registry.js';
+import { createPanelHost } from './ui/createPanelHost.js';
+import { lecturePrefix } from './ui/shareLinks.js';
+import { managePanels } from './ui/managePanels.js';
+import { setupLectureMode } from './ui/lectureMode.js';
+import { setupPageControls } from './ui/pageControls.js';
+import { showNotice } from './ui/notices.js';
+import { contextStats } from './gl/createRenderer.js';
 
-window.fresnelLab = { panels: {}, ready: null };
-const sections = [...document.querySelectorAll('section[data-panel]')];
-window.fresnelLab.ready = Promise.allSettled(sections.map((section) => {
-  const host = section.querySelector('.panel-mount');
-  const id = section.dataset.panel;
-  // The hero owns the short, unprefixed URL keys (?nI=1&nT=1.5); other panels use "id.key".
-  return mountPanel(host, id, { prefix: id === 'spheres' ? '' : `${id}.`, noticeHost: section });
-}));
+const hosts = {};
+window.fresnelLab = {
+  hosts,
+  contexts: contextStats,
+  /** Each mounted panel's view (null while it is away), for scripts and tests. */
+  panels: new Proxy({}, { get: (_t, id) => hosts[id]?.instance ?? null }),
+  ready: null,
+};
+
+/** Page-wide material: every panel that has an index parameter takes it. */
+function applyMaterial(material) {
+  for (const host of Object.values(hosts)) {
+    const param = host.module.materialParam;
+    if (param) host.set({ [param]: material.n });
+  }
+}
+
+const controls = setupPageControls(document.querySelector('.page-controls'), { onMaterial: applyMaterial });
+window.fresnelLab.applyMaterial = applyMaterial;
+
+const sections = [...document.querySelectorAll('section[data-panel]')].filter((s) => s.dataset.panel in panelLoaders);
+window.fresnelLab.ready = (async () => {
+  const entries = await Promise.all(sections.map(async (section) => {
+    const id = section.dataset.panel;
+    try {
+      const module = await panelLoaders[id]();
+      hosts[id] = createPanelHost(section.querySelector('.panel-mount'), module, {
+        prefix: lecturePrefix(id), noticeHost: section, applyMaterial,
+      });
+      return { section, host: hosts[id] };
+    } catch (error) {
+      showNotice(section, `The ${id} panel could not load.`, [error.message], { kind: 'error' });
+      return null;
+    }
+  }));
+  managePanels(entries.filter(Boolean));
+  setupLectureMode(sections, { onHideControls: controls.toggleControls });
+})();

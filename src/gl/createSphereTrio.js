@@ -19,7 +19,7 @@ export function directionFromAngles(azimuthDeg, elevationDeg) {
   return new Vector3(Math.cos(el) * Math.sin(az), Math.sin(el), Math.cos(el) * Math.cos(az));
 }
 
-export function createSphereTrio(canvas, { onChange } = {}) {
+export function createSphereTrio(canvas, { onChange, onFrame } = {}) {
   const renderer = createRenderer(canvas);
   renderer.setScissorTest(true);
   const camera = new PerspectiveCamera(28, 1, 0.1, 100);
@@ -66,6 +66,7 @@ export function createSphereTrio(canvas, { onChange } = {}) {
       uniforms.uMode.value = i;
       renderer.render(scene, camera);
     });
+    onFrame?.();
   }
   const frames = onDemand(draw);
 
@@ -114,14 +115,14 @@ export function createSphereTrio(canvas, { onChange } = {}) {
   canvas.addEventListener('wheel', onWheel, { passive: false });
   canvas.addEventListener('keydown', onKeyDown);
 
-  function setView(next) {
+  function setView(next, { silent = false } = {}) {
     const azimuth = next.azimuth ?? view.azimuth;
     view.azimuth = ((((azimuth + 180) % 360) + 360) % 360) - 180;
     view.elevation = Math.min(85, Math.max(-85, next.elevation ?? view.elevation));
     view.distance = Math.min(10, Math.max(2.2, next.distance ?? view.distance));
     placeCamera();
     frames.request();
-    onChange?.({ ...view });
+    if (!silent) onChange?.({ ...view });
   }
 
   const raycaster = new Raycaster();
@@ -188,7 +189,6 @@ export function createSphereTrio(canvas, { onChange } = {}) {
       sphereMaterial.dispose();
       skyMaterial.dispose();
       renderer.dispose();
-      renderer.forceContextLoss();
     },
   };
 }

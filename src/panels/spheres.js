@@ -1,10 +1,7 @@
 // Hero panel `spheres`: exact Fresnel vs Schlick on three spheres (exact, Schlick, error heatmap),
 // one camera and light, with the live R(θ) plot below. Hovering a sphere marks that pixel's θ.
-import { applyParams } from '../ui/params.js';
-import { bindGui, createPanelGui } from '../ui/bindGui.js';
 import { createRPlot } from '../ui/createRPlot.js';
 import { colormapGradient } from '../ui/colormap.js';
-import { downloadText, downloadUrl, toCsv } from '../ui/exporters.js';
 import { createSphereTrio, directionFromAngles } from '../gl/createSphereTrio.js';
 import { WebGL2Unavailable } from '../gl/createRenderer.js';
 import { fresnelExact, fresnelSchlick, brewsterAngle, criticalAngle, normalIncidence } from '../optics/fresnel.js';
@@ -14,56 +11,56 @@ import { buildSpheresDom, formatAngle } from './spheresDom.js';
 import { schema } from './spheresSchema.js';
 
 export { schema };
-
 export const id = 'spheres';
 export const title = "Exact Fresnel vs Schlick's approximation";
+export const usesWebGL = true;
+export const materialParam = 'nT';
 
 const DEG = Math.PI / 180;
+const VIEW_KEYS = ['viewAz', 'viewEl', 'viewDist'];
 
-export function mount(host, { values, onChange = () => {} }) {
-  const dom = buildSpheresDom(host);
+export function mount(root, ctx) {
+  const { values } = ctx;
+  const dom = buildSpheresDom(root);
   const plot = createRPlot(dom.plot);
   let trio = null;
   try {
-    trio = createSphereTrio(dom.canvas, { onChange: onViewChange });
+    trio = createSphereTrio(dom.canvas, { onChange: onViewChange, onFrame: ctx.frameDrawn });
   } catch (error) {
     if (!(error instanceof WebGL2Unavailable)) throw error;
     dom.showStageMessage(`${error.message} The spheres need WebGL2; the plot below still works.`);
   }
 
-  const gui = createPanelGui(dom.guiHost, 'Spheres: controls');
+  // Controls: index presets (derived from the indices, so the URL holds only n), then the schema.
   const presets = indexPresets();
   const presetState = { matI: presets.idFor(values.nI), matT: presets.idFor(values.nT) };
-  const optics = gui.addFolder('Indices of refraction');
+  const optics = ctx.gui.addFolder('Indices of refraction');
   const presetI = optics.add(presetState, 'matI', presets.options).name('Incident side')
-    .onChange((pid) => pid !== 'custom' && set({ nI: presets.index(pid) }));
+    .onChange((pid) => pid !== 'custom' && applyUpdate({ nI: presets.index(pid) }));
   const presetT = optics.add(presetState, 'matT', presets.options).name('Sphere material')
-    .onChange((pid) => pid !== 'custom' && set({ nT: presets.index(pid) }));
-  const controllers = {
-    ...bindGui(optics, schema, values, changed, ['nI', 'nT']),
-  };
-  optics.add({ swap: () => set({ nI: values.nT, nT: values.nI }) }, 'swap').name('Swap n_i ↔ n_t (look out of the glass)');
-  const look = gui.addFolder('Look');
-  Object.assign(controllers, bindGui(look, schema, values, changed, ['kd', 'ks', 'lightAz', 'lightEl', 'env', 'errScale']));
-  const camera = gui.addFolder('Camera (or drag / arrow keys on the spheres)').close();
-  Object.assign(controllers, bindGui(camera, schema, values, changed, ['viewAz', 'viewEl', 'viewDist']));
+    .onChange((pid) => pid !== 'custom' && applyUpdate({ nT: presets.index(pid) }));
+  ctx.bind(optics, ['nI', 'nT']);
+  optics.add({ swap: () => applyUpdate({ nI: values.nT, nT: values.nI }) }, 'swap')
+    .name('Swap n_i ↔ n_t (look out of the glass)');
+  ctx.bind(ctx.gui.addFolder('Look'), ['kd', 'ks', 'lightAz', 'lightEl', 'env', 'errScale']);
+  ctx.bind(ctx.gui.addFolder('Camera (or drag / arrow keys on the spheres)').close(), VIEW_KEYS);
 
-  let curvesKey = '';
-  let curves = null;
-  let errScale = 0.05;
-
-  function changed() {
-    update();
-    onChange({ ...values });
+  function applyUpdate(update) {
+    Object.assign(values, update);
+    ctx.changed(Object.keys(update));
   }
 
   function onViewChange(view) {
     values.viewAz = Math.round(view.azimuth * 10) / 10;
     values.viewEl = Math.round(view.elevation * 10) / 10;
     values.viewDist = Math.round(view.distance * 100) / 100;
-    for (const key of ['viewAz', 'viewEl', 'viewDist']) controllers[key].updateDisplay();
-    onChange({ ...values });
+    ctx.changed(VIEW_KEYS);
   }
+
+  let curvesKey = '';
+  let curves = null;
+  let worst = null;
+  let errScale = 0.05;
 
   function update() {
     const { nI, nT } = values;
@@ -71,10 +68,10 @@ export function mount(host, { values, onChange = () => {} }) {
     if (key !== curvesKey) {
       curvesKey = key;
       curves = reflectanceCurves(nI, nT);
+      worst = maxError(curves);
       const critical = criticalAngle(nI, nT);
       const brewster = brewsterAngle(nI, nT) / DEG;
       plot.setCurves(curves, { brewster, critical: critical === null ? null : critical / DEG });
-      const worst = maxError(curves);
       dom.setSummary([
         ['R0', normalIncidence(nI, nT).toFixed(5)],
         ['Brewster', formatAngle(brewster)],
@@ -82,22 +79,21 @@ export function mount(host, { values, onChange = () => {} }) {
         ['Max |exact − Schlick|', `${worst.value.toFixed(4)} at ${formatAngle(worst.theta)}`],
       ]);
     }
-    errScale = values.errScale === 'auto' ? niceCeil(maxError(curves).value) : Number(values.errScale);
+    errScale = values.errScale === 'auto' ? niceCeil(worst.value) : Number(values.errScale);
     dom.setLegend(errScale, colormapGradient());
     presetState.matI = presets.idFor(nI);
     presetState.matT = presets.idFor(nT);
     presetI.updateDisplay();
     presetT.updateDisplay();
-    if (trio) {
-      const view = trio.view;
-      if (view.azimuth !== values.viewAz || view.elevation !== values.viewEl || view.distance !== values.viewDist) {
-        trio.setView({ azimuth: values.viewAz, elevation: values.viewEl, distance: values.viewDist });
-      }
-      trio.setParams({
-        nI, nT, kd: values.kd, ks: values.ks, envStrength: values.env, errScale,
-        sunDir: directionFromAngles(values.lightAz, values.lightEl),
-      });
+    if (!trio) return;
+    const view = trio.view;
+    if (view.azimuth !== values.viewAz || view.elevation !== values.viewEl || view.distance !== values.viewDist) {
+      trio.setView({ azimuth: values.viewAz, elevation: values.viewEl, distance: values.viewDist }, { silent: true });
     }
+    trio.setParams({
+      nI, nT, kd: values.kd, ks: values.ks, envStrength: values.env, errScale,
+      sunDir: directionFromAngles(values.lightAz, values.lightEl),
+    });
   }
 
   // Hovering a sphere: its θ on the plot and the numbers at that pixel.
@@ -116,43 +112,36 @@ export function mount(host, { values, onChange = () => {} }) {
   };
   dom.canvas.addEventListener('pointermove', onHover);
   dom.canvas.addEventListener('pointerleave', onLeave);
-
-  function set(update) {
-    const result = applyParams(schema, values, update);
-    for (const key of Object.keys(result.applied)) controllers[key]?.updateDisplay();
-    if (Object.keys(result.applied).length) changed();
-    return result;
-  }
-
-  function exportCsv() {
-    const { theta, exact, schlick, s, p, error } = curves;
-    downloadText(`fresnel-nI${values.nI}-nT${values.nT}.csv`,
-      toCsv({ theta_deg: theta, R_exact: exact, R_schlick: schlick, Rs: s, Rp: p, abs_error: error }));
-  }
-
-  function exportPng() {
-    if (trio) downloadUrl(`fresnel-spheres-nI${values.nI}-nT${values.nT}.png`, trio.toDataURL());
-  }
-
-  dom.onExport({ csv: exportCsv, png: trio ? exportPng : null });
   update();
 
   return {
-    values,
-    set,
-    get curves() { return curves; },
-    get errScale() { return errScale; },
     trio,
     plot,
-    exportCsv,
-    exportPng,
+    get curves() { return curves; },
+    get errScale() { return errScale; },
+    update,
+    describe() {
+      const at60 = fresnelExact(Math.cos(60 * DEG), values.nI, values.nT);
+      const s60 = fresnelSchlick(Math.cos(60 * DEG), values.nI, values.nT);
+      const critical = criticalAngle(values.nI, values.nT);
+      return `From n_i = ${values.nI} into n_t = ${values.nT}: R at 0° is ${normalIncidence(values.nI, values.nT).toFixed(4)}; `
+        + `R at 60° is ${at60.toFixed(4)} exact and ${s60.toFixed(4)} by Schlick; `
+        + `${critical === null ? 'no critical angle' : `critical angle ${formatAngle(critical / DEG)}`}; `
+        + `the largest error of Schlick is ${worst.value.toFixed(4)} at ${formatAngle(worst.theta)}.`;
+    },
+    csv() {
+      const { theta, exact, schlick, s, p, error } = curves;
+      return {
+        filename: `fresnel-nI${values.nI}-nT${values.nT}.csv`,
+        columns: { theta_deg: theta, R_exact: exact, R_schlick: schlick, Rs: s, Rp: p, abs_error: error },
+      };
+    },
+    png: trio ? () => trio.toDataURL() : null,
     dispose() {
       dom.canvas.removeEventListener('pointermove', onHover);
       dom.canvas.removeEventListener('pointerleave', onLeave);
       trio?.dispose();
       plot.dispose();
-      gui.destroy();
-      host.replaceChildren();
     },
   };
 }

@@ -37,14 +37,8 @@ export function buildSpheresDom(host) {
   const summary = el('dl', 'summary');
   const plot = el('div', 'plot');
   plot.setAttribute('aria-label', 'Reflectance R against angle θ');
-  const toolbar = el('div', 'toolbar');
-  const csvButton = el('button', '', 'Export CSV');
-  const pngButton = el('button', '', 'Export PNG');
-  csvButton.type = pngButton.type = 'button';
-  toolbar.append(csvButton, pngButton);
-  main.append(stage, readout, summary, plot, toolbar);
-  const guiHost = el('div', 'gui-host');
-  root.append(main, guiHost);
+  main.append(stage, readout, summary, plot);
+  root.append(main);
   host.append(root);
 
   const setReadout = (data) => {
@@ -57,7 +51,6 @@ export function buildSpheresDom(host) {
   return {
     canvas,
     plot,
-    guiHost,
     setReadout,
     setSummary(pairs) {
       summary.replaceChildren(...pairs.flatMap(([term, value]) => {
@@ -78,11 +71,6 @@ export function buildSpheresDom(host) {
       legend.hidden = true;
       canvas.hidden = true;
       stage.classList.add('no-gl');
-    },
-    onExport({ csv, png }) {
-      csvButton.addEventListener('click', csv);
-      if (png) pngButton.addEventListener('click', png);
-      else pngButton.disabled = true;
     },
   };
 }

@@ -109,9 +109,16 @@ export function applyParams(schema, values, update) {
   return { applied, rejected };
 }
 
-/** Writes every value of a schema into URLSearchParams, so a link survives future default changes. */
+/**
+ * Writes a schema's values into URLSearchParams: values that differ from their defaults are set,
+ * the rest removed, so a page of many panels keeps a short link that still reproduces the view.
+ */
 export function writeParams(schema, values, search, prefix = '') {
-  for (const [key, spec] of Object.entries(schema)) search.set(prefix + key, formatValue(spec, values[key]));
+  for (const [key, spec] of Object.entries(schema)) {
+    const text = formatValue(spec, values[key]);
+    if (text === formatValue(spec, spec.default)) search.delete(prefix + key);
+    else search.set(prefix + key, text);
+  }
   return search;
 }
 

@@ -1,0 +1,87 @@
+// A canvas drawn by one full-screen fragment shader: the cheapest scene for panels whose picture
+// is analytic (a ray-traced plane, a wave field, a lit sphere on a flat background). Renders on
+// demand, counts against the context budget, and can read pixels back for tests and exports.
+import {
+  BufferGeometry, Float32BufferAttribute, GLSL3, Mesh, OrthographicCamera, RawShaderMaterial, Scene, Vector2,
+} from 'three';
+import { shaderSource } from './shaderChunks.js';
+import { cappedPixelRatio, createRenderer } from './createRenderer.js';
+import { onDemand } from './onDemand.js';
+
+const VERTEX = `precision highp float;
+in vec3 position;
+out vec2 vUv;
+void main() {
+  vUv = position.xy * 0.5 + 0.5;
+  gl_Position = vec4(position.xy, 0.0, 1.0);
+}`;
+
+/**
+ * fragment: the name of a file in shaders/ (without .glsl). It receives `in vec2 vUv` (0..1 across
+ * the canvas) and `uniform vec2 uResolution` (drawing-buffer pixels), and declares `out vec4`.
+ * uniforms: three.js uniforms ({ name: { value } }); call render() after changing them.
+ */
+export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, maxPixels = 1_500_000 } = {}) {
+  const renderer = createRenderer(canvas, { antialias: false });
+  const allUniforms = { ...uniforms, uResolution: { value: [1, 1] } };
+  const material = new RawShaderMaterial({
+    glslVersion: GLSL3, vertexShader: VERTEX, fragmentShader: shaderSource(fragment), uniforms: allUniforms,
+    depthTest: false, depthWrite: false,
+  });
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('position', new Float32BufferAttribute([-1, -1, 0, 3, -1, 0, -1, 3, 0], 3));
+  const mesh = new Mesh(geometry, material);
+  mesh.frustumCulled = false;
+  const scene = new Scene();
+  scene.add(mesh);
+  const camera = new OrthographicCamera();
+  const size = { width: 1, height: 1 };
+
+  function draw() {
+    renderer.clear();
+    renderer.render(scene, camera);
+    onFrame?.();
+  }
+  const frames = onDemand(draw);
+
+  const resizeObserver = new ResizeObserver(() => {
+    const rect = canvas.getBoundingClientRect();
+    size.width = Math.max(1, Math.round(rect.width));
+    size.height = Math.max(1, Math.round(rect.height));
+    renderer.setPixelRatio(cappedPixelRatio(size.width, size.height, window.devicePixelRatio, 2, maxPixels));
+    renderer.setSize(size.width, size.height, false);
+    const buffer = renderer.getDrawingBufferSize(new Vector2());
+    allUniforms.uResolution.value = [buffer.x, buffer.y];
+    frames.request();
+  });
+  resizeObserver.observe(canvas);
+
+  return {
+    renderer,
+    uniforms: allUniforms,
+    frames,
+    /** Schedules one frame (coalesced with any others this animation frame). */
+    render: () => frames.request(),
+    /** Draws now and reads one pixel at CSS coordinates within the canvas: [r, g, b, a] bytes. */
+    readPixel(x, y) {
+      draw();
+      const gl = renderer.getContext();
+      const ratio = renderer.getPixelRatio();
+      const out = new Uint8Array(4);
+      gl.readPixels(Math.floor(x * ratio), Math.floor((size.height - y) * ratio), 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, out);
+      return [...out];
+    },
+    /** Draws now and returns a PNG data URL (the drawing buffer is not preserved between frames). */
+    toDataURL() {
+      draw();
+      return canvas.toDataURL('image/png');
+    },
+    dispose() {
+      frames.cancel();
+      resizeObserver.disconnect();
+      geometry.dispose();
+      material.dispose();
+      renderer.dispose();
+    },
+  };
+}

@@ -1,0 +1,121 @@
+// A line plot for every panel: uPlot with theme-aware axes, large labels, a live cursor legend,
+// and optional vertical markers with labels and a shaded range. Rebuilt on a theme change so line
+// widths and colours follow it.
+import uPlot from 'uplot';
+import 'uplot/dist/uPlot.min.css';
+import { cssVar, lineScale } from './theme.js';
+
+/** Colours may name a CSS custom property ('--c-exact') so they follow the theme. */
+export function resolveColor(color) {
+  return typeof color === 'string' && color.startsWith('--') ? cssVar(color) : color;
+}
+
+function fmt(v, digits) {
+  return v == null || Number.isNaN(v) ? '–' : v.toFixed(digits);
+}
+
+/**
+ * options: xLabel, yLabel, xRange ([min, max] or null), yRange ([min, max] or null for auto),
+ * xUnit ('°' or ''), series [{ label, stroke, width, dash }], height, digits (legend decimals).
+ * Markers set with setMarks([{ x, color, label, shadeTo }]) are drawn over the curves.
+ */
+export function createLinePlot(container, options) {
+  const { xLabel, yLabel, xRange = [0, 90], yRange = [0, 1], xUnit = '°', series, height = 320, digits = 4 } = options;
+  let data = [[], ...series.map(() => [])];
+  let marks = [];
+  let plot = null;
+
+  const axis = (label, unit) => ({
+    label,
+    stroke: () => cssVar('--text'),
+    font: `${Math.round(15 * lineScale())}px system-ui, sans-serif`,
+    labelFont: `bold ${Math.round(16 * lineScale())}px system-ui, sans-serif`,
+    grid: { stroke: () => cssVar('--grid'), width: 1 },
+    ticks: { stroke: () => cssVar('--grid') },
+    values: unit ? (_u, ticks) => ticks.map((t) => `${+t.toFixed(6)}${unit}`) : undefined,
+    size: 60,
+  });
+
+  function build() {
+    plot?.destroy();
+    const scale = lineScale();
+    plot = new uPlot({
+      width: Math.max(280, container.clientWidth),
+      height,
+      scales: { x: { time: false, range: xRange ?? undefined }, y: { range: yRange ?? undefined } },
+      axes: [axis(xLabel, xUnit), axis(yLabel, '')],
+      series: [
+        { label: xLabel.split(',')[0], value: (_u, v) => (v == null ? '–' : `${v.toFixed(2)}${xUnit}`) },
+        ...series.map((s) => ({
+          label: s.label, stroke: resolveColor(s.stroke), dash: s.dash, width: (s.width ?? 2.5) * scale,
+          value: (_u, v) => fmt(v, digits), points: { show: false },
+        })),
+      ],
+      legend: { live: true },
+      cursor: { drag: { x: false, y: false } },
+      hooks: { draw: [(u) => drawMarks(u, marks)] },
+    }, data, container);
+  }
+  build();
+
+  const resize = new ResizeObserver(() => plot.setSize({ width: Math.max(280, container.clientWidth), height }));
+  resize.observe(container);
+  const onTheme = () => build();
+  window.addEventListener('fresnel-lab:theme', onTheme);
+
+  return {
+    get plot() { return plot; },
+    get data() { return data; },
+    setData(next) {
+      data = next;
+      plot.setData(next);
+    },
+    setMarks(next) {
+      marks = next.filter((m) => m && m.x != null && Number.isFinite(m.x));
+      plot.redraw(false, false);
+    },
+    dispose() {
+      window.removeEventListener('fresnel-lab:theme', onTheme);
+      resize.disconnect();
+      plot.destroy();
+    },
+  };
+}
+
+function drawMarks(u, marks) {
+  const { ctx } = u;
+  const { top, height, left, width } = u.bbox;
+  const ratio = window.devicePixelRatio || 1;
+  const px = (x) => Math.round(u.valToPos(x, 'x', true));
+  ctx.save();
+  ctx.font = `${Math.round(15 * ratio * lineScale())}px system-ui, sans-serif`;
+  ctx.textBaseline = 'top';
+  ctx.textAlign = 'left'; // uPlot leaves its axis alignment on the context
+  for (const m of marks) {
+    if (m.shadeTo == null) continue;
+    ctx.fillStyle = m.shade ?? 'rgba(239, 71, 111, 0.14)';
+    const a = px(m.x);
+    const b = px(m.shadeTo);
+    ctx.fillRect(Math.min(a, b), top, Math.abs(b - a), height);
+  }
+  marks.forEach((m, row) => {
+    const x = px(m.x);
+    const color = resolveColor(m.color);
+    ctx.strokeStyle = color;
+    ctx.lineWidth = 2 * ratio * lineScale();
+    ctx.setLineDash([6 * ratio, 5 * ratio]);
+    ctx.beginPath();
+    ctx.moveTo(x, top);
+    ctx.lineTo(x, top + height);
+    ctx.stroke();
+    if (!m.label) return;
+    const w = ctx.measureText(m.label).width;
+    const tx = x + 6 * ratio + w > left + width ? x - 6 * ratio - w : x + 6 * ratio;
+    const ty = top + (6 + row * 24 * lineScale()) * ratio;
+    ctx.fillStyle = cssVar('--plot-label-bg', 'rgba(13, 17, 23, 0.85)'); // legible over the curves
+    ctx.fillRect(tx - 3 * ratio, ty - 2 * ratio, w + 6 * ratio, (19 * lineScale() + 2) * ratio);
+    ctx.fillStyle = color;
+    ctx.fillText(m.label, tx, ty);
+  });
+  ctx.restore();
+}

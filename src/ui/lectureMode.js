@@ -1,0 +1,66 @@
+// Lecture mode: a clicker or the keyboard steps panel to panel (arrows, Page Up/Down, Space),
+// `f` toggles full screen, `h` hides every control; the current panel is kept in the URL hash so
+// a reload returns to it.
+const NEXT = new Set(['ArrowDown', 'ArrowRight', 'PageDown', ' ']);
+const PREVIOUS = new Set(['ArrowUp', 'ArrowLeft', 'PageUp']);
+
+/** Keys typed into a form control, or given to a focused canvas or slider, are not navigation. */
+function ownsKeys(target) {
+  if (!(target instanceof Element)) return false;
+  return Boolean(target.closest('input, select, textarea, button, a, canvas, [contenteditable], [role="slider"], .lil-gui, table'));
+}
+
+export function setupLectureMode(sections, { onHideControls } = {}) {
+  let current = Math.max(0, sections.findIndex((s) => `#${s.id}` === window.location.hash));
+
+  const goTo = (index) => {
+    current = Math.min(sections.length - 1, Math.max(0, index));
+    const section = sections[current];
+    section.scrollIntoView({ behavior: 'auto', block: 'start' });
+    section.focus({ preventScroll: true });
+    setHash(section.id);
+  };
+  const setHash = (id) => {
+    if (window.location.hash !== `#${id}`) window.history.replaceState(window.history.state, '', `#${id}`);
+  };
+
+  // The current panel is the one nearest the top of the screen.
+  const observer = new IntersectionObserver(() => {
+    let best = current;
+    let bestDistance = Infinity;
+    sections.forEach((s, i) => {
+      const d = Math.abs(s.getBoundingClientRect().top);
+      if (d < bestDistance) { best = i; bestDistance = d; }
+    });
+    if (best !== current) {
+      current = best;
+      setHash(sections[current].id);
+    }
+  }, { threshold: [0, 0.25, 0.5, 0.75, 1] });
+  sections.forEach((s) => observer.observe(s));
+
+  const onKey = (event) => {
+    if (event.defaultPrevented || event.ctrlKey || event.metaKey || event.altKey) return;
+    if (ownsKeys(event.target)) return;
+    if (NEXT.has(event.key) && !(event.key === ' ' && event.shiftKey)) {
+      event.preventDefault();
+      goTo(current + 1);
+    } else if (PREVIOUS.has(event.key) || (event.key === ' ' && event.shiftKey)) {
+      event.preventDefault();
+      goTo(current - 1);
+    } else if (event.key === 'f') {
+      toggleFullscreen();
+    } else if (event.key === 'h') {
+      onHideControls?.();
+    }
+  };
+  document.addEventListener('keydown', onKey);
+
+  if (window.location.hash && sections[current]) sections[current].scrollIntoView({ block: 'start' });
+  return { goTo, get current() { return current; } };
+}
+
+export function toggleFullscreen() {
+  if (document.fullscreenElement) document.exitFullscreen?.();
+  else document.documentElement.requestFullscreen?.().catch(() => {});
+}

@@ -1,0 +1,49 @@
+// Mount on approach, dispose when far: only panels on or near the screen hold a view, and never
+// more than MAX_LIVE_CONTEXTS WebGL panels at once (the farthest one gives its context up first).
+// Panels without WebGL stay mounted once they have been seen.
+import { MAX_LIVE_CONTEXTS } from '../gl/createRenderer.js';
+
+export function managePanels(entries, { margin = '100% 0px 100% 0px' } = {}) {
+  const near = new Set();
+  const distance = ({ section }) => {
+    const r = section.getBoundingClientRect();
+    return Math.abs(r.top + r.height / 2 - window.innerHeight / 2);
+  };
+
+  function settle() {
+    for (const entry of entries) {
+      if (entry.host.mounted && entry.host.usesWebGL && !near.has(entry)) entry.host.unmount();
+    }
+    const wanted = [...near].sort((a, b) => distance(a) - distance(b));
+    let glMounted = entries.filter((e) => e.host.mounted && e.host.usesWebGL).length;
+    for (const entry of wanted) {
+      if (entry.host.mounted) continue;
+      if (entry.host.usesWebGL) {
+        if (glMounted >= MAX_LIVE_CONTEXTS) {
+          const farthest = entries.filter((e) => e.host.mounted && e.host.usesWebGL)
+            .sort((a, b) => distance(b) - distance(a))[0];
+          if (!farthest || distance(farthest) <= distance(entry)) continue;
+          farthest.host.unmount();
+          glMounted -= 1;
+        }
+        glMounted += 1;
+      }
+      try {
+        entry.host.mount();
+      } catch (error) {
+        console.warn(`panel ${entry.host.id} failed to mount`, error); // its notice is on the page
+      }
+    }
+  }
+
+  const observer = new IntersectionObserver((records) => {
+    for (const record of records) {
+      const entry = entries.find((e) => e.section === record.target);
+      if (record.isIntersecting) near.add(entry);
+      else near.delete(entry);
+    }
+    settle();
+  }, { rootMargin: margin });
+  for (const { section } of entries) observer.observe(section);
+  return { settle, disconnect: () => observer.disconnect() };
+}

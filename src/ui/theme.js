@@ -1,0 +1,35 @@
+// Theme: dark or light, and a projector mode (larger type, thicker lines, stronger contrast).
+// Remembered in localStorage; a change fires `fresnel-lab:theme` so plots can redraw.
+const KEY = 'fresnel-lab:theme';
+export const THEMES = { dark: 'Dark', light: 'Light' };
+
+export function loadTheme() {
+  try {
+    const saved = JSON.parse(localStorage.getItem(KEY) ?? '{}');
+    return { scheme: saved.scheme === 'light' ? 'light' : 'dark', projector: saved.projector === true };
+  } catch {
+    return { scheme: 'dark', projector: false };
+  }
+}
+
+export function applyTheme(theme) {
+  const root = document.documentElement;
+  root.dataset.theme = theme.scheme;
+  root.classList.toggle('projector', theme.projector);
+  try {
+    localStorage.setItem(KEY, JSON.stringify(theme));
+  } catch {
+    // Private mode or a blocked storage: the theme still applies for this visit.
+  }
+  window.dispatchEvent(new CustomEvent('fresnel-lab:theme', { detail: theme }));
+}
+
+/** A CSS custom property of the page, read at draw time so canvases follow the theme. */
+export function cssVar(name, fallback = '#888') {
+  return getComputedStyle(document.documentElement).getPropertyValue(name).trim() || fallback;
+}
+
+/** Line widths grow in projector mode. */
+export function lineScale() {
+  return document.documentElement.classList.contains('projector') ? 1.6 : 1;
+}
