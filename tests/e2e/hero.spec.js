@@ -81,7 +81,7 @@ test('a URL round trip restores the controls', async ({ page }) => {
   const url = page.url();
   await page.goto('about:blank');
   await openLab(page, url);
-  const values = await page.evaluate(() => ({ ...window.fresnelLab.panels.spheres.values }));
+  const values = await page.evaluate(() => ({ ...window.fresnelLab.hosts.spheres.values }));
   expect(values.nI).toBe(1.333);
   expect(values.nT).toBe(1);
   await expect(page.locator('.lil-gui .lil-controller', { hasText: 'n_i (incident side)' }).locator('input')).toHaveValue('1.333');
@@ -95,7 +95,7 @@ test('bad values in the URL fall back to defaults and say so', async ({ page }) 
   await expect(notice).toContainText('nT=abc is not a number; using 1.5');
   await expect(notice).toContainText('nI=9 is outside 1 to 3; using 1');
   await expect(notice).toContainText('kd=red');
-  const values = await page.evaluate(() => ({ ...window.fresnelLab.panels.spheres.values }));
+  const values = await page.evaluate(() => ({ ...window.fresnelLab.hosts.spheres.values }));
   expect(values).toMatchObject({ nI: 1, nT: 1.5, kd: '#a3241c' });
   await expect(page.locator('section[data-panel="spheres"] .stage-canvas')).toBeVisible();
 });
@@ -107,7 +107,7 @@ test('nothing draws while nothing changes; a change draws once', async ({ page }
   const idle = await frames();
   await page.waitForTimeout(1000);
   expect(await frames()).toBe(idle);
-  await page.evaluate(() => { window.fresnelLab.panels.spheres.set({ nT: 1.7, env: 0.5 }); });
+  await page.evaluate(() => { window.fresnelLab.hosts.spheres.set({ nT: 1.7, env: 0.5 }); });
   await page.waitForTimeout(500);
   expect(await frames()).toBe(idle + 1);
 });
