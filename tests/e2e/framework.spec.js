@@ -1,0 +1,145 @@
+// The lecture page as a whole: every panel mounts, lecture-mode keys, the context budget while
+// scrolling, the message API of embeds, bad links, themes.
+import { test, expect, openLab } from './fixtures.js';
+
+const registered = (page) => page.evaluate(() => Object.keys(window.fresnelLab.hosts));
+
+test('every panel mounts on the lecture page and in embed.html without console errors', async ({ page }) => {
+  test.setTimeout(180_000);
+  await openLab(page);
+  const ids = await registered(page);
+  expect(ids.length).toBeGreaterThan(1);
+  for (const id of ids) {
+    await page.locator(`section[data-panel="${id}"]`).scrollIntoViewIfNeeded();
+    await expect.poll(() => page.evaluate((i) => window.fresnelLab.hosts[i].mounted, id), { message: id }).toBe(true);
+    await expect(page.locator(`section[data-panel="${id}"] .panel-description`)).not.toBeEmpty();
+  }
+  for (const id of ids) {
+    await openLab(page, `./embed.html?panel=${id}`);
+    await expect(page.locator('.embed-title')).toBeVisible();
+    await expect(page.locator('.panel-description')).not.toBeEmpty();
+    await expect(page.locator('.site-header')).toHaveCount(0);
+  }
+});
+
+test('never more than 8 live WebGL contexts while scrolling the whole page, and none leak', async ({ page }) => {
+  test.setTimeout(180_000);
+  await openLab(page);
+  const height = await page.evaluate(() => document.documentElement.scrollHeight);
+  for (let pass = 0; pass < 2; pass += 1) {
+    for (let y = 0; y <= height; y += 500) {
+      await page.evaluate((top) => window.scrollTo(0, top), y);
+      await page.waitForTimeout(60);
+    }
+    await page.evaluate(() => window.scrollTo(0, 0));
+    await page.waitForTimeout(200);
+  }
+  const stats = await page.evaluate(() => ({ ...window.fresnelLab.contexts }));
+  console.log(`[contexts] ${JSON.stringify(stats)}`);
+  expect(stats.peak).toBeLessThanOrEqual(8);
+  const mountedGl = await page.evaluate(() => Object.values(window.fresnelLab.hosts).filter((h) => h.mounted && h.usesWebGL).length);
+  expect(stats.live).toBeLessThanOrEqual(mountedGl); // every context belongs to a mounted panel
+});
+
+test('mounting and disposing a WebGL panel many times leaks no context', async ({ page }) => {
+  await openLab(page);
+  await expect.poll(() => page.evaluate(() => window.fresnelLab.hosts.spheres.mounted)).toBe(true);
+  const stats = await page.evaluate(async () => {
+    const host = window.fresnelLab.hosts.spheres;
+    const before = window.fresnelLab.contexts.live;
+    for (let i = 0; i < 200; i += 1) {
+      host.unmount();
+      host.mount();
+    }
+    await new Promise((r) => requestAnimationFrame(r));
+    return { before, after: window.fresnelLab.contexts.live, created: window.fresnelLab.contexts.created };
+  });
+  expect(stats.after).toBe(stats.before);
+  expect(stats.created).toBeGreaterThanOrEqual(200);
+});
+
+test('lecture-mode keys move between panels and keep the panel in the hash', async ({ page }) => {
+  await openLab(page);
+  const ids = await page.evaluate(() => [...document.querySelectorAll('section[data-panel]')].map((s) => s.id)
+    .filter((id) => id in window.fresnelLab.hosts));
+  await page.locator('h1').click();
+  await page.keyboard.press('PageDown');
+  await expect(page).toHaveURL(new RegExp(`#${ids[1]}$`));
+  await page.keyboard.press('ArrowRight');
+  await expect(page).toHaveURL(new RegExp(`#${ids[2]}$`));
+  await page.keyboard.press('ArrowUp');
+  await expect(page).toHaveURL(new RegExp(`#${ids[1]}$`));
+  const top = await page.locator(`section#${ids[1]}`).evaluate((s) => s.getBoundingClientRect().top);
+  expect(Math.abs(top)).toBeLessThan(5);
+  await page.keyboard.press('h');
+  await expect(page.locator('.panel-side').first()).toBeHidden();
+  await page.keyboard.press('h');
+  await expect(page.locator(`section#${ids[1]} .panel-side`)).toBeVisible();
+  // A reload returns to the panel in the hash.
+  await page.reload();
+  await page.evaluate(() => window.fresnelLab.ready);
+  await expect.poll(() => page.locator(`section#${ids[1]}`).evaluate((s) => Math.abs(s.getBoundingClientRect().top))).toBeLessThan(40);
+});
+
+test('the message API sets, gets and rejects, and announces ready and rendered frames', async ({ page, baseURL }) => {
+  // A stand-in slide deck on the lab's own origin (served by the test, not part of the site).
+  await page.route('**/deck-under-test.html', (route) => route.fulfill({
+    contentType: 'text/html', body: '<!doctype html><title>Deck</title><link rel="icon" href="data:,"><body></body>',
+  }));
+  await page.goto('./deck-under-test.html');
+  const log = await page.evaluate(async (src) => {
+    const messages = [];
+    window.addEventListener('message', (e) => messages.push(e.data));
+    const frame = document.createElement('iframe');
+    frame.src = src;
+    frame.width = 900;
+    frame.height = 700;
+    document.body.append(frame);
+    const waitFor = async (type, count = 1) => {
+      for (let i = 0; i < 600; i += 1) {
+        if (messages.filter((m) => m.type === type).length >= count) return;
+        await new Promise((r) => setTimeout(r, 50));
+      }
+      throw new Error(`no ${type}`);
+    };
+    await waitFor('fresnel-lab:ready');
+    await waitFor('fresnel-lab:rendered');
+    frame.contentWindow.postMessage({ type: 'fresnel-lab:set', params: { nT: 2.4 } }, '*');
+    frame.contentWindow.postMessage({ type: 'fresnel-lab:set', params: { nI: 'abc', bogus: 1 } }, '*');
+    frame.contentWindow.postMessage('<img src=x onerror=alert(1)>', '*');
+    frame.contentWindow.postMessage({ type: 'fresnel-lab:get' }, '*');
+    await waitFor('fresnel-lab:error');
+    await waitFor('fresnel-lab:state', 3);
+    return messages;
+  }, `${baseURL}embed.html?panel=spheres`);
+  const ready = log.find((m) => m.type === 'fresnel-lab:ready');
+  expect(ready).toMatchObject({ panel: 'spheres', params: { nI: 1, nT: 1.5 } });
+  expect(log.some((m) => m.type === 'fresnel-lab:rendered' && m.frame >= 1)).toBe(true);
+  const error = log.find((m) => m.type === 'fresnel-lab:error');
+  expect(error.message).toContain('nI');
+  expect(error.message).toContain('bogus');
+  const states = log.filter((m) => m.type === 'fresnel-lab:state');
+  expect(states.at(-1).params).toMatchObject({ nI: 1, nT: 2.4 });
+});
+
+test('a link full of garbage loads with notices and defaults', async ({ page }) => {
+  await openLab(page, './?nT=%3Cscript%3E&nI=-4&kd=zzz&errScale=7&metals.n=abc&schlick.nT=1e400&asphalt.cameraElevation=NaN');
+  const notices = page.locator('.notice');
+  await expect(notices.first()).toBeVisible();
+  await expect(page.locator('section[data-panel="spheres"] .notice')).toContainText('nT=<script> is not a number');
+  const values = await page.evaluate(() => ({ ...window.fresnelLab.hosts.spheres.values }));
+  expect(values).toMatchObject({ nI: 1, nT: 1.5, kd: '#a3241c', errScale: 'auto' });
+  expect(await page.locator('script', { hasText: 'alert' }).count()).toBe(0);
+});
+
+test('theme and projector mode are remembered across reloads', async ({ page }) => {
+  await openLab(page);
+  await page.locator('.page-controls select').first().selectOption('light');
+  await page.locator('.page-controls input[type="checkbox"]').check();
+  await page.reload();
+  await page.evaluate(() => window.fresnelLab.ready);
+  await expect(page.locator('html')).toHaveAttribute('data-theme', 'light');
+  await expect(page.locator('html')).toHaveClass(/projector/);
+  const bg = await page.evaluate(() => getComputedStyle(document.documentElement).backgroundColor);
+  expect(bg).toBe('rgb(255, 255, 255)');
+});
