@@ -10,9 +10,9 @@ import { checkCos, checkIndex, checkExtinction, unit } from './validate.js';
  * cos²θt = g² = 1 − m²(1 − cos²θi), written as (nT² − nI² + (nI·cosθi)²) / nT².
  * The numerator is a sum of exact products, so it keeps full relative precision even when it
  * nearly cancels (just inside the critical angle); it is exactly 0 for matched indices.
- * Negative means total internal reflection.
+ * Negative means total internal reflection. ci must already be checked and clamped.
  */
-function cosTransmittedSq(ci, nI, nT) {
+export function cosTransmittedSq(ci, nI, nT) {
   const [p, pe] = twoProduct(nI, ci); // nI·ci = p + pe exactly
   const [pp, ppe] = twoProduct(p, p);
   const numerator = sumPairs([
