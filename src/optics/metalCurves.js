@@ -1,0 +1,71 @@
+// Per-channel reflectance of a metal (complex index n + ik per RGB channel) against the angle of
+// incidence: exact conductor Fresnel beside Schlick's approximation with the channel's own F0,
+// their largest difference, and the dip of the exact curve below F0 near grazing, which Schlick
+// (rising from F0 to 1 monotonically) cannot show. Every value comes from fresnel.js.
+import { conductorNormalIncidence, fresnelConductor, fresnelSchlick } from './fresnel.js';
+
+const DEG = Math.PI / 180;
+export const CHANNELS = Object.freeze(['red', 'green', 'blue']);
+
+/**
+ * The index of a dielectric (seen from air) whose R0 is f0: n = (1 + √F0)/(1 − √F0) (solve
+ * R0 = ((n − 1)/(n + 1))² for n; Gulbrandsen, JCGT 3(4) 2014, n_max). fresnelSchlick on it is
+ * Schlick's approximation with this F0, without a second copy of the formula. Null for F0 = 1.
+ */
+export function schlickIndexForF0(f0) {
+  if (!(f0 >= 0 && f0 <= 1)) throw new RangeError(`F0 must be in [0, 1], got ${String(f0)}`);
+  if (f0 === 1) return null;
+  const r = Math.sqrt(f0);
+  return (1 + r) / (1 - r);
+}
+
+/** Schlick's approximation F0 + (1 − F0)(1 − cos θ)^5 for a given F0 (1 everywhere when F0 = 1). */
+export function schlickForF0(cosTheta, f0) {
+  const n = schlickIndexForF0(f0);
+  return n === null ? 1 : fresnelSchlick(cosTheta, 1, n);
+}
+
+/**
+ * metal: { n: [r, g, b], k: [r, g, b] }. θ from 0° to 90° in `count` samples.
+ * Returns { theta, f0, exact, schlick, error }, the last three as one array per channel.
+ */
+export function metalCurves(metal, count = 361) {
+  const theta = Array.from({ length: count }, (_, i) => (90 * i) / (count - 1));
+  const f0 = CHANNELS.map((_, ch) => conductorNormalIncidence(metal.n[ch], metal.k[ch]));
+  const exact = CHANNELS.map(() => []);
+  const schlick = CHANNELS.map(() => []);
+  const error = CHANNELS.map(() => []);
+  for (const t of theta) {
+    const c = t === 90 ? 0 : Math.cos(t * DEG); // cos(π/2) in float64 is 6e-17, not 0
+    for (let ch = 0; ch < 3; ch += 1) {
+      const e = fresnelConductor(c, metal.n[ch], metal.k[ch]);
+      const s = schlickForF0(c, f0[ch]);
+      exact[ch].push(e);
+      schlick[ch].push(s);
+      error[ch].push(Math.abs(e - s));
+    }
+  }
+  return { theta, f0, exact, schlick, error };
+}
+
+/**
+ * Per channel: F0, the largest |exact − Schlick| and its angle, and the lowest exact value with
+ * its angle; `dip` is how far that lowest value lies below F0 (0 when the curve never drops).
+ */
+export function metalCurveStats({ theta, f0, exact, error }) {
+  return CHANNELS.map((name, ch) => {
+    let worst = 0;
+    let lowest = 0;
+    for (let i = 1; i < theta.length; i += 1) {
+      if (error[ch][i] > error[ch][worst]) worst = i;
+      if (exact[ch][i] < exact[ch][lowest]) lowest = i;
+    }
+    return {
+      channel: name,
+      f0: f0[ch],
+      maxError: { value: error[ch][worst], theta: theta[worst] },
+      minimum: { value: exact[ch][lowest], theta: theta[lowest] },
+      dip: Math.max(0, f0[ch] - exact[ch][lowest]),
+    };
+  });
+}

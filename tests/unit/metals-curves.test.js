@@ -1,0 +1,71 @@
+import { describe, expect, it } from 'vitest';
+import { metalCurves, metalCurveStats, schlickForF0, schlickIndexForF0 } from '../../src/optics/metalCurves.js';
+import { metalById, metalF0 } from '../../src/optics/materials.js';
+import { fresnelConductor } from '../../src/optics/fresnel.js';
+
+const DEG = Math.PI / 180;
+
+describe('Schlick with a given F0', () => {
+  it('is F0 head-on, 1 at grazing, and the slide polynomial between', () => {
+    for (const f0 of [0, 0.04, 0.408, 0.956, 0.99]) {
+      expect(schlickForF0(1, f0)).toBeCloseTo(f0, 13);
+      expect(schlickForF0(0, f0)).toBe(1);
+      const c = Math.cos(60 * DEG);
+      expect(schlickForF0(c, f0)).toBeCloseTo(f0 + (1 - f0) * (1 - c) ** 5, 13);
+    }
+  });
+  it('maps F0 to the dielectric index with that R0, and rejects bad F0', () => {
+    expect(schlickIndexForF0(0.04)).toBeCloseTo(1.5, 12);
+    expect(schlickIndexForF0(0)).toBe(1);
+    expect(schlickIndexForF0(1)).toBeNull();
+    expect(schlickForF0(0.3, 1)).toBe(1);
+    expect(() => schlickIndexForF0(1.2)).toThrow(RangeError);
+    expect(() => schlickIndexForF0(Number.NaN)).toThrow(RangeError);
+  });
+});
+
+describe('metal curves', () => {
+  const gold = metalById('gold');
+  const aluminium = metalById('aluminium');
+
+  it('start at F0 per channel (gold ≈ 0.956, 0.792, 0.408) and reach 1 at 90°', () => {
+    const curves = metalCurves(gold);
+    expect(curves.theta).toHaveLength(361);
+    expect(curves.f0).toEqual(metalF0(gold));
+    [0.956, 0.792, 0.408].forEach((v, ch) => {
+      expect(curves.f0[ch]).toBeCloseTo(v, 3);
+      expect(curves.exact[ch][0]).toBeCloseTo(curves.f0[ch], 12);
+      expect(curves.schlick[ch][0]).toBeCloseTo(curves.f0[ch], 12);
+      expect(curves.exact[ch].at(-1)).toBe(1);
+      expect(curves.schlick[ch].at(-1)).toBe(1);
+    });
+  });
+
+  it('sample the exact conductor Fresnel of each channel', () => {
+    const curves = metalCurves(aluminium, 91);
+    expect(curves.theta[60]).toBe(60);
+    for (let ch = 0; ch < 3; ch += 1) {
+      expect(curves.exact[ch][60]).toBe(fresnelConductor(Math.cos(60 * DEG), aluminium.n[ch], aluminium.k[ch]));
+      expect(curves.error[ch][60]).toBe(Math.abs(curves.exact[ch][60] - curves.schlick[ch][60]));
+    }
+  });
+
+  it("aluminium's red channel dips below F0 near 80°, where Schlick errs most", () => {
+    const [red, green, blue] = metalCurveStats(metalCurves(aluminium));
+    expect(red.f0).toBeCloseTo(0.9056, 4);
+    expect(red.minimum.theta).toBeGreaterThan(78);
+    expect(red.minimum.theta).toBeLessThan(86);
+    expect(red.dip).toBeGreaterThan(0.05);
+    expect(red.maxError.value).toBeGreaterThan(0.1);
+    expect(red.maxError.theta).toBeGreaterThan(80);
+    for (const stat of [green, blue]) expect(stat.dip).toBeGreaterThan(0.02);
+  });
+
+  it('report no dip where the exact curve never falls below F0 (a dielectric-like channel)', () => {
+    const [stat] = metalCurveStats(metalCurves({ n: [1.5, 1.5, 1.5], k: [0, 0, 0] }));
+    expect(stat.dip).toBe(0);
+    expect(stat.minimum.theta).toBe(0);
+    expect(stat.f0).toBeCloseTo(0.04, 12);
+    expect(stat.maxError.theta).toBeGreaterThan(80); // dielectric Schlick errs most near 85°
+  });
+});
