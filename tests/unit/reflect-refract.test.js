@@ -1,0 +1,55 @@
+import { describe, expect, it } from 'vitest';
+import { centreRay, reflectionBand, splitByElevation, REFLECTION_BANDS } from '../../src/panels/reflect-refractModel.js';
+import { fresnelExact } from '../../src/optics/fresnel.js';
+
+const DEG = Math.PI / 180;
+
+describe('the centre ray', () => {
+  it('at 10° elevation (80° from the normal) on water reflects 0.3479', () => {
+    const ray = centreRay(10, 1.333);
+    expect(ray.thetaDeg).toBeCloseTo(80, 12);
+    expect(ray.R).toBeCloseTo(fresnelExact(Math.cos(80 * DEG), 1, 1.333), 14);
+    expect(ray.R).toBeCloseTo(0.3479, 4);
+    expect(ray.R + ray.T).toBe(1);
+    expect(ray.band.id).toBe('some');
+  });
+  it('looking straight down reflects R0 and refracts undeviated', () => {
+    const ray = centreRay(90, 1.333);
+    expect(ray.R).toBeCloseTo(((1.333 - 1) / (1.333 + 1)) ** 2, 15);
+    expect(ray.thetaTDeg).toBeCloseTo(0, 12);
+    expect(ray.band.id).toBe('none');
+    expect(centreRay(90, 1.5).R).toBeCloseTo(0.04, 15);
+  });
+  it('obeys Snell: sin θt = sin θ / n', () => {
+    for (const e of [2, 10, 30, 60]) {
+      const ray = centreRay(e, 1.5);
+      expect(Math.sin(ray.thetaTDeg * DEG)).toBeCloseTo(Math.sin(ray.thetaDeg * DEG) / 1.5, 14);
+    }
+    // Near grazing the refracted ray approaches the critical angle of water, 48.6°.
+    expect(centreRay(0.001, 1.333).thetaTDeg).toBeCloseTo(48.6, 1);
+  });
+  it('sweeps from no reflection to lots as the view lowers', () => {
+    expect(centreRay(60, 1.333).band.label).toBe('no reflection');
+    expect(centreRay(20, 1.333).band.label).toBe('some reflection');
+    expect(centreRay(2, 1.333).band.label).toBe('lots of reflection');
+  });
+});
+
+describe('bands and the CSV table', () => {
+  it('bands cover [0, 1] in order', () => {
+    expect(reflectionBand(0).id).toBe('none');
+    expect(reflectionBand(0.0999).id).toBe('none');
+    expect(reflectionBand(0.1).id).toBe('some');
+    expect(reflectionBand(0.3999).id).toBe('some');
+    expect(reflectionBand(0.4).id).toBe('lots');
+    expect(reflectionBand(1).id).toBe('lots');
+    expect(REFLECTION_BANDS.map((b) => b.label)).toEqual(['no reflection', 'some reflection', 'lots of reflection']);
+  });
+  it('R falls as the view rises', () => {
+    const { elevation, R, T } = splitByElevation(1.333);
+    expect(elevation[0]).toBe(1);
+    expect(elevation.at(-1)).toBe(90);
+    for (let i = 1; i < R.length; i += 1) expect(R[i]).toBeLessThan(R[i - 1]);
+    expect(T.every((t, i) => t + R[i] === 1)).toBe(true);
+  });
+});
