@@ -19,11 +19,12 @@ window.fresnelLab = {
   ready: null,
 };
 
-/** Page-wide material: every panel that has an index parameter takes it. */
+/** Page-wide material: every panel that has an index parameter takes it (a table marks its row). */
 function applyMaterial(material) {
   for (const host of Object.values(hosts)) {
-    const param = host.module.materialParam;
-    if (param) host.set({ [param]: material.n });
+    const { materialParam, materialSelectParam } = host.module;
+    if (materialParam) host.set({ [materialParam]: material.n });
+    else if (materialSelectParam && material.id) host.set({ [materialSelectParam]: material.id });
   }
 }
 

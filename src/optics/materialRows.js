@@ -1,0 +1,51 @@
+// Rows of the refractive-index table: each dielectric of materials.js seen from air (n = 1),
+// plus an optional custom index, and a stable sort by any column. Pure data, no DOM.
+import { dielectrics, dielectricSummary } from './materials.js';
+
+/** Speed of light in vacuum, exact by the SI definition of the metre (BIPM, SI Brochure 9th ed.). */
+export const C_KM_PER_S = 299792.458;
+
+export const SORT_KEYS = ['name', 'n', 'speed', 'r0', 'critical', 'source'];
+
+/** One table row: n, speed c/n (fraction of c and km/s), R0 from air, critical angle to air (degrees). */
+export function materialRow(material) {
+  const s = dielectricSummary(material);
+  return {
+    id: s.id,
+    name: s.name,
+    n: s.n,
+    source: s.source,
+    speed: s.speed,
+    speedKmS: C_KM_PER_S * s.speed,
+    r0: s.r0,
+    critical: s.criticalAngle === null ? null : (s.criticalAngle * 180) / Math.PI,
+  };
+}
+
+export function materialRows() {
+  return dielectrics.map(materialRow);
+}
+
+/** The row for a custom index (id 'custom'). */
+export function customRow(n) {
+  return materialRow({ id: 'custom', name: 'Custom', n, source: 'your value (custom n control)' });
+}
+
+/**
+ * A sorted copy. Text sorts alphabetically; numbers numerically; a missing value (no critical
+ * angle) goes last either way; ties keep the data's order.
+ */
+export function sortMaterialRows(rows, key, direction = 'asc') {
+  if (!SORT_KEYS.includes(key)) throw new RangeError(`cannot sort by ${key}`);
+  const sign = direction === 'desc' ? -1 : 1;
+  return rows
+    .map((row, index) => ({ row, index }))
+    .sort((a, b) => {
+      const x = a.row[key];
+      const y = b.row[key];
+      if (x === null || y === null) return x === y ? a.index - b.index : x === null ? 1 : -1;
+      const order = typeof x === 'string' ? x.localeCompare(y, 'en') : x - y;
+      return order !== 0 ? sign * order : a.index - b.index;
+    })
+    .map(({ row }) => row);
+}

@@ -1,0 +1,54 @@
+import { describe, expect, it } from 'vitest';
+import { cosDeg, interfaceSplit, interfaceSplitCurve } from '../../src/optics/interfaceSplit.js';
+import { fresnelExact } from '../../src/optics/fresnel.js';
+
+const DEG = Math.PI / 180;
+
+describe('interfaceSplit (angle-ratio panel)', () => {
+  it('air to glass: R = 0.0400 head-on and 0.3877 at 80°, T = 1 − R', () => {
+    const head = interfaceSplit(0, 1, 1.5);
+    expect(head.R.toFixed(4)).toBe('0.0400');
+    expect(head.T).toBeCloseTo(0.96, 12);
+    expect(head.thetaT).toBe(0);
+    const at80 = interfaceSplit(80, 1, 1.5);
+    expect(at80.R).toBe(fresnelExact(Math.cos(80 * DEG), 1, 1.5));
+    expect(at80.R.toFixed(4)).toBe('0.3877');
+    expect(at80.R + at80.T).toBe(1);
+  });
+  it('the refracted direction follows Snell’s law', () => {
+    const s = interfaceSplit(45, 1, 1.5);
+    expect(Math.sin(s.thetaT * DEG) * 1.5).toBeCloseTo(Math.sin(45 * DEG), 12);
+    expect(s.tir).toBe(false);
+    expect(s.critical).toBeNull();
+  });
+  it('glass to air: a refracted ray below the critical angle, none past it', () => {
+    const critical = Math.asin(1 / 1.5) / DEG;
+    const inside = interfaceSplit(41, 1.5, 1);
+    expect(inside.tir).toBe(false);
+    expect(inside.thetaT).toBeGreaterThan(79);
+    expect(inside.T).toBeGreaterThan(0);
+    const past = interfaceSplit(45, 1.5, 1);
+    expect(past).toMatchObject({ tir: true, thetaT: null, R: 1, T: 0 });
+    expect(past.critical).toBeCloseTo(critical, 12);
+    expect(interfaceSplit(critical, 1.5, 1).T).toBe(0);
+  });
+  it('equal indices: nothing reflects, the ray goes straight on', () => {
+    const s = interfaceSplit(30, 1.333, 1.333);
+    expect(s.R).toBe(0);
+    expect(s.T).toBe(1);
+    expect(s.thetaT).toBeCloseTo(30, 10);
+  });
+  it('cos 90° is exactly 0 and grazing light is all reflected', () => {
+    expect(cosDeg(90)).toBe(0);
+    expect(interfaceSplit(90, 1, 1.5).R).toBe(1);
+  });
+  it('the CSV curve spans 0° to 90° with R + T = 1 and includes the critical angle', () => {
+    const { theta, R, T } = interfaceSplitCurve(1.5, 1);
+    expect(theta[0]).toBe(0);
+    expect(theta.at(-1)).toBe(90);
+    expect(theta).toContain(Math.asin(1 / 1.5) / DEG);
+    R.forEach((r, i) => expect(r + T[i]).toBeCloseTo(1, 15));
+    expect(R[0]).toBeCloseTo(0.04, 12);
+    expect(R.at(-1)).toBe(1);
+  });
+});

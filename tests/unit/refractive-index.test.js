@@ -1,0 +1,47 @@
+import { describe, expect, it } from 'vitest';
+import { C_KM_PER_S, customRow, materialRows, sortMaterialRows } from '../../src/optics/materialRows.js';
+import { formatIndex, formatKmS } from '../../src/panels/refractive-indexTable.js';
+
+const rows = materialRows();
+const byId = (id) => rows.find((r) => r.id === id);
+
+describe('material rows (refractive-index panel)', () => {
+  it('crown glass N-BK7 reflects 0.042 head-on from air', () => {
+    expect(byId('glass').n).toBe(1.5167);
+    expect(byId('glass').r0.toFixed(3)).toBe('0.042');
+  });
+  it('water: critical angle 48.6°, speed 0.75 c', () => {
+    const water = byId('water');
+    expect(water.critical.toFixed(1)).toBe('48.6');
+    expect(water.critical).toBeCloseTo((Math.asin(1 / 1.3333) * 180) / Math.PI, 12);
+    expect(water.speed).toBeCloseTo(1 / 1.3333, 15);
+    expect(water.speedKmS).toBeCloseTo(C_KM_PER_S / 1.3333, 9);
+    expect(formatKmS(water.speedKmS)).toBe('224\u202f850');
+  });
+  it('sorting by n puts diamond last ascending and first descending', () => {
+    expect(sortMaterialRows(rows, 'n', 'asc').at(-1).id).toBe('diamond');
+    expect(sortMaterialRows(rows, 'n', 'desc')[0].id).toBe('diamond');
+    expect(sortMaterialRows(rows, 'speed', 'asc')[0].id).toBe('diamond');
+    expect(sortMaterialRows(rows, 'name', 'asc').slice(0, 2).map((r) => r.id)).toEqual(['acrylic', 'air']);
+    expect(rows[0].id).toBe('air'); // the input is not reordered
+  });
+  it('a missing critical angle sorts last both ways; ties keep the data order', () => {
+    const withVacuum = [customRow(1), ...rows];
+    expect(withVacuum[0].critical).toBeNull();
+    expect(sortMaterialRows(withVacuum, 'critical', 'asc').at(-1).id).toBe('custom');
+    expect(sortMaterialRows(withVacuum, 'critical', 'desc').at(-1).id).toBe('custom');
+    const coat = sortMaterialRows(rows, 'r0', 'asc').map((r) => r.id);
+    expect(coat.indexOf('clear-coat')).toBeGreaterThan(coat.indexOf('acrylic'));
+    expect(() => sortMaterialRows(rows, 'colour')).toThrow(RangeError);
+  });
+  it('the custom row follows its n', () => {
+    const row = customRow(2);
+    expect(row.r0).toBeCloseTo(1 / 9, 15);
+    expect(row.critical).toBeCloseTo(30, 12);
+  });
+  it('indices keep the digits the data has', () => {
+    expect(formatIndex(1.000293)).toBe('1.000293');
+    expect(formatIndex(1.4)).toBe('1.4000');
+    expect(formatIndex(1.3333)).toBe('1.3333');
+  });
+});
