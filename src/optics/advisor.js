@@ -1,0 +1,127 @@
+// "Model no more than the scene needs": the cheapest method whose error cannot be seen in an
+// 8-bit sRGB image of the scene, or the most accurate one when none is that good.
+//
+// When is an error in R invisible? A pixel shows R·L (L: the light, at most display white, 1).
+// After the sRGB transform the error is |enc(R'L) − enc(RL)| ≈ enc'(RL)·L·|R' − R|, and enc'(x)·L
+// grows with L on both pieces of the curve (12.92·L below x = 0.0031308, ∝ R^(−7/12)L^(5/12)
+// above), so the worst light is L = 1: the error shows as |enc(R') − enc(R)|. It is invisible
+// when that is under half an 8-bit step, 0.5/255. recommend() applies this at every sample, at
+// the sample's own R. As one number in linear R, the half step is smallest at black
+// (0.5/255/12.92 = 1.5e-4, where the curve is steepest) and largest at white (4.45e-3, where it is
+// flattest); invisibleThreshold(level) gives it at any level, by default at the top end, where a
+// Fresnel term ends up near grazing and where the largest errors of every method here occur.
+import { sweepDomain } from './errorMetrics.js';
+import { methodsOfKind } from './methods.js';
+import { contextFor } from './rounding.js';
+import { referenceFor } from './scenes.js';
+
+/** 8-bit codes of half a step: the visibility line. */
+export const HALF_STEP_CODES = 0.5;
+
+/** sRGB transfer function, linear → encoded (IEC 61966-2-1:1999). */
+export function srgbEncode(x) {
+  return x <= 0.0031308 ? 12.92 * x : 1.055 * x ** (1 / 2.4) - 0.055;
+}
+
+/** Its inverse, encoded → linear. */
+export function srgbDecode(v) {
+  return v <= 0.04045 ? v / 12.92 : ((v + 0.055) / 1.055) ** 2.4;
+}
+
+/**
+ * The smallest change of a linear value `level` in [0, 1] that moves its sRGB encoding by half an
+ * 8-bit step (the nearer of the step up and the step down). level 1 (default): 0.0044548;
+ * level 0: 1.5176e-4.
+ */
+export function invisibleThreshold(level = 1) {
+  const half = HALF_STEP_CODES / 255;
+  const e = srgbEncode(level);
+  const down = e - half >= 0 ? level - srgbDecode(e - half) : Infinity;
+  const up = e + half <= 1 ? srgbDecode(e + half) - level : Infinity;
+  return Math.min(down, up);
+}
+
+/** |enc(value) − enc(reference)| in 8-bit codes, the value clamped as a framebuffer does; NaN → ∞. */
+export function displayCodes(value, reference) {
+  if (!Number.isFinite(value)) return Infinity;
+  const clamp = (x) => Math.min(1, Math.max(0, x));
+  return 255 * Math.abs(srgbEncode(clamp(value)) - srgbEncode(clamp(reference)));
+}
+
+const errorCache = new WeakMap(); // scene → Map('method|precision' → result); scenes are frozen
+
+/**
+ * Error of one method over a scene's domain in a precision (the scene's by default): errorStats
+ * in linear R plus maxCodes, the largest display error in 8-bit codes, and caseAtMax. Cached per
+ * scene object, method and precision (the methods are deterministic).
+ */
+export function methodError(scene, method, precision = scene.precision) {
+  const P = contextFor(precision);
+  if (!errorCache.has(scene)) errorCache.set(scene, new Map());
+  const cache = errorCache.get(scene);
+  const key = `${method.id}|${P.name}`;
+  if (!cache.has(key)) cache.set(key, measure(scene, method, P));
+  return cache.get(key);
+}
+
+function measure(scene, method, P) {
+  const stats = sweepDomain({
+    evaluate: (cos, ...args) => method.evaluate(P, cos, ...args),
+    reference: referenceFor(scene.kind),
+    cases: scene.cases,
+    thetaCount: scene.thetaCount,
+    weighting: scene.weighting,
+    also: { codes: displayCodes },
+  });
+  const { also, ...linear } = stats;
+  return Object.freeze({ ...linear, maxCodes: also.codes.max });
+}
+
+const DEG = 180 / Math.PI;
+
+function describe(row) {
+  const where = row.thetaAtMax === null ? '' : ` at ${(row.thetaAtMax * DEG).toFixed(1)}°`;
+  if (row.nanCount > 0) return `${row.methodId} (NaN or Infinity at ${row.nanCount} samples)`;
+  return `${row.methodId} (max |ΔR| ${row.max.toPrecision(2)}${where}, ${row.maxCodes.toFixed(2)} codes)`;
+}
+
+/**
+ * Recommendation for a scene. costs: { methodId: number } in any one unit (e.g. measured ns per
+ * evaluation); a method without an entry uses its static count (methods.js), so pass a cost for
+ * every method of the scene's kind or none. options.budgetCodes: the largest display error
+ * allowed, 0.5 (invisible) by default; options.precision overrides the scene's.
+ * Returns { methodId, invisible, reason, budgetCodes, precision, table } where table has one row
+ * per candidate, cheapest first: { methodId, label, cost, costSource, max, mean, rms,
+ * thetaAtMax (radians), maxCodes, nanCount, outOfRange, passes }.
+ */
+export function recommend(scene, costs = {}, { budgetCodes = HALF_STEP_CODES, precision = scene.precision } = {}) {
+  const table = methodsOfKind(scene.kind).map((method) => {
+    const measured = Number.isFinite(costs?.[method.id]);
+    const error = methodError(scene, method, precision);
+    return {
+      methodId: method.id,
+      label: method.label,
+      cost: measured ? costs[method.id] : method.cost.static,
+      costSource: measured ? 'measured' : 'static',
+      ...error,
+      passes: error.nanCount === 0 && error.maxCodes < budgetCodes,
+    };
+  });
+  const byAccuracy = (a, b) => a.maxCodes - b.maxCodes || a.max - b.max;
+  table.sort((a, b) => a.cost - b.cost || byAccuracy(a, b));
+  const passing = table.filter((row) => row.passes);
+  const budget = budgetCodes === HALF_STEP_CODES ? 'half an 8-bit sRGB step (invisible)' : `${budgetCodes} 8-bit codes`;
+  const where = `${scene.label}, ${contextFor(precision).label}`;
+  let choice;
+  let reason;
+  if (passing.length > 0) {
+    choice = passing[0];
+    const cheaper = table.filter((row) => row.cost < choice.cost);
+    reason = `${describe(choice)} is the cheapest method whose largest error over "${where}" stays under ${budget}.`;
+    if (cheaper.length > 0) reason += ` Cheaper but visible: ${cheaper.map(describe).join('; ')}.`;
+  } else {
+    choice = [...table].sort(byAccuracy)[0];
+    reason = `No method stays under ${budget} for "${where}"; ${describe(choice)} is the most accurate.`;
+  }
+  return { methodId: choice.methodId, invisible: passing.length > 0, reason, budgetCodes, precision: contextFor(precision).name, table };
+}

@@ -1,0 +1,243 @@
+// The Fresnel methods the speed-accuracy panel compares, each written once with an arithmetic
+// context (rounding.js) so it runs in float64, float32 or float16. Operations are in the order
+// the GLSL twin evaluates them (left to right, as GLSL parses `a * b * c`); inputs are rounded
+// to the precision first, as a uniform or varying would be. Outputs are not clamped unless the
+// method as used in practice clamps (noted per method), so NaN and values outside [0, 1] can come
+// out for the stability map to classify. Formulas: fresnel.js (sources there) and
+// fresnel-facts.md §0–§2; cost hints: fresnel-facts.md §1 static SPIR-V counts (a), with the
+// rough ALU + SFU estimate (b) alongside.
+import { conductorNormalIncidence, fresnelConductor } from './fresnel.js';
+import { contextFor } from './rounding.js';
+
+/** g² = cos²θt in fresnel.glsl's safe order: ((nT − nI)/nT)((nT + nI)/nT) + c², c = nI·ci/nT. */
+function cosTransmittedSq(P, ci, nI, nT) {
+  const c = P.div(P.mul(nI, ci), nT);
+  return P.add(P.mul(P.div(P.sub(nT, nI), nT), P.div(P.add(nT, nI), nT)), P.mul(c, c));
+}
+
+/** R0 = ((nT − nI)/(nT + nI))², computed in the shader from the two indices (fresnel.glsl). */
+function normalIncidence(P, nI, nT) {
+  const r = P.div(P.sub(nT, nI), P.add(nT, nI));
+  return P.mul(r, r);
+}
+
+/** R0 + (1 − R0)·x2·x2·x with x = 1 − c: Schlick by multiplications (Filament pow5). */
+function schlickMul(P, c, r0) {
+  const x = P.sub(1, c);
+  const x2 = P.mul(x, x);
+  return P.add(r0, P.mul(P.sub(1, r0), P.mul(P.mul(x2, x2), x)));
+}
+
+function dielectric(id, label, cost, props, body) {
+  return {
+    id,
+    label,
+    kind: 'dielectric',
+    cost,
+    ...props,
+    /** Reflectance for cos θi = cos, light going from index nI into nT. */
+    evaluate(precision, cos, nI, nT) {
+      const P = contextFor(precision);
+      return body(P, P.round(cos), P.round(nI), P.round(nT));
+    },
+  };
+}
+
+/** Exact c/g in fresnel.js's structure (safe g², c² − m² = −m²sin²θ), without its double-double. */
+function exactCg(P, ci, nI, nT) {
+  if (nI === nT) return 0; // matched media: no interface (fresnel.js convention)
+  const g2 = cosTransmittedSq(P, ci, nI, nT);
+  if (g2 <= 0) return 1; // total internal reflection
+  const g = P.sqrt(g2);
+  const c = P.div(P.mul(nI, ci), nT);
+  const a = P.div(P.sub(g, c), P.add(g, c));
+  const m = P.div(nI, nT);
+  const ms2 = P.mul(P.mul(m, m), P.mul(P.sub(1, ci), P.add(1, ci)));
+  const cg = P.mul(c, g);
+  const b = P.div(P.sub(cg, ms2), P.add(cg, ms2));
+  return P.mul(P.mul(P.mul(0.5, a), a), P.add(1, P.mul(b, b)));
+}
+
+/**
+ * The slide's c/g form as written: g² = 1 + c² − m² and B = (c(g+c) − m²)/(c(g−c) + m²).
+ * 1 + c² rounds to 1 when c² is below half an ulp of 1, so matched media near grazing get
+ * g² = 0 and R = 1 instead of 0 (fresnel-facts §2.2). Same TIR branch as exact-cg; no
+ * matched-media guard (the slide has none).
+ */
+function exactCgLiteral(P, ci, nI, nT) {
+  const m = P.div(nI, nT);
+  const c = P.mul(m, ci);
+  const g2 = P.sub(P.add(1, P.mul(c, c)), P.mul(m, m));
+  if (g2 <= 0) return 1;
+  const g = P.sqrt(g2);
+  const a = P.div(P.sub(g, c), P.add(g, c));
+  const b = P.div(P.sub(P.mul(c, P.add(g, c)), P.mul(m, m)), P.add(P.mul(c, P.sub(g, c)), P.mul(m, m)));
+  return P.mul(P.mul(P.mul(0.5, a), a), P.add(1, P.mul(b, b)));
+}
+
+/**
+ * s/p via Snell in pbrt-v4 FrDielectric's order (fresnel-facts Appendix A exact_sp):
+ * sin²θt = m²(1 − ci²), TIR if ≥ 1, ct = √(1 − sin²θt), rs = (m·ci − ct)/(m·ci + ct),
+ * rp = (ci − m·ct)/(ci + m·ct). 1 − sin²θt cancels near the critical angle (§2.4: 0.13 in fp16).
+ * Matched media return 0 as in fresnel.js (pbrt-v4 returns 1 at grazing there, §2.2).
+ */
+function exactSp(P, ci, nI, nT) {
+  if (nI === nT) return 0;
+  const m = P.div(nI, nT);
+  const s2t = P.mul(P.mul(m, m), P.sub(1, P.mul(ci, ci)));
+  if (s2t >= 1) return 1;
+  const ct = P.sqrt(P.sub(1, s2t));
+  const mc = P.mul(m, ci);
+  const rs = P.div(P.sub(mc, ct), P.add(mc, ct));
+  const mct = P.mul(m, ct);
+  const rp = P.div(P.sub(ci, mct), P.add(ci, mct));
+  return P.mul(0.5, P.add(P.mul(rs, rs), P.mul(rp, rp)));
+}
+
+/** Schlick 1994 with pow(1 − c, 5): NaN for c > 1 (pow of a negative base, §2.3). No clamp. */
+function schlickPow(P, ci, nI, nT) {
+  const r0 = normalIncidence(P, nI, nT);
+  return P.add(r0, P.mul(P.sub(1, r0), P.pow(P.sub(1, ci), 5)));
+}
+
+/** Schlick by multiplications only (Filament F_Schlick + pow5). No clamp; no TIR. */
+function schlickMulOnly(P, ci, nI, nT) {
+  return schlickMul(P, ci, normalIncidence(P, nI, nT));
+}
+
+/** Schlick on cos θt when nI > nT, 1 past the critical angle (fresnelSchlickTIR; Cycles). */
+function schlickTir(P, ci, nI, nT) {
+  const r0 = normalIncidence(P, nI, nT);
+  if (nI <= nT) return schlickMul(P, ci, r0);
+  const g2 = cosTransmittedSq(P, ci, nI, nT);
+  return g2 <= 0 ? 1 : schlickMul(P, P.sqrt(g2), r0);
+}
+
+/**
+ * three.js F_Schlick (common.glsl.js, after Karis 2013): f = exp2((−5.55473c − 6.98316)c),
+ * f0·(1 − f) + f90·f with f90 = 1. three.js saturates dotVH before the call, so c is clamped here.
+ */
+function schlickExp2(P, ci, nI, nT) {
+  const c = P.clamp(ci, 0, 1);
+  const r0 = normalIncidence(P, nI, nT);
+  const f = P.exp2(P.mul(P.sub(P.mul(P.round(-5.55473), c), P.round(6.98316)), c));
+  return P.add(P.mul(r0, P.sub(1, f)), f);
+}
+
+function conductor(id, label, cost, props, body) {
+  return {
+    id,
+    label,
+    kind: 'conductor',
+    cost,
+    ...props,
+    /** Reflectance from air into n + ik; f0 is the per-channel F0 uniform (from n, k if omitted). */
+    evaluate(precision, cos, n, k, f0 = conductorNormalIncidence(n, k)) {
+      const P = contextFor(precision);
+      return body(P, P.round(cos), P.round(n), P.round(k), P.round(f0), { n, k, f0 });
+    },
+  };
+}
+
+/** Exact conductor in fresnel.glsl's order (Lagarde 2013 real form, stable a², b²), without its clamps. */
+function conductorExact(P, c, n, k) {
+  const sin2 = P.mul(P.sub(1, c), P.add(1, c));
+  const t0 = P.sub(P.sub(P.mul(n, n), P.mul(k, k)), sin2);
+  const nk = P.mul(n, k);
+  const S = P.sqrt(P.add(P.mul(t0, t0), P.mul(P.mul(4, nk), nk)));
+  let a2;
+  let b2;
+  if (t0 >= 0) {
+    a2 = P.mul(0.5, P.add(S, t0));
+    b2 = a2 > 0 ? P.div(P.mul(nk, nk), a2) : 0;
+  } else {
+    b2 = P.mul(0.5, P.sub(S, t0));
+    a2 = P.div(P.mul(nk, nk), b2);
+  }
+  const a = P.sqrt(a2);
+  const dm = P.sub(a, c);
+  const dp = P.add(a, c);
+  const rsDen = P.add(P.mul(dp, dp), b2);
+  if (rsDen <= 0) return 0;
+  const rs = P.div(P.add(P.mul(dm, dm), b2), rsDen);
+  if (rs <= 0) return 0;
+  const um = P.sub(P.mul(a, c), sin2);
+  const up = P.add(P.mul(a, c), sin2);
+  const bc = P.mul(P.sqrt(b2), c);
+  const rpDen = P.add(P.mul(up, up), P.mul(bc, bc));
+  const rp = rpDen > 0 ? P.mul(rs, P.div(P.add(P.mul(um, um), P.mul(bc, bc)), rpDen)) : rs;
+  return P.mul(0.5, P.add(rs, rp));
+}
+
+const MU_BAR = 1 / 7; // cos 81.8°, where F82 is specified (Hoffman 2019)
+
+/**
+ * F82-tint coefficients, computed once on the CPU in float64 (a uniform in practice).
+ * Kutz et al., "Novel aspects of the Adobe Standard Material" (2021), after Hoffman, "Fresnel
+ * equations considered harmful" (2019): F(c) = Schlick(c) − b·c(1 − c)^6,
+ * b = (Schlick(1/7) − F82)/((1/7)(6/7)^6), F82 = tint·Schlick(1/7). The tint is chosen so F82 is
+ * the exact conductor reflectance at cos = 1/7: the fit is then exact at 0°, ~82° and 90°.
+ */
+export function f82Coefficients(n, k, f0 = conductorNormalIncidence(n, k)) {
+  const schlickBar = f0 + (1 - f0) * (1 - MU_BAR) ** 5;
+  const f82 = fresnelConductor(MU_BAR, n, k);
+  return { f0, f82, tint: f82 / schlickBar, b: (schlickBar - f82) / (MU_BAR * (1 - MU_BAR) ** 6) };
+}
+
+const f82Cache = new Map();
+
+function f82B(n, k, f0) {
+  const key = `${n},${k},${f0}`;
+  if (!f82Cache.has(key)) f82Cache.set(key, f82Coefficients(n, k, f0).b);
+  return f82Cache.get(key);
+}
+
+/** fresnel-facts Appendix A f82_rgb: s = clamp(1 − c), clamp(F0 + (1 − F0)s⁵ − b·(c·s⁵·s)) (Cycles clamps). */
+function conductorF82(P, c, _n, _k, f0, cpu) {
+  const b = P.round(f82B(cpu.n, cpu.k, cpu.f0));
+  const s = P.clamp(P.sub(1, c), 0, 1);
+  const s2 = P.mul(s, s);
+  const s5 = P.mul(P.mul(s2, s2), s);
+  const schlick = P.add(f0, P.mul(P.sub(1, f0), s5));
+  return P.clamp(P.sub(schlick, P.mul(b, P.mul(P.mul(c, s5), s))), 0, 1);
+}
+
+/** The method table. cost: static SPIR-V count (§1 a); alu/sfu: rough estimate (§1 b). */
+export const METHODS = Object.freeze([
+  dielectric('exact-cg', 'Exact c/g (safe order)', { static: 16, alu: 14, sfu: 3 },
+    { tirAware: true, note: '§1 #2: 8 fp-arith + 6 fma + 1 sqrt + 1 branch' }, exactCg),
+  dielectric('exact-cg-literal', 'Exact c/g (lecture order 1 + c² − m²)', { static: 17, alu: 15, sfu: 3 },
+    { tirAware: true, note: '§1 #2 + 1 add: 1 + c² − m² where the safe form adds c² to a precomputed 1 − m²' }, exactCgLiteral),
+  dielectric('exact-sp', 'Exact s/p (Snell)', { static: 18, alu: 16, sfu: 3 },
+    { tirAware: true, note: '§1 #1: 9 fp-arith + 7 fma + 1 sqrt + 1 branch' }, exactSp),
+  dielectric('schlick-pow', 'Schlick, pow(1 − c, 5)', { static: 4, alu: 3, sfu: 2 },
+    { tirAware: false, note: '§1 #3: 2 fp-arith + 1 fma + 1 pow (pow = log2, mul, exp2)' }, schlickPow),
+  dielectric('schlick-mul', 'Schlick, multiplications only', { static: 6, alu: 5, sfu: 0 },
+    { tirAware: false, note: '§1 #4: 5 fp-arith + 1 fma' }, schlickMulOnly),
+  dielectric('schlick-tir', 'Schlick on cos θt (TIR-correct)', { static: 14, alu: 10, sfu: 1 },
+    { tirAware: true, note: '§1 #7: 8 fp-arith + 3 fma + 1 sqrt + 2 branches' }, schlickTir),
+  dielectric('schlick-exp2', 'Schlick, exp2 form (three.js, UE4)', { static: 5, alu: 3, sfu: 1 },
+    { tirAware: false, note: '§1 #6: 2 fp-arith + 2 fma + 1 exp2' }, schlickExp2),
+  conductor('conductor-exact', 'Exact conductor (n + ik)', { static: 32, alu: 20, sfu: 4 },
+    { note: '§1 #12: 26 fp-arith + 3 fma + 2 sqrt + 1 max (vec3)' }, conductorExact),
+  conductor('conductor-schlick', 'Schlick with F0 per channel', { static: 6, alu: 5, sfu: 0 },
+    { note: '§1 #4 on vec3 F0' }, (P, c, _n, _k, f0) => schlickMul(P, c, f0)),
+  conductor('conductor-f82', 'F82-tint (Hoffman 2019, Kutz et al. 2021)', { static: 13, alu: 9, sfu: 0 },
+    { note: '§1 #10: 11 fp-arith + 2 clamp (vec3), b precomputed' }, conductorF82),
+].map(Object.freeze));
+
+const BY_ID = new Map(METHODS.map((m) => [m.id, m]));
+
+export const METHOD_IDS = Object.freeze(METHODS.map((m) => m.id));
+
+/** The method with this id; throws on an unknown id. */
+export function methodById(id) {
+  const method = BY_ID.get(id);
+  if (!method) throw new RangeError(`unknown Fresnel method ${String(id)}`);
+  return method;
+}
+
+/** Methods of one kind, 'dielectric' or 'conductor', in table order. */
+export function methodsOfKind(kind) {
+  return METHODS.filter((m) => m.kind === kind);
+}

@@ -1,0 +1,65 @@
+// Arithmetic contexts: the same method code evaluated in float64, float32 or float16.
+// Each operation is done in float64 and rounded once to the target format. For + − × ÷ and sqrt
+// that equals the correctly rounded result of the target format, because float64 has more than
+// 2p + 2 significand bits for p = 24 and p = 11 (Figueroa, "When is double rounding innocuous?",
+// SIGNUM Newsletter 30(3), 1995). float32 rounding is Math.fround; float16 is @petamoriken/float16's
+// f16round (IEEE 754 binary16, round-to-nearest-even, subnormals, overflow to ±Infinity).
+// This is the emulation of fresnel-facts.md Appendix B ("rounded after every operation").
+import { f16round } from '@petamoriken/float16';
+
+const identity = (x) => x;
+
+/**
+ * GLSL ES 3.00 §8.2: pow(x, y) is undefined for x < 0 and "inherits its precision from
+ * exp2(y·log2 x)", which is how GPUs evaluate it: a negative base gives NaN there (fresnel-facts
+ * §2.3), unlike Math.pow(−0.1, 5). The log2, the product and the exp2 are each rounded.
+ */
+function makePow(round) {
+  return (x, y) => {
+    if (Number.isNaN(x) || x < 0) return NaN;
+    return round(2 ** round(y * round(Math.log2(x))));
+  };
+}
+
+function makeContext(name, label, round, bits) {
+  return Object.freeze({
+    name,
+    label,
+    /** Significand bits including the hidden one (53, 24, 11). */
+    bits,
+    /** Rounds a float64 value (an input, a uniform, a literal) to this format. */
+    round,
+    add: (a, b) => round(a + b),
+    sub: (a, b) => round(a - b),
+    mul: (a, b) => round(a * b),
+    div: (a, b) => round(a / b),
+    sqrt: (a) => round(Math.sqrt(a)),
+    pow: makePow(round),
+    exp2: (a) => round(2 ** a),
+    // clamp returns one of its (already rounded) arguments: no rounding needed. NaN stays NaN,
+    // as min/max with a NaN operand do on most GPUs (GLSL leaves it undefined).
+    clamp: (x, lo, hi) => (Number.isNaN(x) ? NaN : Math.min(hi, Math.max(lo, x))),
+  });
+}
+
+/** float64: the reference arithmetic, no rounding beyond JavaScript's own. */
+export const fp64 = makeContext('fp64', 'float64', identity, 53);
+/** float32: GLSL highp on every WebGL2 GPU. */
+export const fp32 = makeContext('fp32', 'float32 (highp)', Math.fround, 24);
+/** float16: GLSL mediump where the GPU really runs it at half precision (many phones). */
+export const fp16 = makeContext('fp16', 'float16 (mediump)', f16round, 11);
+
+export const PRECISIONS = Object.freeze({ fp64, fp32, fp16 });
+export const PRECISION_IDS = Object.freeze(Object.keys(PRECISIONS));
+
+/** The context for 'fp64' | 'fp32' | 'fp16', or the context itself; throws on anything else. */
+export function contextFor(precision) {
+  if (typeof precision === 'object' && precision !== null && PRECISIONS[precision.name] === precision) {
+    return precision;
+  }
+  const context = PRECISIONS[precision];
+  if (!context) throw new RangeError(`precision must be one of ${PRECISION_IDS.join(', ')}, got ${String(precision)}`);
+  return context;
+}
+
+export { f16round };
