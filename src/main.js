@@ -8,7 +8,8 @@ import { managePanels } from './ui/managePanels.js';
 import { setupLectureMode } from './ui/lectureMode.js';
 import { setupPageControls } from './ui/pageControls.js';
 import { showNotice } from './ui/notices.js';
-import { contextStats } from './gl/createRenderer.js';
+import { contextStats, MAX_LIVE_CONTEXTS } from './gl/createRenderer.js';
+import { describeProblem, readParams } from './ui/params.js';
 
 const hosts = {};
 window.fresnelLab = {
@@ -31,6 +32,14 @@ function applyMaterial(material) {
 const controls = setupPageControls(document.querySelector('.page-controls'), { onMaterial: applyMaterial });
 window.fresnelLab.applyMaterial = applyMaterial;
 
+// ?maxContexts=N holds fewer WebGL panels at once, for a weak laptop (at most 8, the default).
+const pageSchema = {
+  maxContexts: { type: 'number', default: MAX_LIVE_CONTEXTS, min: 1, max: MAX_LIVE_CONTEXTS, step: 1, label: 'Live WebGL panels' },
+};
+const page = readParams(pageSchema, new URLSearchParams(window.location.search));
+showNotice(document.querySelector('main'), 'A page setting in the link was not usable:', page.problems.map(describeProblem));
+const maxLive = Math.round(page.values.maxContexts);
+
 const sections = [...document.querySelectorAll('section[data-panel]')].filter((s) => s.dataset.panel in panelLoaders);
 window.fresnelLab.ready = (async () => {
   const entries = await Promise.all(sections.map(async (section) => {
@@ -46,6 +55,6 @@ window.fresnelLab.ready = (async () => {
       return null;
     }
   }));
-  managePanels(entries.filter(Boolean));
+  managePanels(entries.filter(Boolean), { maxLive });
   setupLectureMode(sections, { onHideControls: controls.toggleControls });
 })();

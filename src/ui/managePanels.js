@@ -1,9 +1,9 @@
 // Mount on approach, dispose when far: only panels on or near the screen hold a view, and never
-// more than MAX_LIVE_CONTEXTS WebGL panels at once (the farthest one gives its context up first).
+// more than maxLive WebGL panels at once (the farthest one gives its context up first).
 // Panels without WebGL stay mounted once they have been seen.
 import { MAX_LIVE_CONTEXTS } from '../gl/createRenderer.js';
 
-export function managePanels(entries, { margin = '100% 0px 100% 0px' } = {}) {
+export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = MAX_LIVE_CONTEXTS } = {}) {
   const near = new Set();
   const distance = ({ section }) => {
     const r = section.getBoundingClientRect();
@@ -19,7 +19,7 @@ export function managePanels(entries, { margin = '100% 0px 100% 0px' } = {}) {
     for (const entry of wanted) {
       if (entry.host.mounted) continue;
       if (entry.host.usesWebGL) {
-        if (glMounted >= MAX_LIVE_CONTEXTS) {
+        if (glMounted >= maxLive) {
           const farthest = entries.filter((e) => e.host.mounted && e.host.usesWebGL)
             .sort((a, b) => distance(b) - distance(a))[0];
           if (!farthest || distance(farthest) <= distance(entry)) continue;
@@ -45,5 +45,23 @@ export function managePanels(entries, { margin = '100% 0px 100% 0px' } = {}) {
     settle();
   }, { rootMargin: margin });
   for (const { section } of entries) observer.observe(section);
-  return { settle, disconnect: () => observer.disconnect() };
+
+  // When the budget is short, a near panel may wait without any intersection change: scrolling
+  // re-ranks by distance (once per frame, and only while some near panel is waiting).
+  let pending = 0;
+  const onScroll = () => {
+    if (pending || ![...near].some((e) => !e.host.mounted)) return;
+    pending = requestAnimationFrame(() => {
+      pending = 0;
+      settle();
+    });
+  };
+  window.addEventListener('scroll', onScroll, { passive: true });
+  return {
+    settle,
+    disconnect() {
+      observer.disconnect();
+      window.removeEventListener('scroll', onScroll);
+    },
+  };
 }

@@ -41,6 +41,26 @@ test('never more than 8 live WebGL contexts while scrolling the whole page, and 
   expect(stats.live).toBeLessThanOrEqual(mountedGl); // every context belongs to a mounted panel
 });
 
+test('with a budget of 2, the farthest WebGL panel gives its context up first', async ({ page }) => {
+  test.setTimeout(180_000);
+  await page.setViewportSize({ width: 1280, height: 2400 }); // several WebGL panels near at once
+  await openLab(page, './?maxContexts=2');
+  const gl = await page.evaluate(() => Object.values(window.fresnelLab.hosts).filter((h) => h.usesWebGL).map((h) => h.id));
+  expect(gl.length).toBeGreaterThan(3);
+  for (const id of gl) {
+    await page.locator(`section[data-panel="${id}"]`).evaluate((s) => s.scrollIntoView({ block: 'center' }));
+    await expect.poll(() => page.evaluate((i) => window.fresnelLab.hosts[i].mounted, id), { message: id }).toBe(true);
+    const live = await page.evaluate(() => window.fresnelLab.contexts.live);
+    expect(live).toBeLessThanOrEqual(2);
+  }
+  expect(await page.evaluate(() => window.fresnelLab.contexts.peak)).toBeLessThanOrEqual(2);
+});
+
+test('a bad page setting in the link is named and ignored', async ({ page }) => {
+  await openLab(page, './?maxContexts=99');
+  await expect(page.locator('main > .notice')).toContainText('maxContexts=99 is outside 1 to 8; using 8');
+});
+
 test('mounting and disposing a WebGL panel many times leaks no context', async ({ page }) => {
   await openLab(page);
   await expect.poll(() => page.evaluate(() => window.fresnelLab.hosts.spheres.mounted)).toBe(true);
