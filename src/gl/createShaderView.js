@@ -7,6 +7,7 @@ import {
 import { shaderSource } from './shaderChunks.js';
 import { cappedPixelRatio, createRenderer } from './createRenderer.js';
 import { onDemand } from './onDemand.js';
+import { readPixel } from './readPixel.js';
 
 const VERTEX = `precision highp float;
 in vec3 position;
@@ -65,11 +66,7 @@ export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, max
     /** Draws now and reads one pixel at CSS coordinates within the canvas: [r, g, b, a] bytes. */
     readPixel(x, y) {
       draw();
-      const gl = renderer.getContext();
-      const ratio = renderer.getPixelRatio();
-      const out = new Uint8Array(4);
-      gl.readPixels(Math.floor(x * ratio), Math.floor((size.height - y) * ratio), 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, out);
-      return [...out];
+      return readPixel(renderer, x, y, size.height);
     },
     /** Draws now and returns a PNG data URL (the drawing buffer is not preserved between frames). */
     toDataURL() {

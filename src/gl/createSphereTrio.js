@@ -8,6 +8,7 @@ import {
 import { shaderSource } from './shaderChunks.js';
 import { cappedPixelRatio, createRenderer } from './createRenderer.js';
 import { onDemand } from './onDemand.js';
+import { readPixel } from './readPixel.js';
 
 export const SPHERE_MODES = ['exact', 'schlick', 'error'];
 const DEG = Math.PI / 180;
@@ -164,11 +165,7 @@ export function createSphereTrio(canvas, { onChange, onFrame } = {}) {
     /** Draws now and reads one pixel (CSS coordinates within the canvas) as [r, g, b, a] bytes. */
     readPixel(x, y) {
       draw();
-      const gl = renderer.getContext();
-      const ratio = renderer.getPixelRatio();
-      const out = new Uint8Array(4);
-      gl.readPixels(Math.floor(x * ratio), Math.floor((size.height - y) * ratio), 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, out);
-      return [...out];
+      return readPixel(renderer, x, y, size.height);
     },
     /** Draws now and returns the canvas as a PNG data URL (the drawing buffer is not preserved). */
     toDataURL() {

@@ -5,6 +5,7 @@ import { interfaceSplit, interfaceSplitCurve } from '../optics/interfaceSplit.js
 import { cssVar } from '../ui/theme.js';
 import { buildAngleRatioDiagram, svgToPng } from './angle-ratioDiagram.js';
 import './angle-ratio.css';
+import { el } from '../ui/el.js';
 
 export const id = 'angle-ratio';
 export const title = 'The ratio of reflection to refraction depends on the angle';
@@ -16,13 +17,6 @@ export const schema = {
   n1: { type: 'number', default: 1, min: 1, max: 3, step: 0.0001, label: 'n₁ (incident side)' },
   n2: { type: 'number', default: 1.5, min: 1, max: 3, step: 0.0001, label: 'n₂ (other side)' },
 };
-
-function el(tag, className, text) {
-  const node = document.createElement(tag);
-  if (className) node.className = className;
-  if (text !== undefined) node.textContent = text;
-  return node;
-}
 
 /** A labelled horizontal bar with its number; the bar itself is decoration (the number is text). */
 function bar(label, className) {

@@ -2,13 +2,7 @@
 // readout, the key numbers and the formula. Styled by asphalt.css under .asphalt-panel.
 import { texElement } from '../ui/tex.js';
 import './asphalt.css';
-
-function el(tag, className, text) {
-  const node = document.createElement(tag);
-  if (className) node.className = className;
-  if (text !== undefined) node.textContent = text;
-  return node;
-}
+import { el } from '../ui/el.js';
 
 export function buildAsphaltDom(host) {
   const root = el('div', 'asphalt-panel');

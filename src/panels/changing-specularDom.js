@@ -3,16 +3,10 @@
 // plot host. Styled by changing-specular.css under .cspec-panel.
 import { renderTex } from '../ui/tex.js';
 import './changing-specular.css';
+import { el } from '../ui/el.js';
 
 const SVG = 'http://www.w3.org/2000/svg';
 const DEG = Math.PI / 180;
-
-function el(tag, className, text) {
-  const node = document.createElement(tag);
-  if (className) node.className = className;
-  if (text !== undefined) node.textContent = text;
-  return node;
-}
 
 function svg(tag, attrs = {}, parent = null) {
   const node = document.createElementNS(SVG, tag);

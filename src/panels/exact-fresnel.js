@@ -5,10 +5,10 @@
 import './exact-fresnel.css';
 import { texElement } from '../ui/tex.js';
 import { createLinePlot } from '../ui/createLinePlot.js';
-import { cssVar } from '../ui/theme.js';
 import { criticalAngle, fresnelExact, fresnelPolarized } from '../optics/fresnel.js';
 import { reflectanceCurves } from '../optics/curves.js';
 import { fresnelLiteral, fresnelTerms } from '../optics/fresnelTerms.js';
+import { el } from '../ui/el.js';
 
 export const id = 'exact-fresnel';
 export const title = 'Reflection math: the exact formula';
@@ -47,13 +47,6 @@ export function fixed(value, digits = 6) {
 
 function sci(value) {
   return Number.isNaN(value) ? '—' : value.toExponential(6).replaceAll('-', MINUS).replace('e+', 'e');
-}
-
-function el(tag, className, text) {
-  const node = document.createElement(tag);
-  if (className) node.className = className;
-  if (text !== undefined) node.textContent = text;
-  return node;
 }
 
 function valueCell(key) {
@@ -225,18 +218,7 @@ export function mount(root, ctx) {
         columns: { theta_deg: curves.theta, R_exact: curves.exact, Rs: s, Rp: p },
       };
     },
-    png() {
-      // The plot on the panel's background, so the export reads in any viewer.
-      const source = plot.plot.ctx.canvas;
-      const out = document.createElement('canvas');
-      out.width = source.width;
-      out.height = source.height;
-      const g = out.getContext('2d');
-      g.fillStyle = cssVar('--panel', '#161b22');
-      g.fillRect(0, 0, out.width, out.height);
-      g.drawImage(source, 0, 0);
-      return out.toDataURL('image/png');
-    },
+    png: () => plot.toPng(),
     dispose() {
       plot.dispose();
       panel.remove();

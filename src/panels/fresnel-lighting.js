@@ -9,6 +9,7 @@ import { shaderChunks } from '../gl/shaderChunks.js';
 import { createLinePlot } from '../ui/createLinePlot.js';
 import { createTwinStage } from './fresnel-lightingStage.js';
 import './fresnel-lighting.css';
+import { el } from '../ui/el.js';
 
 export const id = 'fresnel-lighting';
 export const title = 'Fresnel reflection in lighting';
@@ -29,13 +30,6 @@ export const MIX_GLSL = shaderChunks['fresnel-lighting-mix'].trimEnd();
 const RIM_DEG = 80; // the angle quoted for the rim
 const DEG = Math.PI / 180;
 const METHOD_NAMES = { exact: 'exact Fresnel', schlick: "Schlick's approximation" };
-
-function el(tag, className, text) {
-  const node = document.createElement(tag);
-  if (className) node.className = className;
-  if (text !== undefined) node.textContent = text;
-  return node;
-}
 
 /** F at θ (degrees) on the left sphere, from the float64 reference. */
 function weightAt(thetaDeg, n, method) {

@@ -6,6 +6,7 @@ import { createShaderView } from '../gl/createShaderView.js';
 import { WebGL2Unavailable } from '../gl/createRenderer.js';
 import { directionFromAngles } from '../gl/createSphereTrio.js';
 import './fresnel-lighting.css';
+import { el } from '../ui/el.js';
 
 const DEG = Math.PI / 180;
 
@@ -21,13 +22,6 @@ export const STAGE_CAMERA = Object.freeze({ distance: 4, fovDeg: 36, elevationDe
 export function offsetAtAngle(thetaDeg, { distance, fovDeg } = STAGE_CAMERA) {
   const alpha = Math.asin(Math.sin(thetaDeg * DEG) / distance);
   return Math.tan(alpha) / Math.tan((fovDeg * DEG) / 2);
-}
-
-function el(tag, className, text) {
-  const node = document.createElement(tag);
-  if (className) node.className = className;
-  if (text !== undefined) node.textContent = text;
-  return node;
 }
 
 /**

@@ -2,13 +2,7 @@
 // per-channel table and the plot's caption. F0 is a linear reflectance; swatches show it encoded
 // to sRGB (three.js Color: linear working space in, sRGB hex out) with the linear numbers beside.
 import { Color } from 'three';
-
-function el(tag, className, text) {
-  const node = document.createElement(tag);
-  if (className) node.className = className;
-  if (text !== undefined) node.textContent = text;
-  return node;
-}
+import { el } from '../ui/el.js';
 
 /** CSS colour of a linear RGB reflectance. */
 export function swatchColor(rgb) {

@@ -5,8 +5,8 @@ import { brewsterAngle, criticalAngle, fresnelExact, fresnelPolarized } from '..
 import { reflectanceCurves } from '../optics/curves.js';
 import { cosDeg } from '../optics/interfaceSplit.js';
 import { createLinePlot } from '../ui/createLinePlot.js';
-import { cssVar } from '../ui/theme.js';
 import './polarization.css';
+import { el } from '../ui/el.js';
 
 export const id = 'polarization';
 export const title = 'Why the exact formula is an average: polarization';
@@ -25,13 +25,6 @@ const SERIES = [
   { label: 'Rp (p-polarized)', stroke: '--c-p', width: 3 },
   { label: 'Mean = exact unpolarized R', stroke: '--c-exact', width: 3.5, dash: [10, 6] },
 ];
-
-function el(tag, className, text) {
-  const node = document.createElement(tag);
-  if (className) node.className = className;
-  if (text !== undefined) node.textContent = text;
-  return node;
-}
 
 /** Values at one angle: Rs, Rp (fresnelPolarized) and the unpolarized mean (fresnelExact). */
 function at(thetaDeg, n1, n2) {
@@ -151,35 +144,7 @@ export function mount(root, ctx) {
       };
     },
     /** The plot on the panel's background (uPlot's canvas is transparent). */
-    png() {
-      const source = plotHost.querySelector('canvas');
-      const canvas = document.createElement('canvas');
-      canvas.width = source.width;
-      canvas.height = source.height;
-      const c2d = canvas.getContext('2d');
-      c2d.fillStyle = cssVar('--panel', '#161b22');
-      c2d.fillRect(0, 0, canvas.width, canvas.height);
-      c2d.drawImage(source, 0, 0);
-      // The legend is HTML, so it is drawn again in the plot's top-left corner (empty for every n:
-      // R is small there, and the total-reflection region lies to the right).
-      const { left, top } = plot.plot.bbox;
-      const ratio = window.devicePixelRatio || 1;
-      c2d.font = `${Math.round(15 * ratio)}px system-ui, sans-serif`;
-      c2d.textBaseline = 'middle';
-      SERIES.forEach((s, i) => {
-        const y = top + (14 + i * 22) * ratio;
-        c2d.strokeStyle = cssVar(s.stroke);
-        c2d.lineWidth = 3 * ratio;
-        c2d.setLineDash((s.dash ?? []).map((d) => d * ratio));
-        c2d.beginPath();
-        c2d.moveTo(left + 10 * ratio, y);
-        c2d.lineTo(left + 40 * ratio, y);
-        c2d.stroke();
-        c2d.fillStyle = cssVar('--text');
-        c2d.fillText(s.label, left + 48 * ratio, y);
-      });
-      return canvas.toDataURL('image/png');
-    },
+    png: () => plot.toPng(),
     dispose() {
       plot.dispose();
       panel.remove();

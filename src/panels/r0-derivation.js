@@ -5,6 +5,7 @@ import './r0-derivation.css';
 import { renderTex, texElement } from '../ui/tex.js';
 import { fresnelExact, normalIncidence } from '../optics/fresnel.js';
 import { maxSpread, r0Steps } from '../optics/r0Steps.js';
+import { el } from '../ui/el.js';
 
 export const id = 'r0-derivation';
 export const title = 'R(0°): from the exact formula to ((n_t − n_i)/(n_t + n_i))²';
@@ -19,13 +20,6 @@ const DIGITS = 6;
 const fixed = (value) => value.toFixed(DIGITS).replace('-', '\u2212');
 /** Differences at the rounding level: 0 or an exponent, never a misleading 0.000000. */
 const tiny = (value) => (value === 0 ? '0 (identical)' : value.toExponential(1).replace('-', '\u2212'));
-
-function el(tag, className, text) {
-  const node = document.createElement(tag);
-  if (className) node.className = className;
-  if (text !== undefined) node.textContent = text;
-  return node;
-}
 
 export function mount(root, ctx) {
   const { values } = ctx;

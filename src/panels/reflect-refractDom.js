@@ -3,13 +3,7 @@
 // the blend formula with live values. Styles: reflect-refract.css (all under .rr-panel).
 import { renderTex, texNumber } from '../ui/tex.js';
 import { REFLECTION_BANDS } from './reflect-refractModel.js';
-
-function el(tag, className, text) {
-  const node = document.createElement(tag);
-  if (className) node.className = className;
-  if (text !== undefined) node.textContent = text;
-  return node;
-}
+import { el } from '../ui/el.js';
 
 export function buildReflectRefractDom(host) {
   const root = el('div', 'rr-panel');

@@ -2,13 +2,7 @@
 // wavelength and speed, the total-internal-reflection banner), a play/pause button, the numbers
 // and Snell's law with live values. Styles: refraction-waves.css (all under .rw-panel).
 import { renderTex, texNumber } from '../ui/tex.js';
-
-function el(tag, className, text) {
-  const node = document.createElement(tag);
-  if (className) node.className = className;
-  if (text !== undefined) node.textContent = text;
-  return node;
-}
+import { el } from '../ui/el.js';
 
 const angle = (deg) => `${deg.toFixed(2)}°`;
 // A field amplitude: real numbers as they are, complex ones (total internal reflection) as

@@ -1,6 +1,7 @@
 // The table of the refractive-index panel: sort buttons in the header cells (with aria-sort), one
 // "Use" button per row, and the custom row in the footer. Rebuilt from data on every render, so the
 // DOM never disagrees with the values.
+import { el } from '../ui/el.js';
 
 const COLUMNS = [
   { key: 'name', label: 'Material' },
@@ -10,13 +11,6 @@ const COLUMNS = [
   { key: 'critical', label: 'Critical angle to air', numeric: true },
   { key: 'source', label: 'Source' },
 ];
-
-function el(tag, className, text) {
-  const node = document.createElement(tag);
-  if (className) node.className = className;
-  if (text !== undefined) node.textContent = text;
-  return node;
-}
 
 /** n with at least four decimals, and all the data has (air: 1.000293). */
 export function formatIndex(n) {

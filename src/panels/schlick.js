@@ -4,11 +4,11 @@
 import './schlick.css';
 import { renderTex, texElement } from '../ui/tex.js';
 import { createLinePlot } from '../ui/createLinePlot.js';
-import { cssVar } from '../ui/theme.js';
 import {
   fresnelExact, fresnelSchlick, fresnelSchlickTIR, normalIncidence, snellCosT,
 } from '../optics/fresnel.js';
 import { schlickComparison } from '../optics/schlickComparison.js';
+import { el } from '../ui/el.js';
 
 export const id = 'schlick';
 export const title = "Schlick's approximation";
@@ -34,13 +34,6 @@ const SERIES = [
 
 const fixed = (value, digits = 6) => value.toFixed(digits).replace('-', MINUS);
 const deg = (value) => `${value.toFixed(2)}°`;
-
-function el(tag, className, text) {
-  const node = document.createElement(tag);
-  if (className) node.className = className;
-  if (text !== undefined) node.textContent = text;
-  return node;
-}
 
 export function mount(root, ctx) {
   const { values } = ctx;
@@ -175,18 +168,7 @@ export function mount(root, ctx) {
         },
       };
     },
-    png() {
-      // The plot on the panel's background, so the export reads in any viewer.
-      const source = plot.plot.ctx.canvas;
-      const canvas = document.createElement('canvas');
-      canvas.width = source.width;
-      canvas.height = source.height;
-      const g = canvas.getContext('2d');
-      g.fillStyle = cssVar('--panel', '#161b22');
-      g.fillRect(0, 0, canvas.width, canvas.height);
-      g.drawImage(source, 0, 0);
-      return canvas.toDataURL('image/png');
-    },
+    png: () => plot.toPng(),
     dispose() {
       plot.dispose();
       panel.remove();

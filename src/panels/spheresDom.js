@@ -1,16 +1,10 @@
 // The DOM of the spheres panel: stage (canvas, labels, legend), readouts, plot host, toolbar.
 // Plain elements with classes styled in src/styles.css; numbers use tabular figures so they
 // update without the layout jumping.
+import { el } from '../ui/el.js';
 
 export function formatAngle(deg) {
   return `${deg.toFixed(2)}°`;
-}
-
-function el(tag, className, text) {
-  const node = document.createElement(tag);
-  if (className) node.className = className;
-  if (text !== undefined) node.textContent = text;
-  return node;
 }
 
 export function buildSpheresDom(host) {

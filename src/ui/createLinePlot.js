@@ -74,6 +74,37 @@ export function createLinePlot(container, options) {
       marks = next.filter((m) => m && m.x != null && Number.isFinite(m.x));
       plot.redraw(false, false);
     },
+    /** The plot as a PNG data URL on the panel's background, with its legend drawn underneath
+     *  (uPlot's legend is HTML, so a plain canvas copy would lose it). */
+    toPng() {
+      const source = plot.ctx.canvas;
+      const ratio = window.devicePixelRatio || 1;
+      const row = Math.round(30 * ratio);
+      const out = document.createElement('canvas');
+      out.width = source.width;
+      out.height = source.height + row;
+      const g = out.getContext('2d');
+      g.fillStyle = cssVar('--panel', '#161b22');
+      g.fillRect(0, 0, out.width, out.height);
+      g.drawImage(source, 0, 0);
+      g.font = `${Math.round(15 * ratio)}px system-ui, sans-serif`;
+      g.textBaseline = 'middle';
+      let x = plot.bbox.left;
+      const y = source.height + row / 2;
+      for (const s of series) {
+        g.strokeStyle = resolveColor(s.stroke);
+        g.lineWidth = 3 * ratio;
+        g.setLineDash((s.dash ?? []).map((d) => d * ratio));
+        g.beginPath();
+        g.moveTo(x, y);
+        g.lineTo(x + 24 * ratio, y);
+        g.stroke();
+        g.fillStyle = cssVar('--text', '#eee');
+        g.fillText(s.label, x + 30 * ratio, y);
+        x += 30 * ratio + g.measureText(s.label).width + 20 * ratio;
+      }
+      return out.toDataURL('image/png');
+    },
     dispose() {
       window.removeEventListener('fresnel-lab:theme', onTheme);
       resize.disconnect();

@@ -8,15 +8,9 @@ import { readUrlState, urlWriter } from './urlState.js';
 import { showNotice } from './notices.js';
 import { copyText, downloadText, downloadUrl, toCsv } from './exporters.js';
 import { embedCode, embedUrl, lectureUrl } from './shareLinks.js';
+import { el } from './el.js';
 
 let nextDescriptionId = 0;
-
-function el(tag, className, text) {
-  const node = document.createElement(tag);
-  if (className) node.className = className;
-  if (text !== undefined) node.textContent = text;
-  return node;
-}
 
 /**
  * container: where the panel lives (a section's .panel-mount, or the embed root).

@@ -1,0 +1,7 @@
+// The one DOM helper every panel uses: an element with a class and text, never innerHTML.
+export function el(tag, className, text) {
+  const node = document.createElement(tag);
+  if (className) node.className = className;
+  if (text !== undefined) node.textContent = text;
+  return node;
+}
