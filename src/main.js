@@ -40,7 +40,11 @@ const page = readParams(pageSchema, new URLSearchParams(window.location.search))
 showNotice(document.querySelector('main'), 'A page setting in the link was not usable:', page.problems.map(describeProblem));
 const maxLive = Math.round(page.values.maxContexts);
 
-const sections = [...document.querySelectorAll('section[data-panel]')].filter((s) => s.dataset.panel in panelLoaders);
+// A section whose panel is not in this build is left out rather than shown empty.
+for (const section of document.querySelectorAll('section[data-panel]')) {
+  if (!(section.dataset.panel in panelLoaders)) section.remove();
+}
+const sections = [...document.querySelectorAll('section[data-panel]')];
 window.fresnelLab.ready = (async () => {
   const entries = await Promise.all(sections.map(async (section) => {
     const id = section.dataset.panel;
@@ -55,6 +59,7 @@ window.fresnelLab.ready = (async () => {
       return null;
     }
   }));
-  managePanels(entries.filter(Boolean), { maxLive });
+  const manager = managePanels(entries.filter(Boolean), { maxLive });
   setupLectureMode(sections, { onHideControls: controls.toggleControls });
+  await manager.first; // `ready` means the panels on screen are mounted
 })();

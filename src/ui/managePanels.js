@@ -36,6 +36,8 @@ export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = 
     }
   }
 
+  let firstSettled;
+  const first = new Promise((resolve) => { firstSettled = resolve; });
   const observer = new IntersectionObserver((records) => {
     for (const record of records) {
       const entry = entries.find((e) => e.section === record.target);
@@ -43,6 +45,7 @@ export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = 
       else near.delete(entry);
     }
     settle();
+    firstSettled();
   }, { rootMargin: margin });
   for (const { section } of entries) observer.observe(section);
 
@@ -59,6 +62,8 @@ export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = 
   window.addEventListener('scroll', onScroll, { passive: true });
   return {
     settle,
+    /** Resolves once the panels near the screen at start have mounted. */
+    first,
     disconnect() {
       observer.disconnect();
       window.removeEventListener('scroll', onScroll);
