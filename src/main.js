@@ -59,7 +59,8 @@ window.fresnelLab.ready = (async () => {
       return null;
     }
   }));
+  const lecture = setupLectureMode(sections, { onHideControls: controls.toggleControls });
+  lecture.holdHashTarget();
   const manager = managePanels(entries.filter(Boolean), { maxLive });
-  setupLectureMode(sections, { onHideControls: controls.toggleControls });
   await manager.first; // `ready` means the panels on screen are mounted
 })();

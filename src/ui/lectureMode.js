@@ -56,8 +56,26 @@ export function setupLectureMode(sections, { onHideControls } = {}) {
   };
   document.addEventListener('keydown', onKey);
 
-  if (window.location.hash && sections[current]) sections[current].scrollIntoView({ block: 'start' });
-  return { goTo, get current() { return current; } };
+  return {
+    goTo,
+    get current() { return current; },
+    /** Keeps the panel named in the hash at the top while the panels around it mount and change
+     *  height, until the reader scrolls or types (a reload returns to the panel, not near it). */
+    holdHashTarget(ms = 2500) {
+      const target = window.location.hash && sections.find((s) => `#${s.id}` === window.location.hash);
+      if (!target) return;
+      const place = () => target.scrollIntoView({ block: 'start' });
+      place();
+      const resize = new ResizeObserver(place);
+      resize.observe(document.querySelector('main') ?? document.body);
+      const stop = () => {
+        resize.disconnect();
+        for (const type of ['wheel', 'keydown', 'touchstart', 'pointerdown']) window.removeEventListener(type, stop, true);
+      };
+      for (const type of ['wheel', 'keydown', 'touchstart', 'pointerdown']) window.addEventListener(type, stop, true);
+      setTimeout(stop, ms);
+    },
+  };
 }
 
 export function toggleFullscreen() {
