@@ -1,0 +1,52 @@
+// Typed arrays ready for three.js: one entry per texture of the technique, each with a `mipmaps`
+// array for a DataTexture ([{ data, width, height }], level 0 first, down to 1×1). Passing the
+// whole chain makes three.js upload every level itself and set generateMipmaps = false (three.js
+// WebGLTextures.js; note §8). The panel maps format 'RGBA' | 'RG' | 'R' to RGBAFormat / RGFormat /
+// RedFormat and type 'u8' | 'f16' | 'f32' to UnsignedByteType / HalfFloatType / FloatType, keeps
+// NoColorSpace (an sRGB RGBA8 texture would decode the vectors as colours, note §8), and decodes
+// u8 in the shader with value = min + (max − min)·c using `ranges` (per texture component).
+import { halfBits, halfBitsOfFloat32Bits } from './float16Bits.js';
+import { encodeUnorm8 } from './storagePrecision.js';
+
+// One component at a time (stride w in the output), so the precision test is outside the loop.
+function packLevel({ size, data }, chain, sources, ranges) {
+  const n = size * size;
+  const w = sources.length;
+  const cw = chain.components;
+  const out = chain.precision === 'u8' ? new Uint8Array(n * w)
+    : chain.precision === 'f16' ? new Uint16Array(n * w) : new Float32Array(n * w);
+  const bits = new Uint32Array(data.buffer, data.byteOffset, data.length);
+  for (let k = 0; k < w; k++) {
+    const src = sources[k];
+    if (typeof src !== 'number') {
+      const padded = chain.precision === 'u8' ? encodeUnorm8(src.pad, 0, 1) : chain.precision === 'f16' ? halfBits(src.pad) : src.pad;
+      for (let t = 0; t < n; t++) out[t * w + k] = padded;
+    } else if (chain.precision === 'u8') {
+      const { min, max } = ranges[k];
+      for (let t = 0; t < n; t++) out[t * w + k] = encodeUnorm8(data[t * cw + src], min, max);
+    } else if (chain.precision === 'f16') {
+      // exact: the chain holds binary16 values already
+      for (let t = 0; t < n; t++) out[t * w + k] = halfBitsOfFloat32Bits(bits[t * cw + src]);
+    } else {
+      for (let t = 0; t < n; t++) out[t * w + k] = data[t * cw + src];
+    }
+  }
+  return { data: out, width: size, height: size };
+}
+
+/**
+ * uploadLevels(chain) → [{ format, type, ranges: [{ min, max }], names, mipmaps }] per texture.
+ * Values round-trip exactly: the chain already holds quantized values.
+ */
+export function uploadLevels(chain) {
+  return chain.textures.map(({ format, sources }) => {
+    const ranges = sources.map((s) => (typeof s === 'number' ? chain.layout[s] : { min: 0, max: 1 }));
+    return {
+      format,
+      type: chain.precision,
+      ranges: ranges.map(({ min, max }) => ({ min, max })),
+      names: sources.map((s) => (typeof s === 'number' ? chain.layout[s].name : 'pad')),
+      mipmaps: chain.levels.map((level) => packLevel(level, chain, sources, ranges)),
+    };
+  });
+}
