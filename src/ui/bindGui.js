@@ -12,7 +12,13 @@ export function bindGui(gui, schema, values, onChange, keys = Object.keys(schema
     const spec = schema[key];
     let controller;
     if (spec.type === 'number') controller = gui.add(values, key, spec.min, spec.max, spec.step);
-    else if (spec.type === 'enum') controller = gui.add(values, key, spec.options);
+    else if (spec.type === 'enum') {
+      // Schemas list options as values or as { value: label }; lil-gui wants { label: value }.
+      const options = Array.isArray(spec.options)
+        ? spec.options
+        : Object.fromEntries(Object.entries(spec.options).map(([value, label]) => [label, value]));
+      controller = gui.add(values, key, options);
+    }
     else if (spec.type === 'color') controller = gui.addColor(values, key);
     else controller = gui.add(values, key);
     controller.name(spec.label ?? key).onChange((value) => onChange(key, value));
