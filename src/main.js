@@ -60,7 +60,7 @@ window.fresnelLab.ready = (async () => {
     }
   }));
   const lecture = setupLectureMode(sections, { onHideControls: controls.toggleControls });
-  lecture.holdHashTarget();
   const manager = managePanels(entries.filter(Boolean), { maxLive });
+  lecture.holdHashTarget(manager.first);
   await manager.first; // `ready` means the panels on screen are mounted
 })();

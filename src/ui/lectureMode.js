@@ -56,26 +56,36 @@ export function setupLectureMode(sections, { onHideControls } = {}) {
   };
   document.addEventListener('keydown', onKey);
 
-  return {
+  const api = {
     goTo,
     get current() { return current; },
     /** Keeps the panel named in the hash at the top while the panels around it mount and change
-     *  height, until the reader scrolls or types (a reload returns to the panel, not near it). */
-    holdHashTarget(ms = 2500) {
+     *  height (until `settled` resolves, and a moment after), unless the reader scrolls or types:
+     *  a reload returns to the panel, not near it. */
+    holdHashTarget(settled = Promise.resolve(), afterMs = 1500) {
       const target = window.location.hash && sections.find((s) => `#${s.id}` === window.location.hash);
       if (!target) return;
       const place = () => target.scrollIntoView({ block: 'start' });
       place();
       const resize = new ResizeObserver(place);
       resize.observe(document.querySelector('main') ?? document.body);
+      const events = ['wheel', 'keydown', 'touchstart', 'pointerdown'];
       const stop = () => {
         resize.disconnect();
-        for (const type of ['wheel', 'keydown', 'touchstart', 'pointerdown']) window.removeEventListener(type, stop, true);
+        for (const type of events) window.removeEventListener(type, stop, true);
       };
-      for (const type of ['wheel', 'keydown', 'touchstart', 'pointerdown']) window.addEventListener(type, stop, true);
-      setTimeout(stop, ms);
+      for (const type of events) window.addEventListener(type, stop, true);
+      settled.finally(() => setTimeout(stop, afterMs));
     },
   };
+  // A link to #panel within the page: the browser jumps there; hold it while the panels near it mount.
+  window.addEventListener('hashchange', () => {
+    const index = sections.findIndex((s) => `#${s.id}` === window.location.hash);
+    if (index < 0) return;
+    current = index;
+    api.holdHashTarget();
+  });
+  return api;
 }
 
 export function toggleFullscreen() {

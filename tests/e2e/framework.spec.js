@@ -101,6 +101,7 @@ test('lecture-mode keys move between panels and keep the panel in the hash', asy
   await expect.poll(() => page.locator(`section#${ids[1]}`).evaluate((s) => Math.abs(s.getBoundingClientRect().top))).toBeLessThan(40);
   // Also deep in the page, where the panels above it mount and change height after the load.
   const deep = ids.at(-3); // (the last ones cannot reach the top: the page ends below them)
+  await page.goto('about:blank');
   await page.goto(`./#${deep}`);
   await page.evaluate(() => window.fresnelLab.ready);
   await page.waitForTimeout(1500);
