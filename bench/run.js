@@ -1,0 +1,132 @@
+#!/usr/bin/env node
+// npm run bench [-- --tiny] [-- --out DIR] [-- --dist]
+// The speed-accuracy panel's benchmark, headless: builds the site (into a private folder, so the
+// shared dist/ is left alone; --dist serves dist/ instead, building it only if it is missing),
+// serves it with vite preview on a free loopback port, opens embed.html?panel=speed-accuracy&bench=…
+// in Chromium launched exactly as playwright.config.js launches it (same executable and
+// SwiftShader flags), waits for the panel's run, prints the table, and writes results.json and
+// results.png (the chart) to bench/ (or --out).
+import { chromium } from '@playwright/test';
+import { spawn } from 'node:child_process';
+import { existsSync, mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { createServer } from 'node:net';
+import { tmpdir } from 'node:os';
+import { dirname, join, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import config from '../playwright.config.js';
+
+const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
+const args = process.argv.slice(2);
+const flag = (name) => args.includes(`--${name}`);
+const option = (name, fallback) => {
+  const i = args.findIndex((a) => a === `--${name}` || a.startsWith(`--${name}=`));
+  if (i < 0) return fallback;
+  return args[i].includes('=') ? args[i].split('=').slice(1).join('=') : args[i + 1];
+};
+const size = flag('tiny') ? 'tiny' : option('size', 'normal');
+const outDir = resolve(option('out', join(root, 'bench')));
+const timeoutMs = Number(option('timeout', 600)) * 1000;
+const vite = join(root, 'node_modules', 'vite', 'bin', 'vite.js');
+const log = (text) => process.stderr.write(`[bench] ${text}\n`);
+
+function run(command, commandArgs) {
+  return new Promise((done, fail) => {
+    const child = spawn(process.execPath, [command, ...commandArgs], { cwd: root, stdio: ['ignore', 'ignore', 'inherit'] });
+    child.on('error', fail);
+    child.on('exit', (code) => (code === 0 ? done() : fail(new Error(`${commandArgs.join(' ')} exited with ${code}`))));
+  });
+}
+
+function freePort() {
+  return new Promise((done, fail) => {
+    const server = createServer().listen(0, '127.0.0.1', () => {
+      const { port } = server.address();
+      server.close(() => done(port));
+    });
+    server.on('error', fail);
+  });
+}
+
+async function waitForServer(url, child, ms = 30_000) {
+  const end = Date.now() + ms;
+  while (Date.now() < end) {
+    if (child.exitCode !== null) throw new Error(`vite preview exited with ${child.exitCode}`);
+    try {
+      if ((await fetch(url)).ok) return;
+    } catch {
+      // not up yet
+    }
+    await new Promise((r) => { setTimeout(r, 200); });
+  }
+  throw new Error(`no server at ${url} after ${ms / 1000} s`);
+}
+
+let site = join(root, 'dist');
+let privateBuild = null;
+let server = null;
+let browser = null;
+try {
+  if (flag('dist')) {
+    if (!existsSync(join(site, 'embed.html'))) {
+      log('dist/ is missing: building it');
+      await run(vite, ['build', '--logLevel', 'warn']);
+    }
+  } else {
+    privateBuild = mkdtempSync(join(tmpdir(), 'fresnel-lab-bench-'));
+    site = privateBuild;
+    log(`building the site into ${site}`);
+    await run(vite, ['build', '--outDir', site, '--emptyOutDir', '--logLevel', 'warn']);
+  }
+  const port = await freePort();
+  server = spawn(process.execPath, [vite, 'preview', '--outDir', site, '--host', '127.0.0.1', '--port', String(port), '--strictPort'], {
+    cwd: root, stdio: 'ignore',
+  });
+  const base = `http://127.0.0.1:${port}/`;
+  await waitForServer(base, server);
+
+  const { launchOptions } = config.use;
+  browser = await chromium.launch({ ...launchOptions, headless: true });
+  const page = await browser.newPage({ viewport: config.use.viewport });
+  const problems = [];
+  page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
+  page.on('pageerror', (e) => problems.push(e.message));
+  log(`running the ${size} benchmark in ${browser.version()} (${launchOptions.executablePath ?? 'Playwright Chromium'})`);
+  const started = Date.now();
+  await page.goto(`${base}embed.html?panel=speed-accuracy&bench=${encodeURIComponent(size)}`);
+  await page.evaluate(() => window.fresnelLab.ready);
+  let last = '';
+  const ticker = setInterval(async () => {
+    const text = await page.locator('.sa-status').textContent().catch(() => '');
+    if (text && text !== last) log((last = text));
+  }, 1000);
+  let results;
+  let timer = 0;
+  try {
+    results = await Promise.race([
+      page.evaluate(async () => {
+        const panel = window.fresnelLab.panels['speed-accuracy'];
+        return (await panel.autorun) ? panel.resultsJson() : null;
+      }),
+      new Promise((_r, fail) => { timer = setTimeout(() => fail(new Error(`no results after ${timeoutMs / 1000} s`)), timeoutMs); }),
+    ]);
+  } finally {
+    clearInterval(ticker);
+    clearTimeout(timer);
+  }
+  if (!results) throw new Error(`the benchmark did not finish: ${await page.locator('.sa-status').textContent()}`);
+  results.config = { ...results.config, script: 'bench/run.js', wallSeconds: (Date.now() - started) / 1000, chromium: browser.version() };
+  mkdirSync(outDir, { recursive: true });
+  writeFileSync(join(outDir, 'results.json'), `${JSON.stringify(results, null, 2)}\n`);
+  await page.locator('.sa-chart').screenshot({ path: join(outDir, 'results.png') });
+  const table = await page.evaluate(() => window.fresnelLab.panels['speed-accuracy'].resultsTable());
+  process.stdout.write(`${table}\n`);
+  log(`wrote ${join(outDir, 'results.json')} and results.png in ${((Date.now() - started) / 1000).toFixed(1)} s`);
+  if (problems.length) throw new Error(`the page logged errors:\n${problems.join('\n')}`);
+} catch (error) {
+  log(`failed: ${error.message}`);
+  process.exitCode = 1;
+} finally {
+  await browser?.close();
+  server?.kill('SIGTERM');
+  if (privateBuild) rmSync(privateBuild, { recursive: true, force: true });
+}

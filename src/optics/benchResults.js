@@ -1,0 +1,151 @@
+// The benchmark's results as data: one object for bench/results.json and the panel's JSON
+// export, the same numbers as CSV columns and as a text table. Costs come from a run
+// (timeMethodsGpu, timeMethodsCpu, the frame timing); errors are computed here, against the
+// float64 reference, over each method kind's default domain (scenes.js: opaque plastic for
+// dielectrics, gold and aluminium for conductors), in float64, float32 and float16.
+import { methodError } from './advisor.js';
+import { recommendWithin } from './displayBudgets.js';
+import { METHODS } from './methods.js';
+import { PRECISION_IDS } from './rounding.js';
+import { SCENES, sceneById } from './scenes.js';
+
+export const RESULTS_VERSION = 1;
+export const DEFAULT_DOMAIN = Object.freeze({ dielectric: 'plastic', conductor: 'metal' });
+const DEG = 180 / Math.PI;
+
+/** GLSL precision that runs a scene precision: fp16 → mediump, fp32 or fp64 → highp. */
+export function gpuPrecisionFor(precision) {
+  return precision === 'fp16' ? 'mediump' : 'highp';
+}
+
+/** Error of a method over its kind's default domain: { scene, fp64, fp32, fp16 }, each
+ *  { max, mean, rms, maxCodes, thetaAtMaxDeg, nanCount } (mean and RMS weighted as the scene is). */
+export function methodErrors(method) {
+  const scene = sceneById(DEFAULT_DOMAIN[method.kind]);
+  const out = { scene: scene.id, weighting: scene.weighting };
+  for (const p of PRECISION_IDS) {
+    const e = methodError(scene, method, p);
+    out[p] = {
+      max: e.max, mean: e.mean, rms: e.rms, maxCodes: e.maxCodes,
+      thetaAtMaxDeg: e.thetaAtMax === null ? null : e.thetaAtMax * DEG, nanCount: e.nanCount,
+    };
+  }
+  return out;
+}
+
+/**
+ * Measured cost per method for a scene ({ id: ns }, medians), from a results object: the GPU at
+ * the scene's precision ('gpu') or the CPU ('cpu'). {} when the run has no finite value for
+ * every method of the scene's kind (advisor.recommend wants all or none).
+ */
+export function measuredCosts(results, scene, source = 'gpu') {
+  if (!results) return {};
+  const costs = {};
+  for (const row of results.methods.filter((m) => m.kind === scene.kind)) {
+    const ns = source === 'cpu' ? row.cpu?.nsPerEval?.median
+      : (gpuPrecisionFor(scene.precision) === 'mediump' ? row.gpu?.mediump?.nsPerEval : row.gpu?.nsPerEval)?.median;
+    if (!Number.isFinite(ns)) return {};
+    costs[row.id] = ns;
+  }
+  return costs;
+}
+
+/**
+ * The results object. gpu: timeMethodsGpu's result (or null), cpu: timeMethodsCpu's (or null),
+ * frames: timeFrames' (or null); meta: { date, userAgent, config, gpuError, device
+ * (deviceInfo, for when the GPU timing failed) }.
+ */
+export function benchResults({ gpu = null, cpu = null, frames = null, meta = {} } = {}) {
+  const methods = METHODS.map((m) => {
+    const highp = gpu?.results?.highp?.[m.id];
+    const mediump = gpu?.results?.mediump?.[m.id];
+    return {
+      id: m.id,
+      label: m.label,
+      kind: m.kind,
+      staticCost: m.cost.static,
+      gpu: highp || mediump ? {
+        precision: 'highp', nsPerEval: highp?.nsPerEval ?? null, samples: highp?.samples ?? [],
+        mediump: mediump ? { nsPerEval: mediump.nsPerEval, samples: mediump.samples } : null,
+      } : null,
+      cpu: cpu?.methods?.[m.id] ? { context: 'fp64', nsPerEval: cpu.methods[m.id].nsPerEval, samples: cpu.methods[m.id].samples } : null,
+      error: methodErrors(m),
+    };
+  });
+  const results = {
+    version: RESULTS_VERSION,
+    date: meta.date ?? null,
+    device: {
+      renderer: (gpu?.device ?? meta.device)?.renderer ?? null,
+      vendor: (gpu?.device ?? meta.device)?.vendor ?? null,
+      webgl: (gpu?.device ?? meta.device)?.version ?? null,
+      timer: gpu?.timer ?? null,
+      gpuError: meta.gpuError ?? null,
+      userAgent: meta.userAgent ?? null,
+    },
+    config: {
+      ...meta.config,
+      gpu: gpu ? {
+        size: gpu.size, loops: gpu.loops, passes: gpu.passes, bestOf: gpu.bestOf, repeats: gpu.repeats, evaluationsPerPass: gpu.evaluationsPerPass,
+      } : null,
+    },
+    methods,
+    frames: frames ? {
+      width: frames.width,
+      height: frames.height,
+      timer: frames.spheres.timer ?? null,
+      spheres: { msPerFrame: frames.spheres.msPerFrame, pixels: frames.spheres.pixels },
+      threePhysical: { msPerFrame: frames.threePhysical.msPerFrame, pixels: frames.threePhysical.pixels },
+      ratio: frames.ratio,
+    } : null,
+  };
+  results.recommendations = Object.fromEntries(SCENES.map((scene) => {
+    const costs = measuredCosts(results, scene);
+    const costSource = Object.keys(costs).length ? `measured GPU ns (${gpuPrecisionFor(scene.precision)})` : 'static count';
+    const pick = (budget) => {
+      const r = recommendWithin(scene, costs, budget);
+      return { methodId: r.methodId, invisible: r.invisible, budgetCodes: r.budgetCodes, reason: r.reason };
+    };
+    return [scene.id, { costSource, invisible: pick('invisible'), acceptable: pick('acceptable') }];
+  }));
+  return results;
+}
+
+const fixed = (v, digits) => (Number.isFinite(v) ? v.toFixed(digits) : v === Infinity ? 'inf' : '–');
+const sci = (v) => (Number.isFinite(v) ? v.toExponential(2) : v === Infinity ? 'inf' : '–');
+
+/** CSV columns (one row per method) for the panel's export and the toolbar. */
+export function benchCsv(results) {
+  const m = results.methods;
+  const col = (f) => m.map((row) => f(row) ?? NaN);
+  const columns = { method: m.map((row) => row.id), kind: m.map((row) => row.kind), static_cost: col((r) => r.staticCost) };
+  for (const [name, get] of [['gpu_highp', (r) => r.gpu?.nsPerEval], ['gpu_mediump', (r) => r.gpu?.mediump?.nsPerEval], ['cpu_fp64', (r) => r.cpu?.nsPerEval]]) {
+    for (const stat of ['median', 'min', 'max']) columns[`${name}_ns_${stat}`] = col((r) => get(r)?.[stat]);
+  }
+  for (const p of PRECISION_IDS) {
+    columns[`error_${p}_max`] = col((r) => r.error[p].max);
+    columns[`error_${p}_mean`] = col((r) => r.error[p].mean);
+    columns[`error_${p}_max_codes`] = col((r) => r.error[p].maxCodes);
+  }
+  return { filename: 'fresnel-lab-speed-accuracy.csv', columns };
+}
+
+/** The results as a fixed-width text table (stdout of npm run bench, the README). */
+export function benchTable(results) {
+  const ns = (s) => (s ? `${fixed(s.median, 3)} [${fixed(s.min, 3)}, ${fixed(s.max, 3)}]` : '–');
+  const head = ['method', 'GPU highp ns/eval med [min, max]', 'GPU mediump ns/eval', 'CPU ns/eval', 'max|ΔR| fp64', 'fp32', 'fp16'];
+  const rows = results.methods.map((r) => [
+    r.id, ns(r.gpu?.nsPerEval), ns(r.gpu?.mediump?.nsPerEval), ns(r.cpu?.nsPerEval),
+    sci(r.error.fp64.max), sci(r.error.fp32.max), sci(r.error.fp16.max),
+  ]);
+  const widths = head.map((h, i) => Math.max(h.length, ...rows.map((r) => r[i].length)));
+  const line = (cells) => cells.map((c, i) => c.padEnd(widths[i])).join('  ').trimEnd();
+  const out = [line(head), line(widths.map((w) => '-'.repeat(w))), ...rows.map(line)];
+  const f = results.frames;
+  if (f) {
+    out.push('', `Frames at ${f.width}×${f.height} CSS px: hero spheres ${ns(f.spheres.msPerFrame)} ms, `
+      + `three.js MeshPhysicalMaterial ${ns(f.threePhysical.msPerFrame)} ms, ratio ${fixed(f.ratio, 2)}${f.timer ? ` (${f.timer})` : ''}`);
+  }
+  out.push(`Device: ${results.device.renderer ?? 'no WebGL2'}; timer: ${results.device.timer ?? '–'}`);
+  return out.join('\n');
+}

@@ -1,0 +1,70 @@
+// How much display error a scene may show: budgets in 8-bit sRGB codes for advisor.recommend,
+// and the scene-weighted average display error to show beside the worst one.
+//
+// The criterion is advisor.js's: the worst sample over the scene's domain, at the brightest
+// light (display white), after the sRGB transform, in 8-bit codes. Under the issue's line, half a
+// step ("invisible"), no Schlick variant passes for opaque plastic: its worst pixel is 12.1 codes
+// off (n = 1.3 at 83.6°), and even its average pixel, weighted by projected area (the scene's
+// cosine weighting), is 4.0 codes off, because sRGB steepens the small errors of dark
+// reflections. fresnel-facts.md §7 nonetheless recommends Schlick there, as Filament, Godot,
+// three.js and UE4 ship it: that is a judgement that a visible rim error of a few percent is
+// acceptable. The "acceptable" budget states that judgement as a number, 5 % of the display range
+// (12.75 codes), and says it is one; the student picks the budget.
+import { displayCodes, recommend } from './advisor.js';
+import { sweepDomain } from './errorMetrics.js';
+import { contextFor } from './rounding.js';
+import { referenceFor } from './scenes.js';
+
+export const DISPLAY_BUDGETS = Object.freeze([
+  { id: 'invisible', codes: 0.5, label: 'Invisible: ½ an 8-bit step' },
+  { id: 'one-code', codes: 1, label: '1 code (0.4 % of the range)' },
+  { id: 'one-percent', codes: 2.55, label: '1 % of the range (2.55 codes)' },
+  { id: 'acceptable', codes: 12.75, label: 'Acceptable: 5 % of the range (12.75 codes)' },
+  { id: 'ten-percent', codes: 25.5, label: '10 % of the range (25.5 codes)' },
+].map(Object.freeze));
+
+export const DEFAULT_BUDGET = 'invisible';
+
+/** The budget with this id; throws on an unknown id. */
+export function displayBudget(id) {
+  const found = DISPLAY_BUDGETS.find((b) => b.id === id);
+  if (!found) throw new RangeError(`unknown display budget ${String(id)}`);
+  return found;
+}
+
+/** The criterion in words, for the panel and the recommendation. */
+export const CRITERION = 'worst pixel over the scene (θ and indices), lit at display white, sRGB, 8-bit codes';
+
+const meanCache = new WeakMap();
+
+/**
+ * Average display error in 8-bit codes over the scene's domain with the scene's weighting
+ * (cosine: share of an object's pixels; uniform θ: every angle alike). NaN samples are left
+ * out of the mean (advisor's max already makes such a method fail). Cached per scene object.
+ */
+export function meanDisplayCodes(scene, method, precision = scene.precision) {
+  const P = contextFor(precision);
+  if (!meanCache.has(scene)) meanCache.set(scene, new Map());
+  const cache = meanCache.get(scene);
+  const key = `${method.id}|${P.name}`;
+  if (!cache.has(key)) {
+    cache.set(key, sweepDomain({
+      evaluate: (cos, ...args) => method.evaluate(P, cos, ...args),
+      reference: referenceFor(scene.kind),
+      cases: scene.cases,
+      thetaCount: scene.thetaCount,
+      weighting: scene.weighting,
+      metric: displayCodes,
+    }).mean);
+  }
+  return cache.get(key);
+}
+
+/**
+ * advisor.recommend under a named budget: { ...recommend(), budget, criterion }. costs as for
+ * recommend ({ methodId: cost }, one unit, every method or none).
+ */
+export function recommendWithin(scene, costs, budgetId = DEFAULT_BUDGET, options = {}) {
+  const budget = displayBudget(budgetId);
+  return { ...recommend(scene, costs, { ...options, budgetCodes: budget.codes }), budget, criterion: CRITERION };
+}

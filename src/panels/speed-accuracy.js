@@ -1,0 +1,225 @@
+// Panel `speed-accuracy`: every Fresnel method as a point, cost against worst display error, for a
+// scene (domain and precision from scenes.js), with the Pareto front, the chosen budget as a line,
+// and the advisor's pick (advisor.recommend via displayBudgets.recommendWithin) with its reason.
+// Costs are the static instruction counts (methods.js, fresnel-facts §1) until "Run benchmark"
+// measures them on this device (GPU ns per evaluation at the scene's precision, or CPU ns).
+// ?bench=normal|tiny runs the benchmark on load (npm run bench uses it).
+import { benchCsv, benchResults, benchTable, gpuPrecisionFor, measuredCosts } from '../optics/benchResults.js';
+import {
+  CRITERION, DEFAULT_BUDGET, DISPLAY_BUDGETS, displayBudget, meanDisplayCodes, recommendWithin,
+} from '../optics/displayBudgets.js';
+import { methodById } from '../optics/methods.js';
+import { paretoFront } from '../optics/paretoFront.js';
+import { SCENES, sceneById } from '../optics/scenes.js';
+import { downloadText } from '../ui/exporters.js';
+import { BENCH_SIZES, loadCachedResults, runBenchmark, saveCachedResults } from './speed-accuracyBench.js';
+import { createScatter } from './speed-accuracyChart.js';
+import { buildSpeedAccuracyDom, formatCodes, formatNs } from './speed-accuracyDom.js';
+import './speed-accuracy.css';
+
+export const id = 'speed-accuracy';
+export const title = 'Speed against accuracy';
+export const usesWebGL = false; // the chart is 2D; WebGL contexts live only while a benchmark runs
+export const materialParam = null;
+export const schema = {
+  scene: { type: 'enum', default: 'plastic', options: Object.fromEntries(SCENES.map((s) => [s.id, s.label])), label: 'Scene' },
+  budget: {
+    type: 'enum', default: DEFAULT_BUDGET, options: Object.fromEntries(DISPLAY_BUDGETS.map((b) => [b.id, b.label])), label: 'Error budget',
+  },
+  cost: {
+    type: 'enum', default: 'gpu',
+    options: { gpu: 'GPU ns per evaluation', cpu: 'CPU ns per evaluation (JS)', static: 'Static instruction count' },
+    label: 'Cost axis',
+  },
+};
+
+const PRECISION_WORDS = { fp32: 'float32 (highp)', fp16: 'float16 (mediump)' };
+
+function caseText(kind, args) {
+  if (!args) return '';
+  return kind === 'dielectric' ? `n ${args[0]} → ${+args[1].toFixed(3)}` : `n ${args[0]}, k ${args[1]}`;
+}
+
+/**
+ * lil-gui selects that show each option's label: lil-gui takes { label: value }, the schema holds
+ * { value: label } (params.js), so this inverts it (ctx.bind passes the schema's map as is).
+ */
+function bindLabelled(ctx, folder, keys) {
+  return keys.map((key) => {
+    const spec = schema[key];
+    const options = Object.fromEntries(Object.entries(spec.options).map(([value, label]) => [label, value]));
+    return folder.add(ctx.values, key, options).name(spec.label).onChange(() => ctx.changed([key]));
+  });
+}
+
+/** A warning when timings overlap so much that their order is not to be trusted. */
+function noiseNote(rows) {
+  const noisy = rows.filter((r) => Number.isFinite(r.xMin) && (r.xMax - r.xMin > Math.abs(r.x) || r.x <= 0));
+  return noisy.length ? ` ${noisy.length} of ${rows.length} timings vary by more than their median (or are ≤ 0): `
+    + 'the machine was busy, so the order of close methods is uncertain; run again when it is idle.' : '';
+}
+
+export function mount(root, ctx) {
+  const { values } = ctx;
+  let results = loadCachedResults();
+  let controller = null;
+  let running = null;
+  let view = null; // the last drawn state, for describe() and csv()
+
+  const dom = buildSpeedAccuracyDom(root, {
+    onRun: () => { run('normal').catch(() => {}); },
+    onCancel: () => controller?.abort(new DOMException('Benchmark cancelled', 'AbortError')),
+    onJson: () => downloadText('fresnel-lab-speed-accuracy.json', `${JSON.stringify(currentResults(), null, 2)}\n`, 'application/json'),
+  });
+  const chart = createScatter(dom.chartHost, {
+    ariaLabel: 'Scatter of every Fresnel method: cost across, worst display error up (log scale), with the Pareto '
+      + 'front and the error budget as a line. The table below lists the same numbers.',
+  });
+  const controllers = bindLabelled(ctx, ctx.gui.addFolder('Scene and budget'), ['scene', 'budget', 'cost']);
+
+  /** Results to export: the last run, or errors and static costs only. */
+  const currentResults = () => results ?? benchResults({ meta: { date: new Date().toISOString() } });
+
+  function costOf(method, scene, mode) {
+    if (mode === 'static' || !results) return { x: method.cost.static, text: `${method.cost.static}` };
+    const row = results.methods.find((m) => m.id === method.id);
+    const spread = mode === 'cpu' ? row?.cpu?.nsPerEval
+      : gpuPrecisionFor(scene.precision) === 'mediump' ? row?.gpu?.mediump?.nsPerEval : row?.gpu?.nsPerEval;
+    if (!spread || !Number.isFinite(spread.median)) return null;
+    return { x: spread.median, xMin: spread.min, xMax: spread.max, text: formatNs(spread) };
+  }
+
+  function update() {
+    for (const c of controllers) c.updateDisplay();
+    const scene = sceneById(values.scene);
+    const budget = displayBudget(values.budget);
+    const wanted = values.cost;
+    const measured = wanted !== 'static' && Object.keys(measuredCosts(results, scene, wanted)).length > 0;
+    const mode = measured ? wanted : 'static';
+    const rec = recommendWithin(scene, measured ? measuredCosts(results, scene, mode) : {}, budget.id);
+    const rows = rec.table.map((r) => {
+      const method = methodById(r.methodId);
+      const cost = costOf(method, scene, mode);
+      return {
+        ...r, ...cost, costText: cost.text,
+        meanCodes: meanDisplayCodes(scene, method), caseText: caseText(scene.kind, r.caseAtMax), recommended: r.methodId === rec.methodId,
+      };
+    });
+    const points = rows.map((r) => ({
+      id: r.methodId, x: r.x, xMin: r.xMin, xMax: r.xMax, y: r.maxCodes, nan: !Number.isFinite(r.maxCodes),
+      passes: r.passes, recommended: r.recommended,
+    }));
+    const front = paretoFront(points.map((p) => ({ x: p.x, y: p.nan ? Infinity : p.y })));
+    rows.forEach((r, i) => { r.onFront = front.includes(i); });
+    const unit = mode === 'static' ? 'static instruction count (SPIR-V, fresnel-facts §1)'
+      : mode === 'cpu' ? 'CPU ns per evaluation (JS, float64; median, min–max)'
+        : `GPU ns per evaluation, ${gpuPrecisionFor(scene.precision)} (median, min–max)`;
+    chart.setData({
+      points, front, budget: { codes: budget.codes, label: `${budget.codes} codes` },
+      xLabel: `Cost: ${unit}`, yLabel: 'Worst display error, 8-bit codes (log)',
+      title: `${scene.label}, ${PRECISION_WORDS[scene.precision]}`,
+    });
+    const chosen = rows.find((r) => r.recommended);
+    const costNote = mode === 'static'
+      ? (wanted === 'static' ? 'Costs: static instruction counts.' : 'Costs: static instruction counts until you run the benchmark.')
+      : `Costs: measured here (${mode === 'cpu' ? 'CPU, JavaScript' : `GPU, ${gpuPrecisionFor(scene.precision)}`}).${noiseNote(rows)}`;
+    dom.setAdvice({
+      label: chosen.label,
+      sceneLabel: `${scene.label.toLowerCase()}, ${PRECISION_WORDS[rec.precision] ?? rec.precision}`,
+      reasonText: rec.reason,
+      criterionText: `Criterion: ${CRITERION}. Budget: ${budget.label}. ${costNote} Domain: ${scene.note}`,
+    });
+    dom.setTable(rows, {
+      costHeader: mode === 'static' ? 'Cost (static count)' : `Cost (${mode === 'cpu' ? 'CPU' : 'GPU'} ns/eval)`,
+      captionText: `${scene.label}: every method, cheapest first`,
+      budgetCodes: budget.codes,
+    });
+    dom.setDevice(deviceText());
+    view = { scene, budget, rec, rows, mode, chosen };
+  }
+
+  function deviceText() {
+    if (!results) return 'No benchmark run yet on this device: the costs are static instruction counts.';
+    const f = results.frames;
+    const frames = f ? ` Frame at ${f.width}×${f.height}: hero spheres ${formatNs(f.spheres.msPerFrame).replace(' ns', ' ms')}, `
+      + `three.js MeshPhysicalMaterial ${formatNs(f.threePhysical.msPerFrame).replace(' ns', ' ms')} (×${f.ratio.toFixed(2)}).` : '';
+    const failed = results.device.gpuError ? ` GPU timing failed: ${results.device.gpuError}` : '';
+    return `Measured ${results.date ? new Date(results.date).toLocaleString() : ''} on ${results.device.renderer ?? 'no WebGL2 (CPU only)'}; `
+      + `timer: ${results.device.timer ?? '–'}.${frames}${failed}`;
+  }
+
+  async function run(size) {
+    if (running) return running;
+    controller = new AbortController();
+    dom.setRunning(true);
+    const started = performance.now();
+    running = runBenchmark(dom.stage, {
+      size, signal: controller.signal, onProgress: (fraction, label) => dom.setProgress(fraction, label),
+    }).then((next) => {
+      results = next;
+      saveCachedResults(next);
+      dom.setStatus(`Done in ${((performance.now() - started) / 1000).toFixed(1)} s`);
+      ctx.changed([]); // redraws (update) and refreshes the description
+      return next;
+    }, (error) => {
+      dom.setStatus(error?.name === 'AbortError' ? 'Cancelled' : `Benchmark failed: ${error?.message ?? error}`);
+      if (error?.name !== 'AbortError') console.warn(error);
+      throw error;
+    }).finally(() => {
+      dom.setRunning(false);
+      running = null;
+      controller = null;
+    });
+    return running;
+  }
+
+  update();
+  const auto = new URLSearchParams(window.location.search).get('bench');
+  const autorun = auto && Object.hasOwn(BENCH_SIZES, auto) ? run(auto).catch(() => null) : null;
+
+  return {
+    chart,
+    get results() { return results; },
+    get view() { return view; },
+    /** The auto-run started by ?bench=…, or null. */
+    autorun,
+    run,
+    update,
+    describe() {
+      const { scene, budget, chosen, rows, mode } = view;
+      const worst = rows.filter((r) => r.methodId !== chosen.methodId).sort((a, b) => b.maxCodes - a.maxCodes)[0];
+      return `For ${scene.label.toLowerCase()} in ${PRECISION_WORDS[scene.precision]}, with a budget of ${budget.codes} `
+        + `8-bit codes at the worst pixel, the recommendation is ${chosen.label}: worst error ${formatCodes(chosen.maxCodes)} codes, `
+        + `cost ${chosen.costText}${mode === 'static' ? ' (static count)' : ''}. `
+        + `${rows.filter((r) => r.passes).length} of ${rows.length} methods are within the budget; `
+        + `the worst is ${worst?.label ?? '–'} at ${formatCodes(worst?.maxCodes)} codes.`;
+    },
+    csv() {
+      const { rows, scene, mode } = view;
+      return {
+        filename: `speed-accuracy-${scene.id}.csv`,
+        columns: {
+          method: rows.map((r) => r.methodId),
+          [`cost_${mode}`]: rows.map((r) => r.x ?? NaN),
+          cost_min: rows.map((r) => r.xMin ?? NaN),
+          cost_max: rows.map((r) => r.xMax ?? NaN),
+          worst_codes: rows.map((r) => r.maxCodes),
+          mean_codes: rows.map((r) => r.meanCodes),
+          max_abs_error: rows.map((r) => r.max),
+          theta_at_max_deg: rows.map((r) => (r.thetaAtMax === null ? NaN : (r.thetaAtMax * 180) / Math.PI)),
+          within_budget: rows.map((r) => (r.passes ? 1 : 0)),
+          on_front: rows.map((r) => (r.onFront ? 1 : 0)),
+        },
+      };
+    },
+    /** The full results (the last run, or errors only) as benchCsv columns. */
+    resultsCsv: () => benchCsv(currentResults()),
+    resultsJson: () => currentResults(),
+    resultsTable: () => benchTable(currentResults()),
+    png: () => chart.toDataURL(),
+    dispose() {
+      controller?.abort(new DOMException('Panel closed', 'AbortError'));
+      chart.dispose();
+    },
+  };
+}

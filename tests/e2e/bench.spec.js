@@ -1,0 +1,58 @@
+// `npm run bench -- --tiny` end to end: it builds the site into a private folder, serves it,
+// runs the speed-accuracy benchmark in headless Chromium (launched as playwright.config.js does)
+// and writes results.json and results.png; here into a temporary folder, so bench/ keeps the
+// committed full-size run.
+import { test, expect } from '@playwright/test';
+import { execFile } from 'node:child_process';
+import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+
+const METHOD_IDS = [
+  'exact-cg', 'exact-cg-literal', 'exact-sp', 'schlick-pow', 'schlick-mul', 'schlick-tir', 'schlick-exp2',
+  'conductor-exact', 'conductor-schlick', 'conductor-f82',
+];
+
+const isSpread = (s) => s && ['median', 'min', 'max'].every((k) => Number.isFinite(s[k])) && s.min <= s.median && s.median <= s.max;
+
+test('npm run bench -- --tiny writes a valid results.json and a chart PNG', async () => {
+  test.setTimeout(120_000);
+  const out = mkdtempSync(join(tmpdir(), 'fresnel-lab-bench-test-'));
+  try {
+    const { code, stdout, stderr } = await new Promise((done) => {
+      execFile(process.execPath, ['bench/run.js', '--tiny', '--out', out], { timeout: 110_000 }, (error, so, se) => {
+        done({ code: error ? (error.code ?? 1) : 0, stdout: so, stderr: se });
+      });
+    });
+    expect(code, stderr).toBe(0);
+    for (const id of METHOD_IDS) expect(stdout).toContain(id);
+    expect(stdout).toMatch(/Frames at 150×50 CSS px/);
+
+    const results = JSON.parse(readFileSync(join(out, 'results.json'), 'utf8'));
+    expect(typeof results.device.renderer).toBe('string');
+    expect(results.device.timer).toMatch(/EXT_disjoint_timer_query_webgl2|wall clock/);
+    expect(results.config.size).toBe('tiny');
+    expect(results.methods.map((m) => m.id)).toEqual(METHOD_IDS);
+    for (const m of results.methods) {
+      expect(isSpread(m.gpu.nsPerEval), `${m.id} gpu`).toBe(true);
+      expect(isSpread(m.gpu.mediump.nsPerEval), `${m.id} gpu mediump`).toBe(true);
+      expect(isSpread(m.cpu.nsPerEval), `${m.id} cpu`).toBe(true);
+      for (const p of ['fp64', 'fp32', 'fp16']) {
+        expect(Number.isFinite(m.error[p].max), `${m.id} ${p}`).toBe(true);
+        expect(m.error[p].mean).toBeLessThanOrEqual(m.error[p].max);
+      }
+    }
+    const exact = results.methods.find((m) => m.id === 'exact-cg').error;
+    expect(exact.fp64.max).toBeLessThan(exact.fp32.max);
+    expect(isSpread(results.frames.spheres.msPerFrame)).toBe(true);
+    expect(isSpread(results.frames.threePhysical.msPerFrame)).toBe(true);
+    expect(results.frames.ratio).toBeCloseTo(results.frames.threePhysical.msPerFrame.median / results.frames.spheres.msPerFrame.median, 9);
+    expect(results.recommendations.plastic.invisible.methodId).toMatch(/^exact-/);
+
+    const png = readFileSync(join(out, 'results.png'));
+    expect(png.subarray(1, 4).toString()).toBe('PNG');
+    expect(png.length).toBeGreaterThan(5000);
+  } finally {
+    rmSync(out, { recursive: true, force: true });
+  }
+});
