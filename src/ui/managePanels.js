@@ -10,7 +10,26 @@ export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = 
     return Math.abs(r.top + r.height / 2 - window.innerHeight / 2);
   };
 
+  // The section under the middle of the screen: mounting panels above it must not move it.
+  const anchorEntry = () => {
+    const middle = window.innerHeight / 2;
+    return entries.find(({ section }) => {
+      const r = section.getBoundingClientRect();
+      return r.top <= middle && r.bottom >= middle;
+    }) ?? null;
+  };
+
   function settle() {
+    const anchor = anchorEntry();
+    const before = anchor?.section.getBoundingClientRect().top;
+    mountAndUnmount();
+    if (anchor) {
+      const shift = anchor.section.getBoundingClientRect().top - before;
+      if (Math.abs(shift) >= 1) window.scrollBy(0, shift); // keep the reader's panel where it was
+    }
+  }
+
+  function mountAndUnmount() {
     for (const entry of entries) {
       if (entry.host.mounted && entry.host.usesWebGL && !near.has(entry)) entry.host.unmount();
     }
