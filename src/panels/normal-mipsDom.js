@@ -1,0 +1,97 @@
+// The DOM of the normal-mips panel: the stage (canvas with its two captions and the ground-truth
+// sample counter), a line of key numbers, the mip-level legend of the overlay and the error table
+// (RMSE per technique, overall and per mip-level band). Styles: normal-mips.css (under .nm-panel).
+import { colormapGradient } from '../ui/colormap.js';
+import { el } from '../ui/el.js';
+
+const fmt = (x) => (Number.isFinite(x) ? x.toFixed(4) : '–');
+
+export function buildNormalMipsDom(host) {
+  const root = el('div', 'nm-panel');
+  const stage = el('div', 'nm-stage');
+  const canvas = el('canvas', 'nm-canvas');
+  canvas.setAttribute('role', 'img');
+  canvas.setAttribute('aria-label',
+    'A bumpy plane receding to the horizon under a low sun: on the left the highlight from the chosen mip technique, on the right the supersampled ground truth.');
+  const leftCap = el('div', 'nm-cap nm-cap-left');
+  const rightCap = el('div', 'nm-cap nm-cap-right');
+  const message = el('div', 'nm-message');
+  message.hidden = true;
+  stage.append(canvas, leftCap, rightCap, message);
+
+  const summary = el('p', 'nm-summary');
+  summary.setAttribute('aria-live', 'polite');
+  const legend = el('div', 'nm-legend');
+  const legendBar = el('span', 'nm-legend-bar');
+  legendBar.style.background = colormapGradient();
+  const legendLo = el('span', '', 'level 0');
+  const legendHi = el('span', '');
+  const legendLabel = el('span', 'nm-legend-label', 'Overlay / difference colours:');
+  legend.append(legendLabel, legendLo, legendBar, legendHi);
+
+  const table = el('table', 'nm-errors');
+  const caption = el('caption', '', 'RMSE of each technique against the ground truth (tone-mapped RGB), over the plane and per mip-level band');
+  const thead = el('thead');
+  const tbody = el('tbody');
+  table.append(caption, thead, tbody);
+  const shimmer = el('p', 'nm-shimmer');
+  shimmer.setAttribute('aria-live', 'polite');
+  const tableWrap = el('div', 'nm-table-wrap');
+  tableWrap.append(table);
+  root.append(stage, summary, legend, tableWrap, shimmer);
+  host.append(root);
+
+  return {
+    root,
+    canvas,
+    showStageMessage(text) {
+      stage.classList.add('nm-no-gl');
+      canvas.hidden = true;
+      message.hidden = false;
+      message.textContent = text;
+    },
+    setCaptions(left, right) {
+      leftCap.textContent = left;
+      rightCap.textContent = right;
+      leftCap.hidden = !left;
+      rightCap.hidden = !right;
+    },
+    /** results: { technique: mean |Δ brightness| } or null (not measured for these settings). */
+    setShimmer(results) {
+      shimmer.textContent = results
+        ? `Shimmer (mean brightness change per pixel under a sub-pixel camera move, lower is steadier): ${
+          Object.entries(results).sort((a, b) => a[1] - b[1]).map(([t, v]) => `${t} ${v.toFixed(4)}`).join(', ')}.`
+        : 'Shimmer meter: press “Measure shimmer” to compare how much each technique flickers when the camera moves by less than a pixel.';
+    },
+    setSummary(text) {
+      summary.textContent = text;
+    },
+    setLegend(hiText) {
+      legendHi.textContent = hiText;
+    },
+    /** errors: { technique: bandedRmse result } or null while the truth converges; current is highlighted. */
+    setErrors(errors, current, pendingText) {
+      thead.replaceChildren();
+      tbody.replaceChildren();
+      if (!errors) {
+        const row = el('tr');
+        const cell = el('td', 'nm-pending', pendingText);
+        row.append(cell);
+        tbody.append(row);
+        return;
+      }
+      const first = Object.values(errors)[0];
+      const used = first.bands.filter((b) => Object.values(errors).some((e) => e.bands[b.level].count > 0));
+      const head = el('tr');
+      head.append(el('th', '', 'technique'), el('th', '', 'all'), ...used.map((b) => el('th', '', `λ ${b.level}`)));
+      thead.append(head);
+      const order = Object.entries(errors).sort((a, b) => a[1].rmse - b[1].rmse);
+      for (const [technique, e] of order) {
+        const row = el('tr', technique === current ? 'nm-current' : '');
+        row.dataset.technique = technique;
+        row.append(el('th', '', technique), el('td', '', fmt(e.rmse)), ...used.map((b) => el('td', '', fmt(e.bands[b.level].rmse))));
+        tbody.append(row);
+      }
+    },
+  };
+}

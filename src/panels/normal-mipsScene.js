@@ -1,0 +1,270 @@
+// The receding plane of the normal-mips panel: one fragment program (shaders/normal-mips.frag.glsl)
+// run in three passes into float targets: the technique's picture, the progressive ground truth
+// (a running mean over frames, stopped at a sample cap) and the composited display. Every
+// technique's chain is uploaded level by level from uploadLevels(), so the shader samples exactly
+// what the technique stored (three.js uploads texture.mipmaps and sets generateMipmaps = false).
+import {
+  BufferGeometry, DataTexture, Float32BufferAttribute, FloatType, GLSL3, HalfFloatType, LinearFilter,
+  LinearMipmapLinearFilter, Mesh, NearestFilter, NoColorSpace, OrthographicCamera, RawShaderMaterial, RedFormat,
+  RepeatWrapping, RGBAFormat, RGFormat, Scene, UnsignedByteType, Vector2, WebGLRenderTarget,
+} from 'three';
+import { cappedPixelRatio, createRenderer } from '../gl/createRenderer.js';
+import { onDemand } from '../gl/onDemand.js';
+import { shaderSource } from '../gl/shaderChunks.js';
+import { TECHNIQUES } from '../normals/techniqueLayout.js';
+import { uploadLevels } from '../normals/uploadLevels.js';
+import { bandedRmse } from '../optics/bandedRmse.js';
+import { meanBrightnessChange } from '../optics/shimmer.js';
+
+const VERTEX = `precision highp float;
+in vec3 position;
+out vec2 vUv;
+void main() {
+  vUv = position.xy * 0.5 + 0.5;
+  gl_Position = vec4(position.xy, 0.0, 1.0);
+}`;
+const FORMATS = { RGBA: RGBAFormat, RG: RGFormat, R: RedFormat };
+const TYPES = { u8: UnsignedByteType, f16: HalfFloatType, f32: FloatType };
+// Small batches keep each frame short on slow (software) GPUs while the truth accumulates.
+export const SAMPLES_PER_FRAME = 8;
+
+// One DataTexture per uploaded texture, every level supplied; u8 decodes as min + (max − min)·c.
+function makeTexture(upload) {
+  const [first] = upload.mipmaps;
+  const tex = new DataTexture(first.data, first.width, first.height, FORMATS[upload.format], TYPES[upload.type]);
+  tex.mipmaps = upload.mipmaps;
+  tex.generateMipmaps = false;
+  tex.minFilter = LinearMipmapLinearFilter;
+  tex.magFilter = LinearFilter;
+  tex.wrapS = RepeatWrapping;
+  tex.wrapT = RepeatWrapping;
+  tex.colorSpace = NoColorSpace;
+  tex.needsUpdate = true;
+  const unorm = upload.type === 'u8';
+  const scale = [0, 1, 2, 3].map((k) => (unorm && upload.ranges[k] ? upload.ranges[k].max - upload.ranges[k].min : 1));
+  const offset = [0, 1, 2, 3].map((k) => (unorm && upload.ranges[k] ? upload.ranges[k].min : 0));
+  return { tex, scale, offset };
+}
+
+function floatTarget() {
+  return new WebGLRenderTarget(1, 1, {
+    type: FloatType, format: RGBAFormat, minFilter: NearestFilter, magFilter: NearestFilter, depthBuffer: false,
+  });
+}
+
+export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onConverged, maxPixels = 120_000 }) {
+  const renderer = createRenderer(canvas, { antialias: false });
+  const dummy = new DataTexture(new Uint8Array(4), 1, 1);
+  dummy.needsUpdate = true;
+  const u = {
+    uResolution: { value: [1, 1] }, uPass: { value: 0 }, uDebug: { value: 0 },
+    uTexA: { value: dummy }, uTexB: { value: dummy },
+    uScaleA: { value: [1, 1, 1, 1] }, uOffsetA: { value: [0, 0, 0, 0] },
+    uScaleB: { value: [1, 1, 1, 1] }, uOffsetB: { value: [0, 0, 0, 0] },
+    uTechnique: { value: 0 }, uChannels: { value: 3 },
+    uPrev: { value: dummy }, uSamples: { value: SAMPLES_PER_FRAME }, uFrame: { value: 0 }, uBlend: { value: 1 },
+    uTech: { value: dummy }, uTruth: { value: dummy }, uJitter: { value: [0, 0] },
+  };
+  for (const [k, v] of Object.entries(initial)) u[k] = { value: v };
+  const material = new RawShaderMaterial({
+    glslVersion: GLSL3, vertexShader: VERTEX, fragmentShader: shaderSource('normal-mips.frag'), uniforms: u,
+    depthTest: false, depthWrite: false,
+  });
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('position', new Float32BufferAttribute([-1, -1, 0, 3, -1, 0, -1, 3, 0], 3));
+  const mesh = new Mesh(geometry, material);
+  mesh.frustumCulled = false;
+  const scene = new Scene();
+  scene.add(mesh);
+  const camera = new OrthographicCamera();
+  const rtTech = floatTarget();
+  const rtTruth = [floatTarget(), floatTarget()];
+  let textures = {}; // technique → [{ tex, scale, offset }]
+  const state = { technique: 'naive', channels: 3, samples: 0, cap: 256, truthOn: true, errors: null, frame: 0 };
+  let cur = 0;
+
+  function bindTechnique(technique) {
+    const [a, b] = textures[technique] ?? [];
+    u.uTechnique.value = TECHNIQUES.indexOf(technique);
+    u.uTexA.value = a?.tex ?? dummy;
+    u.uScaleA.value = a?.scale ?? [1, 1, 1, 1];
+    u.uOffsetA.value = a?.offset ?? [0, 0, 0, 0];
+    u.uTexB.value = b?.tex ?? dummy;
+    u.uScaleB.value = b?.scale ?? [1, 1, 1, 1];
+    u.uOffsetB.value = b?.offset ?? [0, 0, 0, 0];
+  }
+
+  // Only the display pass reads the targets; the others must not bind the target they draw into.
+  function pass(index, target) {
+    u.uPass.value = index;
+    u.uTech.value = index === 2 ? rtTech.texture : dummy;
+    u.uTruth.value = index === 2 ? rtTruth[cur].texture : dummy;
+    renderer.setRenderTarget(target);
+    renderer.render(scene, camera);
+  }
+
+  function readTarget(target) {
+    const out = new Float32Array(target.width * target.height * 4);
+    renderer.readRenderTargetPixels(target, 0, 0, target.width, target.height, out);
+    return out;
+  }
+
+  // The error of every technique against the converged truth (each rendered into rtTech in turn).
+  function computeErrors() {
+    const truth = readTarget(rtTruth[cur]);
+    const bands = u.uMaxLevel.value + 1;
+    const errors = {};
+    for (const technique of TECHNIQUES) {
+      bindTechnique(technique);
+      pass(0, rtTech);
+      errors[technique] = bandedRmse(readTarget(rtTech), truth, { bands });
+    }
+    bindTechnique(state.technique);
+    return errors;
+  }
+
+  function draw() {
+    u.uDebug.value = 0;
+    bindTechnique(state.technique);
+    pass(0, rtTech);
+    const accumulating = state.truthOn && state.samples < state.cap;
+    if (accumulating) {
+      const next = 1 - cur;
+      u.uPrev.value = rtTruth[cur].texture;
+      u.uFrame.value = state.frame++;
+      u.uBlend.value = SAMPLES_PER_FRAME / (state.samples + SAMPLES_PER_FRAME);
+      pass(1, rtTruth[next]);
+      cur = next;
+      state.samples += SAMPLES_PER_FRAME;
+    }
+    pass(2, null);
+    renderer.setRenderTarget(null);
+    onFrame?.();
+    if (accumulating && state.samples >= state.cap) {
+      state.errors = computeErrors();
+      pass(2, null); // computeErrors drew into rtTech; redraw so the screen matches
+      onConverged?.(state.errors);
+    } else if (accumulating) frames.request();
+  }
+  const frames = onDemand(draw);
+
+  // The drawing buffer follows the canvas size, but changes under 10 % (a scrollbar coming and
+  // going as the table fills) are left to CSS scaling: a resize restarts the ground truth.
+  const resizeObserver = new ResizeObserver(() => {
+    const rect = canvas.getBoundingClientRect();
+    const width = Math.max(1, Math.round(rect.width));
+    const height = Math.max(1, Math.round(rect.height));
+    const ratio = cappedPixelRatio(width, height, window.devicePixelRatio, 2, maxPixels);
+    const [w0, h0] = u.uResolution.value;
+    if (Math.abs(width * ratio - w0) < 0.1 * w0 && Math.abs(height * ratio - h0) < 0.1 * h0) return;
+    renderer.setPixelRatio(ratio);
+    renderer.setSize(width, height, false);
+    const buffer = renderer.getDrawingBufferSize(new Vector2());
+    u.uResolution.value = [buffer.x, buffer.y];
+    for (const rt of [rtTech, ...rtTruth]) rt.setSize(buffer.x, buffer.y);
+    restartTruth();
+  });
+  resizeObserver.observe(canvas);
+
+  function restartTruth() {
+    state.samples = 0;
+    state.frame = 0;
+    state.errors = null;
+    frames.request();
+  }
+
+  function disposeTextures() {
+    for (const list of Object.values(textures)) for (const { tex } of list) tex.dispose();
+    textures = {};
+  }
+
+  return {
+    renderer,
+    /** 32-bit float textures are filtered only with OES_texture_float_linear (three.js warns without it). */
+    floatLinear: renderer.extensions.has('OES_texture_float_linear'),
+    uniforms: u,
+    state,
+    frames,
+    /** Uploads every technique's chain (from buildAllChains) and restarts nothing else. */
+    setChains(chains) {
+      disposeTextures();
+      for (const technique of TECHNIQUES) textures[technique] = uploadLevels(chains[technique]).map(makeTexture);
+      frames.request();
+    },
+    /** Sets uniforms; truthChanged restarts the ground truth (and the error table). */
+    set({ technique, channels, cap, truthOn, ...values }, truthChanged) {
+      if (technique !== undefined) state.technique = technique;
+      if (channels !== undefined) u.uChannels.value = channels;
+      if (cap !== undefined) state.cap = cap;
+      if (truthOn !== undefined) state.truthOn = truthOn;
+      for (const [k, v] of Object.entries(values)) u[k].value = v;
+      if (truthChanged) restartTruth();
+      else frames.request();
+    },
+    /** The stored chains or the forced level changed but not the truth: re-measure against the converged truth. */
+    refreshErrors() {
+      if (!state.errors) return;
+      state.errors = computeErrors();
+      renderer.setRenderTarget(null);
+      frames.request();
+    },
+    /** Test probe: the decoded texels of `level` of a technique's texture, read at pixel-aligned centres. */
+    debugLevel(technique, level, textureIndex = 0) {
+      const forced = u.uForcedLevel.value;
+      bindTechnique(technique);
+      u.uForcedLevel.value = level;
+      u.uDebug.value = textureIndex + 1;
+      pass(0, rtTech);
+      const data = readTarget(rtTech);
+      u.uDebug.value = 0;
+      u.uForcedLevel.value = forced;
+      renderer.setRenderTarget(null);
+      frames.request();
+      return { data, width: rtTech.width, height: rtTech.height };
+    },
+    /** Shimmer meter: mean |Δ brightness| per pixel of each technique's picture under sub-pixel camera moves. */
+    measureShimmer() {
+      const offsets = [[0.5, 0], [0, 0.5], [0.5, 0.5], [0.25, 0.75]];
+      const result = {};
+      for (const technique of TECHNIQUES) {
+        bindTechnique(technique);
+        u.uJitter.value = [0, 0];
+        pass(0, rtTech);
+        const still = readTarget(rtTech);
+        let sum = 0;
+        for (const offset of offsets) {
+          u.uJitter.value = offset;
+          pass(0, rtTech);
+          sum += meanBrightnessChange(still, readTarget(rtTech));
+        }
+        result[technique] = sum / offsets.length;
+      }
+      u.uJitter.value = [0, 0];
+      renderer.setRenderTarget(null);
+      frames.request();
+      return result;
+    },
+    /** The current technique's linear picture (RGB, λ in alpha) as drawn now. */
+    readTechnique() {
+      bindTechnique(state.technique);
+      pass(0, rtTech);
+      renderer.setRenderTarget(null);
+      return readTarget(rtTech);
+    },
+    toDataURL() {
+      draw();
+      return canvas.toDataURL('image/png');
+    },
+    dispose() {
+      frames.cancel();
+      resizeObserver.disconnect();
+      disposeTextures();
+      dummy.dispose();
+      rtTech.dispose();
+      rtTruth.forEach((rt) => rt.dispose());
+      geometry.dispose();
+      material.dispose();
+      renderer.dispose();
+    },
+  };
+}

@@ -1,0 +1,117 @@
+// The mip strip of the normal-mips panel: every level of the chain three ways (2D canvases):
+//   RGB       the stored average N_a as the colour c = N_a/2 + ½ (naive chain, note §1.6)
+//   |N_a|     its length as a heatmap over [0.5, 1] (1 = all normals agree; Toksvig's input, §2.3)
+//   α'        the chosen technique's effective roughness (effectiveRoughness.js) over [0, 1]
+// and the storage cost of every technique's chain (storageCost.js). Heat colours: src/ui/colormap.js.
+import { colormap, colormapGradient } from '../ui/colormap.js';
+import { el } from '../ui/el.js';
+import { effectiveRoughness } from '../normals/effectiveRoughness.js';
+import { storageCost } from '../normals/storageCost.js';
+import { TECHNIQUES } from '../normals/techniqueLayout.js';
+
+const CELL = 84; // CSS pixels per level thumbnail
+const LUT = Array.from({ length: 256 }, (_, i) => colormap(i / 255).map((v) => Math.round(v * 255)));
+
+function heat(t) {
+  return LUT[Math.round(255 * Math.min(1, Math.max(0, t))) || 0];
+}
+
+// One level into a thumbnail canvas: pixel(t) gives [r, g, b] bytes for texel t.
+function paint(canvas, size, pixel) {
+  const image = new ImageData(size, size);
+  for (let t = 0; t < size * size; t++) {
+    const [r, g, b] = pixel(t);
+    // Row 0 of the data is v = 0: draw it at the bottom, as on the plane's texture.
+    const o = ((size - 1 - Math.floor(t / size)) * size + (t % size)) * 4;
+    image.data[o] = r;
+    image.data[o + 1] = g;
+    image.data[o + 2] = b;
+    image.data[o + 3] = 255;
+  }
+  const source = new OffscreenCanvas(size, size);
+  source.getContext('2d').putImageData(image, 0, 0);
+  const g = canvas.getContext('2d');
+  g.imageSmoothingEnabled = false;
+  g.clearRect(0, 0, canvas.width, canvas.height);
+  g.drawImage(source, 0, 0, canvas.width, canvas.height);
+}
+
+export function buildMipStrip(host, { onPick } = {}) {
+  const root = el('div', 'nm-strip');
+  const heading = el('h3', 'nm-strip-title', 'The mip chain, level by level');
+  const grid = el('div', 'nm-strip-grid');
+  const legend = el('div', 'nm-strip-legend');
+  const bar = el('span', 'nm-legend-bar');
+  bar.style.background = colormapGradient();
+  legend.append(el('span', '', 'heat: |N_a| 0.5 → 1, α′ 0 → 1'), bar);
+  const costs = el('table', 'nm-costs');
+  root.append(heading, grid, legend, costs);
+  host.append(root);
+  let cells = [];
+
+  function layout(levels) {
+    grid.replaceChildren();
+    cells = [];
+    const rows = ['RGB (N_a)', '|N_a|', 'α′'];
+    grid.style.gridTemplateColumns = `auto repeat(${levels}, ${CELL}px)`;
+    grid.append(el('span', ''));
+    for (let l = 0; l < levels; l++) grid.append(el('span', 'nm-strip-head', `level ${l}`));
+    rows.forEach((name, r) => {
+      grid.append(el('span', 'nm-strip-row', name));
+      cells[r] = [];
+      for (let l = 0; l < levels; l++) {
+        const canvas = el('canvas', 'nm-strip-cell');
+        canvas.width = CELL;
+        canvas.height = CELL;
+        canvas.setAttribute('role', 'img');
+        canvas.setAttribute('aria-label', `${name} of mip level ${l}`);
+        // A click picks that texel for the inspector (the inspector's sliders do the same from the keyboard).
+        canvas.addEventListener('click', (event) => {
+          const size = Math.max(1, cells.size >> l);
+          const rect = canvas.getBoundingClientRect();
+          const i = Math.min(size - 1, Math.floor(((event.clientX - rect.left) / rect.width) * size));
+          const j = Math.min(size - 1, Math.floor((1 - (event.clientY - rect.top) / rect.height) * size));
+          onPick?.(l, i, j);
+        });
+        grid.append(canvas);
+        cells[r].push(canvas);
+      }
+    });
+  }
+
+  return {
+    /** chains from buildAllChains; technique and base α pick the α′ row. Returns the level-wise mean |N_a| and α′. */
+    draw(chains, technique, alpha, { precision, channels }) {
+      const naive = chains.naive;
+      const levels = naive.levels.length;
+      if (cells[0]?.length !== levels) layout(levels);
+      cells.size = naive.size;
+      const meanLength = [];
+      const meanAlpha = [];
+      naive.levels.forEach(({ size, data }, l) => {
+        const c = naive.components;
+        const lengths = effectiveRoughness(naive, l, { alpha }).length;
+        const rough = effectiveRoughness(chains[technique], l, { alpha }).alpha;
+        const byte = (x) => Math.round(255 * Math.min(1, Math.max(0, x * 0.5 + 0.5)));
+        const z = (t) => (c === 3 ? data[t * c + 2] : Math.sqrt(Math.max(0, 1 - data[t * c] ** 2 - data[t * c + 1] ** 2)));
+        paint(cells[0][l], size, (t) => [byte(data[t * c]), byte(data[t * c + 1]), byte(z(t))]);
+        paint(cells[1][l], size, (t) => heat((lengths[t] - 0.5) / 0.5));
+        paint(cells[2][l], size, (t) => heat(rough[t]));
+        meanLength.push(lengths.reduce((s, v) => s + v, 0) / lengths.length);
+        meanAlpha.push(rough.reduce((s, v) => s + v, 0) / rough.length);
+      });
+      costs.replaceChildren(el('caption', '', `Storage of each technique's whole chain (${naive.size}², ${precision}, ${channels} channels)`));
+      const head = el('tr');
+      head.append(el('th', '', 'technique'), el('th', '', 'KiB'), el('th', '', 'scalars / texel'), el('th', '', 'keeps the spread'));
+      costs.append(head);
+      for (const t of TECHNIQUES) {
+        const cost = storageCost({ technique: t, precision, channels, size: naive.size });
+        const row = el('tr', t === technique ? 'nm-current' : '');
+        row.append(el('th', '', t), el('td', '', (cost.bytes / 1024).toFixed(1)), el('td', '', String(cost.components)),
+          el('td', '', cost.varianceKept ? 'yes' : 'no'));
+        costs.append(row);
+      }
+      return { meanLength, meanAlpha };
+    },
+  };
+}
