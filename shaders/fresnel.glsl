@@ -101,9 +101,9 @@ float brewsterAngle(float nI, float nT) {
   return atan(nT, nI);
 }
 
-// (Rs, Rp) from air into a conductor n + ik (Lagarde 2013; stable a², b² as in the JS).
-vec2 fresnelConductorPolarized(float cosThetaI, float n, float k) {
-  float c = clamp(cosThetaI, 0.0, 1.0);
+// (Rs, Rp) from air into a conductor n + ik before any clamp (Lagarde 2013; stable a², b² as in
+// the JS). Shared with the unclamped method twin in fresnelMethods.glsl.
+vec2 conductorPolarizedRaw(float c, float n, float k) {
   float sin2 = (1.0 - c) * (1.0 + c);
   float t0 = n * n - k * k - sin2;
   float nk = n * k;
@@ -129,7 +129,13 @@ vec2 fresnelConductorPolarized(float cosThetaI, float n, float k) {
   float bc = sqrt(b2) * c;
   float rpDen = up * up + bc * bc;
   float rp = rpDen > 0.0 ? rs * ((um * um + bc * bc) / rpDen) : rs;
-  return clamp(vec2(rs, rp), 0.0, 1.0);
+  return vec2(rs, rp);
+}
+
+
+// (Rs, Rp) from air into a conductor n + ik.
+vec2 fresnelConductorPolarized(float cosThetaI, float n, float k) {
+  return clamp(conductorPolarizedRaw(clamp(cosThetaI, 0.0, 1.0), n, k), 0.0, 1.0);
 }
 
 float fresnelConductor(float cosThetaI, float n, float k) {

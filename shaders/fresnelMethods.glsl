@@ -7,12 +7,14 @@
 // Precision: include after `precision highp float;` or `precision mediump float;`. Every float
 // here takes that default, so the mediump variant is this same source compiled under mediump
 // (float16 on GPUs that honour it; many desktop GPUs run it at float32).
-// Helpers are prefixed fm_ so this file can sit beside <fresnel> in one program.
+// Helpers are prefixed fm_ so this file can sit beside <fresnel> in one program; the exact
+// conductor shares fresnel.glsl's unclamped core.
 //
 // Dielectrics: fm_<id>(float c, float nI, float nT): c = cos θi, light from nI into nT.
 // Conductors: fm_<id>(float c, float n, float k, float f0, float b): air into n + ik; f0 is the
 // per-channel F0 uniform (conductorNormalIncidence(n, k) on the CPU), b the F82-tint coefficient
 // (f82Coefficients(n, k, f0).b on the CPU); a method ignores what it does not use.
+#include <fresnel>
 
 // g² = cos²θt in the safe order ((nT − nI)/nT)((nT + nI)/nT) + c², c = nI·ci/nT.
 float fm_cosTransmittedSq(float ci, float nI, float nT) {
@@ -103,32 +105,8 @@ float fm_schlick_exp2(float ci, float nI, float nT) {
 
 // 7: exact conductor (Lagarde 2013 real form, stable a², b²) without fresnel.glsl's clamps.
 float fm_conductor_exact(float c, float n, float k, float f0, float b) {
-  float sin2 = (1.0 - c) * (1.0 + c);
-  float t0 = n * n - k * k - sin2;
-  float nk = n * k;
-  float S = sqrt(t0 * t0 + 4.0 * nk * nk);
-  float a2;
-  float b2;
-  if (t0 >= 0.0) {
-    a2 = 0.5 * (S + t0);
-    b2 = a2 > 0.0 ? nk * nk / a2 : 0.0;
-  } else {
-    b2 = 0.5 * (S - t0);
-    a2 = nk * nk / b2;
-  }
-  float a = sqrt(a2);
-  float dm = a - c;
-  float dp = a + c;
-  float rsDen = dp * dp + b2;
-  if (rsDen <= 0.0) return 0.0;
-  float rs = (dm * dm + b2) / rsDen;
-  if (rs <= 0.0) return 0.0;
-  float um = a * c - sin2;
-  float up = a * c + sin2;
-  float bc = sqrt(b2) * c;
-  float rpDen = up * up + bc * bc;
-  float rp = rpDen > 0.0 ? rs * ((um * um + bc * bc) / rpDen) : rs;
-  return 0.5 * (rs + rp);
+  vec2 sp = conductorPolarizedRaw(c, n, k); // shared with fresnel.glsl, which clamps around it
+  return 0.5 * (sp.x + sp.y);
 }
 
 // 8: Schlick with the per-channel F0.
