@@ -92,7 +92,8 @@ function describe(row) {
  * allowed, 0.5 (invisible) by default; options.precision overrides the scene's.
  * Returns { methodId, invisible, reason, budgetCodes, precision, table } where table has one row
  * per candidate, cheapest first: { methodId, label, cost, costSource, max, mean, rms,
- * thetaAtMax (radians), maxCodes, nanCount, outOfRange, passes }.
+ * thetaAtMax (radians), maxCodes, nanCount, outOfRange, passes, recommendable } (a method kept
+ * only to show a failure, such as the lecture's literal order, is charted but never recommended).
  */
 export function recommend(scene, costs = {}, { budgetCodes = HALF_STEP_CODES, precision = scene.precision } = {}) {
   const table = methodsOfKind(scene.kind).map((method) => {
@@ -105,11 +106,12 @@ export function recommend(scene, costs = {}, { budgetCodes = HALF_STEP_CODES, pr
       costSource: measured ? 'measured' : 'static',
       ...error,
       passes: error.nanCount === 0 && error.maxCodes < budgetCodes,
+      recommendable: !method.demonstratesFailure,
     };
   });
   const byAccuracy = (a, b) => a.maxCodes - b.maxCodes || a.max - b.max;
   table.sort((a, b) => a.cost - b.cost || byAccuracy(a, b));
-  const passing = table.filter((row) => row.passes);
+  const passing = table.filter((row) => row.passes && row.recommendable);
   const budget = budgetCodes === HALF_STEP_CODES ? 'half an 8-bit sRGB step (invisible)' : `${budgetCodes} 8-bit codes`;
   const where = `${scene.label}, ${contextFor(precision).label}`;
   let choice;
@@ -118,7 +120,13 @@ export function recommend(scene, costs = {}, { budgetCodes = HALF_STEP_CODES, pr
     choice = passing[0];
     const cheaper = table.filter((row) => row.cost < choice.cost);
     reason = `${describe(choice)} is the cheapest method whose largest error over "${where}" stays under ${budget}.`;
-    if (cheaper.length > 0) reason += ` Cheaper but visible: ${cheaper.map(describe).join('; ')}.`;
+    const visible = cheaper.filter((row) => !row.passes);
+    if (visible.length > 0) reason += ` Cheaper but visible: ${visible.map(describe).join('; ')}.`;
+    const demos = table.filter((row) => row.passes && !row.recommendable && row.cost <= choice.cost);
+    if (demos.length > 0) {
+      reason += ` ${demos.map((row) => row.label).join(', ')} costs no more here but is not recommended:`
+        + ' it is the lecture\'s literal order, which fails for matched media at grazing (see the stability map).';
+    }
   } else {
     choice = [...table].sort(byAccuracy)[0];
     reason = `No method stays under ${budget} for "${where}"; ${describe(choice)} is the most accurate.`;

@@ -207,7 +207,12 @@ export const METHODS = Object.freeze([
   dielectric('exact-cg', 'Exact c/g (safe order)', { static: 16, alu: 14, sfu: 3 },
     { tirAware: true, note: '§1 #2: 8 fp-arith + 6 fma + 1 sqrt + 1 branch' }, exactCg),
   dielectric('exact-cg-literal', 'Exact c/g (lecture order 1 + c² − m²)', { static: 17, alu: 15, sfu: 3 },
-    { tirAware: true, note: '§1 #2 + 1 add: 1 + c² − m² where the safe form adds c² to a precomputed 1 − m²' }, exactCgLiteral),
+    {
+      tirAware: true,
+      // Charted to show why the order matters; never recommended (it fails for matched media).
+      demonstratesFailure: true,
+      note: '§1 #2 + 1 add: 1 + c² − m² where the safe form adds c² to a precomputed 1 − m²',
+    }, exactCgLiteral),
   dielectric('exact-sp', 'Exact s/p (Snell)', { static: 18, alu: 16, sfu: 3 },
     { tirAware: true, note: '§1 #1: 9 fp-arith + 7 fma + 1 sqrt + 1 branch' }, exactSp),
   dielectric('schlick-pow', 'Schlick, pow(1 − c, 5)', { static: 4, alu: 3, sfu: 2 },

@@ -108,3 +108,15 @@ describe('recommend', () => {
     expect(methodError(sceneById('ice-water'), methodById('exact-cg'))).toBe(methodError(sceneById('ice-water'), methodById('exact-cg')));
   });
 });
+
+describe('methods kept only to show a failure', () => {
+  it('the lecture-order exact form is never recommended, even when measured cheapest and invisible', () => {
+    const scene = sceneById('plastic');
+    const costs = { 'exact-cg-literal': 1, 'exact-cg': 5, 'exact-sp': 6, 'schlick-mul': 2, 'schlick-pow': 3, 'schlick-tir': 4, 'schlick-exp2': 3 };
+    const result = recommend(scene, costs);
+    const literal = result.table.find((row) => row.methodId === 'exact-cg-literal');
+    expect(literal.passes).toBe(true); // it is invisible for plastic in float32...
+    expect(result.methodId).toBe('exact-cg'); // ...but the safe order is what gets recommended
+    expect(result.reason).toContain('not recommended');
+  });
+});
