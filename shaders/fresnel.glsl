@@ -16,9 +16,9 @@ float snellCosT(float cosThetaI, float nI, float nT) {
   return g2 < 0.0 ? -1.0 : sqrt(g2);
 }
 
-// Exact unpolarized reflectance, the lecture's c/g form with the safe ordering of g².
-float fresnelExact(float cosThetaI, float nI, float nT) {
-  float ci = clamp(cosThetaI, 0.0, 1.0);
+// Exact unpolarized reflectance, the lecture's c/g form with the safe ordering of g², before any
+// clamp (ci must be in [0, 1] for a physical result). Shared with fresnelMethods.glsl.
+float fresnelExactRaw(float ci, float nI, float nT) {
   if (nI == nT) return 0.0;
   float g2 = cosTransmittedSq(ci, nI, nT);
   if (g2 <= 0.0) return 1.0;
@@ -30,7 +30,13 @@ float fresnelExact(float cosThetaI, float nI, float nT) {
   float ms2 = m * m * ((1.0 - ci) * (1.0 + ci));
   float cg = c * g;
   float b = (cg - ms2) / (cg + ms2);
-  return clamp(0.5 * a * a * (1.0 + b * b), 0.0, 1.0);
+  return 0.5 * a * a * (1.0 + b * b);
+}
+
+
+// Exact unpolarized reflectance with the contract's clamps.
+float fresnelExact(float cosThetaI, float nI, float nT) {
+  return clamp(fresnelExactRaw(clamp(cosThetaI, 0.0, 1.0), nI, nT), 0.0, 1.0);
 }
 
 // (Rs, Rp) from the s/p Fresnel equations.

@@ -16,17 +16,7 @@
 // (f82Coefficients(n, k, f0).b on the CPU); a method ignores what it does not use.
 #include <fresnel>
 
-// g² = cos²θt in the safe order ((nT − nI)/nT)((nT + nI)/nT) + c², c = nI·ci/nT.
-float fm_cosTransmittedSq(float ci, float nI, float nT) {
-  float c = nI * ci / nT;
-  return ((nT - nI) / nT) * ((nT + nI) / nT) + c * c;
-}
-
-// R0 = ((nT − nI)/(nT + nI))².
-float fm_normalIncidence(float nI, float nT) {
-  float r = (nT - nI) / (nT + nI);
-  return r * r;
-}
+// cos²θt and R0 are fresnel.glsl's cosTransmittedSq and normalIncidence (included above).
 
 // R0 + (1 − R0)·x2·x2·x with x = 1 − c (Filament pow5).
 float fm_schlickOn(float c, float r0) {
@@ -37,17 +27,7 @@ float fm_schlickOn(float c, float r0) {
 
 // 0: exact c/g, safe order (fresnel.glsl's fresnelExact without its clamps).
 float fm_exact_cg(float ci, float nI, float nT) {
-  if (nI == nT) return 0.0;
-  float g2 = fm_cosTransmittedSq(ci, nI, nT);
-  if (g2 <= 0.0) return 1.0;
-  float g = sqrt(g2);
-  float c = nI * ci / nT;
-  float a = (g - c) / (g + c);
-  float m = nI / nT;
-  float ms2 = m * m * ((1.0 - ci) * (1.0 + ci));
-  float cg = c * g;
-  float b = (cg - ms2) / (cg + ms2);
-  return 0.5 * a * a * (1.0 + b * b);
+  return fresnelExactRaw(ci, nI, nT);
 }
 
 // 1: the slide's c/g as written, g² = 1 + c² − m²: 1 + c² rounds to 1 near grazing (§2.2).
@@ -78,27 +58,27 @@ float fm_exact_sp(float ci, float nI, float nT) {
 
 // 3: Schlick with pow: undefined (NaN on most GPUs) for c > 1 (GLSL ES 3.00 §8.2, fresnel-facts §2.3).
 float fm_schlick_pow(float ci, float nI, float nT) {
-  float r0 = fm_normalIncidence(nI, nT);
+  float r0 = normalIncidence(nI, nT);
   return r0 + (1.0 - r0) * pow(1.0 - ci, 5.0);
 }
 
 // 4: Schlick by multiplications only; no TIR, no clamp.
 float fm_schlick_mul(float ci, float nI, float nT) {
-  return fm_schlickOn(ci, fm_normalIncidence(nI, nT));
+  return fm_schlickOn(ci, normalIncidence(nI, nT));
 }
 
 // 5: Schlick on cos θt when nI > nT, 1 past the critical angle.
 float fm_schlick_tir(float ci, float nI, float nT) {
-  float r0 = fm_normalIncidence(nI, nT);
+  float r0 = normalIncidence(nI, nT);
   if (nI <= nT) return fm_schlickOn(ci, r0);
-  float g2 = fm_cosTransmittedSq(ci, nI, nT);
+  float g2 = cosTransmittedSq(ci, nI, nT);
   return g2 <= 0.0 ? 1.0 : fm_schlickOn(sqrt(g2), r0);
 }
 
 // 6: three.js F_Schlick (Karis 2013): f0·(1 − f) + f with f = exp2((−5.55473c − 6.98316)c), c saturated.
 float fm_schlick_exp2(float ci, float nI, float nT) {
   float c = clamp(ci, 0.0, 1.0);
-  float r0 = fm_normalIncidence(nI, nT);
+  float r0 = normalIncidence(nI, nT);
   float f = exp2((-5.55473 * c - 6.98316) * c);
   return r0 * (1.0 - f) + f;
 }

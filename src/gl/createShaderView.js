@@ -9,7 +9,8 @@ import { cappedPixelRatio, createRenderer } from './createRenderer.js';
 import { onDemand } from './onDemand.js';
 import { readPixel } from './readPixel.js';
 
-const VERTEX = `precision highp float;
+/** The vertex shader of a full-screen triangle: vUv runs 0..1 across the canvas. */
+export const FULLSCREEN_VERTEX_GLSL = `precision highp float;
 in vec3 position;
 out vec2 vUv;
 void main() {
@@ -26,7 +27,7 @@ export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, max
   const renderer = createRenderer(canvas, { antialias: false });
   const allUniforms = { ...uniforms, uResolution: { value: [1, 1] } };
   const material = new RawShaderMaterial({
-    glslVersion: GLSL3, vertexShader: VERTEX, fragmentShader: shaderSource(fragment), uniforms: allUniforms,
+    glslVersion: GLSL3, vertexShader: FULLSCREEN_VERTEX_GLSL, fragmentShader: shaderSource(fragment), uniforms: allUniforms,
     depthTest: false, depthWrite: false,
   });
   const geometry = new BufferGeometry();

@@ -10,19 +10,13 @@ import {
 } from 'three';
 import { cappedPixelRatio, createRenderer } from '../gl/createRenderer.js';
 import { onDemand } from '../gl/onDemand.js';
+import { FULLSCREEN_VERTEX_GLSL } from '../gl/createShaderView.js';
 import { shaderSource } from '../gl/shaderChunks.js';
 import { TECHNIQUES } from '../normals/techniqueLayout.js';
 import { uploadLevels } from '../normals/uploadLevels.js';
 import { bandedRmse } from '../optics/bandedRmse.js';
 import { meanBrightnessChange } from '../optics/shimmer.js';
 
-const VERTEX = `precision highp float;
-in vec3 position;
-out vec2 vUv;
-void main() {
-  vUv = position.xy * 0.5 + 0.5;
-  gl_Position = vec4(position.xy, 0.0, 1.0);
-}`;
 const FORMATS = { RGBA: RGBAFormat, RG: RGFormat, R: RedFormat };
 const TYPES = { u8: UnsignedByteType, f16: HalfFloatType, f32: FloatType };
 // Small batches keep each frame short on slow (software) GPUs while the truth accumulates.
@@ -67,7 +61,7 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
   };
   for (const [k, v] of Object.entries(initial)) u[k] = { value: v };
   const material = new RawShaderMaterial({
-    glslVersion: GLSL3, vertexShader: VERTEX, fragmentShader: shaderSource('normal-mips.frag'), uniforms: u,
+    glslVersion: GLSL3, vertexShader: FULLSCREEN_VERTEX_GLSL, fragmentShader: shaderSource('normal-mips.frag'), uniforms: u,
     depthTest: false, depthWrite: false,
   });
   const geometry = new BufferGeometry();

@@ -6,10 +6,10 @@ import { METHOD_IDS, methodById } from '../../src/optics/methods.js';
 
 const glsl = readFileSync('shaders/fresnelMethods.glsl', 'utf8');
 
-/** Each `float fm_name(params) { body }` of the GLSL file: { name, params, body }. */
+/** Each `float name(params) { body }` of a GLSL file: { name, params, body }. */
 function glslFunctions(source) {
   const out = {};
-  const head = /^float (fm_\w+)\(([^)]*)\) \{$/gm;
+  const head = /^float (\w+)\(([^)]*)\) \{$/gm;
   let match;
   while ((match = head.exec(source))) {
     const end = source.indexOf('\n}\n', match.index);
@@ -60,7 +60,13 @@ describe('GLSL twins', () => {
   });
   it('keep the lecture order 1 + c² − m² in the literal form and the safe g² elsewhere', () => {
     expect(fns.fm_exact_cg_literal.body).toContain('float g2 = 1.0 + c * c - m * m;');
-    expect(fns.fm_cosTransmittedSq.body).toContain('((nT - nI) / nT) * ((nT + nI) / nT) + c * c');
+    // The safe g² is fresnel.glsl's, shared through #include <fresnel>, not a copy.
+    const shared = glslFunctions(readFileSync('shaders/fresnel.glsl', 'utf8'));
+    expect(glsl).toContain('#include <fresnel>');
+    expect(shared.cosTransmittedSq.body).toContain('((nT - nI) / nT) * ((nT + nI) / nT) + c * c');
+    expect(shared.fresnelExactRaw.body).toContain('cosTransmittedSq(ci, nI, nT)');
+    expect(fns.fm_exact_cg.body).toContain('fresnelExactRaw(ci, nI, nT)');
+    expect(fns.fm_schlick_tir.body).toContain('cosTransmittedSq(ci, nI, nT)');
     expect(fns.fm_schlick_pow.body).toContain('pow(1.0 - ci, 5.0)');
   });
 });
