@@ -24,7 +24,10 @@ uniform float uCamHeight;
 uniform float uPitch;       // view direction below the horizon (radians)
 uniform float uTanHalfFov;
 uniform float uTile;        // world units per map tile
-uniform float uLightPower;
+uniform float uLightPower;  // irradiance from the point light at the view centre
+uniform vec3 uLightPos;     // world position of the point light
+uniform float uLightDist2;  // its squared distance from the view centre (inverse-square reference)
+uniform float uAniso;       // anisotropic filtering level in use (1: isotropic trilinear)
 uniform float uIor;
 uniform int uFresnel;       // 0 exact, 1 Schlick, 2 off (constant R0)
 uniform float uKd;
@@ -67,14 +70,15 @@ vec3 rayDir(vec2 p) {
 // Tangent frame of the plane: T = +x, B = +z, N = +y (uv = xz / tile).
 vec3 toTangent(vec3 w) { return vec3(w.x, w.z, w.y); }
 
-// Radiance of a point with unit tangent-space normal n and NDF value d (implicit G: f = F·D/4).
-vec3 shade(vec3 n, float d, vec3 V, vec3 L, vec3 H) {
+// Radiance of a point with unit tangent-space normal n and NDF value d (implicit G: f = F·D/4),
+// lit by the point light with irradiance E (normal to L) and the sky.
+vec3 shade(vec3 n, float d, vec3 V, vec3 L, vec3 H, float E) {
   float nl = max(dot(n, L), 0.0);
   float vh = clamp(dot(V, H), 0.0, 1.0);
   float F = uFresnel == 0 ? fresnelExact(vh, 1.0, uIor)
     : uFresnel == 1 ? fresnelSchlick(vh, 1.0, uIor) : normalIncidence(1.0, uIor);
   vec3 nw = vec3(n.x, n.z, n.y);
-  return uLightPower * nl * (uKd / 3.14159265 + F * d * 0.25) + uKd * 0.3 * skyLight(nw);
+  return E * nl * (uKd / 3.14159265 + F * d * 0.25) + uKd * 0.3 * skyLight(nw);
 }
 
 vec4 fetchA(vec2 uv) {
@@ -87,7 +91,7 @@ vec4 fetchB(vec2 uv) {
 }
 
 // The technique's lobe at uv (twin of texelLobe in effectiveRoughness.js) shaded for V, L.
-vec3 techniqueRadiance(vec2 uv, vec3 V, vec3 L) {
+vec3 techniqueRadiance(vec2 uv, vec3 V, vec3 L, float E) {
   vec3 H = normalize(V + L);
   vec4 a = fetchA(uv);
   if (uTechnique == 3 || uTechnique == 4) {
@@ -95,10 +99,10 @@ vec3 techniqueRadiance(vec2 uv, vec3 V, vec3 L) {
     vec3 n = normalize(vec3(b, 1.0));
     if (uTechnique == 3) {
       vec3 cov = leanCovariance(b, vec3(a.z, a.w, fetchB(uv).x), uAlpha);
-      return shade(n, leanD(H, b, cov), V, L, H);
+      return shade(n, leanD(H, b, cov), V, L, H, E);
     }
     float al = cleanAlpha(b, a.z, uAlpha);
-    return shade(n, beckmannD(dot(n, H), al), V, L, H);
+    return shade(n, beckmannD(dot(n, H), al), V, L, H, E);
   }
   vec3 N = uChannels == 3 ? a.xyz : vec3(a.xy, reconstructZ(a.xy));
   float len = length(N);
@@ -106,15 +110,26 @@ vec3 techniqueRadiance(vec2 uv, vec3 V, vec3 L) {
   float al = uAlpha;
   if (uTechnique == 2) al = toksvigAlpha(len, uAlpha);
   if (uTechnique == 5) al = vmfAlpha(uChannels == 3 ? a.w : a.z, uAlpha);
-  return shade(n, beckmannD(dot(n, H), al), V, L, H);
+  return shade(n, beckmannD(dot(n, H), al), V, L, H, E);
 }
 
-// The mip level the hardware would pick (GL spec isotropic λ; real GPUs may differ slightly).
+// The mip level the hardware would pick: GL ES 3.0 §3.8.10 λ = log2 ρ, ρ the larger footprint
+// axis in texels; with anisotropic filtering (EXT_texture_filter_anisotropic) N = min(⌈ρmax/ρmin⌉,
+// level) taps along the long axis and λ = log2(ρmax/N). Real GPUs approximate both a little.
 float lodAt(vec2 uv) {
-  vec2 dx = dFdx(uv) * uMapSize;
-  vec2 dy = dFdy(uv) * uMapSize;
-  float lod = 0.5 * log2(max(max(dot(dx, dx), dot(dy, dy)), 1e-12));
-  return uForcedLevel >= 0.0 ? uForcedLevel : clamp(lod, 0.0, uMaxLevel);
+  float px = length(dFdx(uv) * uMapSize);
+  float py = length(dFdy(uv) * uMapSize);
+  float pmax = max(max(px, py), 1e-6);
+  float n = min(ceil(pmax / max(min(px, py), 1e-6)), uAniso);
+  return uForcedLevel >= 0.0 ? uForcedLevel : clamp(log2(pmax / n), 0.0, uMaxLevel);
+}
+
+// The point light at a world point: direction (tangent space) and irradiance, inverse-square,
+// equal to uLightPower at the view centre.
+vec4 lightAt(vec3 hit) {
+  vec3 toLight = uLightPos - hit;
+  float d2 = dot(toLight, toLight);
+  return vec4(toTangent(toLight / sqrt(d2)), uLightPower * uLightDist2 / d2);
 }
 
 uint hash(uint x) {
@@ -126,7 +141,7 @@ float rand(inout uint state) {
   return float(state >> 8) / 16777216.0;
 }
 
-vec3 truthRadiance(vec2 pixel, vec3 L) {
+vec3 truthRadiance(vec2 pixel) {
   uint state = hash(uint(pixel.x) * 1973u + uint(pixel.y) * 9277u + uint(uFrame) * 26699u);
   vec3 sum = vec3(0.0);
   for (int s = 0; s < 64; s++) {
@@ -136,10 +151,11 @@ vec3 truthRadiance(vec2 pixel, vec3 L) {
     if (dir.y >= -1e-5) { sum += environment(dir); continue; }
     vec3 hit = vec3(0.0, uCamHeight, 0.0) + dir * (uCamHeight / -dir.y);
     vec3 V = toTangent(-dir);
-    vec3 H = normalize(V + L);
+    vec4 light = lightAt(hit);
+    vec3 H = normalize(V + light.xyz);
     vec2 b = mapSlope(fract(hit.xz / uTile));
     vec3 n = normalize(vec3(b, 1.0));
-    sum += shade(n, beckmannD(dot(n, H), uAlpha), V, L, H);
+    sum += shade(n, beckmannD(dot(n, H), uAlpha), V, light.xyz, H, light.w);
   }
   return sum / float(uSamples);
 }
@@ -176,16 +192,16 @@ void main() {
   }
   // uv and its derivatives in uniform control flow (sky pixels get a far, unused point).
   vec3 dir = rayDir(pixel + (uPass == 0 ? uJitter : vec2(0.0)));
-  vec3 L = toTangent(normalize(uSunDir));
   bool sky = dir.y >= -1e-5;
   vec3 hit = vec3(0.0, uCamHeight, 0.0) + dir * min(uCamHeight / max(-dir.y, 1e-5), 1e4);
   vec2 uv = hit.xz / uTile;
   float lod = lodAt(uv);
   if (uPass == 0) {
-    vec3 rad = techniqueRadiance(uv, toTangent(-dir), L);
+    vec4 light = lightAt(hit);
+    vec3 rad = techniqueRadiance(uv, toTangent(-dir), light.xyz, light.w);
     fragColor = sky ? vec4(environment(dir), -1.0) : vec4(rad, lod);
     return;
   }
   vec3 prev = texelFetch(uPrev, ivec2(pixel), 0).rgb;
-  fragColor = vec4(mix(prev, truthRadiance(pixel, L), uBlend), sky ? -1.0 : lod);
+  fragColor = vec4(mix(prev, truthRadiance(pixel), uBlend), sky ? -1.0 : lod);
 }

@@ -2,13 +2,14 @@
 // the mip chain each technique stores (src/normals/), split-screen against a progressive,
 // supersampled ground truth from the exact analytic normals, with an RMSE per technique.
 import { WebGL2Unavailable } from '../gl/createRenderer.js';
-import { buildAllChains } from '../normals/buildChain.js';
+import { createChainBuilder } from '../normals/createChainBuilder.js';
 import { createNormalMap } from '../normals/createNormalMap.js';
+import { mapUniforms } from '../normals/mapUniforms.js';
 import { exponentFromAlpha } from '../normals/lobeFormulas.js';
 import { levelCount } from '../normals/momentPyramid.js';
-import { sampleLevel0 } from '../normals/sampleLevel0.js';
 import { TECHNIQUES } from '../normals/techniqueLayout.js';
 import { normalIncidence } from '../optics/fresnel.js';
+import { benchChainBuild, watchLongTasks } from './normal-mipsBench.js';
 import { buildNormalMipsDom } from './normal-mipsDom.js';
 import { createNormalMipsScene, SAMPLES_PER_FRAME } from './normal-mipsScene.js';
 import { buildMipStrip } from './normal-mipsStrip.js';
@@ -20,40 +21,77 @@ export const title = 'Mipmapping normal maps';
 export const usesWebGL = true;
 export const materialParam = null;
 export const schema = {
-  map: { type: 'enum', default: 'bumps', options: ['bumps', 'grooves', 'checker'], label: 'Normal map' },
+  map: { type: 'enum', default: 'bumps', options: ['bumps', 'grooves', 'checker', 'noise', 'mixed'], label: 'Normal map' },
   frequency: { type: 'number', default: 16, min: 2, max: 64, step: 2, label: 'Features per tile' },
-  angle: { type: 'number', default: 35, min: 5, max: 60, step: 1, label: 'Slope angle ° (bump rim / facet)' },
-  size: { type: 'enum', default: '256', options: ['128', '256', '512'], label: 'Texture size' },
+  angle: { type: 'number', default: 35, min: 5, max: 60, step: 1, label: 'Slope angle ° (bump rim, facet, steepest noise)' },
+  size: { type: 'enum', default: '256', options: ['128', '256', '512', '1024'], label: 'Texture size' },
   technique: { type: 'enum', default: 'toksvig', options: [...TECHNIQUES], label: 'Technique' },
   alpha: { type: 'number', default: 0.1, min: 0.02, max: 1, step: 0.005, label: 'Base roughness α (Beckmann)' },
   precision: { type: 'enum', default: 'f16', options: ['u8', 'f16', 'f32'], label: 'Storage precision' },
   channels: { type: 'enum', default: '3', options: ['3', '2'], label: 'Stored normal channels (2: z rebuilt)' },
-  level: { type: 'number', default: -1, min: -1, max: 9, step: 1, label: 'Forced mip level (−1 = automatic)' },
+  level: { type: 'number', default: -1, min: -1, max: 10, step: 1, label: 'Forced mip level (−1 = automatic)' },
+  anisotropy: { type: 'enum', default: '1', options: ['1', '2', '4', '8', '16'], label: 'Anisotropic filtering (taps, 1 = off)' },
   overlay: { type: 'boolean', default: false, label: 'Colour the mip level in use' },
   view: { type: 'enum', default: 'split', options: ['split', 'technique', 'truth', 'difference'], label: 'Picture' },
   viewEl: { type: 'number', default: 8, min: 2, max: 40, step: 0.5, label: 'View angle below horizon °' },
-  lightEl: { type: 'number', default: 6, min: 1, max: 60, step: 0.5, label: 'Sun elevation °' },
-  lightAz: { type: 'number', default: 0, min: -90, max: 90, step: 1, label: 'Sun azimuth ° (0 = ahead)' },
+  lightEl: { type: 'number', default: 6, min: 1, max: 60, step: 0.5, label: 'Light elevation ° (seen from the view centre)' },
+  lightAz: { type: 'number', default: 0, min: -90, max: 90, step: 1, label: 'Light azimuth ° (0 = ahead)' },
+  lightDist: { type: 'number', default: 30, min: 3, max: 300, step: 1, label: 'Light distance from the view centre (tiles)' },
   fresnel: { type: 'enum', default: 'exact', options: ['exact', 'schlick', 'off'], label: 'Fresnel (n = 1.5)' },
-  texelLevel: { type: 'number', default: 4, min: 0, max: 9, step: 1, label: 'Inspected level (or click the strip)' },
-  texelX: { type: 'number', default: 0, min: 0, max: 511, step: 1, label: 'Inspected texel i' },
-  texelY: { type: 'number', default: 0, min: 0, max: 511, step: 1, label: 'Inspected texel j' },
+  texelLevel: { type: 'number', default: 4, min: 0, max: 10, step: 1, label: 'Inspected level (or click the strip)' },
+  texelX: { type: 'number', default: 0, min: 0, max: 1023, step: 1, label: 'Inspected texel i' },
+  texelY: { type: 'number', default: 0, min: 0, max: 1023, step: 1, label: 'Inspected texel j' },
   truth: { type: 'boolean', default: true, label: 'Accumulate the ground truth' },
   truthSamples: { type: 'number', default: 128, min: 32, max: 2048, step: 16, label: 'Ground-truth samples per pixel' },
 };
 
 const DEG = Math.PI / 180;
 const IOR = 1.5;
-const MAP_KINDS = { bumps: 0, grooves: 1, checker: 2 };
 const CHAIN_KEYS = ['map', 'frequency', 'angle', 'size', 'precision', 'channels'];
-const SHIMMER_KEYS = [...CHAIN_KEYS, 'alpha', 'level', 'viewEl', 'lightEl', 'lightAz', 'fresnel'];
+const LIGHT_KEYS = ['viewEl', 'lightEl', 'lightAz', 'lightDist'];
+const SHIMMER_KEYS = [...CHAIN_KEYS, ...LIGHT_KEYS, 'alpha', 'level', 'anisotropy', 'fresnel'];
 const INSPECT_KEYS = ['texelLevel', 'texelX', 'texelY'];
-const TRUTH_KEYS = ['map', 'frequency', 'angle', 'alpha', 'viewEl', 'lightEl', 'lightAz', 'fresnel', 'truth', 'truthSamples'];
+const TRUTH_KEYS = [...LIGHT_KEYS, 'map', 'frequency', 'angle', 'alpha', 'fresnel', 'truth', 'truthSamples'];
+// Camera: height 1 above the plane, one tile per world unit (the scene's uCamHeight and uTile).
+const CAM_HEIGHT = 1;
 
+/**
+ * The point light's world position: lightDist tiles from the view centre (where the middle of the
+ * picture meets the plane) in the direction (azimuth, elevation); with azimuth 0 it is straight
+ * ahead, so its mirror highlight runs towards the viewer. fromCamera: the unit direction to it
+ * from the camera at (0, CAM_HEIGHT, 0).
+ */
+function lightPlacement({ viewEl, lightEl, lightAz, lightDist }) {
+  const centre = [0, 0, CAM_HEIGHT / Math.tan(viewEl * DEG)];
+  const dir = [Math.sin(lightAz * DEG) * Math.cos(lightEl * DEG), Math.sin(lightEl * DEG), Math.cos(lightAz * DEG) * Math.cos(lightEl * DEG)];
+  const position = centre.map((c, k) => c + lightDist * dir[k]);
+  const toLight = [position[0], position[1] - CAM_HEIGHT, position[2]];
+  const length = Math.hypot(...toLight);
+  return { position, fromCamera: toLight.map((c) => c / length) };
+}
+
+// Value noise: octave o adds a slope component of at most 3.75·amplitude·gain^o
+// (createValueNoise.js), so over 3 octaves of gain ½ the steepest is 3.75·1.75·amplitude: the
+// angle control sets that bound. Its base lattice is half the feature count, so the finest octave
+// has twice as many cells as the control says.
+const noiseAmplitude = (angleDeg) => Math.tan(angleDeg * DEG) / (3.75 * 1.75);
+
+/** createNormalMap parameters for the controls (the GLSL twin gets the same via mapUniforms). */
 function mapParams({ map, frequency, angle }) {
   if (map === 'bumps') return { frequency, edgeAngleDeg: angle };
   if (map === 'grooves') return { frequency, angleDeg: angle, profile: 'v', direction: 'u' };
+  if (map === 'noise') return { frequency: Math.max(1, frequency / 2), amplitude: noiseAmplitude(angle) };
+  if (map === 'mixed') {
+    // 4 × 4 blocks; bumps and noise at blocks·f per tile, grooves at 2×, the checker at 4× that.
+    return { blocks: 4, frequency: Math.max(1, Math.round(frequency / 8)), angleDeg: angle, edgeAngleDeg: angle, amplitude: noiseAmplitude(angle) };
+  }
   return { frequency: 2 * Math.max(1, Math.round(frequency / 2)), angleDeg: angle }; // the checker tiles only with even counts
+}
+
+/** Keys still to apply after a build: undefined (none waiting) merged with keys (null: all). */
+function mergeKeys(pending, keys) {
+  if (pending === undefined) return keys ?? null;
+  return pending === null || !keys ? null : [...pending, ...keys];
 }
 
 export function mount(root, ctx) {
@@ -66,22 +104,26 @@ export function mount(root, ctx) {
     },
   });
   const inspector = buildInspector(dom.root);
+  const builder = createChainBuilder();
   let stripStats = null;
   let inspected = null;
   let pyramid = null;
   let scene = null;
   let chains = null;
-  let buildMs = 0;
+  let built = { ms: 0, where: builder.where, size: 0 };
+  let deferred; // keys waiting for a chain build (null: all); undefined when none is running
+  let buildDone = Promise.resolve();
+  let disposed = false;
   const size = () => Number(values.size);
   try {
     scene = createNormalMipsScene(dom.canvas, {
       onFrame: () => { ctx.frameDrawn(); showStatus(); },
       onConverged: () => ctx.changed([]), // re-describe with the error numbers
       uniforms: {
-        uCamHeight: 1, uPitch: 0.1, uTanHalfFov: Math.tan(18 * DEG), uTile: 1, uLightPower: 5, uIor: IOR,
-        uFresnel: 0, uKd: 0.05, uAlpha: 0.1, uForcedLevel: -1, uMapSize: 256, uMaxLevel: 8,
-        uMapKind: 0, uMapFreq: 16, uMapAngle: 0.6, uGrooveProfile: 0, uSunDir: [0, 0.1, 1],
-        uView: 0, uOverlay: 0, uDiffScale: 0.25,
+        uCamHeight: CAM_HEIGHT, uPitch: 0.1, uTanHalfFov: Math.tan(18 * DEG), uTile: 1, uLightPower: 5, uIor: IOR,
+        uFresnel: 0, uKd: 0.05, uAlpha: 0.1, uForcedLevel: -1, uMapSize: 256, uMaxLevel: 8, uAniso: 1,
+        ...mapUniforms(createNormalMap(values.map, mapParams(values))), uSunDir: [0, 0.1, 1],
+        uLightPos: [0, 3, 37], uLightDist2: 900, uView: 0, uOverlay: 0, uDiffScale: 0.25,
       },
     });
   } catch (error) {
@@ -90,20 +132,46 @@ export function mount(root, ctx) {
   }
 
   ctx.bind(ctx.gui.addFolder('Normal map'), ['map', 'frequency', 'angle', 'size']);
-  ctx.bind(ctx.gui.addFolder('Technique'), ['technique', 'alpha', 'precision', 'channels', 'level', 'fresnel']);
+  ctx.bind(ctx.gui.addFolder('Technique'), ['technique', 'alpha', 'precision', 'channels', 'level', 'anisotropy', 'fresnel']);
   ctx.bind(ctx.gui.addFolder('Texel inspector').close(), INSPECT_KEYS);
   let shimmer = null;
-  ctx.gui.add({ measure: () => { shimmer = scene?.measureShimmer() ?? null; dom.setShimmer(shimmer); ctx.changed([]); } }, 'measure')
-    .name('Measure shimmer (all techniques)');
-  ctx.bind(ctx.gui.addFolder('View and light'), ['view', 'overlay', 'viewEl', 'lightEl', 'lightAz', 'truth', 'truthSamples']);
+  const measure = async () => {
+    await whenBuilt(); // measure the chains of the current settings
+    shimmer = scene?.measureShimmer() ?? null;
+    dom.setShimmer(shimmer);
+    ctx.changed([]);
+  };
+  ctx.gui.add({ measure }, 'measure').name('Measure shimmer (all techniques)');
+  ctx.bind(ctx.gui.addFolder('View and light'), ['view', 'overlay', ...LIGHT_KEYS, 'truth', 'truthSamples']);
 
-  function rebuildChains() {
-    const t0 = performance.now();
-    const map = createNormalMap(values.map, mapParams(values));
-    const normals = sampleLevel0(map, size());
-    ({ chains, pyramid } = buildAllChains(normals, size(), { precision: values.precision, channels: Number(values.channels) }));
-    buildMs = performance.now() - t0;
-    scene?.setChains(chains);
+  // Chains are built off the page's thread (createChainBuilder); until the newest build arrives
+  // the old picture stays and every other change waits, so picture, strip and truth always
+  // belong to the same map.
+  function rebuildChains(keys) {
+    deferred = mergeKeys(deferred, keys);
+    dom.setBusy(`Building the mip chains of a ${size()}² map…`);
+    const request = { kind: values.map, params: mapParams(values), size: size(), precision: values.precision, channels: Number(values.channels) };
+    buildDone = builder.build(request).then((result) => {
+      if (!result || disposed) return;
+      ({ chains, pyramid } = result);
+      built = { ms: result.ms, where: result.where, size: request.size };
+      scene?.setChains(chains, result.uploads);
+      const keysNow = deferred;
+      deferred = undefined;
+      dom.setBusy('');
+      apply(keysNow);
+      ctx.changed([]); // re-describe, now with this map
+    }, (error) => {
+      deferred = undefined;
+      dom.setBusy(`Could not build the mip chains: ${error.message}`);
+    });
+  }
+
+  async function whenBuilt() {
+    for (let b; b !== buildDone;) {
+      b = buildDone;
+      await b;
+    }
   }
 
   function showStatus() {
@@ -120,14 +188,21 @@ export function mount(root, ctx) {
 
   function update(keys) {
     const changed = keys ? new Set(keys) : null;
+    if (!chains || !changed || CHAIN_KEYS.some((k) => changed.has(k))) rebuildChains(keys);
+    else if (deferred !== undefined) deferred = mergeKeys(deferred, keys);
+    else apply(keys);
+  }
+
+  function apply(keys) {
+    const changed = keys ? new Set(keys) : null;
     const has = (list) => !changed || list.some((k) => changed.has(k));
-    if (has(CHAIN_KEYS) || !chains) rebuildChains();
     if (has(SHIMMER_KEYS)) shimmer = null;
     dom.setShimmer(shimmer);
     const levels = levelCount(size());
     const base = values.alpha;
+    const channels = Number(values.channels);
     if (has([...CHAIN_KEYS, 'technique', 'alpha']) || !stripStats) {
-      stripStats = strip.draw(chains, values.technique, base, { precision: values.precision, channels: Number(values.channels) });
+      stripStats = strip.draw(chains, values.technique, base, { precision: values.precision, channels });
     }
     if (has([...CHAIN_KEYS, ...INSPECT_KEYS, 'alpha']) || !inspected) {
       const level = Math.min(values.texelLevel, levels - 1);
@@ -136,34 +211,37 @@ export function mount(root, ctx) {
         pyramid, chains, level, i: Math.min(values.texelX, last), j: Math.min(values.texelY, last), alpha: base, mapKind: values.map,
       });
     }
+    const aniso = scene ? Math.min(Number(values.anisotropy), scene.maxAnisotropy) : 1;
+    const anisoText = Number(values.anisotropy) === 1 ? 'trilinear' : `${aniso}× anisotropic filtering`
+      + (aniso < Number(values.anisotropy) ? ` (this GPU offers at most ${scene.maxAnisotropy}×)` : '');
     dom.setSummary(`${values.technique}, ${values.precision}, ${values.channels} channels; base α = ${base} `
-      + `(Blinn-Phong s = ${exponentFromAlpha(base).toFixed(1)}); mip level ${values.level < 0 ? 'automatic' : `forced to ${Math.min(values.level, levels - 1)}`} `
-      + `of 0–${levels - 1}; R0 = ${normalIncidence(1, IOR).toFixed(3)}; all six chains built in ${buildMs.toFixed(0)} ms.`
+      + `(Blinn-Phong s = ${exponentFromAlpha(base).toFixed(1)}); mip level ${values.level < 0 ? `automatic, ${anisoText}` : `forced to ${Math.min(values.level, levels - 1)}`} `
+      + `of 0–${levels - 1}; R0 = ${normalIncidence(1, IOR).toFixed(3)}; all six chains of the ${built.size}² map built in ${built.ms.toFixed(0)} ms (${built.where}).`
       + (values.precision === 'f32' && scene && !scene.floatLinear ? ' This GPU cannot filter 32-bit float textures: pick f16.' : ''));
     dom.setLegend(`level ${levels - 1} (difference: 0 to 0.25)`);
     if (!scene) return;
-    const m = mapParams(values);
+    const light = lightPlacement(values);
     scene.set({
       technique: values.technique,
-      channels: Number(values.channels),
+      channels,
       cap: values.truthSamples,
       truthOn: values.truth,
+      anisotropy: aniso,
       uAlpha: base,
       uForcedLevel: values.level < 0 ? -1 : Math.min(values.level, levels - 1),
       uMapSize: size(),
       uMaxLevel: levels - 1,
-      uMapKind: MAP_KINDS[values.map],
-      uMapFreq: m.frequency,
-      uMapAngle: values.angle * DEG,
+      ...mapUniforms(createNormalMap(values.map, mapParams(values))),
       uPitch: values.viewEl * DEG,
-      uSunDir: [Math.sin(values.lightAz * DEG) * Math.cos(values.lightEl * DEG), Math.sin(values.lightEl * DEG),
-        Math.cos(values.lightAz * DEG) * Math.cos(values.lightEl * DEG)],
+      uLightPos: light.position,
+      uLightDist2: values.lightDist ** 2,
+      uSunDir: light.fromCamera, // the sky draws its glow where the light is
       uFresnel: ['exact', 'schlick', 'off'].indexOf(values.fresnel),
       uView: values.truth ? ['split', 'technique', 'truth', 'difference'].indexOf(values.view) : 1,
       uOverlay: values.overlay ? 1 : 0,
     }, has(TRUTH_KEYS));
-    // The truth does not depend on what the techniques store or on the forced level: only the errors do.
-    if (!has(TRUTH_KEYS) && has(['size', 'precision', 'channels', 'level'])) scene.refreshErrors();
+    // The truth does not depend on what the techniques store, the forced level or the filtering: only the errors do.
+    if (!has(TRUTH_KEYS) && has(['size', 'precision', 'channels', 'level', 'anisotropy'])) scene.refreshErrors();
     showStatus();
   }
   update();
@@ -171,11 +249,27 @@ export function mount(root, ctx) {
   return {
     get scene() { return scene; },
     get chains() { return chains; },
-    get buildMs() { return buildMs; },
+    get buildMs() { return built.ms; },
+    /** Resolves once the newest chain build has been applied (tests, the benchmark). */
+    whenBuilt,
     get stripStats() { return stripStats; },
     get inspected() { return inspected; },
     get shimmer() { return shimmer; },
     samplesPerFrame: SAMPLES_PER_FRAME,
+    /**
+     * npm run bench: chain-build timing at `size` (benchChainBuild), then the longest main-thread
+     * task while this panel switches to that size and draws it (building, upload, strip).
+     */
+    async bench({ size = 1024, repeats = 5 } = {}) {
+      const build = await benchChainBuild({ size, repeats });
+      const panel = await watchLongTasks(async () => {
+        values.size = String(size);
+        ctx.changed(['size']);
+        await whenBuilt();
+        await new Promise((resolve) => { requestAnimationFrame(() => resolve()); });
+      });
+      return { ...build, panelLongestTaskMs: panel.longestTaskMs };
+    },
     update,
     describe() {
       const errors = scene?.state.errors;
@@ -199,6 +293,8 @@ export function mount(root, ctx) {
     },
     png: scene ? () => scene.toDataURL() : null,
     dispose() {
+      disposed = true;
+      builder.dispose();
       scene?.dispose();
     },
   };

@@ -12,12 +12,15 @@ export function buildNormalMipsDom(host) {
   const canvas = el('canvas', 'nm-canvas');
   canvas.setAttribute('role', 'img');
   canvas.setAttribute('aria-label',
-    'A bumpy plane receding to the horizon under a low sun: on the left the highlight from the chosen mip technique, on the right the supersampled ground truth.');
+    'A bumpy plane receding to the horizon under a low point light: on the left the highlight from the chosen mip technique, on the right the supersampled ground truth.');
   const leftCap = el('div', 'nm-cap nm-cap-left');
   const rightCap = el('div', 'nm-cap nm-cap-right');
   const message = el('div', 'nm-message');
   message.hidden = true;
-  stage.append(canvas, leftCap, rightCap, message);
+  const busy = el('div', 'nm-busy');
+  busy.setAttribute('role', 'status');
+  busy.hidden = true;
+  stage.append(canvas, leftCap, rightCap, message, busy);
 
   const summary = el('p', 'nm-summary');
   summary.setAttribute('aria-live', 'polite');
@@ -62,6 +65,11 @@ export function buildNormalMipsDom(host) {
         ? `Shimmer (mean brightness change per pixel under a sub-pixel camera move, lower is steadier): ${
           Object.entries(results).sort((a, b) => a[1] - b[1]).map(([t, v]) => `${t} ${v.toFixed(4)}`).join(', ')}.`
         : 'Shimmer meter: press “Measure shimmer” to compare how much each technique flickers when the camera moves by less than a pixel.';
+    },
+    /** A line over the stage while the chains build ('' hides it). */
+    setBusy(text) {
+      busy.textContent = text;
+      busy.hidden = !text;
     },
     setSummary(text) {
       summary.textContent = text;

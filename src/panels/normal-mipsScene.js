@@ -23,7 +23,8 @@ const TYPES = { u8: UnsignedByteType, f16: HalfFloatType, f32: FloatType };
 export const SAMPLES_PER_FRAME = 8;
 
 // One DataTexture per uploaded texture, every level supplied; u8 decodes as min + (max − min)·c.
-function makeTexture(upload) {
+// anisotropy: EXT_texture_filter_anisotropic's level (three.js sets it when the texture uploads).
+function makeTexture(upload, anisotropy) {
   const [first] = upload.mipmaps;
   const tex = new DataTexture(first.data, first.width, first.height, FORMATS[upload.format], TYPES[upload.type]);
   tex.mipmaps = upload.mipmaps;
@@ -33,6 +34,7 @@ function makeTexture(upload) {
   tex.wrapS = RepeatWrapping;
   tex.wrapT = RepeatWrapping;
   tex.colorSpace = NoColorSpace;
+  tex.anisotropy = anisotropy;
   tex.needsUpdate = true;
   const unorm = upload.type === 'u8';
   const scale = [0, 1, 2, 3].map((k) => (unorm && upload.ranges[k] ? upload.ranges[k].max - upload.ranges[k].min : 1));
@@ -74,7 +76,7 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
   const rtTech = floatTarget();
   const rtTruth = [floatTarget(), floatTarget()];
   let textures = {}; // technique → [{ tex, scale, offset }]
-  const state = { technique: 'naive', channels: 3, samples: 0, cap: 256, truthOn: true, errors: null, frame: 0 };
+  const state = { technique: 'naive', channels: 3, samples: 0, cap: 256, truthOn: true, errors: null, frame: 0, anisotropy: 1 };
   let cur = 0;
 
   function bindTechnique(technique) {
@@ -118,6 +120,7 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
   }
 
   function draw() {
+    if (!Object.keys(textures).length) return; // nothing to show until the first chains arrive
     u.uDebug.value = 0;
     bindTechnique(state.technique);
     pass(0, rtTech);
@@ -176,18 +179,36 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
     renderer,
     /** 32-bit float textures are filtered only with OES_texture_float_linear (three.js warns without it). */
     floatLinear: renderer.extensions.has('OES_texture_float_linear'),
+    /** The largest anisotropic filtering level this GPU offers (1 without the extension). */
+    maxAnisotropy: renderer.capabilities.getMaxAnisotropy(),
     uniforms: u,
     state,
     frames,
-    /** Uploads every technique's chain (from buildAllChains) and restarts nothing else. */
-    setChains(chains) {
+    /**
+     * Uploads every technique's chain (from buildAllChains) and restarts nothing else; uploads,
+     * when given, are the chains already packed by uploadLevels (as buildChainsFor returns them).
+     */
+    setChains(chains, uploads = {}) {
       disposeTextures();
-      for (const technique of TECHNIQUES) textures[technique] = uploadLevels(chains[technique]).map(makeTexture);
+      for (const technique of TECHNIQUES) {
+        const packed = uploads[technique] ?? uploadLevels(chains[technique]);
+        textures[technique] = packed.map((upload) => makeTexture(upload, state.anisotropy));
+      }
       frames.request();
     },
     /** Sets uniforms; truthChanged restarts the ground truth (and the error table). */
-    set({ technique, channels, cap, truthOn, ...values }, truthChanged) {
+    set({ technique, channels, cap, truthOn, anisotropy, ...values }, truthChanged) {
       if (technique !== undefined) state.technique = technique;
+      if (anisotropy !== undefined && anisotropy !== state.anisotropy) {
+        state.anisotropy = anisotropy;
+        u.uAniso.value = anisotropy;
+        for (const list of Object.values(textures)) {
+          for (const { tex } of list) {
+            tex.anisotropy = anisotropy;
+            tex.needsUpdate = true; // three.js applies the level when it (re)uploads
+          }
+        }
+      }
       if (channels !== undefined) u.uChannels.value = channels;
       if (cap !== undefined) state.cap = cap;
       if (truthOn !== undefined) state.truthOn = truthOn;

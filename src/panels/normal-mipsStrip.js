@@ -1,11 +1,12 @@
 // The mip strip of the normal-mips panel: every level of the chain three ways (2D canvases):
 //   RGB       the stored average N_a as the colour c = N_a/2 + ½ (naive chain, note §1.6)
 //   |N_a|     its length as a heatmap over [0.5, 1] (1 = all normals agree; Toksvig's input, §2.3)
-//   α'        the chosen technique's effective roughness (effectiveRoughness.js) over [0, 1]
+//   α'        the chosen technique's effective roughness (effectiveRoughness.js texelLobe) over [0, 1]
 // and the storage cost of every technique's chain (storageCost.js). Heat colours: src/ui/colormap.js.
 import { colormap, colormapGradient } from '../ui/colormap.js';
 import { el } from '../ui/el.js';
-import { effectiveRoughness } from '../normals/effectiveRoughness.js';
+import { createLobe, texelLobe } from '../normals/effectiveRoughness.js';
+import { reconstructZ } from '../normals/lobeFormulas.js';
 import { storageCost } from '../normals/storageCost.js';
 import { TECHNIQUES } from '../normals/techniqueLayout.js';
 
@@ -16,24 +17,50 @@ function heat(t) {
   return LUT[Math.round(255 * Math.min(1, Math.max(0, t))) || 0];
 }
 
-// One level into a thumbnail canvas: pixel(t) gives [r, g, b] bytes for texel t.
+// Thumbnails are drawn from at most THUMB² texels of a level, one per canvas pixel (the nearest
+// texel, which is what drawing the full level without smoothing would show): a 1024² level costs
+// no more than an 84² one, so the strip stays cheap at any map size.
+const THUMB = CELL;
+
+// One level into a thumbnail canvas: pixel(t) gives [r, g, b] bytes for texel t of a size² level.
 function paint(canvas, size, pixel) {
-  const image = new ImageData(size, size);
-  for (let t = 0; t < size * size; t++) {
-    const [r, g, b] = pixel(t);
+  const m = Math.min(size, THUMB);
+  const image = new ImageData(m, m);
+  for (let y = 0; y < m; y++) {
     // Row 0 of the data is v = 0: draw it at the bottom, as on the plane's texture.
-    const o = ((size - 1 - Math.floor(t / size)) * size + (t % size)) * 4;
-    image.data[o] = r;
-    image.data[o + 1] = g;
-    image.data[o + 2] = b;
-    image.data[o + 3] = 255;
+    const j = Math.floor(((m - 1 - y + 0.5) * size) / m);
+    for (let x = 0; x < m; x++) {
+      const [r, g, b] = pixel(j * size + Math.floor(((x + 0.5) * size) / m));
+      const o = (y * m + x) * 4;
+      image.data[o] = r;
+      image.data[o + 1] = g;
+      image.data[o + 2] = b;
+      image.data[o + 3] = 255;
+    }
   }
-  const source = new OffscreenCanvas(size, size);
+  const source = new OffscreenCanvas(m, m);
   source.getContext('2d').putImageData(image, 0, 0);
   const g = canvas.getContext('2d');
   g.imageSmoothingEnabled = false;
   g.clearRect(0, 0, canvas.width, canvas.height);
   g.drawImage(source, 0, 0, canvas.width, canvas.height);
+}
+
+/**
+ * Mean |N_a| of a level of the naive chain over all its texels, z rebuilt for 2 channels as the
+ * shader does (texelLobe's length, in one tight loop: a 1024² chain has 1.4 million texels).
+ */
+function meanStoredLength(chain, level) {
+  const d = chain.levels[level].data;
+  const c = chain.components;
+  let sum = 0;
+  for (let o = 0; o < d.length; o += c) {
+    const x = d[o];
+    const y = d[o + 1];
+    const z = chain.channels === 3 ? d[o + 2] : Math.fround(reconstructZ(x, y));
+    sum += Math.fround(Math.sqrt(x * x + y * y + z * z));
+  }
+  return sum / (d.length / c);
 }
 
 export function buildMipStrip(host, { onPick } = {}) {
@@ -80,25 +107,24 @@ export function buildMipStrip(host, { onPick } = {}) {
   }
 
   return {
-    /** chains from buildAllChains; technique and base α pick the α′ row. Returns the level-wise mean |N_a| and α′. */
+    /** chains from buildAllChains; technique and base α pick the α′ row. Returns the level-wise mean |N_a|. */
     draw(chains, technique, alpha, { precision, channels }) {
       const naive = chains.naive;
       const levels = naive.levels.length;
       if (cells[0]?.length !== levels) layout(levels);
       cells.size = naive.size;
       const meanLength = [];
-      const meanAlpha = [];
-      naive.levels.forEach(({ size, data }, l) => {
-        const c = naive.components;
-        const lengths = effectiveRoughness(naive, l, { alpha }).length;
-        const rough = effectiveRoughness(chains[technique], l, { alpha }).alpha;
-        const byte = (x) => Math.round(255 * Math.min(1, Math.max(0, x * 0.5 + 0.5)));
-        const z = (t) => (c === 3 ? data[t * c + 2] : Math.sqrt(Math.max(0, 1 - data[t * c] ** 2 - data[t * c + 1] ** 2)));
-        paint(cells[0][l], size, (t) => [byte(data[t * c]), byte(data[t * c + 1]), byte(z(t))]);
-        paint(cells[1][l], size, (t) => heat((lengths[t] - 0.5) / 0.5));
-        paint(cells[2][l], size, (t) => heat(rough[t]));
-        meanLength.push(lengths.reduce((s, v) => s + v, 0) / lengths.length);
-        meanAlpha.push(rough.reduce((s, v) => s + v, 0) / rough.length);
+      const lobe = createLobe();
+      const base = { alpha };
+      const byte = (x) => Math.round(255 * Math.min(1, Math.max(0, x * 0.5 + 0.5)));
+      naive.levels.forEach(({ size }, l) => {
+        paint(cells[0][l], size, (t) => {
+          const { normal: [x, y, z], length } = texelLobe(naive, l, t, base, lobe);
+          return [byte(x * length), byte(y * length), byte(z * length)];
+        });
+        paint(cells[1][l], size, (t) => heat((texelLobe(naive, l, t, base, lobe).length - 0.5) / 0.5));
+        paint(cells[2][l], size, (t) => heat(texelLobe(chains[technique], l, t, base, lobe).alpha));
+        meanLength.push(meanStoredLength(naive, l));
       });
       costs.replaceChildren(el('caption', '', `Storage of each technique's whole chain (${naive.size}², ${precision}, ${channels} channels)`));
       const head = el('tr');
@@ -111,7 +137,7 @@ export function buildMipStrip(host, { onPick } = {}) {
           el('td', '', cost.varianceKept ? 'yes' : 'no'));
         costs.append(row);
       }
-      return { meanLength, meanAlpha };
+      return { meanLength };
     },
   };
 }

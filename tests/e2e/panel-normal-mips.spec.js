@@ -11,8 +11,9 @@ test('mounts in an embed and honours the URL', async ({ page }) => {
   const summary = page.locator('.nm-summary');
   await expect(summary).toContainText('lean, u8, 2 channels');
   await expect(summary).toContainText('forced to 3 of 0–8');
-  const state = await page.evaluate((id) => {
+  const state = await page.evaluate(async (id) => {
     const p = window.fresnelLab.panels[id];
+    await p.whenBuilt();
     return { technique: p.scene.state.technique, level: p.scene.uniforms.uForcedLevel.value, kind: p.scene.uniforms.uMapKind.value, precision: p.chains.lean.precision };
   }, PANEL);
   expect(state).toEqual({ technique: 'lean', level: 3, kind: 1, precision: 'u8' });
@@ -22,9 +23,10 @@ test('every uploaded mip level is sampled exactly with textureLod', async ({ pag
   await openLab(page, `${URL}&truth=false`);
   const cases = [['toksvig', 'f16', '3'], ['lean', 'u8', '3'], ['vmf', 'f32', '2'], ['renormalized', 'u8', '2']];
   for (const [technique, precision, channels] of cases) {
-    const worst = await page.evaluate(([id, t, p, c]) => {
+    const worst = await page.evaluate(async ([id, t, p, c]) => {
       window.fresnelLab.hosts[id].set({ precision: p, channels: c });
       const panel = window.fresnelLab.panels[id];
+      await panel.whenBuilt(); // the chains are built in a worker
       const chain = panel.chains[t];
       let max = 0;
       chain.textures.forEach(({ sources }, k) => {
@@ -70,8 +72,9 @@ test('far bumps: variance-keeping techniques beat renormalized and naive, and th
   expect(csv.columns.rmse[2]).toBe(errors.toksvig.rmse);
   // Two stored channels rebuild z, so |N| = 1 and Toksvig sees no variance: it falls back to renormalized
   // (re-measured against the same converged truth, which is not restarted).
-  const twoChannel = await page.evaluate((id) => {
+  const twoChannel = await page.evaluate(async (id) => {
     window.fresnelLab.hosts[id].set({ channels: '2' });
+    await window.fresnelLab.panels[id].whenBuilt();
     const { state } = window.fresnelLab.panels[id].scene;
     return { samples: state.samples, toksvig: state.errors.toksvig.rmse, renormalized: state.errors.renormalized.rmse, lean: state.errors.lean.rmse };
   }, PANEL);
@@ -86,16 +89,18 @@ test('far bumps: variance-keeping techniques beat renormalized and naive, and th
 
 test('controls change the picture', async ({ page }) => {
   await openLab(page, `${URL}&truth=false&view=technique`);
-  const sum = (id, values) => page.evaluate(([pid, v]) => {
+  const sum = (id, values) => page.evaluate(async ([pid, v]) => {
     window.fresnelLab.hosts[pid].set(v);
+    await window.fresnelLab.panels[pid].whenBuilt();
     const url = window.fresnelLab.panels[pid].scene.toDataURL();
     return url.length;
   }, [id, values]);
   const plain = await sum(PANEL, { overlay: false });
   const overlay = await sum(PANEL, { overlay: true });
   expect(overlay).not.toBe(plain);
-  const pixel = (values) => page.evaluate(([pid, v]) => {
+  const pixel = (values) => page.evaluate(async ([pid, v]) => {
     window.fresnelLab.hosts[pid].set(v);
+    await window.fresnelLab.panels[pid].whenBuilt();
     const image = window.fresnelLab.panels[pid].scene.readTechnique();
     let total = 0;
     for (let o = 0; o < image.length; o += 4) if (image[o + 3] >= 0) total += image[o] + image[o + 1] + image[o + 2];
@@ -109,8 +114,9 @@ test('controls change the picture', async ({ page }) => {
 test('mip strip and texel inspector: V-grooves average to cos θ, one blob for two spikes', async ({ page }) => {
   await openLab(page, `${URL}&truth=false&map=grooves&angle=30&frequency=16&texelLevel=4`);
   await expect(page.locator('.nm-strip-cell')).toHaveCount(27); // 9 levels × RGB, |N_a|, α′
-  const { meanLength, inspected } = await page.evaluate((id) => {
+  const { meanLength, inspected } = await page.evaluate(async (id) => {
     const p = window.fresnelLab.panels[id];
+    await p.whenBuilt();
     return { meanLength: p.stripStats.meanLength, inspected: p.inspected };
   }, PANEL);
   // Period 16 texels: levels ≥ 4 average both facets to |N_a| = cos 30° (f16 storage).
@@ -123,7 +129,7 @@ test('mip strip and texel inspector: V-grooves average to cos θ, one blob for t
   expect(Math.abs(inspected.lobes.renormalized.centre[0])).toBeLessThan(1e-3); // flat: between the spikes
   await expect(page.locator('.nm-inspector-verdict')).toContainText('Two spikes, one blob');
   // Clicking a level-1 thumbnail picks a texel there; bumps give one cloud, not two spikes.
-  await page.evaluate((id) => window.fresnelLab.hosts[id].set({ map: 'bumps' }), PANEL);
+  await page.evaluate((id) => { window.fresnelLab.hosts[id].set({ map: 'bumps' }); return window.fresnelLab.panels[id].whenBuilt(); }, PANEL);
   await page.locator('.nm-strip-cell').nth(1).click({ position: { x: 5, y: 80 } });
   await expect.poll(() => page.evaluate((id) => window.fresnelLab.hosts[id].values.texelLevel, PANEL)).toBe(1);
   await expect(page.locator('.nm-inspector-verdict')).not.toContainText('Two spikes');
@@ -141,4 +147,62 @@ test('shimmer meter: renormalized flickers more than Toksvig under sub-pixel cam
   // A change of view makes the old numbers stale.
   await page.evaluate((id) => window.fresnelLab.hosts[id].set({ viewEl: 12 }), PANEL);
   await expect(page.locator('.nm-shimmer')).toContainText('press');
+});
+
+// Mean λ over plane pixels and the column of the brightest plane pixel, from the technique pass.
+function readPlane(page, values) {
+  return page.evaluate(async ([id, v]) => {
+    window.fresnelLab.hosts[id].set(v);
+    const panel = window.fresnelLab.panels[id];
+    await panel.whenBuilt();
+    const image = panel.scene.readTechnique();
+    const [width] = panel.scene.uniforms.uResolution.value;
+    let lod = 0;
+    let count = 0;
+    let best = -1;
+    let column = -1;
+    for (let o = 0, p = 0; o < image.length; o += 4, p++) {
+      if (image[o + 3] < 0) continue;
+      lod += image[o + 3];
+      count++;
+      const y = image[o] + image[o + 1] + image[o + 2];
+      if (y > best) { best = y; column = p % width; }
+    }
+    return { lod: lod / count, column: column / width, max: panel.scene.maxAnisotropy };
+  }, [PANEL, values]);
+}
+
+test('anisotropic filtering samples finer levels; the point light places the highlight', async ({ page }) => {
+  await openLab(page, `${URL}&truth=false&view=technique`);
+  const trilinear = await readPlane(page, { anisotropy: '1' });
+  const aniso = await readPlane(page, { anisotropy: '16' });
+  await expect(page.locator('.nm-summary')).toContainText('anisotropic filtering');
+  // At 8° below the horizon the footprint is long and thin: N taps along it lower λ by up to log2 N.
+  if (aniso.max > 1) expect(aniso.lod).toBeLessThan(trilinear.lod - 0.5);
+  else expect(aniso.lod).toBeCloseTo(trilinear.lod, 6);
+  // Light ahead: the glint is in the middle; light to the left (negative azimuth): left of it.
+  const ahead = await readPlane(page, { anisotropy: '1', lightAz: 0 });
+  const left = await readPlane(page, { lightAz: -40 });
+  expect(Math.abs(ahead.column - 0.5)).toBeLessThan(0.05);
+  expect(left.column).toBeLessThan(ahead.column - 0.1);
+});
+
+test('noise and mixed maps: the ground truth runs their GLSL twins, and keeping the variance still pays', async ({ page }) => {
+  test.setTimeout(60_000);
+  await openLab(page, `${URL}&map=mixed&truthSamples=32`);
+  await page.waitForFunction((id) => window.fresnelLab.panels[id]?.scene.state.errors, PANEL, { timeout: 45_000 });
+  const { errors, kind } = await page.evaluate((id) => {
+    const { scene } = window.fresnelLab.panels[id];
+    return { errors: scene.state.errors, kind: scene.uniforms.uMapKind.value };
+  }, PANEL);
+  expect(kind).toBe(4);
+  for (const good of ['toksvig', 'clean', 'lean']) expect(errors[good].rmse, good).toBeLessThan(errors.naive.rmse);
+  // A 2-channel noise map is rebuilt in the worker and drawn with the noise kind.
+  const noise = await page.evaluate(async (id) => {
+    window.fresnelLab.hosts[id].set({ map: 'noise', channels: '2' });
+    const panel = window.fresnelLab.panels[id];
+    await panel.whenBuilt();
+    return { kind: panel.scene.uniforms.uMapKind.value, channels: panel.chains.naive.channels };
+  }, PANEL);
+  expect(noise).toEqual({ kind: 3, channels: 2 });
 });

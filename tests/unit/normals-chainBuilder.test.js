@@ -1,0 +1,49 @@
+import { describe, expect, it } from 'vitest';
+import { buildChainsFor, transferablesOf } from '../../src/normals/buildChainsFor.js';
+import { createChainBuilder } from '../../src/normals/createChainBuilder.js';
+import { TECHNIQUES } from '../../src/normals/techniqueLayout.js';
+
+const request = { kind: 'bumps', params: { frequency: 4, edgeAngleDeg: 30 }, size: 32, precision: 'f16', channels: 3 };
+
+describe('buildChainsFor', () => {
+  it('builds every technique and times itself with the given clock', () => {
+    let t = 0;
+    const { chains, pyramid, ms } = buildChainsFor(request, () => (t += 5));
+    expect(Object.keys(chains)).toEqual([...TECHNIQUES]);
+    expect(pyramid.map((l) => l.size)).toEqual([32, 16, 8, 4, 2, 1]);
+    expect(chains.lean.levels).toHaveLength(6);
+    expect(ms).toBe(5);
+  });
+
+  it('lists each buffer once (Toksvig shares naive\'s levels), so postMessage can transfer them', () => {
+    const result = buildChainsFor(request);
+    const buffers = transferablesOf(result);
+    expect(new Set(buffers).size).toBe(buffers.length);
+    expect(buffers).toContain(result.chains.toksvig.levels[0].data.buffer);
+    expect(buffers).toContain(result.pyramid[0].data.buffer);
+    // naive and toksvig share; the other four chains and the pyramid own one buffer per level,
+    // and so does each packed texture (lean has two; toksvig's packing is naive's)
+    const textures = Object.entries(result.uploads).filter(([t]) => t !== 'toksvig').reduce((n, [, list]) => n + list.length, 0);
+    expect(result.uploads.toksvig).toBe(result.uploads.naive);
+    expect(buffers).toHaveLength(6 * (5 + 1 + textures));
+  });
+});
+
+describe('createChainBuilder without a Worker (Node): the same build on this thread', () => {
+  it('resolves the newest request and drops superseded ones unbuilt', async () => {
+    const builder = createChainBuilder();
+    expect(builder.where).toBe('main thread');
+    const first = builder.build(request);
+    const second = builder.build({ ...request, size: 16 });
+    expect(await first).toBeNull();
+    const result = await second;
+    expect(result.where).toBe('main thread');
+    expect(result.chains.naive.size).toBe(16);
+    builder.dispose();
+  });
+
+  it('rejects a bad request with the map\'s own message', async () => {
+    const builder = createChainBuilder({ useWorker: false });
+    await expect(builder.build({ ...request, size: 30 })).rejects.toThrow(/power of two/);
+  });
+});
