@@ -4,7 +4,8 @@
 // shared dist/ is left alone; --dist serves dist/ instead, building it only if it is missing),
 // serves it with vite preview on a free loopback port, opens embed.html?panel=speed-accuracy&bench=…
 // in Chromium launched exactly as playwright.config.js launches it (same executable and
-// SwiftShader flags), waits for the panel's run, prints the table, and writes results.json and
+// SwiftShader flags), waits for the panel's run, then times the normal-mips chain build
+// (embed.html?panel=normal-mips, its bench()), prints the table, and writes results.json and
 // results.png (the chart) to bench/ (or --out).
 import { chromium } from '@playwright/test';
 import { spawn } from 'node:child_process';
@@ -114,12 +115,24 @@ try {
     clearTimeout(timer);
   }
   if (!results) throw new Error(`the benchmark did not finish: ${await page.locator('.sa-status').textContent()}`);
+  await page.locator('.sa-chart').screenshot({ path: join(outDir, 'results.png') });
+  const table = await page.evaluate(() => window.fresnelLab.panels['speed-accuracy'].resultsTable());
+
+  // The normal-map viewer: building every technique's chain for a 1024² map (64² with --tiny).
+  const chainSize = size === 'tiny' ? 64 : 1024;
+  log(`timing the normal-mips chain build at ${chainSize}²`);
+  await page.goto(`${base}embed.html?panel=normal-mips&truth=false`);
+  await page.evaluate(() => window.fresnelLab.ready);
+  results.normalMips = await page.evaluate((n) => window.fresnelLab.panels['normal-mips'].bench({ size: n, repeats: n > 256 ? 5 : 3 }), chainSize);
+  const nm = results.normalMips;
+  const ms = ({ median, min, max }) => `${median.toFixed(0)} ms [${min.toFixed(0)}, ${max.toFixed(0)}]`;
+  const chainLine = `normal-mips: all six chains of a ${nm.size}² map in ${ms(nm.wallMs)} (${nm.where}; build alone ${ms(nm.buildMs)}); `
+    + `longest main-thread task ${nm.longestTaskMs.toFixed(0)} ms while building, ${nm.panelLongestTaskMs.toFixed(0)} ms while the panel switched to it`;
+
   results.config = { ...results.config, script: 'bench/run.js', wallSeconds: (Date.now() - started) / 1000, chromium: browser.version() };
   mkdirSync(outDir, { recursive: true });
   writeFileSync(join(outDir, 'results.json'), `${JSON.stringify(results, null, 2)}\n`);
-  await page.locator('.sa-chart').screenshot({ path: join(outDir, 'results.png') });
-  const table = await page.evaluate(() => window.fresnelLab.panels['speed-accuracy'].resultsTable());
-  process.stdout.write(`${table}\n`);
+  process.stdout.write(`${table}\n${chainLine}\n`);
   log(`wrote ${join(outDir, 'results.json')} and results.png in ${((Date.now() - started) / 1000).toFixed(1)} s`);
   if (problems.length) throw new Error(`the page logged errors:\n${problems.join('\n')}`);
 } catch (error) {

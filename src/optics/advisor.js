@@ -89,16 +89,21 @@ function describe(row) {
  * Recommendation for a scene. costs: { methodId: number } in any one unit (e.g. measured ns per
  * evaluation); a method without an entry uses its static count (methods.js), so pass a cost for
  * every method of the scene's kind or none. options.budgetCodes: the largest display error
- * allowed, 0.5 (invisible) by default; options.precision overrides the scene's.
+ * allowed, 0.5 (invisible) by default; options.precision overrides the scene's. options.errors:
+ * { methodId: methodError-shaped stats } measured elsewhere (a GPU read-back) instead of the JS
+ * emulation, with options.where naming them in the reason (the scene and precision otherwise).
  * Returns { methodId, invisible, reason, budgetCodes, precision, table } where table has one row
  * per candidate, cheapest first: { methodId, label, cost, costSource, max, mean, rms,
  * thetaAtMax (radians), maxCodes, nanCount, outOfRange, passes, recommendable } (a method kept
  * only to show a failure, such as the lecture's literal order, is charted but never recommended).
  */
-export function recommend(scene, costs = {}, { budgetCodes = HALF_STEP_CODES, precision = scene.precision } = {}) {
+export function recommend(scene, costs = {}, {
+  budgetCodes = HALF_STEP_CODES, precision = scene.precision, errors = null, where: place = null,
+} = {}) {
   const table = methodsOfKind(scene.kind).map((method) => {
     const measured = Number.isFinite(costs?.[method.id]);
-    const error = methodError(scene, method, precision);
+    const error = errors ? errors[method.id] : methodError(scene, method, precision);
+    if (!error) throw new RangeError(`no error given for ${method.id}`);
     return {
       methodId: method.id,
       label: method.label,
@@ -113,7 +118,7 @@ export function recommend(scene, costs = {}, { budgetCodes = HALF_STEP_CODES, pr
   table.sort((a, b) => a.cost - b.cost || byAccuracy(a, b));
   const passing = table.filter((row) => row.passes && row.recommendable);
   const budget = budgetCodes === HALF_STEP_CODES ? 'half an 8-bit sRGB step (invisible)' : `${budgetCodes} 8-bit codes`;
-  const where = `${scene.label}, ${contextFor(precision).label}`;
+  const where = place ?? `${scene.label}, ${contextFor(precision).label}`;
   let choice;
   let reason;
   if (passing.length > 0) {
@@ -131,5 +136,6 @@ export function recommend(scene, costs = {}, { budgetCodes = HALF_STEP_CODES, pr
     choice = [...table].sort(byAccuracy)[0];
     reason = `No method stays under ${budget} for "${where}"; ${describe(choice)} is the most accurate.`;
   }
-  return { methodId: choice.methodId, invisible: passing.length > 0, reason, budgetCodes, precision: contextFor(precision).name, table };
+  const precisionName = errors ? precision : contextFor(precision).name;
+  return { methodId: choice.methodId, invisible: passing.length > 0, reason, budgetCodes, precision: precisionName, table };
 }

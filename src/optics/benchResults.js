@@ -2,7 +2,8 @@
 // export, the same numbers as CSV columns and as a text table. Costs come from a run
 // (timeMethodsGpu, timeMethodsCpu, the frame timing); errors are computed here, against the
 // float64 reference, over each method kind's default domain (scenes.js: opaque plastic for
-// dielectrics, gold and aluminium for conductors), in float64, float32 and float16.
+// dielectrics, gold and aluminium for conductors), in float64, float32 and float16 emulation,
+// and, when the run read them back, on the GPU in highp and mediump (gpuErrors.js).
 import { methodError } from './advisor.js';
 import { recommendWithin } from './displayBudgets.js';
 import { METHODS } from './methods.js';
@@ -18,32 +19,45 @@ export function gpuPrecisionFor(precision) {
   return precision === 'fp16' ? 'mediump' : 'highp';
 }
 
-/** Error of a method over its kind's default domain: { scene, fp64, fp32, fp16 }, each
- *  { max, mean, rms, maxCodes, thetaAtMaxDeg, nanCount } (mean and RMS weighted as the scene is). */
-export function methodErrors(method) {
+/** The fields of an error kept in the results. */
+function summary(e) {
+  return {
+    max: e.max, mean: e.mean, rms: e.rms, maxCodes: e.maxCodes,
+    thetaAtMaxDeg: e.thetaAtMax === null ? null : e.thetaAtMax * DEG, nanCount: e.nanCount,
+  };
+}
+
+/** Result keys of the errors read back from the GPU, by GLSL precision. */
+export const GPU_ERROR_KEYS = Object.freeze({ highp: 'gpuHighp', mediump: 'gpuMediump' });
+
+/**
+ * Error of a method over its kind's default domain: { scene, weighting, fp64, fp32, fp16,
+ * gpuHighp, gpuMediump }, each { max, mean, rms, maxCodes, thetaAtMaxDeg, nanCount } (mean and
+ * RMS weighted as the scene is). fp*: JS emulation; gpu*: from gpuErrors, the read-back errors
+ * ({ [sceneId]: { highp, mediump: { [methodId]: errorsFromValues() } } }), null without them.
+ */
+export function methodErrors(method, gpuErrors = null) {
   const scene = sceneById(DEFAULT_DOMAIN[method.kind]);
   const out = { scene: scene.id, weighting: scene.weighting };
-  for (const p of PRECISION_IDS) {
-    const e = methodError(scene, method, p);
-    out[p] = {
-      max: e.max, mean: e.mean, rms: e.rms, maxCodes: e.maxCodes,
-      thetaAtMaxDeg: e.thetaAtMax === null ? null : e.thetaAtMax * DEG, nanCount: e.nanCount,
-    };
+  for (const p of PRECISION_IDS) out[p] = summary(methodError(scene, method, p));
+  for (const [precision, key] of Object.entries(GPU_ERROR_KEYS)) {
+    const e = gpuErrors?.[scene.id]?.[precision]?.[method.id];
+    out[key] = e ? summary(e) : null;
   }
   return out;
 }
 
 /**
  * Measured cost per method for a scene ({ id: ns }, medians), from a results object: the GPU at
- * the scene's precision ('gpu') or the CPU ('cpu'). {} when the run has no finite value for
- * every method of the scene's kind (advisor.recommend wants all or none).
+ * the scene's precision, or at glslPrecision when given ('gpu'), or the CPU ('cpu'). {} when the
+ * run has no finite value for every method of the scene's kind (advisor.recommend wants all or none).
  */
-export function measuredCosts(results, scene, source = 'gpu') {
+export function measuredCosts(results, scene, source = 'gpu', glslPrecision = gpuPrecisionFor(scene.precision)) {
   if (!results) return {};
   const costs = {};
   for (const row of results.methods.filter((m) => m.kind === scene.kind)) {
     const ns = source === 'cpu' ? row.cpu?.nsPerEval?.median
-      : (gpuPrecisionFor(scene.precision) === 'mediump' ? row.gpu?.mediump?.nsPerEval : row.gpu?.nsPerEval)?.median;
+      : (glslPrecision === 'mediump' ? row.gpu?.mediump?.nsPerEval : row.gpu?.nsPerEval)?.median;
     if (!Number.isFinite(ns)) return {};
     costs[row.id] = ns;
   }
@@ -52,10 +66,11 @@ export function measuredCosts(results, scene, source = 'gpu') {
 
 /**
  * The results object. gpu: timeMethodsGpu's result (or null), cpu: timeMethodsCpu's (or null),
- * frames: timeFrames' (or null); meta: { date, userAgent, config, gpuError, device
- * (deviceInfo, for when the GPU timing failed) }.
+ * frames: timeFrames' (or null), gpuErrors: the errors read back on the GPU (see methodErrors; or
+ * null); meta: { date, userAgent, config, gpuError, gpuReadbackError, device (deviceInfo, for
+ * when the GPU timing failed) }.
  */
-export function benchResults({ gpu = null, cpu = null, frames = null, meta = {} } = {}) {
+export function benchResults({ gpu = null, cpu = null, frames = null, gpuErrors = null, meta = {} } = {}) {
   const methods = METHODS.map((m) => {
     const highp = gpu?.results?.highp?.[m.id];
     const mediump = gpu?.results?.mediump?.[m.id];
@@ -69,7 +84,7 @@ export function benchResults({ gpu = null, cpu = null, frames = null, meta = {} 
         mediump: mediump ? { nsPerEval: mediump.nsPerEval, samples: mediump.samples } : null,
       } : null,
       cpu: cpu?.methods?.[m.id] ? { context: 'fp64', nsPerEval: cpu.methods[m.id].nsPerEval, samples: cpu.methods[m.id].samples } : null,
-      error: methodErrors(m),
+      error: methodErrors(m, gpuErrors),
     };
   });
   const results = {
@@ -81,6 +96,7 @@ export function benchResults({ gpu = null, cpu = null, frames = null, meta = {} 
       webgl: (gpu?.device ?? meta.device)?.version ?? null,
       timer: gpu?.timer ?? null,
       gpuError: meta.gpuError ?? null,
+      gpuReadbackError: meta.gpuReadbackError ?? null,
       userAgent: meta.userAgent ?? null,
     },
     config: {
@@ -122,10 +138,11 @@ export function benchCsv(results) {
   for (const [name, get] of [['gpu_highp', (r) => r.gpu?.nsPerEval], ['gpu_mediump', (r) => r.gpu?.mediump?.nsPerEval], ['cpu_fp64', (r) => r.cpu?.nsPerEval]]) {
     for (const stat of ['median', 'min', 'max']) columns[`${name}_ns_${stat}`] = col((r) => get(r)?.[stat]);
   }
-  for (const p of PRECISION_IDS) {
-    columns[`error_${p}_max`] = col((r) => r.error[p].max);
-    columns[`error_${p}_mean`] = col((r) => r.error[p].mean);
-    columns[`error_${p}_max_codes`] = col((r) => r.error[p].maxCodes);
+  const errorColumns = { ...Object.fromEntries(PRECISION_IDS.map((p) => [p, p])), gpuHighp: 'gpu_highp', gpuMediump: 'gpu_mediump' };
+  for (const [p, name] of Object.entries(errorColumns)) {
+    columns[`error_${name}_max`] = col((r) => r.error[p]?.max);
+    columns[`error_${name}_mean`] = col((r) => r.error[p]?.mean);
+    columns[`error_${name}_max_codes`] = col((r) => r.error[p]?.maxCodes);
   }
   return { filename: 'fresnel-lab-speed-accuracy.csv', columns };
 }
@@ -133,10 +150,11 @@ export function benchCsv(results) {
 /** The results as a fixed-width text table (stdout of npm run bench, the README). */
 export function benchTable(results) {
   const ns = (s) => (s ? `${fixed(s.median, 3)} [${fixed(s.min, 3)}, ${fixed(s.max, 3)}]` : '–');
-  const head = ['method', 'GPU highp ns/eval med [min, max]', 'GPU mediump ns/eval', 'CPU ns/eval', 'max|ΔR| fp64', 'fp32', 'fp16'];
+  const head = ['method', 'GPU highp ns/eval med [min, max]', 'GPU mediump ns/eval', 'CPU ns/eval', 'max|ΔR| fp64', 'fp32', 'fp16',
+    'GPU highp', 'GPU mediump'];
   const rows = results.methods.map((r) => [
     r.id, ns(r.gpu?.nsPerEval), ns(r.gpu?.mediump?.nsPerEval), ns(r.cpu?.nsPerEval),
-    sci(r.error.fp64.max), sci(r.error.fp32.max), sci(r.error.fp16.max),
+    sci(r.error.fp64.max), sci(r.error.fp32.max), sci(r.error.fp16.max), sci(r.error.gpuHighp?.max), sci(r.error.gpuMediump?.max),
   ]);
   const widths = head.map((h, i) => Math.max(h.length, ...rows.map((r) => r[i].length)));
   const line = (cells) => cells.map((c, i) => c.padEnd(widths[i])).join('  ').trimEnd();
@@ -146,6 +164,7 @@ export function benchTable(results) {
     out.push('', `Frames at ${f.width}×${f.height} CSS px: hero spheres ${ns(f.spheres.msPerFrame)} ms, `
       + `three.js MeshPhysicalMaterial ${ns(f.threePhysical.msPerFrame)} ms, ratio ${fixed(f.ratio, 2)}${f.timer ? ` (${f.timer})` : ''}`);
   }
-  out.push(`Device: ${results.device.renderer ?? 'no WebGL2'}; timer: ${results.device.timer ?? '–'}`);
+  out.push(`Device: ${results.device.renderer ?? 'no WebGL2'}; timer: ${results.device.timer ?? '–'}`
+    + `; errors: JS emulation (fp64, fp32, fp16)${results.methods.some((r) => r.error.gpuHighp) ? ' and read back from this GPU (highp, mediump)' : ''}`);
   return out.join('\n');
 }

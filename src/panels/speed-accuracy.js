@@ -3,11 +3,14 @@
 // and the advisor's pick (advisor.recommend via displayBudgets.recommendWithin) with its reason.
 // Costs are the static instruction counts (methods.js, fresnel-facts §1) until "Run benchmark"
 // measures them on this device (GPU ns per evaluation at the scene's precision, or CPU ns).
+// Errors come from the JS emulation at the scene's precision, or ("Error measured by") from this
+// GPU in highp or mediump: every sample rendered and read back (speed-accuracyGpu, gpuErrors.js).
 // ?bench=normal|tiny runs the benchmark on load (npm run bench uses it).
 import { benchCsv, benchResults, benchTable, gpuPrecisionFor, measuredCosts } from '../optics/benchResults.js';
 import {
   CRITERION, DEFAULT_BUDGET, DISPLAY_BUDGETS, displayBudget, meanDisplayCodes, recommendWithin,
 } from '../optics/displayBudgets.js';
+import { recommendWithErrors } from '../optics/gpuErrors.js';
 import { methodById } from '../optics/methods.js';
 import { paretoFront } from '../optics/paretoFront.js';
 import { SCENES, sceneById } from '../optics/scenes.js';
@@ -15,25 +18,28 @@ import { downloadText } from '../ui/exporters.js';
 import { BENCH_SIZES, loadCachedResults, runBenchmark, saveCachedResults } from './speed-accuracyBench.js';
 import { createScatter } from './speed-accuracyChart.js';
 import { buildSpeedAccuracyDom, formatCodes, formatNs } from './speed-accuracyDom.js';
+import { cachedGpuErrors, gpuPrecisionProbe, measureGpuErrors } from './speed-accuracyGpu.js';
+import {
+  ERROR_SOURCES, glslOf, mediumpNote, PRECISION_WORDS, sourceWords,
+} from './speed-accuracySource.js';
 import './speed-accuracy.css';
 
 export const id = 'speed-accuracy';
 export const title = 'Speed against accuracy';
-export const usesWebGL = false; // the chart is 2D; WebGL contexts live only while a benchmark runs
+export const usesWebGL = false; // the chart is 2D; WebGL contexts live only while a benchmark or a read-back runs
 export const materialParam = null;
 export const schema = {
   scene: { type: 'enum', default: 'plastic', options: Object.fromEntries(SCENES.map((s) => [s.id, s.label])), label: 'Scene' },
   budget: {
     type: 'enum', default: DEFAULT_BUDGET, options: Object.fromEntries(DISPLAY_BUDGETS.map((b) => [b.id, b.label])), label: 'Error budget',
   },
+  errors: { type: 'enum', default: 'js', options: ERROR_SOURCES, label: 'Error measured by' },
   cost: {
     type: 'enum', default: 'gpu',
     options: { gpu: 'GPU ns per evaluation', cpu: 'CPU ns per evaluation (JS)', static: 'Static instruction count' },
     label: 'Cost axis',
   },
 };
-
-const PRECISION_WORDS = { fp32: 'float32 (highp)', fp16: 'float16 (mediump)' };
 
 function caseText(kind, args) {
   if (!args) return '';
@@ -65,6 +71,9 @@ export function mount(root, ctx) {
   let controller = null;
   let running = null;
   let view = null; // the last drawn state, for describe() and csv()
+  let measuring = null; // the GPU read-back under way: { key, promise }
+  let gpuProblem = ''; // why the GPU read-back failed here, once it has
+  let disposed = false;
 
   const dom = buildSpeedAccuracyDom(root, {
     onRun: () => { run('normal').catch(() => {}); },
@@ -75,16 +84,49 @@ export function mount(root, ctx) {
     ariaLabel: 'Scatter of every Fresnel method: cost across, worst display error up (log scale), with the Pareto '
       + 'front and the error budget as a line. The table below lists the same numbers.',
   });
-  const controllers = bindLabelled(ctx, ctx.gui.addFolder('Scene and budget'), ['scene', 'budget', 'cost']);
+  const controllers = bindLabelled(ctx, ctx.gui.addFolder('Scene and budget'), ['scene', 'budget', 'errors', 'cost']);
+  // Beside the "Error measured by" control: what mediump really is on this GPU, once measured.
+  const gpuNote = document.createElement('p');
+  gpuNote.className = 'sa-gui-note';
+  gpuNote.setAttribute('role', 'status');
+  controllers[2].domElement.after(gpuNote);
 
   /** Results to export: the last run, or errors and static costs only. */
   const currentResults = () => results ?? benchResults({ meta: { date: new Date().toISOString() } });
 
-  function costOf(method, scene, mode) {
+  /** Starts reading a scene's errors back from the GPU (once per scene and precision per session). */
+  function startMeasuring(scene, glsl) {
+    const key = `${scene.id}|${glsl}`;
+    if (measuring?.key === key) return;
+    const promise = measureGpuErrors(scene, glsl).then(() => {
+      if (measuring?.key === key) measuring = null;
+      gpuProblem = '';
+      if (!disposed) ctx.changed([]);
+    }, (error) => {
+      if (measuring?.key === key) measuring = null;
+      if (disposed) return;
+      gpuProblem = `${error?.message ?? error} Reading errors back needs WebGL2 with float render targets, `
+        + 'so the errors shown are the JavaScript emulation.';
+      if (glslOf(values.errors)) values.errors = 'js';
+      ctx.changed(['errors']);
+    });
+    measuring = { key, promise };
+  }
+
+  /** The errors to plot: { source, glsl, measured (the GPU's, or null for JS), waiting }. */
+  function errorSource(scene) {
+    const glsl = glslOf(values.errors);
+    if (!glsl) return { source: 'js', glsl: null, measured: null, waiting: null };
+    const measured = cachedGpuErrors(scene, glsl);
+    if (measured) return { source: values.errors, glsl, measured, waiting: null };
+    startMeasuring(scene, glsl);
+    return { source: 'js', glsl: null, measured: null, waiting: glsl };
+  }
+
+  function costOf(method, glsl, mode) {
     if (mode === 'static' || !results) return { x: method.cost.static, text: `${method.cost.static}` };
     const row = results.methods.find((m) => m.id === method.id);
-    const spread = mode === 'cpu' ? row?.cpu?.nsPerEval
-      : gpuPrecisionFor(scene.precision) === 'mediump' ? row?.gpu?.mediump?.nsPerEval : row?.gpu?.nsPerEval;
+    const spread = mode === 'cpu' ? row?.cpu?.nsPerEval : glsl === 'mediump' ? row?.gpu?.mediump?.nsPerEval : row?.gpu?.nsPerEval;
     if (!spread || !Number.isFinite(spread.median)) return null;
     return { x: spread.median, xMin: spread.min, xMax: spread.max, text: formatNs(spread) };
   }
@@ -93,16 +135,27 @@ export function mount(root, ctx) {
     for (const c of controllers) c.updateDisplay();
     const scene = sceneById(values.scene);
     const budget = displayBudget(values.budget);
+    const src = errorSource(scene);
+    const glsl = src.glsl ?? gpuPrecisionFor(scene.precision); // GPU timings in the read-back's precision
     const wanted = values.cost;
-    const measured = wanted !== 'static' && Object.keys(measuredCosts(results, scene, wanted)).length > 0;
-    const mode = measured ? wanted : 'static';
-    const rec = recommendWithin(scene, measured ? measuredCosts(results, scene, mode) : {}, budget.id);
+    const costs = wanted === 'static' ? {} : measuredCosts(results, scene, wanted, glsl);
+    const mode = Object.keys(costs).length > 0 ? wanted : 'static';
+    const words = sourceWords(src.source, scene, src.measured?.device?.renderer);
+    const rec = src.measured
+      ? {
+        ...recommendWithErrors(scene, src.measured.errors, costs, {
+          budgetCodes: budget.codes, where: `${scene.label}, this GPU in ${src.glsl} (read back)`, precision: src.glsl,
+        }),
+        budget,
+        criterion: CRITERION,
+      }
+      : recommendWithin(scene, costs, budget.id);
     const rows = rec.table.map((r) => {
       const method = methodById(r.methodId);
-      const cost = costOf(method, scene, mode);
+      const cost = costOf(method, glsl, mode);
       return {
-        ...r, ...cost, costText: cost.text,
-        meanCodes: meanDisplayCodes(scene, method), caseText: caseText(scene.kind, r.caseAtMax), recommended: r.methodId === rec.methodId,
+        ...r, ...cost, costText: cost.text, meanCodes: r.meanCodes ?? meanDisplayCodes(scene, method),
+        caseText: caseText(scene.kind, r.caseAtMax), recommended: r.methodId === rec.methodId,
       };
     });
     const points = rows.map((r) => ({
@@ -113,29 +166,35 @@ export function mount(root, ctx) {
     rows.forEach((r, i) => { r.onFront = front.includes(i); });
     const unit = mode === 'static' ? 'static instruction count (SPIR-V, fresnel-facts §1)'
       : mode === 'cpu' ? 'CPU ns per evaluation (JS, float64; median, min–max)'
-        : `GPU ns per evaluation, ${gpuPrecisionFor(scene.precision)} (median, min–max)`;
+        : `GPU ns per evaluation, ${glsl} (median, min–max)`;
     chart.setData({
       points, front, budget: { codes: budget.codes, label: `${budget.codes} codes` },
       xLabel: `Cost: ${unit}`, yLabel: 'Worst display error, 8-bit codes (log)',
-      title: `${scene.label}, ${PRECISION_WORDS[scene.precision]}`,
+      title: `${scene.label}, ${words.short}`,
     });
     const chosen = rows.find((r) => r.recommended);
     const costNote = mode === 'static'
       ? (wanted === 'static' ? 'Costs: static instruction counts.' : 'Costs: static instruction counts until you run the benchmark.')
-      : `Costs: measured here (${mode === 'cpu' ? 'CPU, JavaScript' : `GPU, ${gpuPrecisionFor(scene.precision)}`}).${noiseNote(rows)}`;
+      : `Costs: measured here (${mode === 'cpu' ? 'CPU, JavaScript' : `GPU, ${glsl}`}).${noiseNote(rows)}`;
     dom.setAdvice({
       label: chosen.label,
-      sceneLabel: `${scene.label.toLowerCase()}, ${PRECISION_WORDS[rec.precision] ?? rec.precision}`,
-      reasonText: rec.reason,
+      sceneLabel: `${scene.label.toLowerCase()}, ${src.measured ? words.short : PRECISION_WORDS[rec.precision] ?? rec.precision}`,
+      reasonText: `${rec.reason} ${words.sentence}`,
       criterionText: `Criterion: ${CRITERION}. Budget: ${budget.label}. ${costNote} Domain: ${scene.note}`,
     });
+    const problem = glslOf(values.errors) ? '' : gpuProblem; // shown until the GPU is chosen again
+    dom.setSource(src.waiting
+      ? `Measuring the errors on this GPU in ${src.waiting}… The chart shows the JavaScript emulation until the read-back is done.`
+      : problem, !src.waiting && Boolean(problem));
+    gpuNote.textContent = mediumpNote(gpuPrecisionProbe());
+    gpuNote.hidden = !gpuNote.textContent;
     dom.setTable(rows, {
       costHeader: mode === 'static' ? 'Cost (static count)' : `Cost (${mode === 'cpu' ? 'CPU' : 'GPU'} ns/eval)`,
-      captionText: `${scene.label}: every method, cheapest first`,
+      captionText: `${scene.label}: every method, cheapest first (errors: ${words.short})`,
       budgetCodes: budget.codes,
     });
     dom.setDevice(deviceText());
-    view = { scene, budget, rec, rows, mode, chosen };
+    view = { scene, budget, rec, rows, mode, chosen, source: src.source, glsl: src.glsl, words };
   }
 
   function deviceText() {
@@ -183,23 +242,28 @@ export function mount(root, ctx) {
     get view() { return view; },
     /** The auto-run started by ?bench=…, or null. */
     autorun,
+    /** The GPU read-back under way ("Error measured by" this GPU), or null. */
+    get gpuMeasurement() { return measuring?.promise ?? null; },
     run,
     update,
     describe() {
-      const { scene, budget, chosen, rows, mode } = view;
+      const { scene, budget, chosen, rows, mode, words, glsl } = view;
       const worst = rows.filter((r) => r.methodId !== chosen.methodId).sort((a, b) => b.maxCodes - a.maxCodes)[0];
-      return `For ${scene.label.toLowerCase()} in ${PRECISION_WORDS[scene.precision]}, with a budget of ${budget.codes} `
+      const full = glsl === 'mediump' && gpuPrecisionProbe()?.probe.mediumpIsFullPrecision
+        ? ' mediump runs at full precision on this GPU, so these are float32 errors.' : '';
+      return `For ${scene.label.toLowerCase()} ${words.phrase}, with a budget of ${budget.codes} `
         + `8-bit codes at the worst pixel, the recommendation is ${chosen.label}: worst error ${formatCodes(chosen.maxCodes)} codes, `
         + `cost ${chosen.costText}${mode === 'static' ? ' (static count)' : ''}. `
         + `${rows.filter((r) => r.passes).length} of ${rows.length} methods are within the budget; `
-        + `the worst is ${worst?.label ?? '–'} at ${formatCodes(worst?.maxCodes)} codes.`;
+        + `the worst is ${worst?.label ?? '–'} at ${formatCodes(worst?.maxCodes)} codes.${full}`;
     },
     csv() {
-      const { rows, scene, mode } = view;
+      const { rows, scene, mode, source } = view;
       return {
-        filename: `speed-accuracy-${scene.id}.csv`,
+        filename: `speed-accuracy-${scene.id}-${source}.csv`,
         columns: {
           method: rows.map((r) => r.methodId),
+          error_source: rows.map(() => (source === 'js' ? `js-${scene.precision}` : source)),
           [`cost_${mode}`]: rows.map((r) => r.x ?? NaN),
           cost_min: rows.map((r) => r.xMin ?? NaN),
           cost_max: rows.map((r) => r.xMax ?? NaN),
@@ -218,6 +282,7 @@ export function mount(root, ctx) {
     resultsTable: () => benchTable(currentResults()),
     png: () => chart.toDataURL(),
     dispose() {
+      disposed = true;
       controller?.abort(new DOMException('Panel closed', 'AbortError'));
       chart.dispose();
     },

@@ -1,11 +1,15 @@
-// "Run benchmark": GPU cost per method (timeMethodsGpu), CPU cost per method (timeMethodsCpu),
-// and the hero's frame cost against three.js MeshPhysicalMaterial, one after the other on the
-// viewer's device, with progress and cancel; results kept for the session (sessionStorage).
+// "Run benchmark": GPU cost per method (timeMethodsGpu), the GPU's own errors over the default
+// domains in highp and mediump (read back, speed-accuracyGpu), CPU cost per method
+// (timeMethodsCpu), and the hero's frame cost against three.js MeshPhysicalMaterial, one after the
+// other on the viewer's device, with progress and cancel; results kept for the session
+// (sessionStorage).
 import { createRenderer, WebGL2Unavailable } from '../gl/createRenderer.js';
 import { deviceInfo, timeMethodsGpu } from '../gl/timeMethodsGpu.js';
-import { benchResults } from '../optics/benchResults.js';
+import { benchResults, DEFAULT_DOMAIN, GPU_ERROR_KEYS } from '../optics/benchResults.js';
+import { sceneById } from '../optics/scenes.js';
 import { timeMethodsCpu } from '../optics/timeMethodsCpu.js';
 import { timeFrames } from './speed-accuracyFrames.js';
+import { gpuErrorsOn, rememberGpuErrors } from './speed-accuracyGpu.js';
 
 /** Run sizes: 'normal' takes a few seconds on a GPU (longer on SwiftShader); 'tiny' is for tests. */
 export const BENCH_SIZES = Object.freeze({
@@ -21,14 +25,15 @@ export const BENCH_SIZES = Object.freeze({
   },
 });
 
-const PHASES = { gpu: [0, 0.6], cpu: [0.6, 0.8], frames: [0.8, 1] }; // share of the progress bar
+const PHASES = { gpu: [0, 0.5], errors: [0.5, 0.6], cpu: [0.6, 0.8], frames: [0.8, 1] }; // share of the progress bar
 const CACHE_KEY = 'fresnel-lab:speed-accuracy:results';
 
 /**
  * Runs every measurement. host: a laid-out element for the frame-timing canvases. Options:
  * size ('normal' | 'tiny'), onProgress(fraction, label), signal (AbortSignal). Resolves to
  * benchResults(); without WebGL2 the GPU and frame parts are null and the CPU is still timed;
- * a GPU timing that fails (a shader the driver rejects) is reported in device.gpuError.
+ * a GPU timing that fails (a shader the driver rejects) is reported in device.gpuError, a read-back
+ * that fails (no float render targets) in device.gpuReadbackError.
  */
 export async function runBenchmark(host, { size = 'normal', onProgress, signal } = {}) {
   const config = BENCH_SIZES[size];
@@ -39,6 +44,8 @@ export async function runBenchmark(host, { size = 'normal', onProgress, signal }
   };
   let gpu = null;
   let gpuError = null;
+  let gpuErrors = null;
+  let gpuReadbackError = null;
   let frames = null;
   let renderer = null;
   let device = null;
@@ -50,13 +57,25 @@ export async function runBenchmark(host, { size = 'normal', onProgress, signal }
   try {
     if (renderer) {
       device = deviceInfo(renderer.getContext());
-      onProgress?.(0, 'Compiling the timing shaders');
-      gpu = await timeMethodsGpu(renderer.getContext(), { ...config.gpu, signal, onProgress: report('gpu') });
+      try {
+        onProgress?.(0, 'Compiling the timing shaders');
+        gpu = await timeMethodsGpu(renderer.getContext(), { ...config.gpu, signal, onProgress: report('gpu') });
+      } catch (error) {
+        // A shader this GPU cannot compile must not hide the other numbers: say so instead.
+        if (error?.name === 'AbortError') throw error;
+        gpuError = error?.message ?? String(error);
+      }
+      try {
+        // The errors the GPU itself makes over the default domains, on the same context.
+        const scenes = [...new Set(Object.values(DEFAULT_DOMAIN))].map(sceneById);
+        const readBack = await gpuErrorsOn(renderer.getContext(), scenes, Object.keys(GPU_ERROR_KEYS), { signal, onProgress: report('errors') });
+        gpuErrors = readBack.errors;
+        rememberGpuErrors(readBack); // the panel's "Error measured by" needs no second read-back
+      } catch (error) {
+        if (error?.name === 'AbortError') throw error;
+        gpuReadbackError = error?.message ?? String(error);
+      }
     }
-  } catch (error) {
-    // A shader this GPU cannot compile must not hide the CPU and frame numbers: say so instead.
-    if (error?.name === 'AbortError') throw error;
-    gpuError = error?.message ?? String(error);
   } finally {
     renderer?.dispose();
   }
@@ -64,8 +83,8 @@ export async function runBenchmark(host, { size = 'normal', onProgress, signal }
   if (renderer) frames = await timeFrames(host, { ...config.frames, signal, onProgress: report('frames') });
   onProgress?.(1, 'Done');
   return benchResults({
-    gpu, cpu, frames,
-    meta: { date: new Date().toISOString(), userAgent: navigator.userAgent, config: { size }, gpuError, device },
+    gpu, cpu, frames, gpuErrors,
+    meta: { date: new Date().toISOString(), userAgent: navigator.userAgent, config: { size }, gpuError, gpuReadbackError, device },
   });
 }
 

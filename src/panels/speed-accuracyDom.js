@@ -1,5 +1,6 @@
-// The DOM of the speed-accuracy panel: the recommendation, the chart host, the benchmark bar
-// (run, cancel, progress, JSON export), the device line and the per-method table.
+// The DOM of the speed-accuracy panel: the recommendation, a line about the error source (shown
+// while the GPU read-back runs or after it failed), the chart host, the benchmark bar (run,
+// cancel, progress, JSON export), the device line and the per-method table.
 import { el } from '../ui/el.js';
 
 const DEG = 180 / Math.PI;
@@ -31,6 +32,10 @@ export function buildSpeedAccuracyDom(host, { onRun, onCancel, onJson }) {
   const reason = el('p', 'sa-reason');
   const criterion = el('p', 'sa-criterion');
   advice.append(pick, reason, criterion);
+
+  const source = el('p', 'sa-source');
+  source.setAttribute('role', 'status');
+  source.hidden = true;
 
   const chartHost = el('div', 'sa-chart-host');
   const legend = el('p', 'sa-legend',
@@ -64,7 +69,7 @@ export function buildSpeedAccuracyDom(host, { onRun, onCancel, onJson }) {
   const stage = el('div', 'sa-stage'); // off-screen: the frame-timing canvases live here while they run
   stage.setAttribute('aria-hidden', 'true');
 
-  root.append(advice, chartHost, legend, bench, device, tableWrap, stage);
+  root.append(advice, source, chartHost, legend, bench, device, tableWrap, stage);
   host.append(root);
 
   return {
@@ -74,6 +79,12 @@ export function buildSpeedAccuracyDom(host, { onRun, onCancel, onJson }) {
       pick.replaceChildren(el('span', 'sa-pick-scene', `Recommended for ${sceneLabel}: `), el('strong', 'sa-pick-method', label));
       reason.textContent = reasonText;
       criterion.textContent = criterionText;
+    },
+    /** A line about the error source; warning: styled as one. Empty text hides it. */
+    setSource(text, warning = false) {
+      source.textContent = text;
+      source.hidden = !text;
+      source.classList.toggle('sa-source-warning', warning);
     },
     setRunning(running) {
       run.disabled = running;

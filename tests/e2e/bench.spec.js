@@ -44,10 +44,28 @@ test('npm run bench -- --tiny writes a valid results.json and a chart PNG', asyn
     }
     const exact = results.methods.find((m) => m.id === 'exact-cg').error;
     expect(exact.fp64.max).toBeLessThan(exact.fp32.max);
+    // The errors read back from this GPU over the same default domains, beside the emulated ones.
+    expect(results.device.gpuReadbackError).toBeNull();
+    for (const m of results.methods) {
+      for (const key of ['gpuHighp', 'gpuMediump']) {
+        expect(Number.isFinite(m.error[key].max), `${m.id} ${key}`).toBe(true);
+        expect(m.error[key].mean).toBeLessThanOrEqual(m.error[key].max);
+      }
+    }
+    expect(Math.abs(exact.gpuHighp.max - exact.fp32.max)).toBeLessThan(1e-6); // float32 rounding level on any GPU
+    expect(stdout).toMatch(/GPU highp\s+GPU mediump/);
     expect(isSpread(results.frames.spheres.msPerFrame)).toBe(true);
     expect(isSpread(results.frames.threePhysical.msPerFrame)).toBe(true);
     expect(results.frames.ratio).toBeCloseTo(results.frames.threePhysical.msPerFrame.median / results.frames.spheres.msPerFrame.median, 9);
     expect(results.recommendations.plastic.invisible.methodId).toMatch(/^exact-/);
+    // The normal-map viewer's chain build (64² when tiny), off the page's thread.
+    const nm = results.normalMips;
+    expect(nm.size).toBe(64);
+    expect(nm.where).toBe('worker');
+    expect(isSpread(nm.wallMs) && isSpread(nm.buildMs)).toBe(true);
+    expect(nm.buildMs.median).toBeLessThanOrEqual(nm.wallMs.median);
+    expect(Number.isFinite(nm.longestTaskMs) && Number.isFinite(nm.panelLongestTaskMs)).toBe(true);
+    expect(stdout).toMatch(/normal-mips: all six chains of a 64² map in \d+ ms/);
 
     const png = readFileSync(join(out, 'results.png'));
     expect(png.subarray(1, 4).toString()).toBe('PNG');

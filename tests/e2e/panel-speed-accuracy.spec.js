@@ -1,4 +1,6 @@
 import { test, expect, openLab } from './fixtures.js';
+import { thetaSamples } from '../../src/optics/errorMetrics.js';
+import { fresnelExact } from '../../src/optics/fresnel.js';
 
 const PANEL = 'speed-accuracy';
 const SCHLICK = ['schlick-pow', 'schlick-mul', 'schlick-exp2', 'schlick-tir'];
@@ -8,11 +10,52 @@ const CONDUCTORS = ['conductor-exact', 'conductor-schlick', 'conductor-f82'];
 
 const view = (page) => page.evaluate((id) => {
   const { rows, mode, rec } = window.fresnelLab.panels[id].view;
-  return { mode, methodId: rec.methodId, rows: rows.map((r) => ({ id: r.methodId, x: r.x, y: r.maxCodes, passes: r.passes })) };
+  return { mode, methodId: rec.methodId, rows: rows.map((r) => ({ id: r.methodId, x: r.x, y: r.maxCodes, max: r.max, passes: r.passes })) };
 }, PANEL);
 
 async function choose(page, label, option) {
   await page.locator('.lil-controller', { hasText: label }).locator('select').selectOption({ label: option });
+}
+
+/** The option the "Error measured by" control shows. */
+const sourceOption = (page) => page.locator('.lil-controller', { hasText: 'Error measured by' }).locator('select option:checked');
+
+const gpuMeasured = (page) => page.evaluate((id) => window.fresnelLab.panels[id].gpuMeasurement, PANEL);
+
+// sRGB encoding (IEC 61966-2-1) of a value clamped to [0, 1], in 8-bit codes: the test's own
+// oracle for the display error the chart plots (the panel's is advisor.displayCodes).
+const codes = (x) => {
+  const v = Math.min(1, Math.max(0, x));
+  return 255 * (v <= 0.0031308 ? 12.92 * v : 1.055 * v ** (1 / 2.4) - 0.055);
+};
+
+/**
+ * Max |ΔR| and worst display codes of dielectric methods over a scene's domain ({ cases,
+ * thetaCount, weighting }), from values evaluated on this GPU by another panel's evaluator (the
+ * stability panel's evaluateMethodsGpu handle), with the float64 reference computed here: an
+ * independent check of the panel's read-back path.
+ */
+async function gpuErrors(browserPage, scene, methodIds, precision) {
+  const { cos } = thetaSamples(scene.thetaCount, scene.weighting);
+  const samples = scene.cases.flatMap(([nI, nT]) => Array.from(cos, (c) => [c, nI, nT]));
+  const page = await browserPage.context().newPage();
+  await openLab(page, './embed.html?panel=stability');
+  const values = await page.evaluate(({ ids, rows, p }) => {
+    const { gpu } = window.fresnelLab.panels.stability;
+    const inputs = new Float32Array(rows.flatMap(([c, nI, nT]) => [c, nI, nT, 0]));
+    return ids.map((methodId) => Array.from(gpu.evaluate({ methodId, precision: p, inputs })));
+  }, { ids: methodIds, rows: samples, p: precision });
+  await page.close();
+  return Object.fromEntries(methodIds.map((methodId, m) => {
+    let max = 0;
+    let maxCodes = 0;
+    samples.forEach(([c, nI, nT], i) => {
+      const ref = fresnelExact(c, nI, nT);
+      max = Math.max(max, Math.abs(values[m][i] - ref));
+      maxCodes = Math.max(maxCodes, Math.abs(codes(values[m][i]) - codes(ref)));
+    });
+    return [methodId, { max, maxCodes }];
+  }));
 }
 
 test('renders every method as a point and a table row, with no console errors', async ({ page }) => {
@@ -89,6 +132,16 @@ test('a tiny benchmark fills in measured costs, is cached for the session and ex
   }
   expect(results.frames.spheres.msPerFrame.median).toBeGreaterThan(0);
   expect(results.frames.ratio).toBeGreaterThan(0);
+  // The errors this GPU makes, read back over the default domains beside the emulated ones.
+  expect(results.device.gpuReadbackError).toBeNull();
+  for (const m of results.methods) {
+    for (const key of ['gpuHighp', 'gpuMediump']) {
+      expect(Number.isFinite(m.error[key].max), `${m.id} ${key}`).toBe(true);
+      expect(m.error[key].mean).toBeLessThanOrEqual(m.error[key].max);
+    }
+  }
+  const exactCg = results.methods.find((m) => m.id === 'exact-cg').error;
+  expect(Math.abs(exactCg.gpuHighp.max - exactCg.fp32.max)).toBeLessThan(1e-6);
   // The chart and the advisor now use the measured GPU costs.
   const measured = await view(page);
   expect(measured.mode).toBe('gpu');
@@ -117,4 +170,96 @@ test('a running benchmark can be cancelled', async ({ page }) => {
   await expect(page.locator('.sa-status')).toHaveText('Cancelled');
   await expect(page.locator('.sa-run')).toBeEnabled();
   expect(await page.evaluate((id) => window.fresnelLab.panels[id].results, PANEL)).toBeNull();
+});
+
+test('"Error measured by" this GPU plots the errors read back from the GPU, and says so', async ({ page }) => {
+  test.setTimeout(60_000); // SwiftShader compiles seven programs
+  await openLab(page, `./embed.html?panel=${PANEL}&scene=phone-mediump`);
+  const fp16 = await view(page); // the plastic domain in float16 emulation
+  await openLab(page, `./embed.html?panel=${PANEL}`);
+  const fp32 = await view(page); // the same domain in float32 emulation (the default)
+  await choose(page, 'Error measured by', 'This GPU, highp');
+  await gpuMeasured(page);
+  await expect(page.locator('.sa-reason')).toContainText('measured on this GPU');
+  await expect(page.locator('.sa-reason')).toContainText('this GPU in highp (read back)');
+  await expect(page).toHaveURL(/errors=gpu-highp/);
+  const state = await page.evaluate((id) => {
+    const v = window.fresnelLab.panels[id].view;
+    return { source: v.source, scene: v.scene, rows: v.rows.map((r) => ({ id: r.methodId, max: r.max, y: r.maxCodes })) };
+  }, PANEL);
+  expect(state.source).toBe('gpu-highp');
+  const row = (rows, id) => rows.find((r) => r.id === id);
+
+  const ids = ['exact-cg', 'schlick-pow', 'schlick-exp2'];
+  const gpu = await gpuErrors(page, state.scene, ids, 'highp');
+  for (const id of ids) { // every plotted point is the read-back figure
+    expect(Math.abs(row(state.rows, id).max - gpu[id].max), id).toBeLessThanOrEqual(1e-12 * gpu[id].max);
+    expect(Math.abs(row(state.rows, id).y - gpu[id].maxCodes), id).toBeLessThanOrEqual(1e-9 * gpu[id].maxCodes);
+  }
+  // The exact form on the GPU sits at float32's rounding level, as the emulation does, far below float16's.
+  const exact = row(state.rows, 'exact-cg').max;
+  expect(Math.abs(exact - row(fp32.rows, 'exact-cg').max)).toBeLessThan(1e-6);
+  expect(exact).toBeLessThan(row(fp16.rows, 'exact-cg').max / 100);
+  // The GPU's pow and exp2 are not the emulation's (SwiftShader's pow is 2e-7 off it): where they
+  // differ, the chart shows the GPU's figure, not the JavaScript one.
+  const differ = ids.filter((id) => row(state.rows, id).max !== row(fp32.rows, id).max);
+  expect(differ.length).toBeGreaterThan(0);
+  for (const id of differ) expect(row(state.rows, id).y).not.toBe(row(fp32.rows, id).y);
+
+  await expect(page.locator('.sa-table caption')).toContainText('this GPU\'s highp');
+  await expect(page.locator('.panel-description')).toContainText('with errors measured on this GPU in highp');
+  const csv = await page.evaluate((id) => window.fresnelLab.panels[id].csv(), PANEL);
+  expect(csv.filename).toBe('speed-accuracy-plastic-gpu-highp.csv');
+  expect(new Set(csv.columns.error_source)).toEqual(new Set(['gpu-highp']));
+  expect(csv.columns.max_abs_error[csv.columns.method.indexOf('schlick-pow')]).toBe(row(state.rows, 'schlick-pow').max);
+  // Back to the emulation: the JavaScript numbers again, and the CSV says so.
+  await choose(page, 'Error measured by', 'JS emulation');
+  expect((await view(page)).rows).toEqual(fp32.rows);
+  expect((await page.evaluate((id) => window.fresnelLab.panels[id].csv(), PANEL)).columns.error_source[0]).toBe('js-fp32');
+  await expect(page.locator('.sa-reason')).toContainText('JavaScript emulation of float32');
+});
+
+test('the error source comes from the URL; mediump on this GPU is measured and said beside the control', async ({ page }) => {
+  await openLab(page, `./embed.html?panel=${PANEL}&scene=metal&errors=gpu-mediump`);
+  await gpuMeasured(page);
+  await expect(sourceOption(page)).toHaveText('This GPU, mediump');
+  await expect(page.locator('.sa-pick')).toContainText('this GPU\'s mediump');
+  const state = await page.evaluate((id) => window.fresnelLab.panels[id].view, PANEL);
+  expect(state.source).toBe('gpu-mediump');
+  expect(state.rows.map((r) => r.methodId).sort()).toEqual([...CONDUCTORS].sort());
+  const note = page.locator('.sa-gui-note');
+  await expect(note).toBeVisible();
+  await expect(note).toContainText(/mediump runs at (full|reduced) precision on this GPU: \d+ significand bits measured/);
+  // SwiftShader runs mediump as float32: then the exact form's read-back error is float32's
+  // (~2e-7), well below what float16 rounding alone gives (its half ulp at 1 is 2^-12 = 2.4e-4).
+  if ((await note.textContent()).includes('full precision')) {
+    expect(state.rows.find((r) => r.methodId === 'conductor-exact').max).toBeLessThan(1e-5);
+    await expect(page.locator('.panel-description')).toContainText('mediump runs at full precision on this GPU');
+  }
+});
+
+test('a bad error source in the link falls back to the JS emulation with a notice', async ({ page }) => {
+  await openLab(page, `./embed.html?panel=${PANEL}&errors=cuda`);
+  await expect(page.locator('.notice')).toContainText('errors=cuda is not one of js, gpu-highp, gpu-mediump; using js');
+  expect((await page.evaluate((id) => window.fresnelLab.panels[id].view.source, PANEL))).toBe('js');
+  expect(await page.evaluate((id) => window.fresnelLab.panels[id].gpuMeasurement, PANEL)).toBeNull();
+});
+
+test('without float render targets the GPU source says why and falls back to the JS emulation', async ({ page }) => {
+  await page.addInitScript(() => {
+    const original = WebGL2RenderingContext.prototype.getExtension;
+    WebGL2RenderingContext.prototype.getExtension = function getExtension(name) {
+      return name === 'EXT_color_buffer_float' ? null : original.call(this, name);
+    };
+  });
+  await openLab(page, `./embed.html?panel=${PANEL}&errors=gpu-highp`);
+  const source = page.locator('.sa-source');
+  await expect(source).toBeVisible();
+  await expect(source).toContainText('cannot render to float32 textures');
+  await expect(source).toContainText('JavaScript emulation');
+  expect((await view(page)).rows.find((r) => r.id === 'schlick-mul').y).toBeCloseTo(12.07, 1);
+  expect(await page.evaluate((id) => window.fresnelLab.panels[id].view.source, PANEL)).toBe('js');
+  await expect(sourceOption(page)).toHaveText('JS emulation');
+  await expect(page.locator('.sa-reason')).toContainText('JavaScript emulation');
+  await expect(page).not.toHaveURL(/errors=/);
 });

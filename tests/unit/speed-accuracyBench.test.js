@@ -3,6 +3,7 @@ import { describe, expect, it } from 'vitest';
 import {
   benchCsv, benchResults, benchTable, DEFAULT_DOMAIN, gpuPrecisionFor, measuredCosts,
 } from '../../src/optics/benchResults.js';
+import { methodError } from '../../src/optics/advisor.js';
 import { METHODS, methodsOfKind } from '../../src/optics/methods.js';
 import { sceneById, SCENES } from '../../src/optics/scenes.js';
 import { cpuInputs, spreadOf, timeMethodsCpu } from '../../src/optics/timeMethodsCpu.js';
@@ -172,6 +173,33 @@ describe('benchResults', () => {
     expect(results.recommendations['glass-inside'].acceptable.methodId).toBe('exact-cg');
     expect(results.recommendations.plastic.costSource).toMatch(/measured GPU/);
     expect(Object.keys(results.recommendations)).toEqual(SCENES.map((s) => s.id));
+  });
+
+  it('carries the errors read back on the GPU as error.gpuHighp and error.gpuMediump, beside fp64/fp32/fp16', () => {
+    // Read-back errors shaped as gpuErrors.errorsFromValues gives them; here the JS twin's own
+    // float32 and float16 errors stand in for a GPU that computes exactly like the emulation.
+    const gpuErrors = Object.fromEntries(Object.values(DEFAULT_DOMAIN).map((sceneId) => {
+      const scene = sceneById(sceneId);
+      const of = (p) => Object.fromEntries(methodsOfKind(scene.kind).map((m) => [m.id, methodError(scene, m, p)]));
+      return [sceneId, { highp: of('fp32'), mediump: of('fp16') }];
+    }));
+    const withGpu = benchResults({ gpu, cpu, gpuErrors, meta: { gpuReadbackError: null } });
+    for (const m of withGpu.methods) {
+      expect(m.error.gpuHighp).toEqual(m.error.fp32);
+      expect(m.error.gpuMediump).toEqual(m.error.fp16);
+      expect(Object.keys(m.error.gpuHighp)).toEqual(['max', 'mean', 'rms', 'maxCodes', 'thetaAtMaxDeg', 'nanCount']);
+    }
+    expect(withGpu.device.gpuReadbackError).toBeNull();
+    expect(results.methods.every((m) => m.error.gpuHighp === null && m.error.gpuMediump === null)).toBe(true);
+    const { columns } = benchCsv(withGpu);
+    expect(columns.error_gpu_highp_max).toEqual(withGpu.methods.map((m) => m.error.gpuHighp.max));
+    expect(columns.error_gpu_mediump_mean).toEqual(withGpu.methods.map((m) => m.error.gpuMediump.mean));
+    expect(benchCsv(results).columns.error_gpu_highp_max.every(Number.isNaN)).toBe(true);
+    expect(benchTable(withGpu)).toMatch(/GPU highp\s+GPU mediump/);
+    expect(benchTable(withGpu)).toContain('read back from this GPU');
+    expect(benchTable(results)).not.toContain('read back from this GPU');
+    // The GPU costs can be read in a precision other than the scene's (the read-back's).
+    expect(measuredCosts(results, sceneById('plastic'), 'gpu', 'mediump')['exact-cg']).toBe(11);
   });
 
   it('without a run: errors and static costs only', () => {
