@@ -127,7 +127,8 @@ try {
   const nm = results.normalMips;
   const ms = ({ median, min, max }) => `${median.toFixed(0)} ms [${min.toFixed(0)}, ${max.toFixed(0)}]`;
   const chainLine = `normal-mips: all six chains of a ${nm.size}² map in ${ms(nm.wallMs)} (${nm.where}; build alone ${ms(nm.buildMs)}); `
-    + `longest main-thread task ${nm.longestTaskMs.toFixed(0)} ms while building, ${nm.panelLongestTaskMs.toFixed(0)} ms while the panel switched to it`;
+    + `longest main-thread task ${nm.longestTaskMs.toFixed(0)} ms while building, ${nm.panelLongestTaskMs.toFixed(0)} ms while the panel switched to it; `
+    + `ground truth ${nm.truth.samples} samples/pixel in ${(nm.truth.ms / 1000).toFixed(1)} s, longest task meanwhile ${nm.truth.longestTaskMs.toFixed(0)} ms`;
 
   results.config = { ...results.config, script: 'bench/run.js', wallSeconds: (Date.now() - started) / 1000, chromium: browser.version() };
   mkdirSync(outDir, { recursive: true });

@@ -220,6 +220,10 @@ export function mount(root, ctx) {
       + (values.precision === 'f32' && scene && !scene.floatLinear ? ' This GPU cannot filter 32-bit float textures: pick f16.' : ''));
     dom.setLegend(`level ${levels - 1} (difference: 0 to 0.25)`);
     if (!scene) return;
+    if (changed?.size === 0) { // a re-describe (new errors, a finished build): nothing to draw
+      showStatus();
+      return;
+    }
     const light = lightPlacement(values);
     scene.set({
       technique: values.technique,
@@ -257,10 +261,24 @@ export function mount(root, ctx) {
     get shimmer() { return shimmer; },
     samplesPerFrame: SAMPLES_PER_FRAME,
     /**
-     * npm run bench: chain-build timing at `size` (benchChainBuild), then the longest main-thread
+     * npm run bench: the longest main-thread task while the ground truth accumulates to its cap
+     * (the picture as it is now), chain-build timing at `size` (benchChainBuild), then the longest
      * task while this panel switches to that size and draws it (building, upload, strip).
      */
     async bench({ size = 1024, repeats = 5 } = {}) {
+      const t0 = performance.now();
+      const truth = await watchLongTasks(async () => {
+        values.truth = true;
+        ctx.changed(['truth']);
+        await whenBuilt();
+        await new Promise((resolve) => {
+          const poll = () => (scene?.state.errors || !scene ? resolve() : setTimeout(poll, 50));
+          poll();
+        });
+      });
+      const truthRun = { samples: scene?.state.samples ?? 0, ms: performance.now() - t0, longestTaskMs: truth.longestTaskMs };
+      values.truth = false;
+      ctx.changed(['truth']);
       const build = await benchChainBuild({ size, repeats });
       const panel = await watchLongTasks(async () => {
         values.size = String(size);
@@ -268,7 +286,7 @@ export function mount(root, ctx) {
         await whenBuilt();
         await new Promise((resolve) => { requestAnimationFrame(() => resolve()); });
       });
-      return { ...build, panelLongestTaskMs: panel.longestTaskMs };
+      return { ...build, panelLongestTaskMs: panel.longestTaskMs, truth: truthRun };
     },
     update,
     describe() {

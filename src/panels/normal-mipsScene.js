@@ -74,9 +74,12 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
   scene.add(mesh);
   const camera = new OrthographicCamera();
   const rtTech = floatTarget();
+  const rtMeasure = floatTarget(); // the error measurement draws here, so the picture's target is left alone
   const rtTruth = [floatTarget(), floatTarget()];
   let textures = {}; // technique → [{ tex, scale, offset }]
-  const state = { technique: 'naive', channels: 3, samples: 0, cap: 256, truthOn: true, errors: null, frame: 0, anisotropy: 1 };
+  const state = {
+    technique: 'naive', channels: 3, samples: 0, cap: 256, truthOn: true, errors: null, measuring: false, frame: 0, anisotropy: 1,
+  };
   let cur = 0;
 
   function bindTechnique(technique) {
@@ -105,18 +108,55 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
     return out;
   }
 
-  // The error of every technique against the converged truth (each rendered into rtTech in turn).
-  function computeErrors() {
-    const truth = readTarget(rtTruth[cur]);
-    const bands = u.uMaxLevel.value + 1;
+  // The error of every technique against the converged truth. Each technique is drawn into its own
+  // target and read back asynchronously (three.js readRenderTargetPixelsAsync: a pixel-pack buffer
+  // and a fence), so the page never waits for the GPU: on a slow GPU six synchronous read-backs
+  // would freeze it for seconds. The previous errors stay in state.errors until the new set is
+  // complete; a restart or a newer measurement makes a running one stale.
+  let measureId = 0;
+  let measured = []; // resolvers of whenMeasured()
+  let disposed = false;
+
+  const readAsync = (target) => renderer.readRenderTargetPixelsAsync(
+    target, 0, 0, target.width, target.height, new Float32Array(target.width * target.height * 4),
+  );
+
+  function startMeasure() {
+    measureId += 1;
+    const id = measureId;
+    state.measuring = true;
+    runMeasure(id).catch((error) => {
+      if (id !== measureId || disposed) return; // a read-back of a context already given up
+      stopMeasure();
+      throw error;
+    });
+  }
+
+  async function runMeasure(id) {
+    const stale = () => id !== measureId || disposed;
+    const truth = await readAsync(rtTruth[cur]);
+    if (stale()) return;
     const errors = {};
     for (const technique of TECHNIQUES) {
       bindTechnique(technique);
-      pass(0, rtTech);
-      errors[technique] = bandedRmse(readTarget(rtTech), truth, { bands });
+      pass(0, rtMeasure);
+      bindTechnique(state.technique);
+      renderer.setRenderTarget(null);
+      const image = await readAsync(rtMeasure);
+      if (stale()) return;
+      errors[technique] = bandedRmse(image, truth, { bands: u.uMaxLevel.value + 1 });
     }
-    bindTechnique(state.technique);
-    return errors;
+    state.errors = errors;
+    stopMeasure();
+    onConverged?.(errors);
+  }
+
+  function stopMeasure() {
+    measureId += 1;
+    state.measuring = false;
+    const waiting = measured;
+    measured = [];
+    waiting.forEach((resolve) => resolve());
   }
 
   function draw() {
@@ -133,15 +173,12 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
       pass(1, rtTruth[next]);
       cur = next;
       state.samples += SAMPLES_PER_FRAME;
+      if (state.samples >= state.cap) startMeasure();
     }
     pass(2, null);
     renderer.setRenderTarget(null);
     onFrame?.();
-    if (accumulating && state.samples >= state.cap) {
-      state.errors = computeErrors();
-      pass(2, null); // computeErrors drew into rtTech; redraw so the screen matches
-      onConverged?.(state.errors);
-    } else if (accumulating) frames.request();
+    if (accumulating && state.samples < state.cap) frames.request();
   }
   const frames = onDemand(draw);
 
@@ -158,7 +195,7 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
     renderer.setSize(width, height, false);
     const buffer = renderer.getDrawingBufferSize(new Vector2());
     u.uResolution.value = [buffer.x, buffer.y];
-    for (const rt of [rtTech, ...rtTruth]) rt.setSize(buffer.x, buffer.y);
+    for (const rt of [rtTech, rtMeasure, ...rtTruth]) rt.setSize(buffer.x, buffer.y);
     restartTruth();
   });
   resizeObserver.observe(canvas);
@@ -167,6 +204,7 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
     state.samples = 0;
     state.frame = 0;
     state.errors = null;
+    if (state.measuring) stopMeasure();
     frames.request();
   }
 
@@ -218,10 +256,11 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
     },
     /** The stored chains or the forced level changed but not the truth: re-measure against the converged truth. */
     refreshErrors() {
-      if (!state.errors) return;
-      state.errors = computeErrors();
-      renderer.setRenderTarget(null);
-      frames.request();
+      if (state.errors) startMeasure();
+    },
+    /** Resolves when no error measurement is running (at once if none is). */
+    whenMeasured() {
+      return state.measuring ? new Promise((resolve) => { measured.push(resolve); }) : Promise.resolve();
     },
     /** Test probe: the decoded texels of `level` of a technique's texture, read at pixel-aligned centres. */
     debugLevel(technique, level, textureIndex = 0) {
@@ -272,10 +311,13 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
     },
     dispose() {
       frames.cancel();
+      disposed = true;
+      if (state.measuring) stopMeasure();
       resizeObserver.disconnect();
       disposeTextures();
       dummy.dispose();
       rtTech.dispose();
+      rtMeasure.dispose();
       rtTruth.forEach((rt) => rt.dispose());
       geometry.dispose();
       material.dispose();

@@ -65,6 +65,8 @@ test('npm run bench -- --tiny writes a valid results.json and a chart PNG', asyn
     expect(isSpread(nm.wallMs) && isSpread(nm.buildMs)).toBe(true);
     expect(nm.buildMs.median).toBeLessThanOrEqual(nm.wallMs.median);
     expect(Number.isFinite(nm.longestTaskMs) && Number.isFinite(nm.panelLongestTaskMs)).toBe(true);
+    expect(nm.truth.samples).toBeGreaterThanOrEqual(128); // the default cap, reached
+    expect(Number.isFinite(nm.truth.longestTaskMs)).toBe(true);
     expect(stdout).toMatch(/normal-mips: all six chains of a 64² map in \d+ ms/);
 
     const png = readFileSync(join(out, 'results.png'));

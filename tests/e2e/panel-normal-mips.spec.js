@@ -75,13 +75,14 @@ test('far bumps: variance-keeping techniques beat renormalized and naive, and th
   const twoChannel = await page.evaluate(async (id) => {
     window.fresnelLab.hosts[id].set({ channels: '2' });
     await window.fresnelLab.panels[id].whenBuilt();
+    await window.fresnelLab.panels[id].scene.whenMeasured(); // one technique per frame
     const { state } = window.fresnelLab.panels[id].scene;
     return { samples: state.samples, toksvig: state.errors.toksvig.rmse, renormalized: state.errors.renormalized.rmse, lean: state.errors.lean.rmse };
   }, PANEL);
   expect(twoChannel.samples).toBe(32);
   expect(Math.abs(twoChannel.toksvig - twoChannel.renormalized)).toBeLessThan(0.05 * twoChannel.renormalized);
   expect(twoChannel.lean).toBeCloseTo(errors.lean.rmse, 6); // LEAN stores slopes, not normals
-  // Rendering stops once the truth has converged.
+  // Rendering stops once the truth has converged and the errors are measured.
   const frames = await page.evaluate((id) => window.fresnelLab.panels[id].scene.frames.frames, PANEL);
   await page.waitForTimeout(400);
   expect(await page.evaluate((id) => window.fresnelLab.panels[id].scene.frames.frames, PANEL)).toBe(frames);
