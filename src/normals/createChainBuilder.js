@@ -1,71 +1,92 @@
-// Builds the normal-mips chains in a worker (chainWorker.js) and hands back only the newest
-// request's result: a slider dragged through ten sizes costs the builds it started, but the
-// panel applies the last one only. Without Worker support (or if the worker fails to start) the
-// same pure code runs on the calling thread, so the panel works everywhere.
-import { buildChainsFor } from './buildChainsFor.js';
+// Builds the normal-mips chains in workers (chainWorker.js), each on a share of the techniques
+// (splitTechniques: one per core, up to three; the page's thread only waits), and hands back only the newest request's
+// result: a slider dragged through ten sizes costs the builds it started, but the panel applies
+// the last one only. Without Worker support (or if a worker fails to start) the same pure code
+// runs on the calling thread, so the panel works everywhere.
+import { buildChainsFor, mergeBuilds, splitTechniques } from './buildChainsFor.js';
 
-function startWorker() {
+function startWorkers(count) {
   if (typeof Worker === 'undefined') return null;
   try {
-    return new Worker(new URL('./chainWorker.js', import.meta.url), { type: 'module' });
+    return Array.from({ length: count }, () => new Worker(new URL('./chainWorker.js', import.meta.url), { type: 'module' }));
   } catch {
     return null;
   }
 }
 
+/** Workers to use: one per core (the page's thread is idle meanwhile), at least 1, at most 3. */
+export function workerCount(cores = globalThis.navigator?.hardwareConcurrency ?? 2) {
+  return Math.min(3, Math.max(1, Math.floor(cores) || 1));
+}
+
 /**
- * createChainBuilder() → { build(request) → Promise<{ pyramid, chains, ms, where } | null>,
- * where, dispose() }. A build resolves null when a newer build was requested before it finished
- * (the caller drops it); it rejects on a bad request. where: 'worker' or 'main thread'.
+ * createChainBuilder({ useWorker = true, workers = workerCount() }) → { build(request) →
+ * Promise<{ pyramid, chains, uploads, ms, where } | null>, where, dispose() }. A build resolves
+ * null when a newer build was requested before it finished (the caller drops it); it rejects on
+ * a bad request. where: 'N workers', '1 worker' or 'main thread'; ms: the slowest share's time.
  */
-export function createChainBuilder({ useWorker = true } = {}) {
-  let worker = useWorker ? startWorker() : null;
+export function createChainBuilder({ useWorker = true, workers: count = workerCount() } = {}) {
+  const shares = splitTechniques(count);
+  let workers = useWorker ? startWorkers(shares.length) : null;
   let latest = 0;
-  const pending = new Map(); // id → { resolve, reject, request }
+  const pending = new Map(); // id → { resolve, reject, request, parts, left }
+
+  const describe = () => (workers ? `${workers.length} worker${workers.length > 1 ? 's' : ''}` : 'main thread');
 
   function buildHere(id, request) {
     if (id !== latest) return null; // superseded: not worth building
     return { ...buildChainsFor(request), where: 'main thread' };
   }
 
-  // A worker that cannot load (a blocked module, a bundling fault) falls back for good.
+  // A worker that cannot load (a blocked module, a bundling fault) makes all fall back for good.
   function fallBack() {
-    worker?.terminate();
-    worker = null;
+    workers?.forEach((w) => w.terminate());
+    workers = null;
     for (const [id, { resolve, reject, request }] of pending) {
       try { resolve(buildHere(id, request)); } catch (error) { reject(error); }
     }
     pending.clear();
   }
 
-  if (worker) {
-    worker.onmessage = ({ data: { id, result, error } }) => {
-      const entry = pending.get(id);
-      if (!entry) return;
+  function onMessage(share, { data: { id, result, error } }) {
+    const entry = pending.get(id);
+    if (!entry) return;
+    if (error) {
       pending.delete(id);
-      if (error) entry.reject(new RangeError(error));
-      else entry.resolve(id === latest ? { ...result, where: 'worker' } : null);
-    };
-    worker.onerror = (event) => { event.preventDefault?.(); fallBack(); };
+      entry.reject(new RangeError(error));
+      return;
+    }
+    entry.parts[share] = result;
+    entry.left -= 1;
+    if (entry.left > 0) return;
+    pending.delete(id);
+    entry.resolve(id === latest ? { ...mergeBuilds(entry.parts), where: describe() } : null);
   }
 
+  workers?.forEach((worker, share) => {
+    worker.onmessage = (event) => onMessage(share, event);
+    worker.onerror = (event) => { event.preventDefault?.(); fallBack(); };
+  });
+
   return {
-    get where() { return worker ? 'worker' : 'main thread'; },
+    get where() { return describe(); },
     build(request) {
       latest += 1;
       const id = latest;
-      if (!worker) {
+      if (!workers) {
         // Still asynchronous, so callers see one behaviour; a microtask keeps the order of requests.
         return Promise.resolve().then(() => buildHere(id, request));
       }
       return new Promise((resolve, reject) => {
-        pending.set(id, { resolve, reject, request });
-        worker.postMessage({ id, request });
+        pending.set(id, { resolve, reject, request, parts: [], left: workers.length });
+        workers.forEach((worker, share) => {
+          worker.postMessage({ id, request: { ...request, techniques: shares[share], withPyramid: share === 0 } });
+        });
       });
     },
     dispose() {
-      worker?.terminate();
-      worker = null;
+      workers?.forEach((w) => w.terminate());
+      workers = null;
       for (const { resolve } of pending.values()) resolve(null);
       pending.clear();
     },

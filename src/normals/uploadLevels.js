@@ -8,11 +8,28 @@
 import { halfBits, halfBitsOfFloat32Bits } from './float16Bits.js';
 import { encodeUnorm8 } from './storagePrecision.js';
 
-// One component at a time (stride w in the output), so the precision test is outside the loop.
+// One component at a time (stride w in the output), one small function per output type, so that
+// each loop sees one typed-array kind (V8 optimizes a monomorphic loop several times better; at
+// 1024² a chain set is 25 million values).
+function packU8(data, n, cw, out, w, k, src, { min, max }) {
+  for (let t = 0; t < n; t++) out[t * w + k] = encodeUnorm8(data[t * cw + src], min, max);
+}
+
+function packHalf(bits, n, cw, out, w, k, src) {
+  // exact: the chain holds binary16 values already
+  for (let t = 0; t < n; t++) out[t * w + k] = halfBitsOfFloat32Bits(bits[t * cw + src]);
+}
+
+function packFloat(data, n, cw, out, w, k, src) {
+  for (let t = 0; t < n; t++) out[t * w + k] = data[t * cw + src];
+}
+
 function packLevel({ size, data }, chain, sources, ranges) {
   const n = size * size;
   const w = sources.length;
   const cw = chain.components;
+  // float32 in the chain's own order (every component a source, in turn): its array as it is
+  if (chain.precision === 'f32' && w === cw && sources.every((src, k) => src === k)) return { data, width: size, height: size };
   const out = chain.precision === 'u8' ? new Uint8Array(n * w)
     : chain.precision === 'f16' ? new Uint16Array(n * w) : new Float32Array(n * w);
   const bits = new Uint32Array(data.buffer, data.byteOffset, data.length);
@@ -21,15 +38,9 @@ function packLevel({ size, data }, chain, sources, ranges) {
     if (typeof src !== 'number') {
       const padded = chain.precision === 'u8' ? encodeUnorm8(src.pad, 0, 1) : chain.precision === 'f16' ? halfBits(src.pad) : src.pad;
       for (let t = 0; t < n; t++) out[t * w + k] = padded;
-    } else if (chain.precision === 'u8') {
-      const { min, max } = ranges[k];
-      for (let t = 0; t < n; t++) out[t * w + k] = encodeUnorm8(data[t * cw + src], min, max);
-    } else if (chain.precision === 'f16') {
-      // exact: the chain holds binary16 values already
-      for (let t = 0; t < n; t++) out[t * w + k] = halfBitsOfFloat32Bits(bits[t * cw + src]);
-    } else {
-      for (let t = 0; t < n; t++) out[t * w + k] = data[t * cw + src];
-    }
+    } else if (chain.precision === 'u8') packU8(data, n, cw, out, w, k, src, ranges[k]);
+    else if (chain.precision === 'f16') packHalf(bits, n, cw, out, w, k, src);
+    else packFloat(data, n, cw, out, w, k, src);
   }
   return { data: out, width: size, height: size };
 }

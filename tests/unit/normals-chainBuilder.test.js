@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { buildChainsFor, transferablesOf } from '../../src/normals/buildChainsFor.js';
-import { createChainBuilder } from '../../src/normals/createChainBuilder.js';
+import { buildChainsFor, mergeBuilds, splitTechniques, transferablesOf } from '../../src/normals/buildChainsFor.js';
+import { createChainBuilder, workerCount } from '../../src/normals/createChainBuilder.js';
 import { TECHNIQUES } from '../../src/normals/techniqueLayout.js';
 
 const request = { kind: 'bumps', params: { frequency: 4, edgeAngleDeg: 30 }, size: 32, precision: 'f16', channels: 3 };
@@ -26,6 +26,31 @@ describe('buildChainsFor', () => {
     const textures = Object.entries(result.uploads).filter(([t]) => t !== 'toksvig').reduce((n, [, list]) => n + list.length, 0);
     expect(result.uploads.toksvig).toBe(result.uploads.naive);
     expect(buffers).toHaveLength(6 * (5 + 1 + textures));
+  });
+});
+
+describe('split builds', () => {
+  it('splits the techniques into disjoint shares that cover them all, Toksvig with naive', () => {
+    for (const parts of [1, 2, 3, 8]) {
+      const shares = splitTechniques(parts);
+      expect(shares.length).toBe(Math.min(parts, 3));
+      expect(shares.flat().sort()).toEqual([...TECHNIQUES].sort());
+      expect(shares.find((s) => s.includes('toksvig'))).toContain('naive');
+    }
+    expect(workerCount(1)).toBe(1);
+    expect(workerCount(2)).toBe(2);
+    expect(workerCount(16)).toBe(3);
+  });
+
+  it('merges shares into what one build gives, value for value', () => {
+    const whole = buildChainsFor(request);
+    const merged = mergeBuilds(splitTechniques(3).map((techniques) => buildChainsFor({ ...request, techniques })));
+    expect(Object.keys(merged.chains)).toEqual([...TECHNIQUES]);
+    for (const t of TECHNIQUES) {
+      expect(merged.chains[t].levels.map((l) => [...l.data])).toEqual(whole.chains[t].levels.map((l) => [...l.data]));
+      expect(merged.uploads[t].map((u) => u.mipmaps.map((m) => [...m.data]))).toEqual(whole.uploads[t].map((u) => u.mipmaps.map((m) => [...m.data])));
+    }
+    expect(() => buildChainsFor({ ...request, techniques: ['toksvig'] })).toThrow(/with naive/);
   });
 });
 
