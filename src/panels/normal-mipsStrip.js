@@ -80,9 +80,10 @@ export function buildMipStrip(host, { onPick } = {}) {
     grid.replaceChildren();
     cells = [];
     const rows = ['RGB (N_a)', '|N_a|', 'α′'];
-    grid.style.gridTemplateColumns = `auto repeat(${levels}, ${CELL}px)`;
-    grid.append(el('span', ''));
-    for (let l = 0; l < levels; l++) grid.append(el('span', 'nm-strip-head', `level ${l}`));
+    // Cells shrink (down to 40 px) so that all 11 levels of a 1024² map fit beside each other.
+    grid.style.gridTemplateColumns = `auto repeat(${levels}, minmax(40px, ${CELL}px))`;
+    grid.append(el('span', 'nm-strip-row', 'level'));
+    for (let l = 0; l < levels; l++) grid.append(el('span', 'nm-strip-head', String(l)));
     rows.forEach((name, r) => {
       grid.append(el('span', 'nm-strip-row', name));
       cells[r] = [];

@@ -131,7 +131,9 @@ test('mip strip and texel inspector: V-grooves average to cos θ, one blob for t
   await expect(page.locator('.nm-inspector-verdict')).toContainText('Two spikes, one blob');
   // Clicking a level-1 thumbnail picks a texel there; bumps give one cloud, not two spikes.
   await page.evaluate((id) => { window.fresnelLab.hosts[id].set({ map: 'bumps' }); return window.fresnelLab.panels[id].whenBuilt(); }, PANEL);
-  await page.locator('.nm-strip-cell').nth(1).click({ position: { x: 5, y: 80 } });
+  const cell = page.locator('.nm-strip-cell').nth(1);
+  const box = await cell.boundingBox();
+  await cell.click({ position: { x: 5, y: box.height - 4 } }); // near the bottom-left corner: texel (0, 0)
   await expect.poll(() => page.evaluate((id) => window.fresnelLab.hosts[id].values.texelLevel, PANEL)).toBe(1);
   await expect(page.locator('.nm-inspector-verdict')).not.toContainText('Two spikes');
   await expect(page.locator('.nm-costs tr.nm-current th')).toHaveText('toksvig');
