@@ -135,9 +135,17 @@ export function mount(root, ctx) {
   ctx.bind(ctx.gui.addFolder('Technique'), ['technique', 'alpha', 'precision', 'channels', 'level', 'anisotropy', 'fresnel']);
   ctx.bind(ctx.gui.addFolder('Texel inspector').close(), INSPECT_KEYS);
   let shimmer = null;
+  let shimmerRun = 0; // a change of settings makes a running measurement stale
+  let shimmerBusy = false;
   const measure = async () => {
     await whenBuilt(); // measure the chains of the current settings
-    shimmer = scene?.measureShimmer() ?? null;
+    const run = ++shimmerRun;
+    shimmerBusy = true;
+    dom.setShimmer(null, true);
+    const result = await scene?.measureShimmer() ?? null;
+    if (run !== shimmerRun) return;
+    shimmerBusy = false;
+    shimmer = result;
     dom.setShimmer(shimmer);
     ctx.changed([]);
   };
@@ -196,8 +204,12 @@ export function mount(root, ctx) {
   function apply(keys) {
     const changed = keys ? new Set(keys) : null;
     const has = (list) => !changed || list.some((k) => changed.has(k));
-    if (has(SHIMMER_KEYS)) shimmer = null;
-    dom.setShimmer(shimmer);
+    if (has(SHIMMER_KEYS)) {
+      shimmer = null;
+      shimmerRun += 1;
+      shimmerBusy = false;
+    }
+    dom.setShimmer(shimmer, shimmerBusy);
     const levels = levelCount(size());
     const base = values.alpha;
     const channels = Number(values.channels);

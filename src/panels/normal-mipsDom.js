@@ -59,8 +59,12 @@ export function buildNormalMipsDom(host) {
       leftCap.hidden = !left;
       rightCap.hidden = !right;
     },
-    /** results: { technique: mean |Δ brightness| } or null (not measured for these settings). */
-    setShimmer(results) {
+    /** results: { technique: mean |Δ brightness| } or null (not measured for these settings, or measuring). */
+    setShimmer(results, measuring = false) {
+      if (measuring) {
+        shimmer.textContent = 'Shimmer meter: measuring every technique under four sub-pixel camera moves…';
+        return;
+      }
       shimmer.textContent = results
         ? `Shimmer (mean brightness change per pixel under a sub-pixel camera move, lower is steadier): ${
           Object.entries(results).sort((a, b) => a[1] - b[1]).map(([t, v]) => `${t} ${v.toFixed(4)}`).join(', ')}.`

@@ -276,26 +276,32 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
       frames.request();
       return { data, width: rtTech.width, height: rtTech.height };
     },
-    /** Shimmer meter: mean |Δ brightness| per pixel of each technique's picture under sub-pixel camera moves. */
-    measureShimmer() {
+    /**
+     * Shimmer meter: mean |Δ brightness| per pixel of each technique's picture under sub-pixel
+     * camera moves. Asynchronous read-backs, as for the errors; resolves null if disposed meanwhile.
+     */
+    async measureShimmer() {
       const offsets = [[0.5, 0], [0, 0.5], [0.5, 0.5], [0.25, 0.75]];
+      const draw = (technique, jitter) => {
+        bindTechnique(technique);
+        u.uJitter.value = jitter;
+        pass(0, rtMeasure);
+        u.uJitter.value = [0, 0]; // the picture itself is never jittered
+        bindTechnique(state.technique);
+        renderer.setRenderTarget(null);
+        return readAsync(rtMeasure);
+      };
       const result = {};
       for (const technique of TECHNIQUES) {
-        bindTechnique(technique);
-        u.uJitter.value = [0, 0];
-        pass(0, rtTech);
-        const still = readTarget(rtTech);
+        const still = await draw(technique, [0, 0]);
         let sum = 0;
         for (const offset of offsets) {
-          u.uJitter.value = offset;
-          pass(0, rtTech);
-          sum += meanBrightnessChange(still, readTarget(rtTech));
+          const moved = await draw(technique, offset);
+          if (disposed) return null;
+          sum += meanBrightnessChange(still, moved);
         }
         result[technique] = sum / offsets.length;
       }
-      u.uJitter.value = [0, 0];
-      renderer.setRenderTarget(null);
-      frames.request();
       return result;
     },
     /** The current technique's linear picture (RGB, λ in alpha) as drawn now. */
