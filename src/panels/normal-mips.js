@@ -12,6 +12,7 @@ import { normalIncidence } from '../optics/fresnel.js';
 import { benchChainBuild, watchLongTasks } from './normal-mipsBench.js';
 import { buildNormalMipsDom } from './normal-mipsDom.js';
 import { createNormalMipsScene, SAMPLES_PER_FRAME } from './normal-mipsScene.js';
+import { createErrorDistancePlot } from './normal-mipsPlot.js';
 import { buildMipStrip } from './normal-mipsStrip.js';
 import { buildInspector } from './normal-mipsInspector.js';
 import './normal-mips.css';
@@ -26,7 +27,7 @@ export const schema = {
   angle: { type: 'number', default: 35, min: 5, max: 60, step: 1, label: 'Steepest slope °' },
   size: { type: 'enum', default: '256', options: ['64', '128', '256', '512', '1024'], label: 'Texture size' },
   technique: { type: 'enum', default: 'toksvig', options: [...TECHNIQUES], label: 'Technique' },
-  alpha: { type: 'number', default: 0.1, min: 0.02, max: 1, step: 0.005, label: 'Base roughness α (Beckmann)' },
+  alpha: { type: 'number', default: 0.2, min: 0.02, max: 1, step: 0.005, label: 'Base roughness α (Beckmann)' },
   precision: { type: 'enum', default: 'f16', options: ['u8', 'f16', 'f32'], label: 'Storage precision' },
   channels: { type: 'enum', default: '3', options: ['3', '2'], label: 'Stored normal channels (2: z rebuilt)' },
   level: { type: 'number', default: -1, min: -1, max: 10, step: 1, label: 'Forced mip level (−1 = automatic)' },
@@ -104,6 +105,7 @@ export function mount(root, ctx) {
     },
   });
   const inspector = buildInspector(dom.root);
+  const distancePlot = createErrorDistancePlot(dom.plotSlot);
   const builder = createChainBuilder();
   let stripStats = null;
   let inspected = null;
@@ -190,8 +192,11 @@ export function mount(root, ctx) {
     const names = { split: [t, truth], technique: [t, ''], truth: ['', truth] };
     const [left, right] = names[values.view] ?? [`|${t} − truth|`, truth];
     dom.setCaptions(left, right);
-    dom.setErrors(errors, t, values.truth ? `Ground truth converging: ${samples} of ${cap} samples per pixel…`
-      : 'Ground truth off: switch it on to compare techniques with numbers.');
+    distancePlot.show(errors, t);
+    const pending = !values.truth ? 'Ground truth off: switch it on to compare techniques with numbers.'
+      : samples < cap ? `Ground truth converging: ${samples} of ${cap} samples per pixel…`
+        : 'Ground truth converged: measuring each technique against it…';
+    dom.setErrors(errors, t, pending);
   }
 
   function update(keys) {
@@ -271,6 +276,7 @@ export function mount(root, ctx) {
     get stripStats() { return stripStats; },
     get inspected() { return inspected; },
     get shimmer() { return shimmer; },
+    distancePlot,
     samplesPerFrame: SAMPLES_PER_FRAME,
     /**
      * npm run bench: the longest main-thread task while the ground truth accumulates to its cap
@@ -327,6 +333,7 @@ export function mount(root, ctx) {
     dispose() {
       disposed = true;
       builder.dispose();
+      distancePlot.dispose();
       scene?.dispose();
     },
   };

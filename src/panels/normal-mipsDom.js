@@ -41,12 +41,14 @@ export function buildNormalMipsDom(host) {
   shimmer.setAttribute('aria-live', 'polite');
   const tableWrap = el('div', 'nm-table-wrap');
   tableWrap.append(table);
-  root.append(stage, summary, legend, tableWrap, shimmer);
+  const plotSlot = el('div', 'nm-plot-slot'); // the error-by-distance plot (normal-mipsPlot.js)
+  root.append(stage, summary, legend, tableWrap, plotSlot, shimmer);
   host.append(root);
 
   return {
     root,
     canvas,
+    plotSlot,
     showStageMessage(text) {
       stage.classList.add('nm-no-gl');
       canvas.hidden = true;
