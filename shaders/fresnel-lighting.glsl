@@ -6,7 +6,7 @@ precision highp float;
 #include <fresnel>
 #include <environment>
 #include <color>
-#include <fresnel-lighting-stage>
+#include <twinStage>
 
 uniform vec3 uKd;       // linear RGB
 uniform vec3 uKs;       // linear RGB

@@ -6,7 +6,7 @@ precision highp float;
 #include <fresnel>
 #include <environment>
 #include <color>
-#include <fresnel-lighting-stage>
+#include <twinStage>
 
 uniform float uN;       // the dielectric's index, seen from air
 uniform vec3 uMetalN;   // metal: n per channel (R, G, B)

@@ -7,7 +7,7 @@ import { fresnelExact, fresnelSchlick, normalIncidence } from '../optics/fresnel
 import { reflectanceCurves } from '../optics/curves.js';
 import { shaderChunks } from '../gl/shaderChunks.js';
 import { createLinePlot } from '../ui/createLinePlot.js';
-import { createTwinStage } from './fresnel-lightingStage.js';
+import { createTwinStage } from './createTwinStage.js';
 import './fresnel-lighting.css';
 import { el } from '../ui/el.js';
 

@@ -6,7 +6,7 @@ import { fresnelExact, normalIncidence } from '../optics/fresnel.js';
 import { metalById, metalF0, metals } from '../optics/materials.js';
 import { CHANNELS, metalCurveStats, metalCurves } from '../optics/metalCurves.js';
 import { createLinePlot } from '../ui/createLinePlot.js';
-import { createTwinStage } from './fresnel-lightingStage.js';
+import { createTwinStage } from './createTwinStage.js';
 import { buildMetalsDom } from './metalsDom.js';
 import './metals.css';
 

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { shaderChunks, shaderSource } from '../../src/gl/shaderChunks.js';
-import { STAGE_CAMERA, offsetAtAngle } from '../../src/panels/fresnel-lightingStage.js';
+import { STAGE_CAMERA, offsetAtAngle } from '../../src/panels/createTwinStage.js';
 
 const DEG = Math.PI / 180;
 
@@ -18,7 +18,7 @@ describe('fresnel-lighting GLSL', () => {
 });
 
 describe('two-sphere stage geometry', () => {
-  // Cast the ray through a midline offset the way shaders/fresnel-lighting-stage.glsl does
+  // Cast the ray through a midline offset the way shaders/twinStage.glsl does
   // (camera on the z axis here: the angle at the sphere does not depend on the elevation).
   function viewAngleAt(offset) {
     const { distance, fovDeg } = STAGE_CAMERA;

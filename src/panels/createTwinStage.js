@@ -1,5 +1,5 @@
 // The two-sphere stage of the fresnel-lighting and metals panels: one canvas drawn by one
-// full-screen shader (the spheres are ray-cast in shaders/fresnel-lighting-stage.glsl), a label
+// full-screen shader (the spheres are ray-cast in shaders/twinStage.glsl), a label
 // over each half, and the map from a view angle θ to the pixel that shows it (for probes and tests).
 import { Vector3 } from 'three';
 import { createShaderView } from '../gl/createShaderView.js';
@@ -25,7 +25,7 @@ export function offsetAtAngle(thetaDeg, { distance, fovDeg } = STAGE_CAMERA) {
 }
 
 /**
- * host: where the stage goes. fragment: a shader in shaders/ that includes <fresnel-lighting-stage>
+ * host: where the stage goes. fragment: a shader in shaders/ that includes <twinStage>
  * and <environment>. uniforms: its own uniforms. Returns null for `view` when WebGL2 is missing
  * (the stage then shows `fallback` in words).
  */
