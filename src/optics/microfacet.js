@@ -15,12 +15,14 @@ function checkAlpha(alpha) {
 /**
  * GGX normal distribution D(h) = α² / (π ((n·h)²(α² − 1) + 1)²), normalized so that
  * ∫ D(h) (n·h) dω = 1 (Walter et al., "Microfacet Models for Refraction through Rough Surfaces",
- * EGSR 2007, eq. 33).
+ * EGSR 2007, eq. 33). The denominator's base is written (1 − c)(1 + c) + c²α²: the same value,
+ * but at the peak (c → 1) the textbook c²(α² − 1) + 1 subtracts nearly equal terms and loses α²
+ * in float32 (a few % at α = 1e-3, and +Infinity below α ≈ 1.7e-4).
  */
 export function ggxDistribution(cosThetaH, alpha) {
   const c = checkCos(cosThetaH, 'cosThetaH');
   const a2 = checkAlpha(alpha) ** 2;
-  const d = c * c * (a2 - 1) + 1;
+  const d = (1 - c) * (1 + c) + c * c * a2;
   return a2 / (Math.PI * d * d);
 }
 
@@ -36,8 +38,13 @@ export function smithLambda(cosTheta, alpha) {
   return 0.5 * (Math.sqrt(c * c + a2 * ((1 - c) * (1 + c))) / c - 1);
 }
 
-/** Height-correlated masking-shadowing G2 = 1 / (1 + Λ(l) + Λ(v)) (Heitz 2014, eq. 99). */
+/**
+ * Height-correlated masking-shadowing G2 = 1 / (1 + Λ(l) + Λ(v)) (Heitz 2014, eq. 99); 0 when
+ * either direction is at or below the surface (Λ = ∞ there), said outright so the float32 twin
+ * needs no infinity.
+ */
 export function smithG2(cosL, cosV, alpha) {
+  if (!(cosL > 0) || !(cosV > 0)) return 0;
   return 1 / (1 + smithLambda(cosL, alpha) + smithLambda(cosV, alpha));
 }
 
