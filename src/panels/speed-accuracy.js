@@ -58,6 +58,18 @@ function bindLabelled(ctx, folder, keys) {
   });
 }
 
+/**
+ * The cheaper pick under the "acceptable" budget (5 % of the range, the judgement behind engines'
+ * Schlick, fresnel-facts §7), when it differs from the strict one, with its measured cost in error.
+ */
+function practicalNote(alt, rec, rows) {
+  if (!alt?.invisible || alt.methodId === rec.methodId) return '';
+  const row = rows.find((r) => r.methodId === alt.methodId);
+  const where = row.thetaAtMax === null ? '' : ` at ${(row.thetaAtMax * (180 / Math.PI)).toFixed(1)}°`; // as advisor.js writes it
+  return ` If a visible error of up to 5 % of the range is acceptable (the judgement behind the Schlick that engines ship), `
+    + `${row.label} would do: ${formatCodes(row.maxCodes)} codes at worst${where}, ${formatCodes(row.meanCodes)} on average.`;
+}
+
 /** A warning when timings overlap so much that their order is not to be trusted. */
 function noiseNote(rows) {
   const noisy = rows.filter((r) => Number.isFinite(r.xMin) && (r.xMax - r.xMin > Math.abs(r.x) || r.x <= 0));
@@ -141,15 +153,19 @@ export function mount(root, ctx) {
     const costs = wanted === 'static' ? {} : measuredCosts(results, scene, wanted, glsl);
     const mode = Object.keys(costs).length > 0 ? wanted : 'static';
     const words = sourceWords(src.source, scene, src.measured?.device?.renderer);
-    const rec = src.measured
+    const recommendFor = (b) => (src.measured
       ? {
         ...recommendWithErrors(scene, src.measured.errors, costs, {
-          budgetCodes: budget.codes, where: `${scene.label}, this GPU in ${src.glsl} (read back)`, precision: src.glsl,
+          budgetCodes: b.codes, where: `${scene.label}, this GPU in ${src.glsl} (read back)`, precision: src.glsl,
         }),
-        budget,
+        budget: b,
         criterion: CRITERION,
       }
-      : recommendWithin(scene, costs, budget.id);
+      : recommendWithin(scene, costs, b.id));
+    const rec = recommendFor(budget);
+    // Under a stricter budget, say what the "acceptable" judgement (what engines ship) would pick.
+    const lenient = displayBudget('acceptable');
+    const alt = budget.codes < lenient.codes ? recommendFor(lenient) : null;
     const rows = rec.table.map((r) => {
       const method = methodById(r.methodId);
       const cost = costOf(method, glsl, mode);
@@ -179,7 +195,7 @@ export function mount(root, ctx) {
     dom.setAdvice({
       label: chosen.label,
       sceneLabel: `${scene.label.toLowerCase()}, ${src.measured ? words.short : PRECISION_WORDS[rec.precision] ?? rec.precision}`,
-      reasonText: `${rec.reason} ${words.sentence}`,
+      reasonText: `${rec.reason} ${words.sentence}${practicalNote(alt, rec, rows)}`,
       criterionText: `Criterion: ${CRITERION}. Budget: ${budget.label}. ${costNote} Domain: ${scene.note}`,
     });
     const problem = glslOf(values.errors) ? '' : gpuProblem; // shown until the GPU is chosen again
