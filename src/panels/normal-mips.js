@@ -318,7 +318,8 @@ export function mount(root, ctx) {
       if (!errors) return `${head}; the ground truth is still converging (${scene?.state.samples ?? 0} samples per pixel).${flicker}`;
       const ranked = Object.entries(errors).sort((a, b) => a[1].rmse - b[1].rmse);
       return `${head}: RMSE against the ground truth ${errors[values.technique].rmse.toFixed(4)}; `
-        + `best ${ranked[0][0]} (${ranked[0][1].rmse.toFixed(4)}), worst ${ranked.at(-1)[0]} (${ranked.at(-1)[1].rmse.toFixed(4)}).${flicker}`;
+        + `best ${ranked[0][0]} (${ranked[0][1].rmse.toFixed(4)}), worst ${ranked.at(-1)[0]} (${ranked.at(-1)[1].rmse.toFixed(4)}). `
+        + `${distancePlot.note}${flicker}`;
     },
     csv() {
       const errors = scene?.state.errors;

@@ -65,6 +65,8 @@ export function createErrorDistancePlot(host) {
       plot.setData([used.map((b) => b.level), ...TECHNIQUES.map((t) => used.map((b) => errors[t].bands[b.level].rmse))]);
       note.textContent = verdict(errors, technique, used.map((b) => b.level));
     },
+    /** The sentence under the plot ('' while there are no errors). */
+    get note() { return note.textContent; },
     /** [levels, ...one RMSE series per technique in TECHNIQUES order], as plotted. */
     get data() { return plot.data; },
     toPng: () => plot.toPng(),

@@ -74,6 +74,7 @@ test('far bumps: variance-keeping techniques beat renormalized and naive, and th
   expect(rows.slice(4).map((r) => r[0]).sort()).toEqual(['naive', 'renormalized']);
   for (const [technique, value] of rows) expect(value).toBeCloseTo(errors[technique].rmse, 4);
   await expect(page.locator('.panel-description')).toContainText(`RMSE against the ground truth ${errors.toksvig.rmse.toFixed(4)}`);
+  await expect(page.locator('.panel-description')).toContainText('toksvig is closer to the truth than naive at every mip level');
   const csv = await page.evaluate((id) => window.fresnelLab.panels[id].csv(), PANEL);
   expect(csv.columns.technique).toEqual(['naive', 'renormalized', 'toksvig', 'lean', 'clean', 'vmf']);
   expect(csv.columns.rmse[2]).toBe(errors.toksvig.rmse);
