@@ -41,7 +41,7 @@ export function createErrorDistancePlot(host) {
   box.append(title, plotHost, note);
   host.append(box);
   const plot = createLinePlot(plotHost, {
-    xLabel: 'mip level λ in use', yLabel: 'RMSE', height: 240, digits: 4, xUnit: '',
+    xLabel: 'mip level λ in use', yLabel: 'RMSE', height: 280, digits: 4, xUnit: '', xStep: 1,
     // from 0, so that a gap between techniques reads at its true size
     xRange: (_u, min, max) => [min - 0.25, max + 0.25],
     yRange: (_u, _min, max) => [0, Math.max(1e-3, max * 1.15)],

@@ -16,16 +16,19 @@ function fmt(v, digits) {
 
 /**
  * options: xLabel, yLabel, xRange ([min, max] or null), yRange ([min, max] or null for auto),
- * xUnit ('°' or ''), series [{ label, stroke, width, dash }], height, digits (legend decimals).
+ * xUnit ('°' or ''), xStep (ticks on multiples of it only, e.g. 1 for whole levels), series
+ * [{ label, stroke, width, dash }], height, digits (legend decimals).
  * Markers set with setMarks([{ x, color, label, shadeTo }]) are drawn over the curves.
  */
 export function createLinePlot(container, options) {
-  const { xLabel, yLabel, xRange = [0, 90], yRange = [0, 1], xUnit = '°', series, height = 320, digits = 4 } = options;
+  const {
+    xLabel, yLabel, xRange = [0, 90], yRange = [0, 1], xUnit = '°', xStep = null, series, height = 320, digits = 4,
+  } = options;
   let data = [[], ...series.map(() => [])];
   let marks = [];
   let plot = null;
 
-  const axis = (label, unit) => ({
+  const axis = (label, unit, vertical = false) => ({
     label,
     stroke: () => cssVar('--text'),
     font: `${Math.round(15 * lineScale())}px system-ui, sans-serif`,
@@ -33,7 +36,9 @@ export function createLinePlot(container, options) {
     grid: { stroke: () => cssVar('--grid'), width: 1 },
     ticks: { stroke: () => cssVar('--grid') },
     values: unit ? (_u, ticks) => ticks.map((t) => `${+t.toFixed(6)}${unit}`) : undefined,
-    size: 60,
+    // Room for the tick labels, which grow with the type in projector mode: their width (y axis)
+    // grows in full, the height of a line of text (x axis) less.
+    size: Math.round(60 * (vertical ? lineScale() : Math.sqrt(lineScale()))),
   });
 
   function build() {
@@ -43,7 +48,7 @@ export function createLinePlot(container, options) {
       width: Math.max(280, container.clientWidth),
       height,
       scales: { x: { time: false, range: xRange ?? undefined }, y: { range: yRange ?? undefined } },
-      axes: [axis(xLabel, xUnit), axis(yLabel, '')],
+      axes: [{ ...axis(xLabel, xUnit), ...(xStep ? { incrs: [1, 2, 5, 10].map((k) => k * xStep) } : {}) }, axis(yLabel, '', true)],
       series: [
         { label: xLabel.split(',')[0], value: (_u, v) => (v == null ? '–' : `${v.toFixed(2)}${xUnit}`) },
         ...series.map((s) => ({
