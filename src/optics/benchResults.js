@@ -83,7 +83,8 @@ export function benchResults({ gpu = null, cpu = null, frames = null, gpuErrors 
         precision: 'highp', nsPerEval: highp?.nsPerEval ?? null, samples: highp?.samples ?? [],
         mediump: mediump ? { nsPerEval: mediump.nsPerEval, samples: mediump.samples } : null,
       } : null,
-      cpu: cpu?.methods?.[m.id] ? { context: 'fp64', nsPerEval: cpu.methods[m.id].nsPerEval, samples: cpu.methods[m.id].samples } : null,
+      cpu: cpu?.methods?.[m.id]
+        ? { context: 'fp64', where: cpu.where ?? 'page', nsPerEval: cpu.methods[m.id].nsPerEval, samples: cpu.methods[m.id].samples } : null,
       error: methodErrors(m, gpuErrors),
     };
   });

@@ -184,12 +184,18 @@ export function f82Coefficients(n, k, f0 = conductorNormalIncidence(n, k)) {
   return { f0, f82, tint: f82 / schlickBar, b: (schlickBar - f82) / (MU_BAR * (1 - MU_BAR) ** 6) };
 }
 
-const f82Cache = new Map();
+// b is a per-material constant (a uniform on the GPU), so it is computed once per (n, k, F0) and
+// looked up by number keys: a string key would cost more than the method itself in the CPU timing.
+const f82Cache = new Map(); // n → k → F0 → b
 
 function f82B(n, k, f0) {
-  const key = `${n},${k},${f0}`;
-  if (!f82Cache.has(key)) f82Cache.set(key, f82Coefficients(n, k, f0).b);
-  return f82Cache.get(key);
+  let byK = f82Cache.get(n);
+  if (!byK) f82Cache.set(n, (byK = new Map()));
+  let byF0 = byK.get(k);
+  if (!byF0) byK.set(k, (byF0 = new Map()));
+  let b = byF0.get(f0);
+  if (b === undefined) byF0.set(f0, (b = f82Coefficients(n, k, f0).b));
+  return b;
 }
 
 /** fresnel-facts Appendix A f82_rgb: s = clamp(1 − c), clamp(F0 + (1 − F0)s⁵ − b·(c·s⁵·s)) (Cycles clamps). */

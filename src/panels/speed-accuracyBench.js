@@ -1,13 +1,13 @@
 // "Run benchmark": GPU cost per method (timeMethodsGpu), the GPU's own errors over the default
 // domains in highp and mediump (read back, speed-accuracyGpu), CPU cost per method
-// (timeMethodsCpu), and the hero's frame cost against three.js MeshPhysicalMaterial, one after the
+// (timeMethodsCpu, in a worker: speed-accuracyCpu), and the hero's frame cost against three.js MeshPhysicalMaterial, one after the
 // other on the viewer's device, with progress and cancel; results kept for the session
 // (sessionStorage).
 import { createRenderer, WebGL2Unavailable } from '../gl/createRenderer.js';
 import { deviceInfo, timeMethodsGpu } from '../gl/timeMethodsGpu.js';
 import { benchResults, DEFAULT_DOMAIN, GPU_ERROR_KEYS } from '../optics/benchResults.js';
 import { sceneById } from '../optics/scenes.js';
-import { timeMethodsCpu } from '../optics/timeMethodsCpu.js';
+import { timeCpu } from './speed-accuracyCpu.js';
 import { timeFrames } from './speed-accuracyFrames.js';
 import { gpuErrorsOn, rememberGpuErrors } from './speed-accuracyGpu.js';
 
@@ -79,7 +79,7 @@ export async function runBenchmark(host, { size = 'normal', onProgress, signal }
   } finally {
     renderer?.dispose();
   }
-  const cpu = await timeMethodsCpu({ ...config.cpu, signal, onProgress: report('cpu') });
+  const cpu = await timeCpu({ ...config.cpu, signal, onProgress: report('cpu') });
   if (renderer) frames = await timeFrames(host, { ...config.frames, signal, onProgress: report('frames') });
   onProgress?.(1, 'Done');
   return benchResults({

@@ -37,6 +37,7 @@ test('npm run bench -- --tiny writes a valid results.json and a chart PNG', asyn
       expect(isSpread(m.gpu.nsPerEval), `${m.id} gpu`).toBe(true);
       expect(isSpread(m.gpu.mediump.nsPerEval), `${m.id} gpu mediump`).toBe(true);
       expect(isSpread(m.cpu.nsPerEval), `${m.id} cpu`).toBe(true);
+      expect(m.cpu.where, `${m.id} cpu timed in a float64-only worker`).toBe('worker');
       for (const p of ['fp64', 'fp32', 'fp16']) {
         expect(Number.isFinite(m.error[p].max), `${m.id} ${p}`).toBe(true);
         expect(m.error[p].mean).toBeLessThanOrEqual(m.error[p].max);
