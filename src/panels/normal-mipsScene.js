@@ -292,15 +292,20 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
         return readAsync(rtMeasure);
       };
       const result = {};
-      for (const technique of TECHNIQUES) {
-        const still = await draw(technique, [0, 0]);
-        let sum = 0;
-        for (const offset of offsets) {
-          const moved = await draw(technique, offset);
-          if (disposed) return null;
-          sum += meanBrightnessChange(still, moved);
+      try {
+        for (const technique of TECHNIQUES) {
+          const still = await draw(technique, [0, 0]);
+          let sum = 0;
+          for (const offset of offsets) {
+            const moved = await draw(technique, offset);
+            if (disposed) return null;
+            sum += meanBrightnessChange(still, moved);
+          }
+          result[technique] = sum / offsets.length;
         }
-        result[technique] = sum / offsets.length;
+      } catch (error) {
+        if (disposed) return null; // the context went away under a read-back
+        throw error;
       }
       return result;
     },
