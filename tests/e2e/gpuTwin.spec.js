@@ -2,6 +2,7 @@
 // target over a grid of (cos θ, n_i, n_t), read back, and compared with src/optics/fresnel.js.
 import { readFileSync, readdirSync } from 'node:fs';
 import { test, expect, openLab } from './fixtures.js';
+import { readBack } from './readBack.js';
 import { resolveIncludes } from '../../src/gl/resolveIncludes.js';
 import * as optics from '../../src/optics/fresnel.js';
 import { metals } from './metalsData.js';
@@ -68,49 +69,13 @@ function grid() {
 test('every GLSL function matches its JS twin on the GPU (RGBA32F read-back)', async ({ page }) => {
   await openLab(page);
   const rows = grid();
-  const results = await page.evaluate(({ rows, shaders }) => {
-    const width = 64;
-    const height = Math.ceil(rows.length / width);
-    const gl = document.createElement('canvas').getContext('webgl2');
-    if (!gl.getExtension('EXT_color_buffer_float')) throw new Error('no EXT_color_buffer_float');
-    const input = new Float32Array(width * height * 4);
-    rows.forEach((r, i) => input.set(r, i * 4));
-    const tex = gl.createTexture();
-    gl.bindTexture(gl.TEXTURE_2D, tex);
-    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, width, height, 0, gl.RGBA, gl.FLOAT, input);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
-    const target = gl.createTexture();
-    gl.bindTexture(gl.TEXTURE_2D, target);
-    gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA32F, width, height);
-    const fb = gl.createFramebuffer();
-    gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
-    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, target, 0);
-    const vs = '#version 300 es\nvoid main(){vec2 p=vec2(gl_VertexID&1,gl_VertexID>>1)*4.0-1.0;gl_Position=vec4(p,0,1);}';
-    const compile = (type, src) => {
-      const s = gl.createShader(type);
-      gl.shaderSource(s, src);
-      gl.compileShader(s);
-      if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) throw new Error(gl.getShaderInfoLog(s));
-      return s;
-    };
-    return shaders.map((fs) => {
-      const prog = gl.createProgram();
-      gl.attachShader(prog, compile(gl.VERTEX_SHADER, vs));
-      gl.attachShader(prog, compile(gl.FRAGMENT_SHADER, fs));
-      gl.linkProgram(prog);
-      if (!gl.getProgramParameter(prog, gl.LINK_STATUS)) throw new Error(gl.getProgramInfoLog(prog));
-      gl.useProgram(prog);
-      gl.activeTexture(gl.TEXTURE0);
-      gl.bindTexture(gl.TEXTURE_2D, tex);
-      gl.uniform1i(gl.getUniformLocation(prog, 'uInputs'), 0);
-      gl.viewport(0, 0, width, height);
-      gl.drawArrays(gl.TRIANGLES, 0, 3);
-      const out = new Float32Array(width * height * 4);
-      gl.readPixels(0, 0, width, height, gl.RGBA, gl.FLOAT, out);
-      return Array.from(out.subarray(0, rows.length * 4));
-    });
-  }, { rows, shaders: PASSES.map((_, i) => fragmentShader(i)) });
+  const width = 64;
+  const results = await readBack(page, {
+    width,
+    height: Math.ceil(rows.length / width),
+    textures: { uInputs: rows.flat() },
+    runs: PASSES.map((_, i) => ({ fragment: fragmentShader(i) })),
+  });
 
   const failures = [];
   let worst = 0;

@@ -4,6 +4,7 @@
 // of gpuTwin.spec.js and normalMapsTwin.spec.js.
 import { readFileSync, readdirSync } from 'node:fs';
 import { test, expect, openLab } from './fixtures.js';
+import { readBack } from './readBack.js';
 import { resolveIncludes } from '../../src/gl/resolveIncludes.js';
 import * as mf from '../../src/optics/microfacet.js';
 
@@ -109,54 +110,15 @@ function model(r) {
   return [D, modelLambda(r.cosL, a), G, spec];
 }
 
-async function render(page, rows, shaders) {
-  return page.evaluate(({ rows, shaders }) => {
-    const width = 128;
-    const height = Math.ceil(rows.length / width);
-    const gl = document.createElement('canvas').getContext('webgl2');
-    if (!gl.getExtension('EXT_color_buffer_float')) throw new Error('no EXT_color_buffer_float');
-    const texture = (data) => {
-      const tex = gl.createTexture();
-      gl.bindTexture(gl.TEXTURE_2D, tex);
-      gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, width, height, 0, gl.RGBA, gl.FLOAT, data);
-      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
-      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
-      return tex;
-    };
-    const args = new Float32Array(width * height * 4);
-    const fs = new Float32Array(width * height * 4);
-    rows.forEach((r, i) => { args.set([r.cosL, r.cosV, r.cosH, r.alpha], i * 4); fs[i * 4] = r.F; });
-    const inputs = [texture(args), texture(fs)];
-    const target = gl.createTexture();
-    gl.bindTexture(gl.TEXTURE_2D, target);
-    gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA32F, width, height);
-    gl.bindFramebuffer(gl.FRAMEBUFFER, gl.createFramebuffer());
-    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, target, 0);
-    const vs = '#version 300 es\nvoid main(){vec2 p=vec2(gl_VertexID&1,gl_VertexID>>1)*4.0-1.0;gl_Position=vec4(p,0,1);}';
-    return shaders.map((fragment) => {
-      const prog = gl.createProgram();
-      for (const [type, src] of [[gl.VERTEX_SHADER, vs], [gl.FRAGMENT_SHADER, fragment]]) {
-        const s = gl.createShader(type);
-        gl.shaderSource(s, src);
-        gl.compileShader(s);
-        if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) throw new Error(gl.getShaderInfoLog(s));
-        gl.attachShader(prog, s);
-      }
-      gl.linkProgram(prog);
-      if (!gl.getProgramParameter(prog, gl.LINK_STATUS)) throw new Error(gl.getProgramInfoLog(prog));
-      gl.useProgram(prog);
-      ['uArgs', 'uF'].forEach((name, unit) => {
-        gl.activeTexture(gl.TEXTURE0 + unit);
-        gl.bindTexture(gl.TEXTURE_2D, inputs[unit]);
-        gl.uniform1i(gl.getUniformLocation(prog, name), unit);
-      });
-      gl.viewport(0, 0, width, height);
-      gl.drawArrays(gl.TRIANGLES, 0, 3);
-      const out = new Float32Array(width * height * 4);
-      gl.readPixels(0, 0, width, height, gl.RGBA, gl.FLOAT, out);
-      return Array.from(out.subarray(0, rows.length * 4));
-    });
-  }, { rows, shaders });
+// Inputs as two RGBA32F textures, (cosL, cosV, cosH, α) and (F, 0, 0, 0): one texel per grid row.
+function render(page, rows, shaders) {
+  const width = 128;
+  return readBack(page, {
+    width,
+    height: Math.ceil(rows.length / width),
+    textures: { uArgs: rows.flatMap((r) => [r.cosL, r.cosV, r.cosH, r.alpha]), uF: rows.flatMap((r) => [r.F, 0, 0, 0]) },
+    runs: shaders.map((fragment) => ({ fragment })),
+  });
 }
 
 const fmt = (r) => `(cosL ${r.cosL}, cosV ${r.cosV}, cosH ${r.cosH}, α ${r.alpha}, F ${r.F})`;

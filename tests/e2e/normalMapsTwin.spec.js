@@ -3,6 +3,7 @@
 // compared with the JS map's slopeAt(u, v) (src/normals/), in the style of gpuTwin.spec.js.
 import { readFileSync, readdirSync } from 'node:fs';
 import { test, expect, openLab } from './fixtures.js';
+import { readBack } from './readBack.js';
 import { resolveIncludes } from '../../src/gl/resolveIncludes.js';
 import { createNormalMap } from '../../src/normals/createNormalMap.js';
 import { mapUniforms } from '../../src/normals/mapUniforms.js';
@@ -132,55 +133,12 @@ test('mapSlope of every map kind matches its JS twin on the GPU (RGBA32F read-ba
   await openLab(page, './embed.html?panel=r0-derivation');
   const pts = points();
   const runs = [...CASES.map((c) => mapUniforms(c.map)), ...WRONG.map((w) => w.change(mapUniforms(w.map)))];
-  const results = await page.evaluate(({ pts, runs, fragment, size }) => {
-    const gl = document.createElement('canvas').getContext('webgl2');
-    if (!gl.getExtension('EXT_color_buffer_float')) throw new Error('no EXT_color_buffer_float');
-    const input = new Float32Array(size * size * 4);
-    pts.forEach(([u, v], i) => input.set([u, v], i * 4));
-    const tex = gl.createTexture();
-    gl.bindTexture(gl.TEXTURE_2D, tex);
-    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, size, size, 0, gl.RGBA, gl.FLOAT, input);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
-    const target = gl.createTexture();
-    gl.bindTexture(gl.TEXTURE_2D, target);
-    gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA32F, size, size);
-    gl.bindFramebuffer(gl.FRAMEBUFFER, gl.createFramebuffer());
-    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, target, 0);
-    const vs = '#version 300 es\nvoid main(){vec2 p=vec2(gl_VertexID&1,gl_VertexID>>1)*4.0-1.0;gl_Position=vec4(p,0,1);}';
-    const prog = gl.createProgram();
-    for (const [type, src] of [[gl.VERTEX_SHADER, vs], [gl.FRAGMENT_SHADER, fragment]]) {
-      const s = gl.createShader(type);
-      gl.shaderSource(s, src);
-      gl.compileShader(s);
-      if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) throw new Error(gl.getShaderInfoLog(s));
-      gl.attachShader(prog, s);
-    }
-    gl.linkProgram(prog);
-    if (!gl.getProgramParameter(prog, gl.LINK_STATUS)) throw new Error(gl.getProgramInfoLog(prog));
-    gl.useProgram(prog);
-    const types = {};
-    for (let k = 0; k < gl.getProgramParameter(prog, gl.ACTIVE_UNIFORMS); k += 1) {
-      const info = gl.getActiveUniform(prog, k);
-      types[info.name] = info.type;
-    }
-    gl.activeTexture(gl.TEXTURE0);
-    gl.bindTexture(gl.TEXTURE_2D, tex);
-    gl.uniform1i(gl.getUniformLocation(prog, 'uInputs'), 0);
-    gl.viewport(0, 0, size, size);
-    return runs.map((uniforms) => {
-      for (const [name, value] of Object.entries(uniforms)) {
-        if (!(name in types)) throw new Error(`uniform ${name} is not active in the shader`);
-        const at = gl.getUniformLocation(prog, name);
-        if (types[name] === gl.INT) gl.uniform1i(at, value);
-        else gl.uniform1f(at, value);
-      }
-      gl.drawArrays(gl.TRIANGLES, 0, 3);
-      const out = new Float32Array(size * size * 4);
-      gl.readPixels(0, 0, size, size, gl.RGBA, gl.FLOAT, out);
-      return Array.from(out);
-    });
-  }, { pts, runs, fragment: FRAGMENT, size: SIZE });
+  const results = await readBack(page, {
+    width: SIZE,
+    height: SIZE,
+    textures: { uInputs: pts.flatMap(([u, v]) => [u, v, 0, 0]) },
+    runs: runs.map((uniforms) => ({ fragment: FRAGMENT, uniforms })),
+  });
 
   const failures = [];
   CASES.forEach(({ name, map }, c) => {
