@@ -19,15 +19,12 @@ void main() {
 }`;
 
 /**
- * fragment: the name of a file in shaders/ (without .glsl). It receives `in vec2 vUv` (0..1 across
- * the canvas) and `uniform vec2 uResolution` (drawing-buffer pixels), and declares `out vec4`.
- * uniforms: three.js uniforms ({ name: { value } }); call render() after changing them.
+ * One full-screen triangle drawn by the shader file `fragment` (shaders/, without .glsl) with these
+ * three.js uniforms: { scene, camera, material, dispose() } for renderer.render(scene, camera).
  */
-export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, maxPixels = 1_500_000 } = {}) {
-  const renderer = createRenderer(canvas, { antialias: false });
-  const allUniforms = { ...uniforms, uResolution: { value: [1, 1] } };
+export function createFullscreenPass(fragment, uniforms) {
   const material = new RawShaderMaterial({
-    glslVersion: GLSL3, vertexShader: FULLSCREEN_VERTEX_GLSL, fragmentShader: shaderSource(fragment), uniforms: allUniforms,
+    glslVersion: GLSL3, vertexShader: FULLSCREEN_VERTEX_GLSL, fragmentShader: shaderSource(fragment), uniforms,
     depthTest: false, depthWrite: false,
   });
   const geometry = new BufferGeometry();
@@ -36,7 +33,27 @@ export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, max
   mesh.frustumCulled = false;
   const scene = new Scene();
   scene.add(mesh);
-  const camera = new OrthographicCamera();
+  return {
+    scene,
+    camera: new OrthographicCamera(),
+    material,
+    dispose() {
+      geometry.dispose();
+      material.dispose();
+    },
+  };
+}
+
+/**
+ * fragment: the name of a file in shaders/ (without .glsl). It receives `in vec2 vUv` (0..1 across
+ * the canvas) and `uniform vec2 uResolution` (drawing-buffer pixels), and declares `out vec4`.
+ * uniforms: three.js uniforms ({ name: { value } }); call render() after changing them.
+ */
+export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, maxPixels = 1_500_000 } = {}) {
+  const renderer = createRenderer(canvas, { antialias: false });
+  const allUniforms = { ...uniforms, uResolution: { value: [1, 1] } };
+  const pass = createFullscreenPass(fragment, allUniforms);
+  const { scene, camera } = pass;
   const size = { width: 1, height: 1 };
 
   function draw() {
@@ -77,8 +94,7 @@ export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, max
     dispose() {
       frames.cancel();
       resizeObserver.disconnect();
-      geometry.dispose();
-      material.dispose();
+      pass.dispose();
       renderer.dispose();
     },
   };

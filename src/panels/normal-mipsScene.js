@@ -4,14 +4,12 @@
 // technique's chain is uploaded level by level from uploadLevels(), so the shader samples exactly
 // what the technique stored (three.js uploads texture.mipmaps and sets generateMipmaps = false).
 import {
-  BufferGeometry, DataTexture, Float32BufferAttribute, FloatType, GLSL3, HalfFloatType, LinearFilter,
-  LinearMipmapLinearFilter, Mesh, NearestFilter, NoColorSpace, OrthographicCamera, RawShaderMaterial, RedFormat,
-  RepeatWrapping, RGBAFormat, RGFormat, Scene, UnsignedByteType, Vector2, WebGLRenderTarget,
+  DataTexture, FloatType, HalfFloatType, LinearFilter, LinearMipmapLinearFilter, NearestFilter, NoColorSpace, RedFormat,
+  RepeatWrapping, RGBAFormat, RGFormat, UnsignedByteType, Vector2, WebGLRenderTarget,
 } from 'three';
 import { cappedPixelRatio, createRenderer } from '../gl/createRenderer.js';
 import { onDemand } from '../gl/onDemand.js';
-import { FULLSCREEN_VERTEX_GLSL } from '../gl/createShaderView.js';
-import { shaderSource } from '../gl/shaderChunks.js';
+import { createFullscreenPass } from '../gl/createShaderView.js';
 import { TECHNIQUES } from '../normals/techniqueLayout.js';
 import { uploadLevels } from '../normals/uploadLevels.js';
 import { bandedRmse } from '../optics/bandedRmse.js';
@@ -62,17 +60,8 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
     uTech: { value: dummy }, uTruth: { value: dummy }, uJitter: { value: [0, 0] },
   };
   for (const [k, v] of Object.entries(initial)) u[k] = { value: v };
-  const material = new RawShaderMaterial({
-    glslVersion: GLSL3, vertexShader: FULLSCREEN_VERTEX_GLSL, fragmentShader: shaderSource('normal-mips.frag'), uniforms: u,
-    depthTest: false, depthWrite: false,
-  });
-  const geometry = new BufferGeometry();
-  geometry.setAttribute('position', new Float32BufferAttribute([-1, -1, 0, 3, -1, 0, -1, 3, 0], 3));
-  const mesh = new Mesh(geometry, material);
-  mesh.frustumCulled = false;
-  const scene = new Scene();
-  scene.add(mesh);
-  const camera = new OrthographicCamera();
+  const fullscreen = createFullscreenPass('normal-mips.frag', u);
+  const { scene, camera } = fullscreen;
   const rtTech = floatTarget();
   const rtMeasure = floatTarget(); // the error measurement draws here, so the picture's target is left alone
   const rtTruth = [floatTarget(), floatTarget()];
@@ -330,8 +319,7 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
       rtTech.dispose();
       rtMeasure.dispose();
       rtTruth.forEach((rt) => rt.dispose());
-      geometry.dispose();
-      material.dispose();
+      fullscreen.dispose();
       renderer.dispose();
     },
   };
