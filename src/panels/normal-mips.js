@@ -27,10 +27,10 @@ export const schema = {
   angle: { type: 'number', default: 35, min: 5, max: 60, step: 1, label: 'Steepest slope °' },
   size: { type: 'enum', default: '256', options: ['64', '128', '256', '512', '1024'], label: 'Texture size' },
   technique: { type: 'enum', default: 'toksvig', options: [...TECHNIQUES], label: 'Technique' },
-  alpha: { type: 'number', default: 0.2, min: 0.02, max: 1, step: 0.005, label: 'Base roughness α (Beckmann)' },
+  alpha: { type: 'number', default: 0.2, min: 0.02, max: 1, step: 0.005, label: 'Base roughness α' },
   precision: { type: 'enum', default: 'f16', options: ['u8', 'f16', 'f32'], label: 'Storage precision' },
-  channels: { type: 'enum', default: '3', options: ['3', '2'], label: 'Stored normal channels (2: z rebuilt)' },
-  level: { type: 'number', default: -1, min: -1, max: 10, step: 1, label: 'Forced mip level (−1 = automatic)' },
+  channels: { type: 'enum', default: '3', options: ['3', '2'], label: 'Channels (2: z rebuilt)' },
+  level: { type: 'number', default: -1, min: -1, max: 10, step: 1, label: 'Mip level (−1: auto)' },
   anisotropy: { type: 'enum', default: '1', options: ['1', '2', '4', '8', '16'], label: 'Anisotropic taps (1 = off)' },
   overlay: { type: 'boolean', default: false, label: 'Colour the mip level in use' },
   view: { type: 'enum', default: 'split', options: ['split', 'technique', 'truth', 'difference'], label: 'Picture' },
@@ -231,7 +231,7 @@ export function mount(root, ctx) {
     const aniso = scene ? Math.min(Number(values.anisotropy), scene.maxAnisotropy) : 1;
     const anisoText = Number(values.anisotropy) === 1 ? 'trilinear' : `${aniso}× anisotropic filtering`
       + (aniso < Number(values.anisotropy) ? ` (this GPU offers at most ${scene.maxAnisotropy}×)` : '');
-    dom.setSummary(`${values.technique}, ${values.precision}, ${values.channels} channels; base α = ${base} `
+    dom.setSummary(`${values.technique}, ${values.precision}, ${values.channels} channels; base Beckmann α = ${base} `
       + `(Blinn-Phong s = ${exponentFromAlpha(base).toFixed(1)}); mip level ${values.level < 0 ? `automatic, ${anisoText}` : `forced to ${Math.min(values.level, levels - 1)}`} `
       + `of 0–${levels - 1}; R0 = ${normalIncidence(1, IOR).toFixed(3)}; all six chains of the ${built.size}² map built in ${built.ms.toFixed(0)} ms (${built.where}).`
       + (values.precision === 'f32' && scene && !scene.floatLinear ? ' This GPU cannot filter 32-bit float textures: pick f16.' : ''));

@@ -6,6 +6,8 @@ import { el } from '../ui/el.js';
 
 const fmt = (x) => (Number.isFinite(x) ? x.toFixed(4) : '–');
 
+let titles = 0; // ids for the error tables' titles (a page may mount the panel more than once)
+
 export function buildNormalMipsDom(host) {
   const root = el('div', 'nm-panel');
   const stage = el('div', 'nm-stage');
@@ -32,17 +34,21 @@ export function buildNormalMipsDom(host) {
   const legendLabel = el('span', 'nm-legend-label', 'Overlay / difference colours:');
   legend.append(legendLabel, legendLo, legendBar, legendHi);
 
+  // The table's title sits outside its scrolling box, so it wraps to the column instead of
+  // scrolling away with a wide table; aria-labelledby keeps it the table's name.
+  const title = el('p', 'nm-errors-title', 'RMSE of each technique against the ground truth (tone-mapped RGB), over the plane and per mip-level band');
+  title.id = `nm-errors-title-${++titles}`;
   const table = el('table', 'nm-errors');
-  const caption = el('caption', '', 'RMSE of each technique against the ground truth (tone-mapped RGB), over the plane and per mip-level band');
+  table.setAttribute('aria-labelledby', title.id);
   const thead = el('thead');
   const tbody = el('tbody');
-  table.append(caption, thead, tbody);
+  table.append(thead, tbody);
   const shimmer = el('p', 'nm-shimmer');
   shimmer.setAttribute('aria-live', 'polite');
   const tableWrap = el('div', 'nm-table-wrap');
   tableWrap.append(table);
   const plotSlot = el('div', 'nm-plot-slot'); // the error-by-distance plot (normal-mipsPlot.js)
-  root.append(stage, summary, legend, tableWrap, plotSlot, shimmer);
+  root.append(stage, summary, legend, title, tableWrap, plotSlot, shimmer);
   host.append(root);
 
   return {
