@@ -1,10 +1,20 @@
 // Fresnel reflectance in GLSL ES 3.00: the twin of src/optics/fresnel.js.
-// Same names, same clamps, same order of operations; see the JS file for sources.
+// Same names and clamps, and the same order of operations except where the JS uses exact float64
+// helpers: g² (cosTransmittedSq below) and, in the conductor, 1 − c (twoSum) and √(t0² + 4n²k²)
+// (Math.hypot). See the JS file for sources.
 // Values that JS returns as null (no transmitted ray, no critical angle) are -1.0 here.
 // Precision: the including shader declares `precision highp float;` (or mediump to study fp16).
 
-// cos²θt = g² = (1 − m)(1 + m) + c² with m = nI/nT and c = m·cosθi. Each factor is formed from the
-// indices directly, so matched indices give exactly c² and never the 1 + c² − m² cancellation.
+// cos²θt = g² = (1 − m)(1 + m) + c² with m = nI/nT and c = m·cosθi, evaluated as
+// ((nT − nI)/nT)·((nT + nI)/nT) + c·c. The JS computes the same quantity as
+// (nT² − nI² + (nI·cosθi)²)/nT² from exact products summed in double-double, which float32 has no
+// cheap way to do. Where it matters the two agree: neither forms 1 + c², and the index term is
+// exactly 0 for matched indices (nT − nI is exact for nearby indices), so c² survives at grazing.
+// They differ in rounding: here each operation rounds to float32, and the final sum cancels as
+// g² → 0 near the critical angle, so g² loses relative precision there. That is harmless: R is
+// ill-conditioned there anyway, and tests/e2e/gpuTwin.spec.js compares by angle within 0.02 rad
+// of θc (the GPU value must be the JS value at some angle within 1e-5 rad, ± 2e-6); everywhere
+// else it requires |GPU − JS| ≤ 2e-6.
 float cosTransmittedSq(float ci, float nI, float nT) {
   float c = nI * ci / nT;
   return ((nT - nI) / nT) * ((nT + nI) / nT) + c * c;

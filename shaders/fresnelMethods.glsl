@@ -2,7 +2,7 @@
 // ('exact-cg' → fm_exact_cg), with the same order of operations (GLSL parses `a * b * c` as
 // (a * b) * c, as the JS nests its P.mul calls) and the same clamps: none unless the JS clamps.
 // So NaN and values outside [0, 1] come out here exactly where the JS emulation predicts them.
-// Sources and failure modes: methods.js and fresnel-facts.md §0–§2.
+// Sources and failure modes: methods.js.
 //
 // Precision: include after `precision highp float;` or `precision mediump float;`. Every float
 // here takes that default, so the mediump variant is this same source compiled under mediump
@@ -30,7 +30,8 @@ float fm_exact_cg(float ci, float nI, float nT) {
   return fresnelExactRaw(ci, nI, nT);
 }
 
-// 1: the slide's c/g as written, g² = 1 + c² − m²: 1 + c² rounds to 1 near grazing (§2.2).
+// 1: the slide's c/g as written, g² = 1 + c² − m²: 1 + c² rounds to 1 near grazing, so
+// matched media get R = 1 instead of 0 there.
 float fm_exact_cg_literal(float ci, float nI, float nT) {
   float m = nI / nT;
   float c = m * ci;
@@ -42,7 +43,7 @@ float fm_exact_cg_literal(float ci, float nI, float nT) {
   return 0.5 * a * a * (1.0 + b * b);
 }
 
-// 2: s/p via Snell in pbrt-v4 FrDielectric's order; 1 − sin²θt cancels near θc (§2.4).
+// 2: s/p via Snell in pbrt-v4 FrDielectric's order; 1 − sin²θt cancels near θc.
 float fm_exact_sp(float ci, float nI, float nT) {
   if (nI == nT) return 0.0;
   float m = nI / nT;
@@ -56,7 +57,7 @@ float fm_exact_sp(float ci, float nI, float nT) {
   return 0.5 * (rs * rs + rp * rp);
 }
 
-// 3: Schlick with pow: undefined (NaN on most GPUs) for c > 1 (GLSL ES 3.00 §8.2, fresnel-facts §2.3).
+// 3: Schlick with pow: undefined (NaN on most GPUs) for c > 1 (GLSL ES 3.00 §8.2).
 float fm_schlick_pow(float ci, float nI, float nT) {
   float r0 = normalIncidence(nI, nT);
   return r0 + (1.0 - r0) * pow(1.0 - ci, 5.0);

@@ -1,12 +1,13 @@
 // embed.html?panel=ID&<params>: one panel alone, no page chrome, sized to its frame, driven by
-// its URL and by the message API (src/ui/messageApi.js).
+// its URL and by the message API (src/host/messageApi.js).
 import './styles.css';
-import { panelIds, panelLoaders } from './panels/registry.js';
-import { createPanelHost } from './ui/createPanelHost.js';
-import { connectMessages } from './ui/messageApi.js';
+import { PANEL_IDS, panelEntry } from './panels/manifest.js';
+import { loadPanel } from './panels/loadPanel.js';
+import { createPanelHost } from './host/createPanelHost.js';
+import { connectMessages } from './host/messageApi.js';
 import { applyTheme, loadTheme } from './ui/theme.js';
-import { showNotice } from './ui/notices.js';
-import { contextStats } from './gl/createRenderer.js';
+import { showNotice } from './host/notices.js';
+import { contextStats } from './gl/contextBudget.js';
 
 const root = document.getElementById('embed');
 const search = new URLSearchParams(window.location.search);
@@ -18,21 +19,28 @@ window.fresnelLab = {
 applyTheme({ ...loadTheme(), scheme: search.get('theme') === 'light' ? 'light' : loadTheme().scheme });
 
 window.fresnelLab.ready = (async () => {
-  if (!id || !Object.hasOwn(panelLoaders, id)) {
+  const entry = id ? panelEntry(id) : undefined;
+  if (!entry) {
     showNotice(root, id ? `There is no panel called “${id}”.` : 'No panel was named in the link.', [
-      `Use embed.html?panel=ID with one of: ${panelIds.join(', ')}.`,
+      `Use embed.html?panel=ID with one of: ${PANEL_IDS.join(', ')}.`,
     ], { kind: 'error' });
     return null;
   }
-  const module = await panelLoaders[id]();
-  document.title = `Fresnel Lab: ${module.title}`;
+  document.title = `Fresnel Lab: ${entry.title}`;
   const heading = document.createElement('h1');
   heading.className = 'embed-title';
-  heading.textContent = module.title;
+  heading.textContent = entry.title;
   root.append(heading);
+  let panel;
+  try {
+    panel = await loadPanel(id);
+  } catch (error) {
+    showNotice(root, `The ${entry.title} panel could not load.`, [error.message], { kind: 'error' });
+    return null;
+  }
   let messages = null;
-  const host = createPanelHost(root, module, {
-    applyMaterial: (material) => module.materialParam && host.set({ [module.materialParam]: material.n }),
+  const host = createPanelHost(root, panel, {
+    applyMaterial: (material) => panel.material && host.set({ [panel.material]: material.n }, { source: 'page' }),
     onFrame: (frame) => messages?.rendered(frame),
   });
   hosts[id] = host;

@@ -1,15 +1,16 @@
-// The lecture page: every panel section in lecture order, mounted as it approaches the screen,
-// plus the page controls and lecture-mode keys.
+// The lecture page: one section per panel of the manifest, in lecture order (vite.config.js
+// writes them into index.html), each mounted as it approaches the screen; the page controls and
+// lecture-mode keys.
 import './styles.css';
-import { panelLoaders } from './panels/registry.js';
-import { createPanelHost } from './ui/createPanelHost.js';
-import { lecturePrefix } from './ui/shareLinks.js';
-import { managePanels } from './ui/managePanels.js';
-import { setupLectureMode } from './ui/lectureMode.js';
-import { setupPageControls } from './ui/pageControls.js';
-import { showNotice } from './ui/notices.js';
-import { contextStats, MAX_LIVE_CONTEXTS } from './gl/createRenderer.js';
-import { describeProblem, readParams } from './ui/params.js';
+import { PANEL_IDS, lecturePrefix, panelEntry } from './panels/manifest.js';
+import { loadPanel, missingModules } from './panels/loadPanel.js';
+import { createPanelHost } from './host/createPanelHost.js';
+import { managePanels } from './host/managePanels.js';
+import { setupLectureMode } from './host/lectureMode.js';
+import { setupPageControls } from './host/pageControls.js';
+import { showNotice } from './host/notices.js';
+import { contextStats, MAX_LIVE_CONTEXTS } from './gl/contextBudget.js';
+import { describeProblem, readParams } from './host/params.js';
 
 const hosts = {};
 window.fresnelLab = {
@@ -23,9 +24,9 @@ window.fresnelLab = {
 /** Page-wide material: every panel that has an index parameter takes it (a table marks its row). */
 function applyMaterial(material) {
   for (const host of Object.values(hosts)) {
-    const { materialParam, materialSelectParam } = host.module;
-    if (materialParam) host.set({ [materialParam]: material.n });
-    else if (materialSelectParam && material.id) host.set({ [materialSelectParam]: material.id });
+    const { material: key, materialSelect } = host.panel;
+    if (key) host.set({ [key]: material.n }, { source: 'page' });
+    else if (materialSelect && material.id) host.set({ [materialSelect]: material.id }, { source: 'page' });
   }
 }
 
@@ -37,25 +38,32 @@ const pageSchema = {
   maxContexts: { type: 'number', default: MAX_LIVE_CONTEXTS, min: 1, max: MAX_LIVE_CONTEXTS, step: 1, label: 'Live WebGL panels' },
 };
 const page = readParams(pageSchema, new URLSearchParams(window.location.search));
-showNotice(document.querySelector('main'), 'A page setting in the link was not usable:', page.problems.map(describeProblem));
+const main = document.querySelector('main');
+showNotice(main, 'A page setting in the link was not usable:', page.problems.map(describeProblem));
 const maxLive = Math.round(page.values.maxContexts);
 
-// A section whose panel is not in this build is left out rather than shown empty.
-for (const section of document.querySelectorAll('section[data-panel]')) {
-  if (!(section.dataset.panel in panelLoaders)) section.remove();
-}
+// The page and the manifest must agree: a section without a panel, or a panel without its section
+// or its module, is said on the page (and fails the tests), never dropped in silence.
 const sections = [...document.querySelectorAll('section[data-panel]')];
+const onPage = sections.map((s) => s.dataset.panel);
+const problems = [
+  ...onPage.filter((id) => !panelEntry(id)).map((id) => `The section “${id}” is not a panel of the manifest.`),
+  ...PANEL_IDS.filter((id) => !onPage.includes(id)).map((id) => `The panel “${id}” has no section on this page.`),
+  ...missingModules.map((id) => `The panel “${id}” has no module src/panels/${id}/index.js.`),
+];
+showNotice(main, 'This page does not match its panel manifest:', problems, { kind: 'error' });
+
 window.fresnelLab.ready = (async () => {
   const entries = await Promise.all(sections.map(async (section) => {
     const id = section.dataset.panel;
     try {
-      const module = await panelLoaders[id]();
-      hosts[id] = createPanelHost(section.querySelector('.panel-mount'), module, {
+      const panel = await loadPanel(id);
+      hosts[id] = createPanelHost(section.querySelector('.panel-mount'), panel, {
         prefix: lecturePrefix(id), noticeHost: section, applyMaterial,
       });
       return { section, host: hosts[id] };
     } catch (error) {
-      showNotice(section, `The ${id} panel could not load.`, [error.message], { kind: 'error' });
+      showNotice(section, `The ${panelEntry(id)?.title ?? id} panel could not load.`, [error.message], { kind: 'error' });
       return null;
     }
   }));

@@ -1,27 +1,9 @@
 // One WebGL2 renderer on a canvas, counted against the page's budget of live contexts
-// (browsers drop the oldest context past about 16; the lab keeps at most 8), with a capped pixel
-// count so a 4K projector or a retina laptop stays fast.
+// (contextBudget.js), with a capped pixel count so a 4K projector or a retina laptop stays fast.
 import { WebGLRenderer } from 'three';
+import { countContext, hasWebGL2, WebGL2Unavailable } from './contextBudget.js';
 
-export class WebGL2Unavailable extends Error {}
-
-export const MAX_LIVE_CONTEXTS = 8;
-export const contextStats = { live: 0, peak: 0, created: 0 };
-
-/** True when the browser can create a WebGL2 context at all (probed once). */
-let webgl2Probe = null;
-export function hasWebGL2() {
-  if (webgl2Probe === null) {
-    try {
-      const gl = document.createElement('canvas').getContext('webgl2');
-      webgl2Probe = Boolean(gl);
-      gl?.getExtension('WEBGL_lose_context')?.loseContext(); // the probe must not hold a context
-    } catch {
-      webgl2Probe = false;
-    }
-  }
-  return webgl2Probe;
-}
+export { MAX_LIVE_CONTEXTS, WebGL2Unavailable, contextStats, hasWebGL2 } from './contextBudget.js';
 
 /** Device pixel ratio capped at maxRatio and so that the drawing buffer holds at most maxPixels. */
 export function cappedPixelRatio(cssWidth, cssHeight, deviceRatio, maxRatio = 2, maxPixels = 3_000_000) {
@@ -39,9 +21,7 @@ export function createRenderer(canvas, options = {}) {
     throw new WebGL2Unavailable(`WebGL2 could not start: ${error.message}`);
   }
   renderer.autoClear = false;
-  contextStats.live += 1;
-  contextStats.created += 1;
-  contextStats.peak = Math.max(contextStats.peak, contextStats.live);
+  const release = countContext();
   const dispose = renderer.dispose.bind(renderer);
   let disposed = false;
   renderer.dispose = () => {
@@ -49,7 +29,7 @@ export function createRenderer(canvas, options = {}) {
     disposed = true;
     dispose();
     renderer.forceContextLoss();
-    contextStats.live -= 1;
+    release();
   };
   return renderer;
 }

@@ -4,7 +4,7 @@
 import {
   BufferGeometry, Float32BufferAttribute, GLSL3, Mesh, OrthographicCamera, RawShaderMaterial, Scene, Vector2,
 } from 'three';
-import { shaderSource } from './shaderChunks.js';
+import { assembleShader } from './shaderChunks.js';
 import { cappedPixelRatio, createRenderer } from './createRenderer.js';
 import { onDemand } from './onDemand.js';
 import { readPixel } from './readPixel.js';
@@ -19,12 +19,12 @@ void main() {
 }`;
 
 /**
- * One full-screen triangle drawn by the shader file `fragment` (shaders/, without .glsl) with these
+ * One full-screen triangle drawn by the GLSL `fragment` (its includes resolved by assembleShader) with these
  * three.js uniforms: { scene, camera, material, dispose() } for renderer.render(scene, camera).
  */
 export function createFullscreenPass(fragment, uniforms) {
   const material = new RawShaderMaterial({
-    glslVersion: GLSL3, vertexShader: FULLSCREEN_VERTEX_GLSL, fragmentShader: shaderSource(fragment), uniforms,
+    glslVersion: GLSL3, vertexShader: FULLSCREEN_VERTEX_GLSL, fragmentShader: assembleShader(fragment), uniforms,
     depthTest: false, depthWrite: false,
   });
   const geometry = new BufferGeometry();
@@ -45,7 +45,7 @@ export function createFullscreenPass(fragment, uniforms) {
 }
 
 /**
- * fragment: the name of a file in shaders/ (without .glsl). It receives `in vec2 vUv` (0..1 across
+ * fragment: GLSL source (a panel's `.glsl` file imported with `?raw`). It receives `in vec2 vUv` (0..1 across
  * the canvas) and `uniform vec2 uResolution` (drawing-buffer pixels), and declares `out vec4`.
  * uniforms: three.js uniforms ({ name: { value } }); call render() after changing them.
  */

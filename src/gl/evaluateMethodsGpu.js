@@ -1,7 +1,8 @@
 // Every Fresnel method of shaders/fresnelMethods.glsl evaluated on this GPU: one fragment per
 // sample renders into an RGBA32F target (EXT_color_buffer_float) and readPixels(FLOAT) brings
 // the results back bit for bit, NaN and ±Infinity included; in-shader isnan() cannot be trusted
-// (GLSL ES 3.00 need not support NaN; fresnel-facts §2.5). Raw WebGL2 on a context the caller
+// (GLSL ES 3.00 need not support NaN: "NaNs may not be supported by the implementation, in which
+// case isnan returns false", Khronos isnan reference page). Raw WebGL2 on a context the caller
 // owns: the stability panel, the speed-accuracy panel and the benchmark share one per context.
 // GL state touched here (framebuffers, program, vertex array, viewport, texture units 0–1,
 // pixel-store and capability flags) is restored after each call; three.js users may still call
@@ -297,8 +298,8 @@ export function disposeMethodsGpu(gl) {
 /**
  * What the driver claims for fragment-shader floats: { highp, mediump } each { rangeMin,
  * rangeMax, precision } (precision: fraction bits, 23 for float32, 10 for float16). Not trusted:
- * Safari/iOS has reported wrong values (webglfundamentals "WebGL Precision Issues"; fresnel-facts
- * §2.4); probePrecision() measures it by rendering instead.
+ * Safari/iOS has reported wrong values (webglfundamentals "WebGL Precision Issues");
+ * probePrecision() measures it by rendering instead.
  */
 export function gpuPrecisionInfo(gl) {
   const read = (type) => {

@@ -1,4 +1,6 @@
-// Every file in shaders/ as a chunk named after the file without `.glsl`, bundled as text.
+// The shared GLSL chunks: every file in shaders/ as a chunk named after the file without `.glsl`,
+// bundled as text. A panel's own shaders live in its folder and are imported as text (`?raw`);
+// assembleShader resolves their `#include <name>` lines against these chunks.
 import { resolveIncludes } from './resolveIncludes.js';
 
 const files = import.meta.glob('../../shaders/*.glsl', { query: '?raw', import: 'default', eager: true });
@@ -7,8 +9,13 @@ export const shaderChunks = Object.fromEntries(
   Object.entries(files).map(([path, text]) => [path.split('/').pop().replace(/\.glsl$/, ''), text]),
 );
 
-/** The named shader file with its includes resolved. */
+/** GLSL source with its includes resolved: the shared chunks, plus a panel's own `extra` chunks. */
+export function assembleShader(source, extra = {}) {
+  return resolveIncludes(source, { ...shaderChunks, ...extra });
+}
+
+/** The named shared chunk with its includes resolved. */
 export function shaderSource(name) {
   if (!(name in shaderChunks)) throw new Error(`no shader named ${name}`);
-  return resolveIncludes(shaderChunks[name], shaderChunks);
+  return assembleShader(shaderChunks[name]);
 }

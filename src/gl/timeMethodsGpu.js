@@ -1,11 +1,13 @@
-// GPU cost of every Fresnel method on the device in front of the viewer, measured the way
-// fresnel-facts.md §5 says to: one full-screen pass per method and precision that evaluates the
+// GPU cost of every Fresnel method on the device in front of the viewer, measured with a large
+// workload so that the GPU really does the work (gman, webglfundamentals "How do I benchmark a
+// WebGL shader?"): one full-screen pass per method and precision that evaluates the
 // method `loops` times per pixel (a uniform loop count, so nothing is unrolled or folded), with
 // inputs that vary per pixel (from gl_FragCoord) and an input for each iteration that depends on
 // the previous result (so nothing can be hoisted), every result accumulated into the output (so
 // nothing is dead code), minus a baseline pass of the same shape with F(c) = c. The pass is timed
 // with EXT_disjoint_timer_query_webgl2 where the browser offers it, else by wall time around a
-// block of passes fenced by 1-pixel readPixels (the dependable sync point, §5). Each sample is the
+// block of passes fenced by 1-pixel readPixels (the dependable sync point: it must wait for the
+// pixels, same source). Each sample is the
 // fastest of a few timings (other work on the machine only ever adds time), baseline and method
 // back to back. Reported: ns per evaluation { median, min, max } over repeats, and the timer used.
 // The method code is the shared GLSL twin, shaders/fresnelMethods.glsl (`#include <fresnelMethods>`).

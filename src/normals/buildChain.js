@@ -1,8 +1,10 @@
 // Mip chains, technique by technique: each level holds exactly what the technique stores
 // (techniqueLayout.js), quantized to the chosen precision, as float32 values the shader reads.
 // Every level is derived from the float32 moment pyramid (box averages of level 0) and quantized
-// once, as an offline baker does (Filament builds every level from level 0, note §1.2); a GPU
-// glGenerateMipmap on RGBA8 would round again at every level (note §8), which is not emulated.
+// once, as an offline baker does (Filament's mipgen builds every level from level 0:
+// libs/image/src/ImageSampler.cpp); a GPU glGenerateMipmap on RGBA8 would round again at every
+// level (its levels come from repeated reduction, glGenerateMipmap reference page), which is not
+// emulated.
 import { buildMomentPyramid, PYRAMID_LAYOUT } from './momentPyramid.js';
 import { checkPrecision, quantizeInPlace } from './storagePrecision.js';
 import { checkChannels, TECHNIQUES, techniqueLayout } from './techniqueLayout.js';

@@ -2,8 +2,8 @@
 // A cap is the top of a sphere of radius R = b / sin θm over a disk of radius b, so its normal
 // n = (x, y, √(R² − r²)) / R tilts from 0 at the centre to θm at the rim. θm = 90° would be a
 // true hemisphere, but its slope second moment ∫ r²/(R² − r²) dA diverges (log) at the rim, which
-// LEAN/CLEAN cannot store; θm is therefore capped at 85° (slope 11.4) and defaults to 45°, the
-// "slopes below about 1 (z > 0.7)" advice of the reference note §7.
+// LEAN/CLEAN cannot store; θm is therefore capped at 85° (slope 11.4) and defaults to 45°, so
+// slopes stay below about 1 (z > 0.7) unless an extreme map is asked for.
 import { checkFrequency, checkRange, degToRad, fract, makeMap } from './mapMath.js';
 
 function capGeometry({ frequency, edgeAngleDeg, fill }) {
@@ -52,7 +52,7 @@ export function createBumps(options) {
  *   ∫cap n_z dA = ∫0^b √(R² − r²)/R · 2πr dr = (2πR²/3)(1 − cos³θm),
  *   ∫cap |b|² dA = ∫0^b r²/(R² − r²) · 2πr dr = π(R² ln(1/cos²θm) − b²)   (w = R² − r²).
  * By symmetry the mean n_x, n_y, b_x, b_y and M_xy are 0 and M_xx = M_yy = |b|²/2.
- * Returns { nz, slopeVariance } with slopeVariance = E[b_x² + b_y²] (CLEAN's M, note §2.5).
+ * Returns { nz, slopeVariance } with slopeVariance = E[b_x² + b_y²] (CLEAN's M; Baker, GDC 2011).
  */
 export function bumpCellMean(options) {
   const params = checkParams(options);

@@ -1,9 +1,9 @@
 // Grooves / ridges: a 1-D profile repeated `frequency` times across the tile.
 // profile 'v': V-grooves, planar facets at exactly ±θ. Two facets average to (0, 0, cos θ), so the
-// renormalized mip is flat and the true NDF is two spikes (reference note §1.1; Han et al.,
+// renormalized mip is flat and the true NDF is two spikes (Han et al.,
 // "Frequency Domain Normal Map Filtering", SIGGRAPH 2007, Fig. 1).
 // profile 'sine': smooth ridges h ∝ sin, slope tan θ · cos(2πt): a 1-D slope distribution that
-// only LEAN renders anisotropic (note §7, "Ridges").
+// only LEAN renders anisotropic (Olano & Baker, "LEAN Mapping", I3D 2010).
 import { checkFrequency, checkRange, degToRad, fract, makeMap } from './mapMath.js';
 
 const DIRECTIONS = {

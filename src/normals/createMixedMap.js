@@ -1,7 +1,6 @@
 // Mixed map: a blocks × blocks grid of regions, each flat, bumps, grooves, slope checker or value
 // noise, so per-texel gloss varies across the map (like the RenderMonkey map of Hill's "Specular
-// Showdown", 2011, chosen for its mix of rough and smooth areas; reference note §3 and §7, "Mixed
-// regions"). The child maps have periods that divide the block side, so each block holds whole
+// Showdown", 2011, chosen for its mix of rough and smooth areas). The child maps have periods that divide the block side, so each block holds whole
 // periods; region borders are creases, as in a painted map.
 import { createBumps } from './createBumps.js';
 import { createGrooves } from './createGrooves.js';

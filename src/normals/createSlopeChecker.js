@@ -1,5 +1,6 @@
 // Slope checker: a frequency × frequency checkerboard of planar facets tilted by +θ and −θ in the
-// azimuth φ (reference note §7, "Slope checker / V-grooves"). Any 2×2 block of cells averages to
+// azimuth φ: a 2-D form of the V-groove (Han et al., "Frequency Domain Normal Map Filtering",
+// SIGGRAPH 2007, Fig. 1). Any 2×2 block of cells averages to
 // (0, 0, cos θ) exactly, so mip 1 of a 2-texel checker is flat and short, and renormalized mips
 // are a mirror: the worst case. It is a normal map, not a height field: facets of opposite tilt
 // meet at steps (like many painted normal maps); only the normals matter here.

@@ -1,5 +1,5 @@
 // Value noise (fBm of lattice value noise) with analytic derivatives: broadband detail whose
-// variance leaks out one octave per mip (reference note §7, "fBm / gradient noise").
+// variance leaks out one octave per mip, the realistic case.
 // One octave: random values on an integer lattice, blended with Perlin's quintic fade
 // f(t) = 6t⁵ − 15t⁴ + 10t³, f'(t) = 30t²(t − 1)² (Perlin, "Improving Noise", SIGGRAPH 2002), so the
 // gradient is continuous. For corners a, b (x), c, d (y) and k = a − b − c + d:

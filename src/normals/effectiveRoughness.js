@@ -1,14 +1,19 @@
 // What the shader makes of a stored texel: the unit shading normal and the effective roughness
 // α' (and the equivalent Blinn-Phong exponent s' = 2/α'² − 2) for a base roughness α.
 // Per technique (formulas in lobeFormulas.js):
-//   naive         n = normalize(N_a); α' = α (the length is thrown away, note §2.1)
-//   renormalized  n = N; α' = α (§2.2)
-//   toksvig       n = normalize(N_a); α' from σ² = (1 − |N_a|)/|N_a| (§2.3): for Blinn-Phong,
+//   naive         n = normalize(N_a); α' = α (the length is thrown away, as three.js's
+//                 normal_fragment_maps does)
+//   renormalized  n = N; α' = α
+//   toksvig       n = normalize(N_a); α' from σ² = (1 − |N_a|)/|N_a| (Toksvig, "Mipmapping
+//                 Normal Maps", NVIDIA 2004): for Blinn-Phong,
 //                 s/(1 + sσ²) equals 2/α'² − 2 exactly when s = 2/α² − 2 (derived, tested)
-//   vmf           n = N; α' = √(α² + 2/κ(r̄)) (§2.7)
-//   lean          n = normalize(bx, by, 1); anisotropic Σ, α' = √(α² + tr C) (§2.4)
-//   clean         n = normalize(bx, by, 1); α' = √(α² + σ²) (§2.5, §2.11)
-// With channels = 2 the stored x, y get z = √(1 − x² − y²) first (note §1.2).
+//   vmf           n = N; α' = √(α² + 2/κ(r̄)) (Han et al., SIGGRAPH 2007; the 2/κ as in
+//                 TheRealMJP/SpecularAA and Filament's roughness-prefilter)
+//   lean          n = normalize(bx, by, 1); anisotropic Σ, α' = √(α² + tr C) (Olano & Baker,
+//                 "LEAN Mapping", I3D 2010)
+//   clean         n = normalize(bx, by, 1); α' = √(α² + σ²) (Baker, GDC 2011; σ² sums both axes,
+//                 so this is α² + 2v with v the per-axis slope variance)
+// With channels = 2 the stored x, y get z = √(1 − x² − y²) first (BC5-style two-channel normals).
 import {
   alphaFromExponent, cleanAlpha, exponentFromAlpha, leanCovariance, reconstructZ, toksvigAlpha, vmfAlpha,
 } from './lobeFormulas.js';

@@ -1,6 +1,6 @@
 // Ground truth for a mip texel: the moments of the exact analytic normals over its footprint, by
-// supersampling on an n × n midpoint grid (the supersampled reference of MJP's SpecularAA and of
-// the reference note §6, taken here in texture space). The quantities are the pyramid's
+// supersampling on an n × n midpoint grid (the supersampled reference of MJP's SpecularAA sample,
+// TheRealMJP/SpecularAA, taken here in texture space). The quantities are the pyramid's
 // (PYRAMID_LAYOUT): mean unit normal, mean slope b and raw second moments E[b bᵀ].
 // With n = 2^level the grid points are exactly the level-0 texel centres of the footprint, so the
 // result equals that texel of the box-filtered chain; larger n converges to the continuous

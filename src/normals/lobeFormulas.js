@@ -1,10 +1,11 @@
 // The per-texel lobe formulas of each technique, in float64 (the shader's contract).
-// α is the GGX/Beckmann roughness (α = perceptual roughness², note §2 notation), s the
-// Blinn-Phong exponent; "note" is shared/reference/normal-map-mips.md. For small values every
-// isotropic method is α'² ≈ α² + 2v with v the per-axis slope variance (note §2.11, derived).
+// α is the GGX/Beckmann roughness (α = perceptual roughness², Burley, "Physically Based Shading
+// at Disney", SIGGRAPH 2012), s the Blinn-Phong exponent. For small values every isotropic
+// method is α'² ≈ α² + 2v with v the per-axis slope variance (derived: the small-variance limit
+// of each formula below).
 
 /** s = 2/α² − 2 (the Phong–Beckmann correspondence of Walter et al., "Microfacet Models for
- * Refraction through Rough Surfaces", EGSR 2007; note §6). */
+ * Refraction through Rough Surfaces", EGSR 2007). */
 export function exponentFromAlpha(alpha) {
   return 2 / (alpha * alpha) - 2;
 }
@@ -16,7 +17,7 @@ export function alphaFromExponent(s) {
 
 /**
  * Toksvig's variance from the stored length L = |N_a|: σ² = (1 − L)/L, i.e. L = 1/(1 + σ²)
- * (Toksvig, "Mipmapping Normal Maps", NVIDIA 2004; note §2.3). L ≥ 1 (8-bit noise, 2-channel
+ * (Toksvig, "Mipmapping Normal Maps", NVIDIA 2004). L ≥ 1 (8-bit noise, 2-channel
  * reconstruction) gives 0; L = 0 gives Infinity.
  */
 export function toksvigVariance(L) {
@@ -25,20 +26,21 @@ export function toksvigVariance(L) {
   return (1 - L) / L;
 }
 
-/** f_t = 1/(1 + sσ²) = L/(L + s(1 − L)) (Hill, "Specular Showdown in the Wild West", 2011; note §2.3). */
+/** f_t = 1/(1 + sσ²) = L/(L + s(1 − L)) (Hill, "Specular Showdown in the Wild West", 2011). */
 export function toksvigFactor(L, s) {
   return 1 / (1 + s * toksvigVariance(L));
 }
 
-/** Blinn-Phong: s' = f_t·s = s/(1 + sσ²) (note §2.3). */
+/** Blinn-Phong: s' = f_t·s = s/(1 + sσ²) (Toksvig 2004, as quoted by Hill 2011). */
 export function toksvigExponent(L, s) {
   return s * toksvigFactor(L, s);
 }
 
 /**
- * GGX/Beckmann form: α'² = (α² + 2σ²(1 − α²)) / (1 + 2σ²(1 − α²)) ≈ α² + 2σ² (note §2.3, derived:
- * equal to MJP's s = 2/α² − 2, α' = √(2/(f_t s + 2)) in SpecularAA's Mesh.hlsl and to Unreal's
- * ApplyCompositeTexture, note §2.9). It saturates at α' = 1 as σ² → ∞.
+ * GGX/Beckmann form: α'² = (α² + 2σ²(1 − α²)) / (1 + 2σ²(1 − α²)) ≈ α² + 2σ² (derived:
+ * equal to MJP's s = 2/α² − 2, α' = √(2/(f_t s + 2)) in TheRealMJP/SpecularAA's Mesh.hlsl and to
+ * Unreal's ApplyCompositeTexture in TextureCompressorModule.cpp; both checked on a grid in
+ * tests/unit/normals-lobes.test.js). It saturates at α' = 1 as σ² → ∞.
  */
 export function toksvigAlpha(L, alpha) {
   const v = toksvigVariance(L);
@@ -52,7 +54,7 @@ export function toksvigAlpha(L, alpha) {
  * vMF concentration from the mean resultant length r: κ ≈ (3r − r³)/(1 − r²), the estimate
  * r(p − r²)/(1 − r²) with p = 3 of Banerjee, Dhillon, Ghosh, Sra, "Clustering on the Unit
  * Hypersphere using von Mises-Fisher Distributions", JMLR 6, 2005, as MJP's SpecularAA and
- * Filament's roughness-prefilter use it (note §2.7), with κ = 10000 for r ≥ 1.
+ * Filament's roughness-prefilter use it, with κ = 10000 for r ≥ 1.
  */
 export function vmfKappa(r) {
   if (r >= 1) return 10000;
@@ -60,7 +62,7 @@ export function vmfKappa(r) {
   return (3 * r - r * r * r) / (1 - r * r);
 }
 
-/** The exact mean length of a vMF lobe, r(κ) = coth κ − 1/κ (note §2.7 checks). */
+/** The exact mean length of a vMF lobe, r(κ) = coth κ − 1/κ (Banerjee et al. 2005's A_p(κ) for p = 3). */
 export function vmfMeanLength(kappa) {
   if (kappa === 0) return 0;
   return 1 / Math.tanh(kappa) - 1 / kappa;
@@ -68,7 +70,7 @@ export function vmfMeanLength(kappa) {
 
 /**
  * α' = √(α² + 2/κ) (MJP SpecularAA commit 0eee4b5, 2018, "2/κ" replacing "1/(2κ)"; Filament
- * roughness-prefilter; note §2.7). κ = 0 (r = 0) gives Infinity: no lobe at all.
+ * roughness-prefilter). κ = 0 (r = 0) gives Infinity: no lobe at all.
  */
 export function vmfAlpha(r, alpha) {
   const kappa = vmfKappa(r);
@@ -78,9 +80,9 @@ export function vmfAlpha(r, alpha) {
 /**
  * LEAN's slope covariance plus the base lobe: Σ = M − B Bᵀ + v₀ I with v₀ = α²/2, the per-axis
  * slope variance of a Beckmann lobe (D ∝ exp(−tan²θ/α²) is a Gaussian in slope, Walter et al.
- * 2007; the note's 1/s ≈ α²/2, §2.11). Olano & Baker 2010 (note §2.4) use v₀ = 1/s for Blinn-Phong. Quantized
- * moments can give a negative variance: each is clamped at 0 and |Σxy| at √(ΣxxΣyy) (det Σ ≥ 0,
- * note §2.4). Returns { sxx, syy, sxy, major, minor } with the eigenvalues major ≥ minor.
+ * 2007; and 1/s ≈ α²/2 for s = 2/α² − 2). Olano & Baker, "LEAN Mapping", I3D 2010, use v₀ = 1/s
+ * for Blinn-Phong. Quantized moments can give a negative variance: each is clamped at 0 and |Σxy|
+ * at √(ΣxxΣyy) (det Σ ≥ 0, as TheRealMJP/SpecularAA clamps it). Returns { sxx, syy, sxy, major, minor } with the eigenvalues major ≥ minor.
  */
 export function leanCovariance(bx, by, mxx, myy, mxy, alpha) {
   const v0 = (alpha * alpha) / 2;
@@ -104,17 +106,17 @@ export function leanAlpha(bx, by, mxx, myy, mxy, alpha) {
   return { alpha: Math.sqrt(major + minor), alphaMajor: Math.sqrt(2 * major), alphaMinor: Math.sqrt(2 * minor) };
 }
 
-/** CLEAN's variance σ² = M − (Bx² + By²), summed over both axes, clamped at 0 (Baker, GDC 2011; note §2.5). */
+/** CLEAN's variance σ² = M − (Bx² + By²), summed over both axes, clamped at 0 (Baker, GDC 2011). */
 export function cleanVariance(bx, by, m) {
   return Math.max(0, m - bx * bx - by * by);
 }
 
-/** CLEAN as roughness: per-axis v = σ²/2, so α'² = α² + 2v = α² + σ² (note §2.11). */
+/** CLEAN as roughness: per-axis v = σ²/2, so α'² = α² + 2v = α² + σ². */
 export function cleanAlpha(bx, by, m, alpha) {
   return Math.sqrt(alpha * alpha + cleanVariance(bx, by, m));
 }
 
-/** z of a 2-channel normal: √(max(0, 1 − x² − y²)) (BC5/"XY" normals; note §1.2). */
+/** z of a 2-channel normal: √(max(0, 1 − x² − y²)) (BC5/"XY" normals). */
 export function reconstructZ(x, y) {
   return Math.sqrt(Math.max(0, 1 - x * x - y * y));
 }

@@ -1,8 +1,10 @@
-// Shared math of the procedural normal maps (reference note normal-map-mips.md §7).
+// Shared math of the procedural normal maps: height fields with analytic derivatives, so the
+// reference normal is exact at any sub-texel position.
 // Every map is a slope field b(u, v) = −∇h(u, v) over the unit tile (u, v ∈ [0, 1), period 1),
 // with heights in tile units. b is LEAN's B = (n_x/n_z, n_y/n_z) (Olano & Baker, "LEAN Mapping",
-// I3D 2010; note §2.4), and the tangent-space normal is n = normalize(b_x, b_y, 1), i.e.
-// normalize(−∂h/∂u, −∂h/∂v, 1) with +Y up, the OpenGL convention of three.js and glTF (note §7).
+// I3D 2010), and the tangent-space normal is n = normalize(b_x, b_y, 1), i.e.
+// normalize(−∂h/∂u, −∂h/∂v, 1) with +Y up, the OpenGL convention of three.js and glTF (glTF 2.0
+// spec, material.normalTexture: "+X is right and +Y is up").
 
 export function fract(x) {
   return x - Math.floor(x);

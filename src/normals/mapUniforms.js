@@ -1,4 +1,4 @@
-// The uniforms of shaders/normal-mipsMaps.glsl (the GLSL twin of the procedural maps) for one map
+// The uniforms of shaders/normalMaps.glsl (the GLSL twin of the procedural maps) for one map
 // object from createNormalMap. Pure: no DOM, no WebGL.
 import { createNormalMap } from './createNormalMap.js';
 import { createValueNoise } from './createValueNoise.js';

@@ -1,10 +1,11 @@
 // The linear moment pyramid every technique's mip chain is derived from.
 // Per texel, 8 float32 values (PYRAMID_LAYOUT): the mean normal N_a = (nx, ny, nz), the mean slope
 // B = (bx, by) and the raw second slope moments M = (mxx, myy, mxy) = E[bx²], E[by²], E[bx·by],
-// with b = (n_x/n_z, n_y/n_z) per level-0 texel (Olano & Baker, "LEAN Mapping", I3D 2010; note
-// §2.4). All eight are plain means, so a 2×2 box reduction of level L gives level L + 1 exactly
+// with b = (n_x/n_z, n_y/n_z) per level-0 texel (Olano & Baker, "LEAN Mapping", I3D 2010).
+// All eight are plain means, so a 2×2 box reduction of level L gives level L + 1 exactly
 // (up to float32 rounding) and equals the mean over the level-0 footprint: the box filter the GL
-// spec recommends for glGenerateMipmap (note §8). Level count = log2(size) + 1, down to 1×1.
+// spec recommends for glGenerateMipmap ("a box filter is recommended", glGenerateMipmap reference
+// page). Level count = log2(size) + 1, down to 1×1.
 import { checkSize } from './sampleLevel0.js';
 
 export const PYRAMID_LAYOUT = Object.freeze(['nx', 'ny', 'nz', 'bx', 'by', 'mxx', 'myy', 'mxy']);

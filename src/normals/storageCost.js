@@ -1,4 +1,4 @@
-// Storage cost of a whole mip chain per technique × precision × channels (note §2.12):
+// Storage cost of a whole mip chain per technique × precision × channels:
 // bytes = texels in the chain × stored channels × bytes per channel, and uploadBytes with the
 // RGBA padding the textures actually get (techniqueLayout.js). GPU drivers may add their own
 // alignment; that is not modelled.
@@ -6,7 +6,8 @@ import { chainTexelCount, levelCount } from './momentPyramid.js';
 import { checkPrecision, PRECISIONS } from './storagePrecision.js';
 import { TECHNIQUES, techniqueLayout } from './techniqueLayout.js';
 
-// Whether the footprint's normal variance reaches the shader at all (note §1.2, §2.12).
+// Whether the footprint's normal variance reaches the shader at all: renormalizing, or rebuilding
+// z from 2 channels, makes |N| = 1 (Toksvig 2004; Hill, "Specular Showdown", 2011).
 function varianceKept(technique, channels) {
   if (technique === 'naive' || technique === 'renormalized') return false;
   if (technique === 'toksvig') return channels === 3; // 2 channels: |N| = 1, σ² = 0

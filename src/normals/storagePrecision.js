@@ -1,10 +1,10 @@
 // Storage precisions of a mip level, as the value the shader reads back:
 //   u8   8-bit unorm: code c = round(255·(x − min)/(max − min)), read as min + (max − min)·c/255
-//        (normals: c = n/2 + ½, note §1.6). Flat (0, 0, 1) becomes (1/255, 1/255, 1): 0 sits
+//        (normals: c = n/2 + ½). Flat (0, 0, 1) becomes (1/255, 1/255, 1): 0 sits
 //        between codes 127 and 128, and Math.round takes 128, as a baker's round(255·c) does.
 //   f16  IEEE binary16, round to nearest even (@petamoriken/float16 f16round; RGBA16F / HalfFloatType)
 //   f32  IEEE binary32 (Math.fround; RGBA32F / FloatType, which needs OES_texture_float_linear
-//        to be filtered, note §8)
+//        to be filtered; three.js WebGLTextures.js warns without it)
 // The decoded value is rounded to float32 at the end: the shader computes in 32-bit floats.
 import { f16round } from '@petamoriken/float16';
 import { roundHalfArray } from './float16Bits.js';

@@ -1,23 +1,34 @@
 // What each technique stores per texel, and how it is packed into WebGL2 textures.
-// Sources for each technique: note §2.1–§2.7 (shared/reference/normal-map-mips.md).
-//   naive         N_a, the box average, not renormalized (what glGenerateMipmap makes; §2.1)
-//   renormalized  N_a/|N_a| (§2.2)
-//   toksvig       N_a, as naive: the shader reads σ² from |N_a| (runtime Toksvig; §2.3)
+//   naive         N_a, the box average, not renormalized (what glGenerateMipmap makes with the
+//                 box filter its reference page recommends)
+//   renormalized  N_a/|N_a| (what "most algorithms" do: Toksvig, "Mipmapping Normal Maps", NVIDIA 2004)
+//   toksvig       N_a, as naive: the shader reads σ² from |N_a| (runtime Toksvig, Toksvig 2004)
 //   vmf           N_a/|N_a| plus r̄ = |N_a| in its own channel, baked from float data before
-//                 quantization (MJP's "precomputed vMF" / Filament's roughness-prefilter bake a
-//                 channel, §2.7, §2.9); r̄ is kept rather than α' so the base α stays a live control
-//   lean          B = (bx, by), M = (mxx, myy, mxy): 5 scalars in 2 textures (§2.4)
-//   clean         B = (bx, by), M = mxx + myy: 3 scalars (§2.5)
-// channels = 2 stores only x, y of a normal (z = √(1 − x² − y²) in the shader: BC5-style, §1.2),
+//                 quantization (MJP's "precomputed vMF" in TheRealMJP/SpecularAA and Filament's
+//                 tools/roughness-prefilter bake a channel; Han et al., "Frequency Domain Normal
+//                 Map Filtering", SIGGRAPH 2007); r̄ is kept rather than α' so the base α stays a
+//                 live control
+//   lean          B = (bx, by), M = (mxx, myy, mxy): 5 scalars in 2 textures (Olano & Baker,
+//                 "LEAN Mapping", I3D 2010)
+//   clean         B = (bx, by), M = mxx + myy: 3 scalars (Baker, "Spectacular Specular – LEAN and
+//                 CLEAN Specular Highlights", GDC 2011)
+// channels = 2 stores only x, y of a normal (z = √(1 − x² − y²) in the shader: BC5-style, which
+// Toksvig cannot use: Hill, "Specular Showdown in the Wild West", 2011),
 // so |N| = 1 and runtime Toksvig sees no variance at all. LEAN and CLEAN store slopes, never
 // z, so channels does not apply to them.
 // Each channel has the range [min, max] an 8-bit unorm code c ∈ {0..255} spans: value =
-// min + (max − min)·c/255. Normals use c = n/2 + ½ (note §1.6). Slope moments use a scale S
-// (the largest |b| component of level 0), like the "LEAN scale factor" of MJP (note §2.4).
+// min + (max − min)·c/255. Normals use the usual affine encoding c = n/2 + ½. Slope moments use a
+// scale S (the largest |b| component of level 0), like the "LEAN scale factor" of MJP's
+// SpecularAA sample (TheRealMJP/SpecularAA).
 // WebGL2 has no sized 3-channel internal format that three.js (r187 WebGLTextures.js
 // getInternalFormat) picks for byte, half or float data, so 3-channel data is padded to RGBA.
 
 export const TECHNIQUES = Object.freeze(['naive', 'renormalized', 'toksvig', 'lean', 'clean', 'vmf']);
+
+/** What each technique is called where a reader sees it (ids stay in URLs and files). */
+export const TECHNIQUE_NAMES = Object.freeze({
+  naive: 'Naive average', renormalized: 'Renormalized', toksvig: 'Toksvig', lean: 'LEAN', clean: 'CLEAN', vmf: 'vMF',
+});
 
 function normalChannels(channels) {
   const names = channels === 3 ? ['x', 'y', 'z'] : ['x', 'y'];

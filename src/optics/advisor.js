@@ -14,6 +14,7 @@ import { sweepDomain } from './errorMetrics.js';
 import { methodsOfKind } from './methods.js';
 import { contextFor } from './rounding.js';
 import { referenceFor } from './scenes.js';
+import { toDegrees } from './angles.js';
 
 /** 8-bit codes of half a step: the visibility line. */
 export const HALF_STEP_CODES = 0.5;
@@ -77,10 +78,9 @@ function measure(scene, method, P) {
   return Object.freeze({ ...linear, maxCodes: also.codes.max });
 }
 
-const DEG = 180 / Math.PI;
 
 function describe(row) {
-  const where = row.thetaAtMax === null ? '' : ` at ${(row.thetaAtMax * DEG).toFixed(1)}°`;
+  const where = row.thetaAtMax === null ? '' : ` at ${toDegrees(row.thetaAtMax).toFixed(1)}°`;
   if (row.nanCount > 0) return `${row.methodId} (NaN or Infinity at ${row.nanCount} samples)`;
   return `${row.methodId} (max |ΔR| ${row.max.toPrecision(2)}${where}, ${row.maxCodes.toFixed(2)} codes)`;
 }

@@ -9,10 +9,10 @@ import { recommendWithin } from './displayBudgets.js';
 import { METHODS } from './methods.js';
 import { PRECISION_IDS } from './rounding.js';
 import { SCENES, sceneById } from './scenes.js';
+import { toDegrees } from './angles.js';
 
 export const RESULTS_VERSION = 1;
 export const DEFAULT_DOMAIN = Object.freeze({ dielectric: 'plastic', conductor: 'metal' });
-const DEG = 180 / Math.PI;
 
 /** GLSL precision that runs a scene precision: fp16 → mediump, fp32 or fp64 → highp. */
 export function gpuPrecisionFor(precision) {
@@ -23,7 +23,7 @@ export function gpuPrecisionFor(precision) {
 function summary(e) {
   return {
     max: e.max, mean: e.mean, rms: e.rms, maxCodes: e.maxCodes,
-    thetaAtMaxDeg: e.thetaAtMax === null ? null : e.thetaAtMax * DEG, nanCount: e.nanCount,
+    thetaAtMaxDeg: e.thetaAtMax === null ? null : toDegrees(e.thetaAtMax), nanCount: e.nanCount,
   };
 }
 

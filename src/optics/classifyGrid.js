@@ -5,8 +5,8 @@
 import { criticalAngle, fresnelExact } from './fresnel.js';
 import { cosTheta } from './errorMetrics.js';
 import { classifyValue, CLASS_NAMES } from './stabilityMap.js';
+import { DEG } from './angles.js';
 
-const DEG = Math.PI / 180;
 
 /** cos θ of a column, exactly as classify() computes it (cos 90° = 0). */
 export function columnCos(thetaDeg) {

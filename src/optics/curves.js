@@ -2,8 +2,8 @@
 import {
   brewsterAngle, criticalAngle, fresnelExact, fresnelPolarized, fresnelSchlick,
 } from './fresnel.js';
+import { cosDeg, DEG } from './angles.js';
 
-const DEG = Math.PI / 180;
 
 /** θ in degrees from 0 to 90 in `count` steps, with the critical and Brewster angles inserted
  *  so the curves' corner and dip are drawn exactly where they are. */
@@ -24,7 +24,7 @@ export function reflectanceCurves(nI, nT, count = 361) {
   const p = [];
   const error = [];
   for (const t of theta) {
-    const c = t === 90 ? 0 : Math.cos(t * DEG); // cos(π/2) in float64 is 6e-17, not 0
+    const c = cosDeg(t);
     const e = fresnelExact(c, nI, nT);
     const sc = fresnelSchlick(c, nI, nT);
     const sp = fresnelPolarized(c, nI, nT);

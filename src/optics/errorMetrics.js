@@ -1,7 +1,7 @@
 // Error of a method against the float64 reference over a domain: max, weighted mean and RMS of
 // |value − reference|, the angle of the max, and counts of NaN/Infinity and of values outside
 // [0, 1]. θ grids are uniform in θ or weighted by the projected solid angle 2 cosθ sinθ dθ (the
-// share of a convex object's pixels seen at view angle θ; fresnel-facts Appendix B).
+// share of a convex object's pixels seen at view angle θ).
 
 const HALF_PI = Math.PI / 2;
 

@@ -1,5 +1,7 @@
 // Fresnel reflectance in float64: the reference every number in the lab comes from.
-// Pure math, no DOM, no three.js. Its GLSL twin is shaders/fresnel.glsl (same names, same order).
+// Pure math, no DOM, no three.js. Its GLSL twin is shaders/fresnel.glsl (same names and branches;
+// the same order of operations except where this file uses exact float64 helpers: g², which the
+// GLSL factorises instead (see its cosTransmittedSq), and the conductor's 1 − c and Math.hypot).
 // Conventions: θ is the angle between the normal and the incident light, cosThetaI = cos θ,
 // nI is the index on the incident side and nT on the transmitted side, m = nI / nT
 // (the lecture's form and GLSL refract()'s eta).
@@ -7,9 +9,12 @@ import { twoProduct, twoSum, sumPairs } from './exactArithmetic.js';
 import { checkCos, checkIndex, checkExtinction, unit } from './validate.js';
 
 /**
- * cos²θt = g² = 1 − m²(1 − cos²θi), written as (nT² − nI² + (nI·cosθi)²) / nT².
- * The numerator is a sum of exact products, so it keeps full relative precision even when it
- * nearly cancels (just inside the critical angle); it is exactly 0 for matched indices.
+ * cos²θt = g² = 1 − m²(1 − cos²θi) = (1 − m²) + c², computed as (nT² − nI² + (nI·cosθi)²) / nT²:
+ * the three products are formed exactly (twoProduct) and summed in double-double, so the
+ * numerator is rounded once, and it is then divided by nT twice. The index part nT² − nI² is
+ * exactly 0 for matched indices and good to about 2^-100 of nT² for nearly matched ones, so c² is
+ * kept however small it is (the lecture's 1 + c² − m² loses it near grazing), and the numerator keeps full relative
+ * precision even when it nearly cancels (just inside the critical angle).
  * Negative means total internal reflection. ci must already be checked and clamped.
  */
 export function cosTransmittedSq(ci, nI, nT) {
@@ -37,10 +42,13 @@ export function snellCosT(cosThetaI, nI, nT) {
 
 /**
  * Exact unpolarized dielectric reflectance, the lecture's c/g form (Cook & Torrance 1982, after
- * Sparrow & Cess): c = m cosθ, g² = (1 − m)(1 + m) + c², R = ½((g−c)/(g+c))²(1 + ((c(g+c) − m²)/(c(g−c) + m²))²).
- * The lecture writes g² = 1 + c² − m², which rounds to 1 − m² + 0 when c² is tiny: for matched
- * media near grazing it returns R = 1 instead of 0. Here (1 − m)(1 + m) is formed first (and
- * in float64 exactly), which removes that failure. g² ≤ 0 is total internal reflection: R = 1.
+ * Sparrow & Cess): c = m cosθ, g² = cos²θt, R = ½((g−c)/(g+c))²(1 + ((c(g+c) − m²)/(c(g−c) + m²))²).
+ * The lecture writes g² = 1 + c² − m²; evaluated left to right, 1 + c² rounds to 1 when c² is
+ * below half an ulp of 1, so matched media near grazing get g² = 0 and R = 1 instead of 0. Here
+ * g² comes from cosTransmittedSq, which never forms 1 + c²: (nI·cosθ)² = nT²c² is added to the
+ * index part nT² − nI², which is tiny and accurate for nearly matched indices, so c² is not lost
+ * and that failure is gone. Matched indices return 0 before g² is needed.
+ * g² ≤ 0 is total internal reflection: R = 1.
  */
 export function fresnelExact(cosThetaI, nI, nT) {
   const ci = checkCos(cosThetaI);

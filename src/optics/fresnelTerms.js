@@ -7,7 +7,11 @@
 import { cosTransmittedSq } from './fresnel.js';
 import { checkCos, checkIndex, unit } from './validate.js';
 
-/** g² = cos²θt = (1 − m)(1 + m) + c², as fresnel.js forms it; negative means total internal reflection. */
+/**
+ * g² = cos²θt = (1 − m²) + c², from fresnel.js's cosTransmittedSq: (nT² − nI² + (nI·cosθ)²)/nT²
+ * with the numerator summed from exact products, so 1 + c² is never formed. Negative means total
+ * internal reflection.
+ */
 export function gSquared(cosThetaI, nI, nT) {
   const ci = checkCos(cosThetaI);
   checkIndex(nI, 'nI');
@@ -45,8 +49,9 @@ export function fresnelTerms(cosThetaI, nI, nT) {
 
 /**
  * The slide's formula evaluated literally, left to right, with g² in one of two orders:
- * 'lecture' 1 + c² − m² (as on the slide) or 'safe' (1 − m)(1 + m) + c² (as the code does).
- * With m = 1 and c below about 1e-8, c² is under half an ulp of 1 (1.1e-16), so 1 + c² rounds
+ * 'lecture' 1 + c² − m² (as on the slide) or 'safe' (1 − m)(1 + m) + c² (the factorisation
+ * shaders/fresnel.glsl uses, here in m; fresnel.js forms g² exactly instead); like fresnel.js,
+ * it adds c² to an index term that is exactly 0 for m = 1. With m = 1 and c below about 1e-8, c² is under half an ulp of 1 (1.1e-16), so 1 + c² rounds
  * to 1, the lecture order gives g² = 0, g = 0 and R = 1 instead of 0; the safe order keeps c².
  * g² < 0 takes the total-internal-reflection branch (R = 1), as any implementation must.
  */

@@ -3,8 +3,8 @@
 // their largest difference, and the dip of the exact curve below F0 near grazing, which Schlick
 // (rising from F0 to 1 monotonically) cannot show. Every value comes from fresnel.js.
 import { conductorNormalIncidence, fresnelConductor, fresnelSchlick } from './fresnel.js';
+import { cosDeg } from './angles.js';
 
-const DEG = Math.PI / 180;
 export const CHANNELS = Object.freeze(['red', 'green', 'blue']);
 
 /**
@@ -36,7 +36,7 @@ export function metalCurves(metal, count = 361) {
   const schlick = CHANNELS.map(() => []);
   const error = CHANNELS.map(() => []);
   for (const t of theta) {
-    const c = t === 90 ? 0 : Math.cos(t * DEG); // cos(π/2) in float64 is 6e-17, not 0
+    const c = cosDeg(t);
     for (let ch = 0; ch < 3; ch += 1) {
       const e = fresnelConductor(c, metal.n[ch], metal.k[ch]);
       const s = schlickForF0(c, f0[ch]);

@@ -3,9 +3,10 @@
 // the GLSL twin evaluates them (left to right, as GLSL parses `a * b * c`); inputs are rounded
 // to the precision first, as a uniform or varying would be. Outputs are not clamped unless the
 // method as used in practice clamps (noted per method), so NaN and values outside [0, 1] can come
-// out for the stability map to classify. Formulas: fresnel.js (sources there) and
-// fresnel-facts.md §0–§2; cost hints: fresnel-facts.md §1 static SPIR-V counts (a), with the
-// rough ALU + SFU estimate (b) alongside.
+// out for the stability map to classify. Formulas: fresnel.js (sources there) and the source
+// named at each method; cost hints: static SPIR-V instruction counts (computed: each method's
+// GLSL through glslangValidator -V and spirv-opt -O, fp arithmetic, ext-inst, compare, select and
+// branch instructions counted), with a rough ALU + SFU estimate alongside.
 import { conductorNormalIncidence, fresnelConductor } from './fresnel.js';
 import { contextFor } from './rounding.js';
 
@@ -61,7 +62,8 @@ function exactCg(P, ci, nI, nT) {
 /**
  * The slide's c/g form as written: g² = 1 + c² − m² and B = (c(g+c) − m²)/(c(g−c) + m²).
  * 1 + c² rounds to 1 when c² is below half an ulp of 1, so matched media near grazing get
- * g² = 0 and R = 1 instead of 0 (fresnel-facts §2.2). Same TIR branch as exact-cg; no
+ * g² = 0 and R = 1 instead of 0 (computed with this model: for c < 1.05e-8 in float64 and
+ * c < 2.44e-4 in float32). Same TIR branch as exact-cg; no
  * matched-media guard (the slide has none).
  */
 function exactCgLiteral(P, ci, nI, nT) {
@@ -76,10 +78,11 @@ function exactCgLiteral(P, ci, nI, nT) {
 }
 
 /**
- * s/p via Snell in pbrt-v4 FrDielectric's order (fresnel-facts Appendix A exact_sp):
+ * s/p via Snell in pbrt-v4 FrDielectric's order (src/pbrt/util/scattering.h):
  * sin²θt = m²(1 − ci²), TIR if ≥ 1, ct = √(1 − sin²θt), rs = (m·ci − ct)/(m·ci + ct),
- * rp = (ci − m·ct)/(ci + m·ct). 1 − sin²θt cancels near the critical angle (§2.4: 0.13 in fp16).
- * Matched media return 0 as in fresnel.js (pbrt-v4 returns 1 at grazing there, §2.2).
+ * rp = (ci − m·ct)/(ci + m·ct). 1 − sin²θt cancels near the critical angle (computed with this model:
+ * float16 is up to 0.16 off float64 for glass to air, at the critical angle, θ every 0.001°). Matched media return 0 as in
+ * fresnel.js (pbrt-v4 returns 1 at grazing there: sin²θt = 1 takes its TIR branch).
  */
 function exactSp(P, ci, nI, nT) {
   if (nI === nT) return 0;
@@ -94,7 +97,7 @@ function exactSp(P, ci, nI, nT) {
   return P.mul(0.5, P.add(P.mul(rs, rs), P.mul(rp, rp)));
 }
 
-/** Schlick 1994 with pow(1 − c, 5): NaN for c > 1 (pow of a negative base, §2.3). No clamp. */
+/** Schlick 1994 with pow(1 − c, 5): NaN for c > 1 (pow of a negative base, undefined in GLSL ES 3.00 §8.2). No clamp. */
 function schlickPow(P, ci, nI, nT) {
   const r0 = normalIncidence(P, nI, nT);
   return P.add(r0, P.mul(P.sub(1, r0), P.pow(P.sub(1, ci), 5)));
@@ -198,7 +201,7 @@ function f82B(n, k, f0) {
   return b;
 }
 
-/** fresnel-facts Appendix A f82_rgb: s = clamp(1 − c), clamp(F0 + (1 − F0)s⁵ − b·(c·s⁵·s)) (Cycles clamps). */
+/** F82-tint per channel: s = clamp(1 − c), clamp(F0 + (1 − F0)s⁵ − b·(c·s⁵·s)) (Cycles clamps, bsdf_util.h). */
 function conductorF82(P, c, _n, _k, f0, cpu) {
   const b = P.round(f82B(cpu.n, cpu.k, cpu.f0));
   const s = P.clamp(P.sub(1, c), 0, 1);
@@ -208,33 +211,33 @@ function conductorF82(P, c, _n, _k, f0, cpu) {
   return P.clamp(P.sub(schlick, P.mul(b, P.mul(P.mul(c, s5), s))), 0, 1);
 }
 
-/** The method table. cost: static SPIR-V count (§1 a); alu/sfu: rough estimate (§1 b). */
+/** The method table. cost: static SPIR-V count (computed, see the top of the file); alu/sfu: rough estimate. */
 export const METHODS = Object.freeze([
   dielectric('exact-cg', 'Exact c/g (safe order)', { static: 16, alu: 14, sfu: 3 },
-    { tirAware: true, note: '§1 #2: 8 fp-arith + 6 fma + 1 sqrt + 1 branch' }, exactCg),
+    { tirAware: true, note: 'SPIR-V count: 8 fp-arith + 6 fma + 1 sqrt + 1 branch' }, exactCg),
   dielectric('exact-cg-literal', 'Exact c/g (lecture order 1 + c² − m²)', { static: 17, alu: 15, sfu: 3 },
     {
       tirAware: true,
       // Charted to show why the order matters; never recommended (it fails for matched media).
       demonstratesFailure: true,
-      note: '§1 #2 + 1 add: 1 + c² − m² where the safe form adds c² to a precomputed 1 − m²',
+      note: 'SPIR-V count + 1 add: 1 + c² − m² where the safe form adds c² to a precomputed 1 − m²',
     }, exactCgLiteral),
   dielectric('exact-sp', 'Exact s/p (Snell)', { static: 18, alu: 16, sfu: 3 },
-    { tirAware: true, note: '§1 #1: 9 fp-arith + 7 fma + 1 sqrt + 1 branch' }, exactSp),
+    { tirAware: true, note: 'SPIR-V count: 9 fp-arith + 7 fma + 1 sqrt + 1 branch' }, exactSp),
   dielectric('schlick-pow', 'Schlick, pow(1 − c, 5)', { static: 4, alu: 3, sfu: 2 },
-    { tirAware: false, note: '§1 #3: 2 fp-arith + 1 fma + 1 pow (pow = log2, mul, exp2)' }, schlickPow),
+    { tirAware: false, note: 'SPIR-V count: 2 fp-arith + 1 fma + 1 pow (pow = log2, mul, exp2)' }, schlickPow),
   dielectric('schlick-mul', 'Schlick, multiplications only', { static: 6, alu: 5, sfu: 0 },
-    { tirAware: false, note: '§1 #4: 5 fp-arith + 1 fma' }, schlickMulOnly),
+    { tirAware: false, note: 'SPIR-V count: 5 fp-arith + 1 fma' }, schlickMulOnly),
   dielectric('schlick-tir', 'Schlick on cos θt (TIR-correct)', { static: 14, alu: 10, sfu: 1 },
-    { tirAware: true, note: '§1 #7: 8 fp-arith + 3 fma + 1 sqrt + 2 branches' }, schlickTir),
+    { tirAware: true, note: 'SPIR-V count: 8 fp-arith + 3 fma + 1 sqrt + 2 branches' }, schlickTir),
   dielectric('schlick-exp2', 'Schlick, exp2 form (three.js, UE4)', { static: 5, alu: 3, sfu: 1 },
-    { tirAware: false, note: '§1 #6: 2 fp-arith + 2 fma + 1 exp2' }, schlickExp2),
+    { tirAware: false, note: 'SPIR-V count: 2 fp-arith + 2 fma + 1 exp2' }, schlickExp2),
   conductor('conductor-exact', 'Exact conductor (n + ik)', { static: 32, alu: 20, sfu: 4 },
-    { note: '§1 #12: 26 fp-arith + 3 fma + 2 sqrt + 1 max (vec3)' }, conductorExact),
+    { note: 'SPIR-V count: 26 fp-arith + 3 fma + 2 sqrt + 1 max (vec3)' }, conductorExact),
   conductor('conductor-schlick', 'Schlick with F0 per channel', { static: 6, alu: 5, sfu: 0 },
-    { note: '§1 #4 on vec3 F0' }, (P, c, _n, _k, f0) => schlickMul(P, c, f0)),
+    { note: 'SPIR-V count: the multiplications-only Schlick on vec3 F0' }, (P, c, _n, _k, f0) => schlickMul(P, c, f0)),
   conductor('conductor-f82', 'F82-tint (Hoffman 2019, Kutz et al. 2021)', { static: 13, alu: 9, sfu: 0 },
-    { note: '§1 #10: 11 fp-arith + 2 clamp (vec3), b precomputed' }, conductorF82),
+    { note: 'SPIR-V count: 11 fp-arith + 2 clamp (vec3), b precomputed' }, conductorF82),
 ].map(Object.freeze));
 
 const BY_ID = new Map(METHODS.map((m) => [m.id, m]));

@@ -1,6 +1,6 @@
 // GGX (Trowbridge–Reitz) microfacet specular in float64: the normal distribution D, Smith's
 // height-correlated masking-shadowing G2 and the Cook–Torrance BRDF D·G·F / (4 cosθl cosθv).
-// Pure math, no DOM. Its GLSL twin is shaders/asphaltMicrofacet.glsl (same names, same order).
+// Pure math, no DOM. Its GLSL twin is shaders/microfacet.glsl (same names, same order).
 // alpha is the GGX width; the common artist mapping is alpha = roughness² (Burley, "Physically
 // Based Shading at Disney", SIGGRAPH 2012 course notes, §5.4).
 import { checkCos, unit } from './validate.js';

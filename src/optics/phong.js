@@ -5,8 +5,8 @@
 // missing angle dependence: F(θ), θ the angle between the normal and the light (lecture, "Reflection
 // Math"). Here k_s = R0 = F(0°), so both models agree head-on and differ only by what F adds.
 import { fresnelExact, normalIncidence } from './fresnel.js';
+import { DEG } from './angles.js';
 
-const DEG = Math.PI / 180;
 
 /** Phong's lobe (v·r)^s, 0 when the view is more than 90° from the mirror direction. */
 export function phongSpecular(vDotR, s) {

@@ -4,15 +4,15 @@
 // 2p + 2 significand bits for p = 24 and p = 11 (Figueroa, "When is double rounding innocuous?",
 // SIGNUM Newsletter 30(3), 1995). float32 rounding is Math.fround; float16 is @petamoriken/float16's
 // f16round (IEEE 754 binary16, round-to-nearest-even, subnormals, overflow to ±Infinity).
-// This is the emulation of fresnel-facts.md Appendix B ("rounded after every operation").
+// Rounding after every operation models a GPU, which rounds each instruction's result to its format.
 import { f16round } from '@petamoriken/float16';
 
 const identity = (x) => x;
 
 /**
  * GLSL ES 3.00 §8.2: pow(x, y) is undefined for x < 0 and "inherits its precision from
- * exp2(y·log2 x)", which is how GPUs evaluate it: a negative base gives NaN there (fresnel-facts
- * §2.3), unlike Math.pow(−0.1, 5). The log2, the product and the exp2 are each rounded.
+ * exp2(y·log2 x)", which is how GPUs evaluate it: a negative base gives NaN there (log2 of a
+ * negative number; Mesa does so, gl-transitions PR #252), unlike Math.pow(−0.1, 5). The log2, the product and the exp2 are each rounded.
  */
 function makePow(round) {
   return (x, y) => {

@@ -2,8 +2,8 @@
 // plot, a CSV and the largest error. Pure float64 math from fresnel.js, no DOM.
 import { criticalAngle, fresnelExact, fresnelSchlick, fresnelSchlickTIR } from './fresnel.js';
 import { sampleAngles } from './curves.js';
+import { cosDeg, DEG } from './angles.js';
 
-const DEG = Math.PI / 180;
 
 /**
  * Angles in degrees: an even grid with the critical and Brewster angles (curves.js), and for
@@ -42,7 +42,7 @@ export function schlickComparison(nI, nT, count = 721) {
   const error = [];
   const errorT = [];
   for (const t of theta) {
-    const c = t === 90 ? 0 : Math.cos(t * DEG); // cos(π/2) in float64 is 6e-17, not 0
+    const c = cosDeg(t);
     const e = fresnelExact(c, nI, nT);
     const s = fresnelSchlick(c, nI, nT);
     const st = fresnelSchlickTIR(c, nI, nT);

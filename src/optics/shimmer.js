@@ -1,6 +1,6 @@
 // The shimmer meter: how much a picture's brightness changes per pixel when the camera moves by
-// less than a pixel (specular aliasing shows as highlights popping in and out; reference note
-// normal-map-mips.md §1.3 and §5, feature 7). Pictures are RGBA float arrays: linear radiance,
+// less than a pixel (specular aliasing shows as highlights "popping in and out of existence":
+// Hill, "Specular Showdown in the Wild West", 2011). Pictures are RGBA float arrays: linear radiance,
 // alpha < 0 where there is no surface. Brightness is the Rec. 709 luminance of the tone-mapped
 // colour (ITU-R BT.709 weights 0.2126, 0.7152, 0.0722), as displayed.
 import { toneMap } from './bandedRmse.js';

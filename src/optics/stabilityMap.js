@@ -1,6 +1,6 @@
 // Stability map: a dielectric method in one precision over θ (0°–90°) × nI/nT (0.4–2.5), each
 // point classified against the float64 reference (fresnelExact): NaN or infinite, outside
-// [0, 1], error above a tolerance, or fine. This is where the failures of fresnel-facts §2 show:
+// [0, 1], error above a tolerance, or fine. This is where the numerical failures show:
 // the slide's 1 + c² − m² at matched media near grazing, Schlick past the critical angle, and the
 // exact forms in float16 near the critical angle.
 import { fresnelExact } from './fresnel.js';
@@ -27,7 +27,7 @@ export function classifyValue(value, reference, tolerance) {
 
 /**
  * Ratios from 0.4 to 2.5 with the row nearest 1 set to exactly 1: matched media are the case
- * where the slide's ordering breaks (R = 1 instead of 0 at grazing, §2.2), and a grid that steps
+ * where the slide's ordering breaks (R = 1 instead of 0 at grazing), and a grid that steps
  * over 1 would hide it. With the default height 106 the step is 0.02 and 1 is on the grid anyway.
  */
 function ratioRows(height) {

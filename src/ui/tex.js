@@ -16,8 +16,8 @@ export function texElement(tex, { display = true, tag = 'div', className = 'tex'
   return renderTex(element, tex, { display });
 }
 
-/** A number for TeX with fixed decimals; negative numbers get a real minus sign. */
+/** A number for TeX with fixed decimals (in TeX's math mode a hyphen is typeset as the minus sign). */
 export function texNumber(value, digits = 4) {
   if (!Number.isFinite(value)) return '\\text{—}';
-  return value.toFixed(digits).replace('-', '-');
+  return value.toFixed(digits);
 }

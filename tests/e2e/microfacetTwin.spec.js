@@ -1,4 +1,4 @@
-// GPU twin check of shaders/asphaltMicrofacet.glsl: every function it defines (ggxDistribution,
+// GPU twin check of shaders/microfacet.glsl: every function it defines (ggxDistribution,
 // smithLambda, smithG2, microfacetSpecular) evaluated on the GPU into an RGBA32F target over a grid
 // of (cosL, cosV, cosH, α, F), read back, and compared with src/optics/microfacet.js, in the style
 // of gpuTwin.spec.js and normalMapsTwin.spec.js.
@@ -22,7 +22,7 @@ function fragmentShader(calls) {
   return resolveIncludes(`#version 300 es
 precision highp float;
 precision highp sampler2D;
-#include <asphaltMicrofacet>
+#include <microfacet>
 uniform sampler2D uArgs;
 uniform sampler2D uF;
 out vec4 outColor;
@@ -123,9 +123,9 @@ function render(page, rows, shaders) {
 
 const fmt = (r) => `(cosL ${r.cosL}, cosV ${r.cosV}, cosH ${r.cosH}, α ${r.alpha}, F ${r.F})`;
 
-test('every function of asphaltMicrofacet.glsl matches its JS twin on the GPU (RGBA32F read-back)', async ({ page }) => {
+test('every function of microfacet.glsl matches its JS twin on the GPU (RGBA32F read-back)', async ({ page }) => {
   // Every function the chunk defines is checked here, and each has a JS twin of the same name.
-  const defined = [...chunks.asphaltMicrofacet.matchAll(/^\s*(?:float|vec[234]|int|bool)\s+(\w+)\s*\(/gm)].map((m) => m[1]);
+  const defined = [...chunks.microfacet.matchAll(/^\s*(?:float|vec[234]|int|bool)\s+(\w+)\s*\(/gm)].map((m) => m[1]);
   expect(defined.sort()).toEqual([...NAMES].sort());
   for (const name of NAMES) expect(typeof mf[name]).toBe('function');
 

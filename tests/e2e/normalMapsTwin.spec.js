@@ -1,4 +1,4 @@
-// GPU twin check of shaders/normal-mipsMaps.glsl: mapSlope(uv) evaluated on the GPU into an
+// GPU twin check of shaders/normalMaps.glsl: mapSlope(uv) evaluated on the GPU into an
 // RGBA32F target for every map kind (uniforms from src/normals/mapUniforms.js), read back and
 // compared with the JS map's slopeAt(u, v) (src/normals/), in the style of gpuTwin.spec.js.
 import { readFileSync, readdirSync } from 'node:fs';
@@ -15,7 +15,7 @@ const FRAGMENT = resolveIncludes(`#version 300 es
 precision highp float;
 precision highp int;
 precision highp sampler2D;
-#include <normal-mipsMaps>
+#include <normalMaps>
 uniform sampler2D uInputs;
 out vec4 outColor;
 void main() {

@@ -20,7 +20,7 @@ const diff = (a, b) => a.slice(0, 3).reduce((s, v, i) => s + Math.abs(v - b[i]),
 
 test('the Fresnel rim turns toward ks; the constant-weight rim does not', async ({ page }) => {
   await openLab(page, embed());
-  await expect(page.locator('.fl-stage-canvas')).toBeVisible();
+  await expect(page.locator('.twin-stage-canvas')).toBeVisible();
   const p = await probes(page);
   // w = 0.04 = F(0°) for n = 1.5: the centres are the same mix.
   expect(diff(p.centre[0], p.centre[1])).toBeLessThanOrEqual(3);
@@ -63,7 +63,7 @@ test('controls change the picture and the numbers', async ({ page }) => {
   const weight = page.locator('.lil-gui .lil-controller', { hasText: 'Constant ks weight' }).locator('input');
   await weight.fill('0.5');
   await weight.press('Enter');
-  await expect(page.locator('.fl-stage-labels')).toContainText('mix(kd, ks, 0.500)');
+  await expect(page.locator('.twin-stage-labels')).toContainText('mix(kd, ks, 0.500)');
   const half = await probes(page);
   expect(diff(half.centre[1], before.centre[1])).toBeGreaterThan(60); // halfway to the white coat
   expect(diff(half.centre[0], before.centre[0])).toBeLessThanOrEqual(3); // the Fresnel sphere is unchanged
@@ -83,7 +83,7 @@ test('the URL sets n, the method and the weight', async ({ page }) => {
   const values = await page.evaluate(() => ({ ...window.fresnelLab.hosts['fresnel-lighting'].values }));
   expect(values).toMatchObject({ n: 2.4, method: 'schlick', weight: 0.2, kd: '#1f4fa3' });
   await expect(page.locator('.fl-summary')).toContainText('0.1696'); // R0 for n = 2.4
-  await expect(page.locator('.fl-stage-labels')).toContainText('F Schlick');
+  await expect(page.locator('.twin-stage-labels')).toContainText('F Schlick');
   await expect(page.locator('.panel-description')).toContainText("Schlick's approximation");
   await expect(page.locator('.fl-panel pre code .fl-live').first()).toContainText('kSchlick');
   const p = await probes(page);

@@ -7,7 +7,7 @@ const diff = (a, b) => a.slice(0, 3).reduce((s, v, i) => s + Math.abs(v - b[i]),
 
 test('F0 swatches: gold ≈ (0.956, 0.792, 0.408); the dielectric 0.040', async ({ page }) => {
   await openLab(page, embed());
-  await expect(page.locator('.fl-stage-canvas')).toBeVisible();
+  await expect(page.locator('.twin-stage-canvas')).toBeVisible();
   const gold = page.locator('.mt-swatch[data-metal="gold"]');
   await expect(gold.locator('.mt-f0')).toHaveText('0.956 0.792 0.408');
   await expect(gold).toHaveAttribute('aria-pressed', 'true');
@@ -56,7 +56,7 @@ test('controls: a swatch picks the metal, the toggle switches the sphere to Schl
   const exact = await rim();
   const select = page.locator('.lil-gui .lil-controller', { hasText: 'Metal sphere uses' }).locator('select');
   await select.selectOption('schlick');
-  await expect(page.locator('.fl-stage-labels')).toContainText('Aluminium, Schlick');
+  await expect(page.locator('.twin-stage-labels')).toContainText('Aluminium, Schlick');
   expect(diff(await rim(), exact)).toBeGreaterThan(10); // 0.13 brighter near 83° with Schlick
   await page.locator('.mt-swatch[data-metal="iron"]').focus();
   await page.keyboard.press('Enter');
@@ -69,8 +69,8 @@ test('the URL sets the metal, the method and the dielectric index', async ({ pag
   await openLab(page, embed('&metal=copper&fresnel=schlick&n=2.4'));
   const values = await page.evaluate(() => ({ ...window.fresnelLab.hosts.metals.values }));
   expect(values).toEqual({ metal: 'copper', fresnel: 'schlick', n: 2.4 });
-  await expect(page.locator('.fl-stage-labels')).toContainText('Dielectric, n = 2.4');
-  await expect(page.locator('.fl-stage-labels')).toContainText('Copper, Schlick');
+  await expect(page.locator('.twin-stage-labels')).toContainText('Dielectric, n = 2.4');
+  await expect(page.locator('.twin-stage-labels')).toContainText('Copper, Schlick');
   await expect(page.locator('[data-material="dielectric"] .mt-f0')).toHaveText('0.170 0.170 0.170');
   await expect(page.locator('.mt-swatch[data-metal="copper"]')).toHaveAttribute('aria-pressed', 'true');
   const csv = await page.evaluate(() => window.fresnelLab.panels.metals.csv());

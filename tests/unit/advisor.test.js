@@ -37,7 +37,7 @@ describe('recommend', () => {
     expect(r.methodId).toBe('exact-cg');
     expect(r.invisible).toBe(true);
     expect(r.precision).toBe('fp32');
-    expect(row(r, 'schlick-mul').max).toBeCloseTo(0.0683, 4); // n = 1.3 at 83.6° (fresnel-facts §3.2: 0.0599 at 1.33)
+    expect(row(r, 'schlick-mul').max).toBeCloseTo(0.0683, 4); // n = 1.3 at 83.6° (the same sweep gives 0.0599 at n = 1.33)
     expect(row(r, 'schlick-mul').maxCodes).toBeCloseTo(12.07, 1);
     expect(row(r, 'schlick-mul').thetaAtMax / DEG).toBeCloseTo(83.6, 0);
     expect(row(r, 'schlick-mul').caseAtMax).toEqual([1, 1.3]);
@@ -46,7 +46,7 @@ describe('recommend', () => {
     expect(r.reason).toMatch(/schlick-mul/);
     expect(r.table.map((x) => x.cost)).toEqual([...r.table.map((x) => x.cost)].sort((a, b) => a - b));
   });
-  it('with a budget of 13 codes (fresnel-facts §7: Schlick for plastic), a Schlick variant wins', () => {
+  it('with a budget of 13 codes (engines ship Schlick for plastic), a Schlick variant wins', () => {
     const r = recommend(sceneById('plastic'), {}, { budgetCodes: 13 });
     expect(SCHLICK).toContain(r.methodId);
     expect(r.methodId).toBe('schlick-pow'); // the smallest static count; pow is 2 SFU ops in practice
@@ -77,7 +77,7 @@ describe('recommend', () => {
   it('a metal: exact conductor; F82-tint at a few codes beats Schlick on aluminium', () => {
     const r = recommend(sceneById('metal'));
     expect(r.methodId).toBe('conductor-exact');
-    expect(row(r, 'conductor-schlick').max).toBeCloseTo(0.130, 3); // aluminium 650 nm (fresnel-facts §3.4)
+    expect(row(r, 'conductor-schlick').max).toBeCloseTo(0.130, 3); // aluminium 650 nm (Rakić 1995 n, k), against the exact conductor formula
     expect(row(r, 'conductor-f82').max).toBeCloseTo(0.0219, 3);
     expect(recommend(sceneById('metal'), {}, { budgetCodes: 10 }).methodId).toBe('conductor-f82');
   });

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { cosDeg, interfaceSplit, interfaceSplitCurve } from '../../src/optics/interfaceSplit.js';
+import { interfaceSplit, interfaceSplitCurve } from '../../src/optics/interfaceSplit.js';
+import { cosDeg } from '../../src/optics/angles.js';
 import { fresnelExact } from '../../src/optics/fresnel.js';
 
 const DEG = Math.PI / 180;

@@ -2,10 +2,10 @@ import { describe, expect, it } from 'vitest';
 import { fresnelExact, normalIncidence } from '../../src/optics/fresnel.js';
 import {
   SCENE, cameraBasis, highlightInView, pixelRay, shadeRoad, sunDirection,
-} from '../../src/panels/asphaltModel.js';
+} from '../../src/panels/asphalt/model.js';
 
 const DEG = Math.PI / 180;
-const base = { camEl: 6, sunEl: 10, roughness: 0.8, n: 1.55, fresnel: true };
+const base = { camEl: 6, sunEl: 10, roughness: 0.8, nT: 1.55, fresnel: true };
 const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 
 describe('camera and sun', () => {

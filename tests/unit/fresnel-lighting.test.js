@@ -1,14 +1,15 @@
 import { describe, expect, it } from 'vitest';
-import { shaderChunks, shaderSource } from '../../src/gl/shaderChunks.js';
-import { STAGE_CAMERA, offsetAtAngle } from '../../src/panels/createTwinStage.js';
+import { FRAGMENT, MIX_GLSL } from '../../src/panels/fresnel-lighting/index.js';
+import fragmentSource from '../../src/panels/fresnel-lighting/fresnel-lighting.frag.glsl?raw';
+import { STAGE_CAMERA, offsetAtAngle } from '../../src/panels/shared/createTwinStage.js';
 
 const DEG = Math.PI / 180;
 
 describe('fresnel-lighting GLSL', () => {
-  const shown = shaderChunks['fresnel-lighting-mix'].trimEnd(); // what the panel displays (MIX_GLSL)
+  const shown = MIX_GLSL; // what the panel displays
   it('the lines shown are compiled verbatim into the shader', () => {
-    expect(shaderChunks['fresnel-lighting']).toMatch(/^\s*#include <fresnel-lighting-mix>\s*$/m);
-    expect(shaderSource('fresnel-lighting')).toContain(shown);
+    expect(fragmentSource).toMatch(/^\s*#include <fresnel-lighting-mix>\s*$/m);
+    expect(FRAGMENT).toContain(shown);
   });
   it('shows the lecture mix with exact and Schlick F and the constant weight', () => {
     expect(shown).toContain('vec3 kExact = mix(kd, ks, fresnelExact(dot(N, V), 1.0, n));');

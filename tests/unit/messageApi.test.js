@@ -1,7 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { parseMessage } from '../../src/ui/messageApi.js';
-import { lecturePrefix } from '../../src/ui/shareLinks.js';
-import { PANEL_CATALOGUE } from '../../src/panels/registry.js';
+import { parseMessage } from '../../src/host/messageApi.js';
 
 describe('message API shapes', () => {
   it('accepts set with a params object and get', () => {
@@ -14,19 +12,5 @@ describe('message API shapes', () => {
       { type: 'fresnel-lab:ready' }, { type: 'other' }, { params: {} }]) {
       expect(parseMessage(data)).toBeNull();
     }
-  });
-});
-
-describe('panel ids and URL prefixes', () => {
-  it('the catalogue holds the fixed ids in lecture order', () => {
-    expect(PANEL_CATALOGUE).toEqual([
-      'spheres', 'normal-mips', 'asphalt', 'changing-specular', 'reflect-refract', 'refraction-waves',
-      'angle-ratio', 'refractive-index', 'polarization', 'exact-fresnel', 'schlick', 'r0-derivation',
-      'fresnel-lighting', 'metals', 'speed-accuracy', 'stability',
-    ]);
-  });
-  it('the hero owns the short keys; other panels prefix theirs', () => {
-    expect(lecturePrefix('spheres')).toBe('');
-    expect(lecturePrefix('metals')).toBe('metals.');
   });
 });

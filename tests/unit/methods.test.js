@@ -123,7 +123,7 @@ describe('methods in float64 agree with fresnel.js', () => {
       reference: fresnelConductor,
       cases: [[1.558, 7.712]],
     });
-    expect(al.max).toBeCloseTo(0.0219, 4); // fresnel-facts §3.4: 0.022; Schlick 0.130
+    expect(al.max).toBeCloseTo(0.0219, 4); // computed against the exact conductor formula; Schlick: 0.130
     expect(al.thetaAtMax / DEG).toBeCloseTo(86.6, 0);
   });
 });

@@ -46,7 +46,7 @@ describe('chain sizes and level counts', () => {
   });
 });
 
-describe('V-groove of ±θ (note §1.1 table)', () => {
+describe('V-groove of ±θ', () => {
   // Period of 2 texels: every level-1 texel holds one +θ and one −θ facet.
   const rows = [
     [5, 0.9962, 0.0038, 0.0077],
@@ -93,7 +93,7 @@ describe('V-groove of ±θ (note §1.1 table)', () => {
     for (const t of TECHNIQUES) expect(at(t).normal[2]).toBeCloseTo(1, 6); // every lobe points up
   });
 
-  it('2 channels: z is rebuilt at unit length, so Toksvig sees no variance at all (note §1.2)', () => {
+  it('2 channels: z is rebuilt at unit length, so Toksvig sees no variance at all', () => {
     const { chains } = chainsOf('grooves', { frequency: 32, angleDeg: 30 }, 64, { channels: 2 });
     const lobe = texelLobe(chains.toksvig, 1, 0, { alpha: 0.5 });
     expect(lobe.length).toBe(1);

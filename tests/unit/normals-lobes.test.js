@@ -6,7 +6,7 @@ import {
 
 const lerp = (a, b, t) => a + (b - a) * t;
 
-describe('Toksvig (note §2.3)', () => {
+describe('Toksvig (Toksvig 2004)', () => {
   it('σ² = (1 − L)/L, and L = 1/(1 + σ²)', () => {
     expect(toksvigVariance(Math.cos(Math.PI / 6))).toBeCloseTo(0.1547, 4);
     expect(toksvigVariance(Math.SQRT1_2)).toBeCloseTo(0.4142, 4);
@@ -16,7 +16,7 @@ describe('Toksvig (note §2.3)', () => {
     for (const v of [0.01, 0.3, 2]) expect(toksvigVariance(1 / (1 + v))).toBeCloseTo(v, 12);
   });
 
-  it("the factor at |N| = 0.995: f_t ≈ 0.66 at s = 100 and ≈ 0.16 at s = 1000 (note §1.6)", () => {
+  it("the factor at |N| = 0.995: f_t ≈ 0.66 at s = 100 and ≈ 0.16 at s = 1000", () => {
     expect(toksvigFactor(0.995, 100)).toBeCloseTo(0.665552, 6);
     expect(toksvigFactor(0.995, 1000)).toBeCloseTo(0.165972, 6);
     expect(toksvigFactor(1, 1000)).toBe(1);
@@ -35,7 +35,7 @@ describe('Toksvig (note §2.3)', () => {
     expect(toksvigAlpha(L, 0.05) ** 2 / (0.05 ** 2 + 2e-4)).toBeCloseTo(1, 3);
   });
 
-  it("equals MJP's route (s = 2/α² − 2, α′ = √(2/(f_t s + 2))) and Unreal's (note §2.9) on a grid", () => {
+  it("equals MJP's route (s = 2/α² − 2, α′ = √(2/(f_t s + 2))) and Unreal's on a grid", () => {
     for (const alpha of [0.02, 0.1, 0.3, 0.6, 0.9]) {
       for (const L of [0.3, 0.8, 0.95, 0.999]) {
         const s = exponentFromAlpha(alpha);
@@ -57,7 +57,7 @@ describe('Toksvig (note §2.3)', () => {
   });
 });
 
-describe('vMF (note §2.7)', () => {
+describe('vMF (Han et al. 2007)', () => {
   it('κ from r̄: 10.37 for κ = 10 and 100.5 for κ = 100; 10000 at r̄ = 1', () => {
     expect(vmfMeanLength(10)).toBeCloseTo(0.9, 8);
     expect(vmfKappa(vmfMeanLength(10))).toBeCloseTo(10.374, 3);
@@ -75,7 +75,7 @@ describe('vMF (note §2.7)', () => {
   });
 });
 
-describe('LEAN and CLEAN (note §2.4, §2.5)', () => {
+describe('LEAN and CLEAN (Olano & Baker 2010, Baker 2011)', () => {
   it('no variance: Σ = α²/2 · I, α′ = α in every direction', () => {
     const c = leanCovariance(0.3, -0.1, 0.09, 0.01, -0.03, 0.4);
     expect(c.sxx).toBeCloseTo(0.08, 12);

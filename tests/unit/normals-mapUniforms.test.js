@@ -8,9 +8,9 @@ const deg = (d) => (d * Math.PI) / 180;
 const KEYS = ['uMapKind', 'uMapFreq', 'uMapAngle', 'uGrooveProfile', 'uGrooveDirection', 'uNoiseOctaves', 'uNoiseGain',
   'uNoiseAmplitude', 'uNoiseSeed', 'uMixedBlocks', 'uMixedEdgeAngle'];
 
-describe('mapUniforms: the uniforms of shaders/normal-mipsMaps.glsl for a map', () => {
+describe('mapUniforms: the uniforms of shaders/normalMaps.glsl for a map', () => {
   it('returns exactly the uniforms the shader chunk declares, for every kind', () => {
-    const glsl = readFileSync('shaders/normal-mipsMaps.glsl', 'utf8');
+    const glsl = readFileSync('shaders/normalMaps.glsl', 'utf8');
     const declared = [...glsl.matchAll(/^uniform\s+(?:highp\s+)?\w+\s+(\w+);/gm)].map((m) => m[1]);
     expect(declared.sort()).toEqual([...KEYS].sort());
     for (const kind of MAP_KINDS) {

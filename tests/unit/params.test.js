@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import {
   applyParams, defaults, describeProblem, formatValue, parseValue, readParams, stepDecimals, writeParams,
-} from '../../src/ui/params.js';
-import { schema } from '../../src/panels/spheresSchema.js';
+} from '../../src/host/params.js';
+import { schema } from '../../src/panels/spheres/schema.js';
 
 const q = (s) => new URLSearchParams(s);
 

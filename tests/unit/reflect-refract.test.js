@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { centreRay, reflectionBand, splitByElevation, REFLECTION_BANDS } from '../../src/panels/reflect-refractModel.js';
+import { centreRay, reflectionBand, splitByElevation, REFLECTION_BANDS } from '../../src/panels/reflect-refract/model.js';
 import { fresnelExact } from '../../src/optics/fresnel.js';
 
 const DEG = Math.PI / 180;

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { C_KM_PER_S, customRow, materialRows, sortMaterialRows } from '../../src/optics/materialRows.js';
-import { formatIndex, formatKmS } from '../../src/panels/refractive-indexTable.js';
+import { formatIndex, formatKmS } from '../../src/panels/refractive-index/buildIndexTable.js';
 
 const rows = materialRows();
 const byId = (id) => rows.find((r) => r.id === id);

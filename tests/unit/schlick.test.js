@@ -23,7 +23,7 @@ describe('schlickComparison', () => {
     expect(r.worstT.theta).toBeLessThan(r.critical);
     expect(r.worstT.theta).toBeGreaterThan(41);
   });
-  it('water to air: 0.975 and 0.059 (reference notes §2.1)', () => {
+  it('water to air: 0.975 and 0.059', () => {
     const r = schlickComparison(1.333, 1);
     expect(r.worst.value).toBeCloseTo(0.975, 3);
     expect(r.worstT.value).toBeCloseTo(0.0592, 3);

@@ -74,7 +74,7 @@ describe('display budgets', () => {
     expect(recommendWithin(sceneById('glass-inside'), {}, 'invisible').methodId).toBe('exact-cg');
   });
 
-  it('acceptable agrees with fresnel-facts §7 on every other scene', () => {
+  it('acceptable agrees with what engines ship (Schlick) on every other scene', () => {
     expect(recommendWithin(sceneById('ice-water'), {}, 'acceptable').methodId).toBe('exact-cg'); // Schlick 115 codes off
     const metal = recommendWithin(sceneById('metal'), {}, 'acceptable');
     expect(metal.methodId).toBe('conductor-f82'); // Schlick on aluminium: 15.5 codes

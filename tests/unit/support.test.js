@@ -4,7 +4,7 @@ import { resolveIncludes } from '../../src/gl/resolveIncludes.js';
 import { maxError, niceCeil, reflectanceCurves, sampleAngles } from '../../src/optics/curves.js';
 import { dielectrics, dielectricById, metals, metalById, metalF0, dielectricSummary } from '../../src/optics/materials.js';
 import { colormap, COLORMAP_STOPS } from '../../src/ui/colormap.js';
-import { toCsv } from '../../src/ui/exporters.js';
+import { toCsv } from '../../src/host/exporters.js';
 import { cappedPixelRatio } from '../../src/gl/createRenderer.js';
 
 describe('GLSL includes', () => {

@@ -1,0 +1,36 @@
+// lil-gui controls generated from a params schema. The schema is the single source of truth and
+// the host owns the values: a controller edits a draft copy and hands each change to the host
+// (validated there), which then writes the draft back and refreshes the controller.
+import GUI from 'lil-gui';
+
+/** lil-gui's options ({ label: value }) from a schema's (an array of values, or { value: label }). */
+export function guiOptions(spec) {
+  return Array.isArray(spec.options)
+    ? spec.options
+    : Object.fromEntries(Object.entries(spec.options).map(([value, label]) => [label, value]));
+}
+
+/**
+ * Adds one controller per key in `keys` to `gui`, editing `draft` (a copy of the values).
+ * onChange(key, value) runs on every change; returns { key: controller }.
+ */
+export function bindGui(gui, schema, draft, onChange, keys = Object.keys(schema)) {
+  const controllers = {};
+  for (const key of keys) {
+    const spec = schema[key];
+    if (!spec) throw new Error(`bindGui: ${key} is not in the schema`);
+    let controller;
+    if (spec.type === 'number') controller = gui.add(draft, key, spec.min, spec.max, spec.step);
+    else if (spec.type === 'enum') controller = gui.add(draft, key, guiOptions(spec));
+    else if (spec.type === 'color') controller = gui.addColor(draft, key);
+    else controller = gui.add(draft, key);
+    controller.name(spec.label ?? key).onChange((value) => onChange(key, value));
+    controllers[key] = controller;
+  }
+  return controllers;
+}
+
+/** A GUI placed inside the panel (not floating over the page), keyboard-operable like any form. */
+export function createPanelGui(container, title) {
+  return new GUI({ container, title, width: 360 });
+}

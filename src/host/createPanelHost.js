@@ -1,0 +1,198 @@
+// The frame around every panel. The host owns the panel's values: it reads them from the URL,
+// validates every write against the schema (from a control, the panel itself, a message or the
+// page), says on screen what it rejected, and passes each change on to the controls, the URL, the
+// panel's picture, its description and any listener (the message API). It also holds the toolbar
+// (copy link, copy embed code, PNG, CSV) and mounts and disposes the panel's view. Values outlive
+// the view, so a panel disposed to free its WebGL context comes back exactly as it was.
+import { applyParams, describeProblem } from './params.js';
+import { bindGui, createPanelGui } from './bindGui.js';
+import { readUrlState, urlWriter } from './urlState.js';
+import { showNotice } from './notices.js';
+import { copyText, downloadText, downloadUrl, toCsv } from './exporters.js';
+import { embedCode, embedUrl, lectureUrl } from './shareLinks.js';
+import { checkInstance } from './panelContract.js';
+import { el } from '../ui/el.js';
+
+let nextDescriptionId = 0;
+
+/** A view of `values` that can be read but not written: panels change values through the host. */
+function readOnly(values, id) {
+  const refuse = (_target, key) => {
+    throw new TypeError(`The ${id} panel wrote values.${String(key)}: panels change values with ctx.set().`);
+  };
+  return new Proxy(values, { set: refuse, deleteProperty: refuse, defineProperty: refuse });
+}
+
+/**
+ * container: where the panel lives (a section's .panel-mount, or the embed root).
+ * panel: its definition (manifest entry, schema, mount; see panelContract.js).
+ * prefix: URL key prefix ('' for the hero and embeds, 'id.' for other lecture-page panels).
+ * @param {HTMLElement} container
+ * @param {import('./panelContract.js').PanelDefinition} panel
+ */
+export function createPanelHost(container, panel, {
+  prefix = '', noticeHost = container, onFrame = () => {}, applyMaterial = () => {},
+} = {}) {
+  const { schema } = panel;
+  const { values, problems } = readUrlState(schema, prefix);
+  showNotice(noticeHost, 'Some values in the link were not usable:', problems.map(describeProblem));
+  const writeUrl = urlWriter(schema, prefix);
+  const view = readOnly(values, panel.id);
+  const draft = { ...values }; // what the controls edit; the host writes it back after each change
+  const listeners = new Set();
+
+  const shell = el('div', 'panel-shell');
+  const content = el('div', 'panel-content');
+  const side = el('div', 'panel-side');
+  const guiHost = el('div', 'gui-host');
+  const toolbar = el('div', 'toolbar');
+  const status = el('span', 'toolbar-status');
+  status.setAttribute('role', 'status');
+  const description = el('p', 'panel-description');
+  description.id = `panel-description-${(nextDescriptionId += 1)}`;
+  side.append(guiHost, toolbar);
+  shell.append(content, side);
+  container.append(shell, description);
+
+  const buttons = {
+    link: el('button', '', 'Copy link'),
+    embed: el('button', '', 'Copy embed code'),
+    png: el('button', '', 'Export PNG'),
+    csv: el('button', '', 'Export CSV'),
+  };
+  for (const b of Object.values(buttons)) b.type = 'button';
+  toolbar.append(...Object.values(buttons), status);
+
+  let instance = null;
+  let gui = null;
+  let controllers = {};
+  let frames = 0;
+  let rejectedNotice = null;
+
+  const say = (text) => {
+    status.textContent = text;
+    setTimeout(() => { if (status.textContent === text) status.textContent = ''; }, 2500);
+  };
+  buttons.link.addEventListener('click', async () => {
+    say((await copyText(lectureUrl(panel, values))) ? 'Link copied' : '');
+  });
+  buttons.embed.addEventListener('click', async () => {
+    say((await copyText(embedCode(panel, values))) ? 'Embed code copied' : '');
+  });
+  buttons.png.addEventListener('click', () => {
+    const url = instance?.png?.();
+    if (url) downloadUrl(`fresnel-lab-${panel.id}.png`, url);
+  });
+  buttons.csv.addEventListener('click', () => {
+    const table = instance?.csv?.();
+    if (table) downloadText(table.filename ?? `fresnel-lab-${panel.id}.csv`, toCsv(table.columns));
+  });
+
+  function refreshDescription() {
+    description.textContent = instance ? instance.describe() : '';
+    for (const canvas of content.querySelectorAll('canvas')) canvas.setAttribute('aria-describedby', description.id);
+  }
+
+  /** Values changed: controls, picture, description, URL, listeners. */
+  function changed(keys, source) {
+    for (const key of keys) {
+      draft[key] = values[key];
+      controllers[key]?.updateDisplay();
+    }
+    instance?.update(keys);
+    refreshDescription();
+    writeUrl(values);
+    for (const listener of listeners) listener({ keys, source });
+  }
+
+  /**
+   * Validated partial update; keys may be aliases. Rejected values are named on screen and the
+   * controls show the values kept. source: 'user' (a control or the panel), 'api' (a message),
+   * 'page' (the page-wide material), 'url'.
+   */
+  function set(update, { source = 'api' } = {}) {
+    const result = applyParams(schema, values, update);
+    if (result.rejected.length) {
+      rejectedNotice?.remove();
+      rejectedNotice = showNotice(noticeHost, `Some values for the ${panel.title} panel were not usable:`,
+        result.rejected.map(describeProblem));
+      for (const { key } of result.rejected) {
+        if (key in values) {
+          draft[key] = values[key];
+          controllers[key]?.updateDisplay();
+        }
+      }
+    }
+    if (result.changed.length) changed(result.changed, source);
+    return result;
+  }
+
+  /** @type {import('./panelContract.js').PanelContext} */
+  const ctx = {
+    values: view,
+    get gui() { return gui; },
+    bind(folder, keys) {
+      const made = bindGui(folder ?? gui, schema, draft, (key, value) => set({ [key]: value }, { source: 'user' }), keys);
+      Object.assign(controllers, made);
+      return made;
+    },
+    set: (update, options) => set(update, { source: 'user', ...options }),
+    invalidate() {
+      instance?.update([]);
+      refreshDescription();
+    },
+    frameDrawn() {
+      frames += 1;
+      onFrame(frames);
+    },
+    applyMaterial: (material) => applyMaterial(material),
+    reducedMotion: window.matchMedia?.('(prefers-reduced-motion: reduce)').matches ?? false,
+  };
+
+  return {
+    id: panel.id,
+    panel,
+    values: view,
+    usesWebGL: panel.webgl,
+    get mounted() { return instance !== null; },
+    get instance() { return instance; },
+    get frames() { return frames; },
+    mount() {
+      if (instance) return instance;
+      container.style.minHeight = '';
+      gui = createPanelGui(guiHost, `${panel.title}: controls`);
+      controllers = {};
+      try {
+        instance = checkInstance(panel.id, panel.mount(content, ctx));
+      } catch (error) {
+        instance = null;
+        gui.destroy();
+        gui = null;
+        content.replaceChildren();
+        showNotice(noticeHost, `The ${panel.title} panel could not start.`, [error.message], { kind: 'error' });
+        throw error;
+      }
+      buttons.png.disabled = !instance.png;
+      buttons.csv.disabled = !instance.csv;
+      refreshDescription();
+      return instance;
+    },
+    unmount() {
+      if (!instance) return;
+      container.style.minHeight = `${container.offsetHeight}px`; // no layout jump while it is away
+      instance.dispose();
+      instance = null;
+      gui?.destroy();
+      gui = null;
+      controllers = {};
+      content.replaceChildren();
+    },
+    set,
+    /** listener({ keys, source }) after every change; returns a function that removes it. */
+    onChange(listener) {
+      listeners.add(listener);
+      return () => listeners.delete(listener);
+    },
+    links: () => ({ lecture: lectureUrl(panel, values), embed: embedUrl(panel, values) }),
+  };
+}

@@ -1,0 +1,91 @@
+// Mount on approach, dispose when far: only panels on or near the screen hold a view, and never
+// more than maxLive WebGL panels at once (the farthest one gives its context up first).
+// Panels without WebGL stay mounted once they have been seen.
+import { MAX_LIVE_CONTEXTS } from '../gl/contextBudget.js';
+
+export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = MAX_LIVE_CONTEXTS } = {}) {
+  const near = new Set();
+  const distance = ({ section }) => {
+    const r = section.getBoundingClientRect();
+    return Math.abs(r.top + r.height / 2 - window.innerHeight / 2);
+  };
+
+  // The section under the middle of the screen: mounting panels above it must not move it.
+  const anchorEntry = () => {
+    const middle = window.innerHeight / 2;
+    return entries.find(({ section }) => {
+      const r = section.getBoundingClientRect();
+      return r.top <= middle && r.bottom >= middle;
+    }) ?? null;
+  };
+
+  function settle() {
+    const anchor = anchorEntry();
+    const before = anchor?.section.getBoundingClientRect().top;
+    mountAndUnmount();
+    if (anchor) {
+      const shift = anchor.section.getBoundingClientRect().top - before;
+      if (Math.abs(shift) >= 1) window.scrollBy(0, shift); // keep the reader's panel where it was
+    }
+  }
+
+  function mountAndUnmount() {
+    for (const entry of entries) {
+      if (entry.host.mounted && entry.host.usesWebGL && !near.has(entry)) entry.host.unmount();
+    }
+    const wanted = [...near].sort((a, b) => distance(a) - distance(b));
+    let glMounted = entries.filter((e) => e.host.mounted && e.host.usesWebGL).length;
+    for (const entry of wanted) {
+      if (entry.host.mounted) continue;
+      if (entry.host.usesWebGL) {
+        if (glMounted >= maxLive) {
+          const farthest = entries.filter((e) => e.host.mounted && e.host.usesWebGL)
+            .sort((a, b) => distance(b) - distance(a))[0];
+          if (!farthest || distance(farthest) <= distance(entry)) continue;
+          farthest.host.unmount();
+          glMounted -= 1;
+        }
+        glMounted += 1;
+      }
+      try {
+        entry.host.mount();
+      } catch (error) {
+        console.warn(`panel ${entry.host.id} failed to mount`, error); // its notice is on the page
+      }
+    }
+  }
+
+  let firstSettled;
+  const first = new Promise((resolve) => { firstSettled = resolve; });
+  const observer = new IntersectionObserver((records) => {
+    for (const record of records) {
+      const entry = entries.find((e) => e.section === record.target);
+      if (record.isIntersecting) near.add(entry);
+      else near.delete(entry);
+    }
+    settle();
+    firstSettled();
+  }, { rootMargin: margin });
+  for (const { section } of entries) observer.observe(section);
+
+  // When the budget is short, a near panel may wait without any intersection change: scrolling
+  // re-ranks by distance (once per frame, and only while some near panel is waiting).
+  let pending = 0;
+  const onScroll = () => {
+    if (pending || ![...near].some((e) => !e.host.mounted)) return;
+    pending = requestAnimationFrame(() => {
+      pending = 0;
+      settle();
+    });
+  };
+  window.addEventListener('scroll', onScroll, { passive: true });
+  return {
+    settle,
+    /** Resolves once the panels near the screen at start have mounted. */
+    first,
+    disconnect() {
+      observer.disconnect();
+      window.removeEventListener('scroll', onScroll);
+    },
+  };
+}

@@ -1,0 +1,69 @@
+// The contract between the host and a panel, written down once. A panel is a folder
+// src/panels/<id>/ whose index.js exports `schema` and `mount`; everything else the page needs
+// (id, title, traits) is its entry in src/panels/manifest.js. tests/e2e/contract.spec.js checks
+// every panel of the manifest against this contract.
+
+/**
+ * One parameter. The schema is the single source of truth for the panel's controls, its URL keys
+ * and its messages; a value that breaks it is reported and replaced by the default.
+ * @typedef {object} ParamSpec
+ * @property {'number'|'enum'|'color'|'boolean'} type
+ * @property {number|string|boolean} default
+ * @property {string} label        the control's visible label (and its accessible name)
+ * @property {number} [min]
+ * @property {number} [max]
+ * @property {number} [step]       also sets how many decimals the URL keeps
+ * @property {string[]|Record<string, string>} [options]  enum values, or { value: label }
+ * @property {string[]} [aliases]  older keys that still read, so links made before a rename work
+ */
+
+/** @typedef {Record<string, ParamSpec>} Schema */
+
+/**
+ * Where a change came from: a control or the panel's own picture ('user'), a message ('api'),
+ * the page-wide material ('page'), or the link the page opened with ('url').
+ * @typedef {'user'|'api'|'page'|'url'} ChangeSource
+ */
+
+/**
+ * What mount() gets.
+ * @typedef {object} PanelContext
+ * @property {Readonly<Record<string, any>>} values  the current values, read-only: the host owns them
+ * @property {(update: Record<string, any>, options?: { source?: ChangeSource }) =>
+ *   { applied: object, rejected: object[], changed: string[] }} set
+ *   change values: validated, then controls, URL, picture and messages follow (update(keys) runs)
+ * @property {() => void} invalidate  something other than the values changed (a result arrived): update([]) and describe() again
+ * @property {import('lil-gui').default} gui  this mount's lil-gui root
+ * @property {(folder: import('lil-gui').default | null, keys: string[]) => Record<string, object>} bind
+ *   controllers for these schema keys in a folder (or the root)
+ * @property {() => void} frameDrawn  call after each WebGL frame (frame counters, `rendered` messages)
+ * @property {(material: { id?: string, name?: string, n: number }) => void} applyMaterial  to every panel of the page
+ * @property {boolean} reducedMotion  the reader asked for reduced motion
+ */
+
+/**
+ * What mount() returns.
+ * @typedef {object} PanelInstance
+ * @property {(keys?: string[]) => void} update  values changed (keys: which; [] for a re-describe)
+ * @property {() => string} describe  the key numbers in words: shown under the panel, and every canvas's description
+ * @property {(() => { filename?: string, columns: Record<string, Array<number|string>> })} [csv]  the plotted numbers
+ * @property {(() => string | null) | null} [png]  a PNG data URL of the picture
+ * @property {() => void} dispose  free everything: contexts, observers, listeners, timers
+ */
+
+/**
+ * @typedef {import('../panels/manifest.js').PanelEntry & {
+ *   schema: Schema,
+ *   mount: (root: HTMLElement, ctx: PanelContext) => PanelInstance,
+ * }} PanelDefinition
+ */
+
+/** The instance, if it keeps the contract; otherwise an error that names the panel and what is missing. */
+export function checkInstance(id, instance) {
+  const missing = ['update', 'describe', 'dispose'].filter((name) => typeof instance?.[name] !== 'function');
+  for (const name of ['csv', 'png']) {
+    if (instance?.[name] != null && typeof instance[name] !== 'function') missing.push(`${name} (a function or null)`);
+  }
+  if (missing.length) throw new TypeError(`The ${id} panel's mount() returned no ${missing.join(', ')}.`);
+  return instance;
+}

@@ -1,0 +1,151 @@
+// Typed parameter schemas: one source of truth per panel for its controls, its URL state and
+// its messages. Pure functions; a bad value never throws, it is reported and replaced by the default
+// (in the manner of PhET's query-parameter tables).
+//
+// Spec fields: type ('number' | 'enum' | 'color' | 'boolean'), default, label, and
+// for numbers min, max, step; for enums options (an array of values, or { value: label });
+// optionally aliases: older keys that still read (links and decks made before a rename keep working).
+
+const HEX = /^#?([0-9a-f]{6})$/i;
+
+function enumValues(spec) {
+  return Array.isArray(spec.options) ? spec.options.map(String) : Object.keys(spec.options);
+}
+
+/** The label an enum shows for a value (the value itself when the options are a plain list). */
+export function optionLabel(spec, value) {
+  return Array.isArray(spec.options) ? String(value) : spec.options[value] ?? String(value);
+}
+
+/** Number of decimals implied by a step (0.001 → 3), used to write short, exact URLs. */
+export function stepDecimals(step) {
+  if (!step || step >= 1) return 0;
+  return Math.min(12, Math.max(0, Math.ceil(-Math.log10(step) - 1e-9)));
+}
+
+/**
+ * Checks one raw value (a URL string, a control's value or a message field) against its spec.
+ * Returns { ok: true, value } or { ok: false, reason }.
+ */
+export function parseValue(spec, raw) {
+  switch (spec.type) {
+    case 'number': {
+      const value = typeof raw === 'number' ? raw : typeof raw === 'string' && raw.trim() !== '' ? Number(raw) : NaN;
+      if (!Number.isFinite(value)) return { ok: false, reason: 'is not a number' };
+      if (value < spec.min || value > spec.max) {
+        return { ok: false, reason: `is outside ${spec.min} to ${spec.max}` };
+      }
+      return { ok: true, value };
+    }
+    case 'enum': {
+      const value = String(raw);
+      if (!enumValues(spec).includes(value)) return { ok: false, reason: `is not one of ${enumValues(spec).join(', ')}` };
+      return { ok: true, value };
+    }
+    case 'color': {
+      const match = typeof raw === 'string' ? HEX.exec(raw.trim()) : null;
+      if (!match) return { ok: false, reason: 'is not a colour like ff8800' };
+      return { ok: true, value: `#${match[1].toLowerCase()}` };
+    }
+    case 'boolean': {
+      if (raw === true || raw === 'true' || raw === '1') return { ok: true, value: true };
+      if (raw === false || raw === 'false' || raw === '0') return { ok: true, value: false };
+      return { ok: false, reason: 'is not true or false' };
+    }
+    default:
+      return { ok: false, reason: `has an unknown type ${spec.type}` };
+  }
+}
+
+/** Writes a value as it appears in a URL. */
+export function formatValue(spec, value) {
+  switch (spec.type) {
+    case 'number': {
+      const text = value.toFixed(stepDecimals(spec.step));
+      return text.includes('.') ? text.replace(/\.?0+$/, '') : text;
+    }
+    case 'color':
+      return value.replace('#', '');
+    default:
+      return String(value);
+  }
+}
+
+/** The schema's defaults as a fresh values object. */
+export function defaults(schema) {
+  return Object.fromEntries(Object.entries(schema).map(([key, spec]) => [key, spec.default]));
+}
+
+/** The schema key a name or one of its aliases stands for, or undefined. */
+export function resolveKey(schema, name) {
+  if (Object.hasOwn(schema, name)) return name;
+  return Object.keys(schema).find((key) => schema[key].aliases?.includes(name));
+}
+
+/**
+ * Reads values for a schema from URLSearchParams (or any object with get/has).
+ * Keys may carry a prefix (`spheres.nT`) and may be written by an alias (`n2` for `nT`); the key
+ * itself wins over an alias. Absent keys take the default silently, bad ones take the default
+ * and are listed in `problems`.
+ */
+export function readParams(schema, search, prefix = '') {
+  const values = defaults(schema);
+  const problems = [];
+  for (const [key, spec] of Object.entries(schema)) {
+    const name = [key, ...(spec.aliases ?? [])].map((k) => prefix + k).find((k) => search.has(k));
+    if (name === undefined) continue;
+    const raw = search.get(name);
+    const result = parseValue(spec, raw);
+    if (result.ok) values[key] = result.value;
+    else problems.push({ key: name, raw, reason: result.reason, fallback: formatValue(spec, spec.default) });
+  }
+  return { values, problems };
+}
+
+/**
+ * Applies a partial update (from a control, a message, the page) to values. Keys may be aliases.
+ * Unknown keys and bad values are rejected and reported; the rest are applied. Returns
+ * { applied, rejected, changed }: changed lists the keys whose value is now different.
+ */
+export function applyParams(schema, values, update) {
+  const applied = {};
+  const rejected = [];
+  const changed = [];
+  for (const [name, raw] of Object.entries(update ?? {})) {
+    const key = resolveKey(schema, name);
+    if (key === undefined) {
+      rejected.push({ key: name, raw, reason: 'is not a parameter of this panel' });
+      continue;
+    }
+    const result = parseValue(schema[key], raw);
+    if (!result.ok) {
+      rejected.push({ key: name, raw, reason: result.reason });
+      continue;
+    }
+    if (values[key] !== result.value && !changed.includes(key)) changed.push(key);
+    applied[key] = values[key] = result.value;
+  }
+  return { applied, rejected, changed };
+}
+
+/**
+ * Writes a schema's values into URLSearchParams: values that differ from their defaults are set,
+ * the rest removed, so a page of many panels keeps a short link that still reproduces the view.
+ */
+export function writeParams(schema, values, search, prefix = '') {
+  for (const [key, spec] of Object.entries(schema)) {
+    for (const alias of spec.aliases ?? []) search.delete(prefix + alias); // the link now says it by name
+    const text = formatValue(spec, values[key]);
+    if (text === formatValue(spec, spec.default)) search.delete(prefix + key);
+    else search.set(prefix + key, text);
+  }
+  return search;
+}
+
+/** A readable sentence for a problem, for the on-screen notice. */
+export function describeProblem({ key, raw, reason, fallback }) {
+  const shown = String(raw).length > 40 ? `${String(raw).slice(0, 40)}…` : String(raw);
+  return fallback === undefined
+    ? `${key}=${shown} ${reason}; ignored.`
+    : `${key}=${shown} ${reason}; using ${fallback}.`;
+}

@@ -1,0 +1,119 @@
+// Panel `angle-ratio`: one ray meets a flat interface and splits into a reflected part R and a
+// refracted part T = 1 − R; stroke widths carry the powers. Past the critical angle (n_i > n_t)
+// nothing goes through. Numbers from src/optics/interfaceSplit.js (which uses fresnel.js).
+import { interfaceSplit, interfaceSplitCurve } from '../../optics/interfaceSplit.js';
+import { el } from '../../ui/el.js';
+import { setSubscripted } from '../../ui/subscripts.js';
+import { cssVar } from '../../ui/theme.js';
+import { addSwap, indexPair } from '../shared/indexPair.js';
+import { buildAngleRatioDiagram, svgToPng } from './buildAngleRatioDiagram.js';
+import './styles.css';
+
+export const schema = {
+  theta: { type: 'number', default: 45, min: 0, max: 90, step: 0.1, label: 'Angle of incidence θ_i (°)' },
+  ...indexPair({ aliases: { nI: ['n1'], nT: ['n2'] } }),
+};
+
+/** A labelled horizontal bar with its number; the bar itself is decoration (the number is text). */
+function bar(label, className) {
+  const row = el('div', `ar-bar-row ${className}`);
+  const name = el('span', 'ar-bar-name', label);
+  const track = el('span', 'ar-bar-track');
+  const fill = el('span', 'ar-bar-fill');
+  track.setAttribute('aria-hidden', 'true');
+  track.append(fill);
+  const value = el('span', 'ar-bar-value');
+  row.append(name, track, value);
+  return {
+    row,
+    set(v) {
+      fill.style.width = `${(100 * v).toFixed(2)}%`;
+      value.textContent = v.toFixed(4);
+    },
+  };
+}
+
+export function mount(root, ctx) {
+  const { values } = ctx;
+  const panel = el('div', 'angle-ratio-panel');
+  const figure = el('div', 'ar-figure');
+  const diagram = buildAngleRatioDiagram(figure, {
+    onAngle(deg) {
+      ctx.set({ theta: Math.round(deg * 10) / 10 });
+    },
+  });
+  const bars = el('div', 'ar-bars');
+  const rBar = bar('Reflected R', 'ar-bar-r');
+  const tBar = bar('Transmitted T = 1 − R', 'ar-bar-t');
+  bars.append(rBar.row, tBar.row);
+  const status = el('p', 'ar-status');
+  status.setAttribute('aria-live', 'polite');
+  const analogy = el('p', 'ar-analogy',
+    'Think of skipping a stone: the flatter it meets the water, the more likely it bounces off instead of '
+    + 'going in, and light arriving at a grazing angle likewise mostly reflects.');
+  panel.append(figure, bars, status, analogy);
+  root.append(panel);
+
+  const folder = ctx.gui.addFolder('Interface (or drag the incident ray / arrow keys)');
+  ctx.bind(folder, ['theta', 'nI', 'nT']);
+  addSwap(ctx, folder, 'Swap n_i ↔ n_t (light leaving the denser side)');
+
+  let split = null;
+  let pngUrl = null;
+  let pngTimer = 0;
+  let disposed = false;
+
+  // The PNG export needs an image decode (asynchronous), so a fresh copy is prepared shortly after
+  // each change and handed out by png().
+  function refreshPng() {
+    clearTimeout(pngTimer);
+    pngTimer = setTimeout(() => {
+      svgToPng(diagram.svg, cssVar('--panel', '#161b22'))
+        .then((url) => { if (!disposed) pngUrl = url; })
+        .catch(() => { pngUrl = null; });
+    }, 250);
+  }
+
+  function update() {
+    const { theta, nI, nT } = values;
+    split = interfaceSplit(theta, nI, nT);
+    diagram.set(split, nI, nT);
+    rBar.set(split.R);
+    tBar.set(split.T);
+    const critical = split.critical === null
+      ? `No critical angle: light enters a denser (or equal) medium (n_i ≤ n_t).`
+      : `Critical angle ${split.critical.toFixed(2)}°.`;
+    setSubscripted(status, split.tir
+      ? `Total internal reflection: ${theta.toFixed(1)}° is past the critical angle ${split.critical.toFixed(2)}°, `
+        + 'so there is no refracted ray and T = 0; all the light is reflected.'
+      : `θ_i = ${theta.toFixed(1)}°, θ_t = ${split.thetaT.toFixed(2)}° (Snell's law). ${critical}`);
+    panel.classList.toggle('ar-is-tir', split.tir);
+    refreshPng();
+  }
+  update();
+
+  return {
+    diagram,
+    get split() { return split; },
+    update,
+    describe() {
+      const { theta, nI, nT } = values;
+      const base = `From n_i = ${nI} into n_t = ${nT} at ${theta.toFixed(1)}° from the normal: `
+        + `R = ${split.R.toFixed(4)} is reflected and T = ${split.T.toFixed(4)} is transmitted`;
+      return split.tir
+        ? `${base}; past the critical angle ${split.critical.toFixed(2)}° there is no refracted ray.`
+        : `${base}, refracted to ${split.thetaT.toFixed(2)}°.`;
+    },
+    csv() {
+      const { theta, R, T } = interfaceSplitCurve(values.nI, values.nT);
+      return { filename: `angle-ratio-nI${values.nI}-nT${values.nT}.csv`, columns: { theta_deg: theta, R, T } };
+    },
+    png: () => pngUrl,
+    dispose() {
+      disposed = true;
+      clearTimeout(pngTimer);
+      diagram.dispose();
+      panel.remove();
+    },
+  };
+}

@@ -1,0 +1,47 @@
+// The DOM of the asphalt panel: the stage (canvas and a badge saying which model is on), the hover
+// readout, the key numbers and the formula. Styled by asphalt.css under .asphalt-panel.
+import { texElement } from '../../ui/tex.js';
+import './styles.css';
+import { el } from '../../ui/el.js';
+
+export function buildAsphaltDom(host) {
+  const root = el('div', 'asphalt-panel');
+  const stage = el('div', 'asphalt-stage');
+  const canvas = el('canvas', 'asphalt-canvas');
+  canvas.tabIndex = 0;
+  canvas.setAttribute('role', 'img');
+  canvas.setAttribute('aria-label', 'A rough asphalt road under a low sun ahead of the camera. '
+    + 'Arrow keys raise or lower the camera; hover the road to read the angle and F there.');
+  const badge = el('div', 'asphalt-badge');
+  stage.append(canvas, badge);
+
+  const readout = el('p', 'asphalt-readout');
+  readout.setAttribute('aria-live', 'polite');
+  const summary = el('dl', 'asphalt-summary');
+  const formula = texElement(
+    'L_\\text{spec} = \\frac{D(\\mathbf h)\\,G_2(\\mathbf l,\\mathbf v)\\,F(\\theta_d)}{4\\,\\cos\\theta_v}\\,E_\\text{sun},'
+    + '\\qquad \\cos\\theta_d = \\mathbf l\\cdot\\mathbf h',
+    { className: 'asphalt-formula' },
+  );
+  root.append(stage, readout, summary, formula);
+  host.append(root);
+
+  return {
+    stage,
+    canvas,
+    setBadge(text, on) {
+      badge.textContent = text;
+      badge.classList.toggle('is-off', !on);
+    },
+    setReadout(text) {
+      readout.textContent = text;
+    },
+    setSummary(pairs) {
+      summary.replaceChildren(...pairs.map(([term, value, strong]) => {
+        const wrap = el('div', strong ? 'is-key' : '');
+        wrap.append(el('dt', '', term), el('dd', '', value));
+        return wrap;
+      }));
+    },
+  };
+}

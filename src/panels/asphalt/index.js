@@ -1,0 +1,166 @@
+// Panel `asphalt`: does a rough road have a specular highlight? A ray-cast road under a low sun
+// ahead of the camera; overhead it is dull, near grazing it shines, because F at the half-vector
+// angle grows towards 1 there (lecture, "Specular"). Fresnel off keeps F = R0 and shows what a model
+// without it misses. Every number comes from model.js (float64).
+import { createShaderView } from '../../gl/createShaderView.js';
+import { normalIncidence } from '../../optics/fresnel.js';
+import { transmittedIndex } from '../shared/indexPair.js';
+import { startWebGL } from '../shared/startWebGL.js';
+import { SCENE, cameraBasis, highlightInView, pixelRay, shadeRoad, sunDirection } from './model.js';
+import { buildAsphaltDom } from './buildAsphaltDom.js';
+import fragment from './asphalt.frag.glsl?raw';
+
+// No published refractive index of bitumen was found; 1.55 is an assumption in the range of
+// organic binders and plastics (1.5–1.6).
+export const schema = {
+  camEl: { type: 'number', default: 6, min: 2, max: 90, step: 0.5, label: 'Camera elevation °' },
+  sunEl: { type: 'number', default: 10, min: 2, max: 45, step: 0.5, label: 'Sun elevation °' },
+  roughness: { type: 'number', default: 0.8, min: 0.2, max: 1, step: 0.01, label: 'Roughness (α = r²)' },
+  ...transmittedIndex({ what: 'binder, assumed', nT: 1.55, aliases: ['n'] }),
+  fresnel: { type: 'boolean', default: true, label: 'Fresnel on' },
+};
+
+const f3 = (x) => x.toFixed(3);
+const deg = (x) => `${x.toFixed(1)}°`;
+
+/** Mean RGB (0–255) of a square of drawing-buffer pixels around CSS (x, y), drawn just now. */
+function readBlock(view, x, y, radius = 3) {
+  view.readPixel(x, y); // draws the frame; the buffer is readable until this task ends
+  const gl = view.renderer.getContext();
+  const ratio = view.renderer.getPixelRatio();
+  const size = 2 * radius + 1;
+  const cx = Math.floor(x * ratio);
+  const cy = gl.drawingBufferHeight - 1 - Math.floor(y * ratio);
+  const x0 = Math.min(Math.max(0, cx - radius), gl.drawingBufferWidth - size);
+  const y0 = Math.min(Math.max(0, cy - radius), gl.drawingBufferHeight - size);
+  const out = new Uint8Array(size * size * 4);
+  gl.readPixels(x0, y0, size, size, gl.RGBA, gl.UNSIGNED_BYTE, out);
+  const sum = [0, 0, 0];
+  for (let i = 0; i < out.length; i += 4) for (let c = 0; c < 3; c += 1) sum[c] += out[i + c];
+  return sum.map((s) => s / (size * size));
+}
+
+export function mount(root, ctx) {
+  const { values } = ctx;
+  const dom = buildAsphaltDom(root);
+  const view = startWebGL(dom.stage, () => createShaderView(dom.canvas, {
+    fragment,
+    onFrame: ctx.frameDrawn,
+    uniforms: {
+      uForward: { value: [0, -1, 0] }, uUp: { value: [0, 0, 1] }, uRight: { value: [-1, 0, 0] },
+      uSunDir: { value: [0, 0.17, 0.98] },
+      uTanHalfFov: { value: Math.tan((SCENE.fovY / 2) * (Math.PI / 180)) },
+      uCameraHeight: { value: SCENE.cameraHeight },
+      uN: { value: 1.55 }, uAlpha: { value: 0.64 }, uFresnel: { value: 1 },
+      uAlbedo: { value: SCENE.albedo }, uSun: { value: SCENE.sun }, uAmbient: { value: SCENE.ambient },
+      uExposure: { value: SCENE.exposure },
+    },
+  }), 'The road needs WebGL2; the numbers below still follow the controls.');
+
+  ctx.bind(ctx.gui.addFolder('View and sun'), ['camEl', 'sunEl']);
+  ctx.bind(ctx.gui.addFolder('Road'), ['roughness', 'nT', 'fresnel']);
+
+  const aspect = () => {
+    const rect = dom.canvas.getBoundingClientRect();
+    return rect.width > 0 && rect.height > 0 ? rect.width / rect.height : 2;
+  };
+  let state = null;
+
+  function update() {
+    state = highlightInView(values, aspect());
+    const { peak, centre } = state;
+    const r0 = normalIncidence(1, values.nT);
+    dom.setBadge(values.fresnel ? 'Fresnel on: F(θd) exact' : `Fresnel off: F = R0 = ${f3(r0)}`, values.fresnel);
+    dom.setSummary([
+      ['F at the view centre', `${f3(centre.F)} (θd = ${deg(centre.thetaD)})`, true],
+      ['Highlight luminance', `${f3(peak.specular)} at θd = ${deg(peak.thetaD)}, F = ${f3(peak.F)}`, true],
+      ['Diffuse road', f3(peak.diffuse)],
+      ['Highlight ÷ diffuse', `${(peak.specular / peak.diffuse).toFixed(1)}×`],
+      ['R0 (head-on)', f3(r0)],
+    ]);
+    if (!view) return;
+    const basis = cameraBasis(values.camEl);
+    const u = view.uniforms;
+    u.uForward.value = basis.forward;
+    u.uUp.value = basis.up;
+    u.uRight.value = basis.right;
+    u.uSunDir.value = sunDirection(values.sunEl);
+    u.uN.value = values.nT;
+    u.uAlpha.value = values.roughness * values.roughness;
+    u.uFresnel.value = values.fresnel ? 1 : 0;
+    view.render();
+  }
+
+  // Hovering the road: the angle θd between the sun and the half-vector there, and F(θd).
+  const hint = 'Hover the road to read θd (sun to half-vector) and F there.';
+  const onHover = (event) => {
+    const rect = dom.canvas.getBoundingClientRect();
+    const ndcX = (2 * (event.clientX - rect.left)) / rect.width - 1;
+    const ndcY = 1 - (2 * (event.clientY - rect.top)) / rect.height;
+    const hit = shadeRoad(pixelRay(values.camEl, ndcX, ndcY, rect.width / rect.height), values);
+    dom.setReadout(hit
+      ? `Road ${hit.distance.toFixed(1)} m ahead: θd = ${deg(hit.thetaD)}, F = ${f3(hit.F)}, `
+        + `specular ${f3(hit.specular)}, diffuse ${f3(hit.diffuse)}`
+      : 'Sky: no road under the cursor.');
+  };
+  const onLeave = () => dom.setReadout(hint);
+  // Keyboard: arrows raise or lower the camera (Shift for 5°), Home overhead, End grazing.
+  const onKey = (event) => {
+    const step = event.shiftKey ? 5 : 1;
+    const { min, max } = schema.camEl;
+    const next = { ArrowUp: values.camEl + step, ArrowRight: values.camEl + step, ArrowDown: values.camEl - step,
+      ArrowLeft: values.camEl - step, Home: max, End: min }[event.key];
+    if (next === undefined) return;
+    event.preventDefault();
+    ctx.set({ camEl: Math.min(max, Math.max(min, next)) });
+  };
+  dom.canvas.addEventListener('pointermove', onHover);
+  dom.canvas.addEventListener('pointerleave', onLeave);
+  dom.canvas.addEventListener('keydown', onKey);
+  const resize = new ResizeObserver(() => update());
+  resize.observe(dom.canvas);
+  onLeave();
+  update();
+
+  return {
+    view,
+    get state() { return state; },
+    /** Mean RGB around the brightest highlight in view (where the float64 model puts it). */
+    probePeak() {
+      const rect = dom.canvas.getBoundingClientRect();
+      const y = ((1 - state.peak.ndcY) / 2) * rect.height;
+      return readBlock(view, rect.width / 2, Math.min(rect.height - 1, Math.max(0, y)));
+    },
+    update,
+    describe() {
+      const { peak, centre } = state;
+      return `Camera ${values.camEl}° above the road, sun ${values.sunEl}° ahead, roughness ${values.roughness}, `
+        + `n_t = ${values.nT} (assumed for bitumen), Fresnel ${values.fresnel ? 'on' : 'off'}. `
+        + `At the centre of view the sun meets the microfacets at θd = ${deg(centre.thetaD)}, where F is ${f3(centre.F)}; `
+        + `the brightest highlight has luminance ${f3(peak.specular)}, ${(peak.specular / peak.diffuse).toFixed(1)} times `
+        + `the diffuse road (${f3(peak.diffuse)}).`;
+    },
+    csv() {
+      const { column } = state;
+      return {
+        filename: `asphalt-cam${values.camEl}-sun${values.sunEl}-nT${values.nT}${values.fresnel ? '' : '-noF'}.csv`,
+        columns: {
+          ndc_y: column.map((c) => c.ndcY),
+          distance_m: column.map((c) => c.distance),
+          theta_d_deg: column.map((c) => c.thetaD),
+          F: column.map((c) => c.F),
+          L_specular: column.map((c) => c.specular),
+          L_diffuse: column.map((c) => c.diffuse),
+        },
+      };
+    },
+    png: view ? () => view.toDataURL() : null,
+    dispose() {
+      resize.disconnect();
+      dom.canvas.removeEventListener('pointermove', onHover);
+      dom.canvas.removeEventListener('pointerleave', onLeave);
+      dom.canvas.removeEventListener('keydown', onKey);
+      view?.dispose();
+    },
+  };
+}

@@ -1,0 +1,122 @@
+// Panel `changing-specular`: Phong's highlight (v·r)^s only asks how close the view is to the mirror
+// direction, never how the light meets the surface (lecture, "Changing Specular"). The same floor
+// is lit both ways side by side, with a cross-section of the vectors and a plot of the peak highlight
+// against elevation: plain Phong (k_s = R0) is flat, Phong × F rises towards grazing.
+// Numbers: src/optics/phong.js (float64); picture: changing-specular.frag.glsl.
+import { createShaderView } from '../../gl/createShaderView.js';
+import { createLinePlot } from '../../ui/createLinePlot.js';
+import { thetaMark } from '../../ui/plotMarks.js';
+import { DEG } from '../../optics/angles.js';
+import { peakHighlightCurves, phongHighlights } from '../../optics/phong.js';
+import { transmittedIndex } from '../shared/indexPair.js';
+import { startWebGL } from '../shared/startWebGL.js';
+import { buildChangingSpecularDom } from './buildChangingSpecularDom.js';
+import fragment from './changing-specular.frag.glsl?raw';
+
+export const schema = {
+  lightEl: { type: 'number', default: 30, min: 1, max: 90, step: 0.5, label: 'Light elevation °' },
+  viewEl: { type: 'number', default: 30, min: 1, max: 90, step: 0.5, label: 'View elevation °' },
+  linked: { type: 'boolean', default: true, label: 'View follows light (mirror)' },
+  s: { type: 'number', default: 60, min: 1, max: 500, step: 1, label: 'Phong exponent s' },
+  ...transmittedIndex({ what: 'surface', aliases: ['n'] }),
+};
+
+const SCENE = { fovY: 40, cameraDist: 4, light: 6, exposure: 1 };
+
+export function mount(root, ctx) {
+  const { values } = ctx;
+  const dom = buildChangingSpecularDom(root);
+  const view = startWebGL(dom.stage, () => createShaderView(dom.canvas, {
+    fragment,
+    onFrame: ctx.frameDrawn,
+    uniforms: {
+      uViewEl: { value: 0.5 }, uSunDir: { value: [0, 0.5, 0.87] }, uS: { value: 60 }, uN: { value: 1.5 },
+      uTanHalfFov: { value: Math.tan((SCENE.fovY / 2) * DEG) }, uCameraDist: { value: SCENE.cameraDist },
+      uLight: { value: SCENE.light }, uExposure: { value: SCENE.exposure },
+    },
+  }), 'The floors need WebGL2; the diagram and plot below still work.');
+  const plot = createLinePlot(dom.plot, {
+    xLabel: 'Elevation of light and view (mirror), °',
+    yLabel: 'Peak highlight',
+    yRange: [0, 1],
+    height: 260,
+    digits: 4,
+    series: [
+      { label: 'Phong, k_s = R0', stroke: '--c-schlick', width: 3.5 },
+      { label: 'Phong × F', stroke: '--c-exact', width: 3.5 },
+    ],
+  });
+
+  let curves = null;
+  let curvesN = null;
+  let highlight = null;
+
+  // Linked: moving either elevation moves the other, so the view stays in the mirror direction.
+  // The change that makes them agree, or null.
+  function linkUpdate(keys) {
+    if (!values.linked || values.viewEl === values.lightEl) return null;
+    return keys.includes('viewEl') && !keys.includes('lightEl') ? { lightEl: values.viewEl } : { viewEl: values.lightEl };
+  }
+
+  const opening = linkUpdate([]); // linked, but the link gave two elevations: the view takes the light's
+  if (opening) ctx.set(opening);
+  ctx.bind(ctx.gui.addFolder('Light and view'), ['lightEl', 'viewEl', 'linked']);
+  ctx.bind(ctx.gui.addFolder('Surface'), ['s', 'nT']);
+
+  function update(keys = []) {
+    const link = linkUpdate(keys);
+    if (link) {
+      ctx.set(link); // draws once, with both elevations
+      return;
+    }
+    if (curvesN !== values.nT) {
+      curvesN = values.nT;
+      curves = peakHighlightCurves(1, values.nT);
+      plot.setData([curves.elevation, curves.phong, curves.phongF]);
+    }
+    highlight = phongHighlights(values.lightEl, values.viewEl, values.s, 1, values.nT);
+    plot.setMarks([thetaMark(values.lightEl, `light ${values.lightEl}°`)]);
+    dom.setDiagram(values.lightEl, values.viewEl, values.s);
+    dom.setNumbers(highlight, values.s);
+    if (view) {
+      const u = view.uniforms;
+      u.uViewEl.value = values.viewEl * DEG;
+      u.uSunDir.value = [0, Math.sin(values.lightEl * DEG), Math.cos(values.lightEl * DEG)];
+      u.uS.value = values.s;
+      u.uN.value = values.nT;
+      view.render();
+    }
+  }
+  update();
+
+  /** The value of a plotted curve at an elevation (degrees), for tests and the description. */
+  const curveAt = (name, elevation) => curves[name][curves.elevation.indexOf(elevation)];
+
+  return {
+    view,
+    plot,
+    get curves() { return curves; },
+    get highlight() { return highlight; },
+    curveAt,
+    update,
+    describe() {
+      const h = highlight;
+      return `Light ${values.lightEl}° and view ${values.viewEl}° above the surface, s = ${values.s}, n_t = ${values.nT}. `
+        + `At the centre of view v·r = ${h.vDotR.toFixed(3)}: plain Phong gives ${h.phong.toFixed(4)} (k_s = R0 = ${h.R0.toFixed(4)}), `
+        + `Phong × F gives ${h.phongF.toFixed(4)} (F at θ = ${h.thetaDeg.toFixed(1)}° is ${h.F.toFixed(4)}). `
+        + `At the mirror peak plain Phong is ${h.R0.toFixed(4)} at every elevation, while Phong × F is `
+        + `${curveAt('phongF', 80).toFixed(4)} at 80° and ${curveAt('phongF', 5).toFixed(4)} at 5°.`;
+    },
+    csv() {
+      return {
+        filename: `changing-specular-nT${values.nT}.csv`,
+        columns: { elevation_deg: curves.elevation, phong_ks_R0: curves.phong, phong_times_F: curves.phongF },
+      };
+    },
+    png: view ? () => view.toDataURL() : null,
+    dispose() {
+      view?.dispose();
+      plot.dispose();
+    },
+  };
+}

@@ -1,0 +1,211 @@
+// Panel `exact-fresnel`: the lecture's exact formula typeset, then every quantity in it evaluated
+// live (m, cos θ, c, g², g, both factors, R) and checked against fresnelExact and (Rs + Rp)/2.
+// Past the critical angle g² < 0 and the code returns 1; a side box evaluates g² in the slide's
+// order and in the code's order to show the cancellation the code avoids. No WebGL: KaTeX + uPlot.
+import { DEG } from '../../optics/angles.js';
+import { reflectanceCurves } from '../../optics/curves.js';
+import { criticalAngle, fresnelExact, fresnelPolarized } from '../../optics/fresnel.js';
+import { fresnelLiteral, fresnelTerms } from '../../optics/fresnelTerms.js';
+import { createLinePlot } from '../../ui/createLinePlot.js';
+import { el } from '../../ui/el.js';
+import { fixed as fixedTo, sci } from '../../ui/format.js';
+import { criticalMark, thetaMark } from '../../ui/plotMarks.js';
+import { texElement } from '../../ui/tex.js';
+import { addSwap, indexPair } from '../shared/indexPair.js';
+import './styles.css';
+
+export const schema = {
+  theta: { type: 'number', default: 60, min: 0, max: 90, step: 0.01, label: 'θ, angle of incidence (°)' },
+  ...indexPair(),
+};
+
+// The slide's formula (lecture "Reflection Math"; Cook & Torrance 1982).
+const FORMULA = String.raw`R(\theta) = \frac{1}{2}\left(\frac{g-c}{g+c}\right)^{2}\left(1+\left(\frac{c(g+c)-m^{2}}{c(g-c)+m^{2}}\right)^{2}\right)`;
+const DEFINITIONS = String.raw`c = m\cos\theta,\qquad g = \sqrt{1 + c^{2} - m^{2}},\qquad m = \frac{n_i}{n_t}`;
+
+// One row per quantity: TeX, what it is, and how to show its value.
+const ROWS = [
+  { key: 'm', tex: String.raw`m = n_i / n_t`, note: 'ratio of the indices' },
+  { key: 'cos', tex: String.raw`\cos\theta`, note: '' },
+  { key: 'c', tex: String.raw`c = m\cos\theta`, note: '' },
+  { key: 'g2', tex: String.raw`g^{2} = (1-m)(1+m) + c^{2}`, note: '= cos²θt (the safe order)' },
+  { key: 'g', tex: String.raw`g = \sqrt{g^{2}}`, note: '= cos θt', nan: 'imaginary' },
+  { key: 'factor1', tex: String.raw`\left(\frac{g-c}{g+c}\right)^{2}`, note: 'first factor' },
+  { key: 'factor2', tex: String.raw`1+\left(\frac{c(g+c)-m^{2}}{c(g-c)+m^{2}}\right)^{2}`, note: 'second factor' },
+  { key: 'R', tex: String.raw`R = \tfrac{1}{2}\cdot\text{first}\cdot\text{second}`, note: 'reflectance' },
+];
+
+/** Six decimals: the terms are shown to the float64 digits a reader can compare by eye. */
+const fixed = (value, digits = 6) => fixedTo(value, digits);
+
+function valueCell(key) {
+  const cell = el('td', 'xf-value');
+  cell.dataset.term = key;
+  return cell;
+}
+
+export function mount(root, ctx) {
+  const { values } = ctx;
+  const panel = el('div', 'xf-panel');
+  const formula = el('div', 'xf-formula');
+  formula.append(texElement(FORMULA), texElement(DEFINITIONS));
+
+  const table = el('table', 'xf-terms');
+  table.append(el('caption', 'xf-caption', 'Each quantity at the current θ, n_i and n_t'));
+  const cells = {};
+  const notes = {};
+  for (const row of ROWS) {
+    const tr = el('tr', row.key === 'R' ? 'xf-result' : '');
+    const th = el('th', 'xf-symbol');
+    th.scope = 'row';
+    th.append(texElement(row.tex, { display: false, tag: 'span' }));
+    cells[row.key] = valueCell(row.key);
+    notes[row.key] = el('td', 'xf-note', row.note);
+    tr.append(th, notes[row.key], cells[row.key]);
+    table.append(tr);
+  }
+
+  const checks = el('dl', 'xf-checks');
+  const check = (label, key) => {
+    const dd = el('dd', 'xf-value');
+    dd.dataset.check = key;
+    checks.append(el('dt', '', label), dd);
+    return dd;
+  };
+  const exactOut = check('fresnelExact(cos θ, n_i, n_t)', 'exact');
+  const polarOut = check('(Rs + Rp)/2 from fresnelPolarized', 'polarized');
+  const diffOut = check('|R above − fresnelExact|', 'difference');
+  const status = el('p', 'xf-status');
+
+  const why = el('section', 'xf-why');
+  why.append(
+    el('h3', '', 'Why the code never computes g² as 1 + c² − m²'),
+    el('p', '', 'For matched media (m = 1) near grazing, c² is smaller than half the float64 step of 1 '
+      + '(1.1×10⁻¹⁶, so c below about 10⁻⁸): 1 + c² rounds to 1, the slide’s order gives g² = 0 and R = 1 '
+      + 'instead of 0, while (1 − m)(1 + m) is exactly 0 and keeps c². The shaders use that safe order; the '
+      + 'float64 reference adds the same terms as exact products. Try n_i = n_t at θ = 90°.'),
+  );
+  const orders = el('table', 'xf-orders');
+  const head = el('tr');
+  head.append(el('th', '', 'Evaluated literally'), el('th', 'xf-num', 'g²'), el('th', 'xf-num', 'R'));
+  const orderRow = (label, key) => {
+    const tr = el('tr');
+    tr.dataset.order = key;
+    const g2 = el('td', 'xf-value');
+    const r = el('td', 'xf-value');
+    tr.append(el('th', '', label), g2, r);
+    orders.append(tr);
+    return { g2, r };
+  };
+  orders.append(head);
+  const slideOrder = orderRow('Slide: 1 + c² − m²', 'lecture');
+  const codeOrder = orderRow('Safe: (1 − m)(1 + m) + c²', 'safe');
+  const cOut = el('p', 'xf-c');
+  why.append(cOut, orders);
+
+  const plotHost = el('div', 'xf-plot');
+  plotHost.setAttribute('role', 'img');
+  plotHost.setAttribute('aria-label', 'Exact reflectance R against the angle θ, with the current θ marked');
+  const left = el('div', 'xf-left');
+  left.append(table, checks, status);
+  const right = el('div', 'xf-right');
+  right.append(why, plotHost);
+  const body = el('div', 'xf-body');
+  body.append(left, right);
+  panel.append(formula, body);
+  root.append(panel);
+
+  const plot = createLinePlot(plotHost, {
+    xLabel: 'θ (degrees)', yLabel: 'R', height: 240,
+    series: [{ label: 'Exact R', stroke: '--c-exact', width: 3.5 }],
+  });
+
+  const gui = ctx.gui;
+  ctx.bind(gui, ['theta', 'nI', 'nT']);
+  addSwap(ctx, gui);
+  gui.add({ tir: () => ctx.set({ nI: 1.5, nT: 1, theta: 50 }) }, 'tir').name('Glass → air at 50° (TIR)');
+  gui.add({ cancel: () => ctx.set({ nT: values.nI, theta: 90 }) }, 'cancel').name('n_t = n_i at 90° (cancellation)');
+
+  let curvesKey = '';
+  let curves = null;
+  let terms = null;
+  let exact = 0;
+
+  function update() {
+    const { theta, nI, nT } = values;
+    const cos = Math.cos(theta * DEG);
+    terms = fresnelTerms(cos, nI, nT);
+    exact = fresnelExact(cos, nI, nT);
+    const { s, p } = fresnelPolarized(cos, nI, nT);
+
+    for (const row of ROWS) {
+      const v = terms[row.key];
+      cells[row.key].textContent = Number.isNaN(v) ? (row.nan ?? '—') : fixed(v);
+    }
+    cells.g2.classList.toggle('xf-negative', terms.g2 < 0);
+    notes.R.textContent = terms.tir ? 'total internal reflection: the code returns 1' : 'reflectance';
+    exactOut.textContent = fixed(exact);
+    polarOut.textContent = `${fixed(0.5 * (s + p))}  (Rs ${fixed(s, 4)}, Rp ${fixed(p, 4)})`;
+    diffOut.textContent = Math.abs(terms.R - exact).toExponential(1);
+
+    panel.classList.toggle('xf-tir', terms.tir);
+    if (terms.tir) {
+      status.textContent = terms.g2 < 0
+        ? `g² = ${fixed(terms.g2)} < 0: g would be imaginary: total internal reflection. `
+          + 'The code takes no square root; fresnelExact returns R = 1.'
+        : 'g² = 0: exactly at the critical angle, θt = 90°; fresnelExact returns R = 1.';
+    } else if (terms.matched) {
+      status.textContent = 'n_i = n_t: there is no interface, so nothing reflects; fresnelExact returns R = 0 at every angle.';
+    } else {
+      status.textContent = `g² = ${fixed(terms.g2)} ≥ 0: g = cos θt is real, and the formula gives R = ${fixed(terms.R)}.`;
+    }
+
+    const slide = fresnelLiteral(cos, nI, nT, 'lecture');
+    const code = fresnelLiteral(cos, nI, nT, 'safe');
+    cOut.textContent = `Now: m = ${fixed(terms.m)}, c = ${sci(terms.c)}`;
+    slideOrder.g2.textContent = sci(slide.g2);
+    slideOrder.r.textContent = fixed(slide.R);
+    codeOrder.g2.textContent = sci(code.g2);
+    codeOrder.r.textContent = fixed(code.R);
+    slideOrder.r.classList.toggle('xf-wrong', Math.abs(slide.R - exact) > 1e-6);
+
+    const key = `${nI}|${nT}`;
+    if (key !== curvesKey) {
+      curvesKey = key;
+      curves = reflectanceCurves(nI, nT);
+      plot.setData([curves.theta, curves.exact]);
+    }
+    const critical = criticalAngle(nI, nT);
+    plot.setMarks([
+      criticalMark(critical === null ? null : critical / DEG),
+      thetaMark(theta, `θ ${theta.toFixed(2)}°: R ${fixed(exact, 4)}`),
+    ]);
+  }
+  update();
+
+  return {
+    plot,
+    update,
+    get terms() { return terms; },
+    describe() {
+      const { theta, nI, nT } = values;
+      const at = `At θ = ${theta.toFixed(2)}° from n_i = ${nI} into n_t = ${nT}: m = ${fixed(terms.m, 4)}, c = ${fixed(terms.c, 4)}, `
+        + `g² = ${fixed(terms.g2, 4)}`;
+      if (terms.tir) return `${at}, negative, so g would be imaginary: total internal reflection, and R = 1.`;
+      return `${at}, g = ${fixed(terms.g, 4)}; first factor ${fixed(terms.factor1, 4)}, second factor `
+        + `${fixed(terms.factor2, 4)}, so R = ${fixed(terms.R, 4)}, the same as fresnelExact.`;
+    },
+    csv() {
+      const { s, p } = curves;
+      return {
+        filename: `exact-fresnel-nI${values.nI}-nT${values.nT}.csv`,
+        columns: { theta_deg: curves.theta, R_exact: curves.exact, Rs: s, Rp: p },
+      };
+    },
+    png: () => plot.toPng(),
+    dispose() {
+      plot.dispose();
+      panel.remove();
+    },
+  };
+}

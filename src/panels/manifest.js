@@ -1,0 +1,240 @@
+// The panel manifest: every panel of the lecture, in the lecture's order, with what the page needs
+// to know before the panel's code loads. The lecture page's sections (vite.config.js writes them
+// into index.html), the embed page, the README's id list and the tests all come from this list or
+// are checked against it. Plain data with no imports, so Node (the build, the unit tests) reads it too.
+//
+// A panel is the folder src/panels/<id>/ with its module in index.js (schema and mount; see
+// src/host/panelContract.js). Adding a panel is adding its folder and one entry here.
+
+/**
+ * @typedef {object} PanelEntry
+ * @property {string} id            fixed: URLs and embeds depend on it
+ * @property {string} title         plain text: the embed heading, window titles, the controls' title
+ * @property {string} [titleHtml]   the lecture page's heading where it needs markup (subscripts)
+ * @property {string} lede          HTML: the paragraph under the heading on the lecture page
+ * @property {string} cite          HTML: where in the lecture (or beyond it) the concept comes from
+ * @property {boolean} webgl        holds a WebGL context while mounted (counted against the budget)
+ * @property {string|null} material the parameter the page-wide material sets (its n), or null
+ * @property {string} [materialSelect] instead: a parameter that takes the material's id
+ * @property {boolean} [hero]       the first, large panel: it owns the short URL keys (?nT=…)
+ */
+
+/** @type {readonly PanelEntry[]} */
+export const PANELS = Object.freeze([
+  {
+    id: 'spheres',
+    hero: true,
+    title: "Exact Fresnel vs Schlick's approximation",
+    lede: `Each sphere is a diffuse surface under a clear coat: the coat reflects the fraction F of the light,
+        the diffuse layer gets the rest, k = (1 − F)·k<sub>d</sub> + F·k<sub>s</sub>.
+        Left, F is the exact Fresnel reflectance; middle, Schlick's cheap polynomial; right, how far apart they are.
+        Both agree head-on and part near the rim, where the view grazes the surface.
+        Swap the indices to look out of the glass: past the critical angle all light is reflected, and Schlick misses it.`,
+    cite: 'Lecture: “Reflection Math”, “Fresnel Reflection in Lighting”.',
+    webgl: true,
+    material: 'nT',
+  },
+  {
+    id: 'normal-mips',
+    title: 'Mipmapping normal maps',
+    lede: `A mipmap level stores the average of the texels below it. For colours that is right; for normals it is not:
+        averaging unit normals that point different ways gives a shorter vector, and renormalizing it throws away the
+        spread that made the surface look rough. Far away, a bumpy surface turns too shiny. Compare how each technique
+        keeps that spread against the ground truth, with numbers.`,
+    cite: 'Lecture agenda: “Mipmapping normal maps”; Toksvig 2005, Olano &amp; Baker 2010.',
+    webgl: true,
+    material: null,
+  },
+  {
+    id: 'asphalt',
+    title: 'Does asphalt have a specular highlight?',
+    lede: `Look straight down at a road and it is dull; look along it towards a low sun and it shines. Nothing about
+        the asphalt changed, only the angle: at grazing angles even a rough, dark surface reflects a large share of
+        the light. Sweep the camera from overhead to grazing, and switch Fresnel off to see what a model without it misses.`,
+    cite: 'Lecture: “Specular”.',
+    webgl: true,
+    material: 'nT',
+  },
+  {
+    id: 'changing-specular',
+    title: 'Changing specular',
+    lede: `Phong's highlight, (v·r)<sup>s</sup>, only asks how close the view is to the mirror direction. It never asks how
+        the reflected ray meets the surface, so its highlight is as bright overhead as at grazing. Multiply by F and the
+        highlight grows as the light and view drop towards the surface, as real ones do.`,
+    cite: 'Lecture: “Changing Specular”.',
+    webgl: true,
+    material: 'nT',
+  },
+  {
+    id: 'reflect-refract',
+    title: 'Reflection vs refraction',
+    lede: `At a water surface, part of the light is reflected (you see the sky) and the rest is refracted (you see the
+        floor below). Which part wins depends on the angle: looking down you see through, looking across you see the sky.
+        F splits the two, R + T = 1.`,
+    cite: 'Lecture: “Reflection vs. Refraction”.',
+    webgl: true,
+    material: 'nT',
+  },
+  {
+    id: 'refraction-waves',
+    title: 'Wave theory: why light bends',
+    lede: `Light travels at c/n in a material of index n. When a wavefront crosses into a slower medium, the part that
+        enters first slows first, so the front turns: Snell's law, n<sub>i</sub> sin θ<sub>i</sub> = n<sub>t</sub> sin θ<sub>t</sub>.
+        Going into a faster medium past the critical angle, no transmitted wave can match the front, and all of it is reflected.`,
+    cite: 'Lecture: “Wave Theory – Refraction”.',
+    webgl: true,
+    material: 'nT',
+  },
+  {
+    id: 'angle-ratio',
+    title: 'The ratio of reflection to refraction depends on the angle',
+    lede: `The wider the angle between the light and the normal, the more of it is reflected and the less goes in.
+        The widths of the rays below carry R and T.`,
+    cite: 'Lecture: “Reflection vs. Refraction”.',
+    webgl: false,
+    material: 'nT',
+  },
+  {
+    id: 'refractive-index',
+    title: 'Fresnel reflection: the refractive index',
+    lede: `The refractive index n is the ratio of the speed of light in a vacuum to its speed in the material; glass is
+        about 1.5. It alone sets how much a dielectric reflects head-on (R0) and the angle past which light cannot get
+        out (the critical angle). Pick a row to use that material in every panel.`,
+    cite: 'Lecture: “Fresnel Reflection”.',
+    webgl: false,
+    material: null,
+    materialSelect: 'selected',
+  },
+  {
+    id: 'polarization',
+    title: 'Why the exact formula is an average: polarization',
+    lede: `Light polarized across the plane of incidence (s) and within it (p) reflect differently. The lecture's formula is
+        their average, the right answer for unpolarized light. At Brewster's angle p-light is not reflected at all.`,
+    cite: 'Beyond the slides; Hecht, <i>Optics</i>, §4.6.',
+    webgl: false,
+    material: 'nT',
+  },
+  {
+    id: 'exact-fresnel',
+    title: 'Reflection math: the exact formula',
+    lede: `The fraction of light reflected, evaluated term by term as you move the sliders. Past the critical angle g² turns
+        negative: g would be imaginary, and the reflectance is exactly 1.`,
+    cite: 'Lecture: “Reflection Math”.',
+    webgl: false,
+    material: 'nT',
+  },
+  {
+    id: 'schlick',
+    title: "Schlick's approximation",
+    lede: `R(θ) ≈ R0 + (1 − R0)(1 − cos θ)<sup>5</sup>: one constant computed once, a few multiplications per pixel.
+        How close is it, where is it worst, and what goes wrong from inside the glass?`,
+    cite: 'Lecture: “Reflection Math”.',
+    webgl: false,
+    material: 'nT',
+  },
+  {
+    id: 'r0-derivation',
+    title: 'R(0°): from the exact formula to ((n_t − n_i)/(n_t + n_i))²',
+    titleHtml: 'R(0°): from the exact formula to ((n<sub>t</sub> − n<sub>i</sub>)/(n<sub>t</sub> + n<sub>i</sub>))²',
+    lede: `Set θ = 0 and the exact formula collapses to one square. Every line below is evaluated with the current indices:
+        they are all the same number.`,
+    cite: 'Lecture: “Reflection Math”, R(0°).',
+    webgl: false,
+    material: 'nT',
+  },
+  {
+    id: 'fresnel-lighting',
+    title: 'Fresnel reflection in lighting',
+    lede: `A diffuse surface under a shiny coat: the coat reflects F of the light and the diffuse layer the rest,
+        k = mix(k<sub>d</sub>, k<sub>s</sub>, F). Compare with a constant k<sub>s</sub>, and copy the GLSL.`,
+    cite: 'Lecture: “Fresnel Reflection in Lighting”.',
+    webgl: true,
+    material: 'nT',
+  },
+  {
+    id: 'metals',
+    title: 'Dielectrics vs metals',
+    lede: `Plastic, glass and paint reflect a few percent head-on and almost everything at grazing. Metals reflect most of
+        the light at every angle, with a colour: their index is complex, n + ik, and differs per wavelength.`,
+    cite: 'Lecture: “Fresnel Reflection and Materials”.',
+    webgl: true,
+    material: 'nT',
+  },
+  {
+    id: 'speed-accuracy',
+    title: 'Both speed and accuracy count',
+    lede: `Every Fresnel method, measured on the device in front of you: what it costs per evaluation and how wrong it is.
+        Pick a scene to see which method it needs: the cheapest one whose error you cannot see.`,
+    cite: 'Beyond the slides: “model no more than a scene needs”.',
+    webgl: false, // the chart is 2D; contexts live only while a benchmark or a read-back runs
+    material: null,
+  },
+  {
+    id: 'stability',
+    title: 'Where methods fail',
+    lede: `A map over every angle and index ratio: where a method returns NaN, leaves [0, 1], or strays past a tolerance,
+        computed on this GPU and in JavaScript side by side. The order of operations and the precision decide.`,
+    cite: 'Beyond the slides.',
+    webgl: true,
+    material: null,
+  },
+]);
+
+/** Panel ids in lecture order. */
+export const PANEL_IDS = Object.freeze(PANELS.map((p) => p.id));
+
+/** The manifest entry of a panel id, or undefined. */
+export function panelEntry(id) {
+  return PANELS.find((p) => p.id === id);
+}
+
+/** URL key prefix of a panel on the lecture page: the hero owns the short keys. */
+export function lecturePrefix(id) {
+  return panelEntry(id)?.hero ? '' : `${id}.`;
+}
+
+/** The lecture page's <section> for a panel: heading, lede with its citation, and the mount point. */
+export function sectionHtml(entry) {
+  const heading = entry.titleHtml ?? entry.title.replace(/&/g, '&amp;').replace(/</g, '&lt;');
+  return `<section data-panel="${entry.id}" id="${entry.id}" class="panel${entry.hero ? ' hero' : ''}" tabindex="-1" aria-labelledby="${entry.id}-title">
+      <h2 id="${entry.id}-title">${heading}</h2>
+      <p class="lede">
+        ${entry.lede.trim()}
+        <span class="cite">(${entry.cite})</span>
+      </p>
+      <div class="panel-mount"></div>
+    </section>`;
+}
+
+/** Where the lecture page's sections go in index.html. */
+export const SECTIONS_MARKER = '<!-- panel sections: written at build time from src/panels/manifest.js -->';
+
+/**
+ * What is wrong between the manifest, the panel folders that have an index.js (`folders`, their
+ * names) and the lecture page's source (`indexHtml`): each problem in words, [] when all agree.
+ * The build fails on any (vite.config.js), and a unit test checks the same.
+ */
+export function manifestProblems(folders, indexHtml) {
+  const problems = [];
+  const ids = new Set();
+  for (const entry of PANELS) {
+    if (ids.has(entry.id)) problems.push(`The id “${entry.id}” is in the manifest twice.`);
+    ids.add(entry.id);
+    if (!/^[a-z0-9]+(-[a-z0-9]+)*$/.test(entry.id)) problems.push(`The id “${entry.id}” is not lower-case words joined by hyphens.`);
+    if (!folders.includes(entry.id)) problems.push(`The panel “${entry.id}” has no module src/panels/${entry.id}/index.js.`);
+    for (const field of ['title', 'lede', 'cite']) {
+      if (typeof entry[field] !== 'string' || !entry[field].trim()) problems.push(`The panel “${entry.id}” has no ${field}.`);
+    }
+    if (typeof entry.webgl !== 'boolean') problems.push(`The panel “${entry.id}” does not say whether it uses WebGL.`);
+  }
+  for (const folder of folders) {
+    if (!ids.has(folder)) problems.push(`src/panels/${folder}/index.js is not in the manifest.`);
+  }
+  if (indexHtml !== undefined) {
+    if (!indexHtml.includes(SECTIONS_MARKER)) problems.push('index.html has no place for the panel sections.');
+    for (const match of indexHtml.matchAll(/data-panel="([^"]*)"/g)) {
+      problems.push(`index.html has a hand-written section “${match[1]}”: sections come from the manifest.`);
+    }
+  }
+  return problems;
+}

@@ -1,0 +1,95 @@
+// The DOM of the metals panel below its spheres: F0 swatches (buttons that pick the metal), the
+// per-channel table and the plot's caption. F0 is a linear reflectance; swatches show it encoded
+// to sRGB (three.js Color: linear working space in, sRGB hex out) with the linear numbers beside.
+import { Color } from 'three';
+import { el } from '../../ui/el.js';
+
+/** CSS colour of a linear RGB reflectance. */
+export function swatchColor(rgb) {
+  return `#${new Color(rgb[0], rgb[1], rgb[2]).getHexString()}`;
+}
+
+const CHANNEL_VARS = { red: '--c-red', green: '--c-green', blue: '--c-blue' };
+const CHANNEL_NAMES = ['Red', 'Green', 'Blue'];
+
+/**
+ * host: the panel element. metals: [{ id, name, f0 }]. onPick(id) runs when a metal's swatch is
+ * chosen (click, Enter or Space: they are buttons).
+ */
+export function buildMetalsDom(host, metals, onPick) {
+  const swatchRow = el('div', 'mt-swatches');
+  swatchRow.setAttribute('role', 'group');
+  swatchRow.setAttribute('aria-label', 'F0 per material (linear reflectance, red green blue); pick a metal');
+  const numbers = (rgb) => rgb.map((v) => v.toFixed(3)).join(' ');
+  // Three numbers that wrap as a group when a swatch is narrow (text stays "0.956 0.792 0.408").
+  const fillNumbers = (node, rgb) => {
+    const parts = rgb.map((v) => el('span', '', v.toFixed(3)));
+    node.replaceChildren(...parts.flatMap((part, i) => (i ? [' ', part] : [part])));
+  };
+
+  const dielectric = el('div', 'mt-swatch mt-dielectric');
+  dielectric.dataset.material = 'dielectric';
+  const dielectricChip = el('span', 'mt-chip');
+  const dielectricIndex = el('span', 'mt-index');
+  const dielectricF0 = el('span', 'mt-f0');
+  dielectric.append(dielectricChip, el('span', 'mt-name', 'Dielectric'), dielectricIndex, dielectricF0);
+  swatchRow.append(dielectric);
+
+  const buttons = metals.map((metal) => {
+    const button = el('button', 'mt-swatch');
+    button.type = 'button';
+    button.dataset.metal = metal.id;
+    button.setAttribute('aria-label', `${metal.name}: F0 ${numbers(metal.f0)}`);
+    const chip = el('span', 'mt-chip');
+    chip.style.background = swatchColor(metal.f0);
+    const f0 = el('span', 'mt-f0');
+    fillNumbers(f0, metal.f0);
+    button.append(chip, el('span', 'mt-name', metal.name), f0);
+    button.addEventListener('click', () => onPick(metal.id));
+    swatchRow.append(button);
+    return button;
+  });
+
+  const table = el('table', 'mt-table');
+  const head = el('tr');
+  for (const text of ['Channel', 'n + ik', 'F0', 'Max |exact − Schlick|', 'Lowest exact R (below F0)']) {
+    const th = el('th', '', text);
+    th.scope = 'col';
+    head.append(th);
+  }
+  const body = el('tbody');
+  table.append(el('caption', 'mt-caption'), el('thead'), body);
+  table.tHead.append(head);
+
+  const plotHost = el('div', 'mt-plot');
+  plotHost.setAttribute('aria-label', 'Reflectance against angle per colour channel: exact (solid) and Schlick (dashed)');
+  host.append(swatchRow, table, plotHost);
+
+  return {
+    plotHost,
+    /** Dielectric swatch (grey F0), and which metal is chosen. */
+    setSwatches({ n, f0 }, metalId) {
+      dielectricChip.style.background = swatchColor([f0, f0, f0]);
+      dielectricIndex.textContent = `n = ${n}`;
+      fillNumbers(dielectricF0, [f0, f0, f0]);
+      for (const b of buttons) b.setAttribute('aria-pressed', String(b.dataset.metal === metalId));
+    },
+    /** metal: { name, n, k, rgbNm }; stats from metalCurveStats. */
+    setTable(metal, stats) {
+      table.caption.textContent = `${metal.name}: exact conductor Fresnel vs Schlick with F0 per channel`;
+      body.replaceChildren(...stats.map((s, ch) => {
+        const row = el('tr');
+        const name = el('th', '', `${CHANNEL_NAMES[ch]} ${metal.rgbNm[ch]} nm`);
+        name.scope = 'row';
+        name.style.color = `var(${CHANNEL_VARS[s.channel]})`;
+        const dip = s.dip > 0
+          ? `${s.minimum.value.toFixed(4)} at ${s.minimum.theta.toFixed(2)}° (−${s.dip.toFixed(4)})`
+          : 'none: never below F0';
+        row.append(name, el('td', '', `${metal.n[ch].toFixed(3)} + ${metal.k[ch].toFixed(3)}i`),
+          el('td', '', s.f0.toFixed(4)),
+          el('td', '', `${s.maxError.value.toFixed(4)} at ${s.maxError.theta.toFixed(2)}°`), el('td', '', dip));
+        return row;
+      }));
+    },
+  };
+}

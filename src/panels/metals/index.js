@@ -1,0 +1,125 @@
+// Panel `metals`: a dielectric and a conductor side by side (lecture, "Fresnel reflection and
+// materials"). The metal's index is complex, n + ik, per RGB channel, so its F0 is high and
+// coloured; its exact reflectance is compared with Schlick's on the channel's own F0, and near
+// grazing the exact curve dips below F0, which Schlick cannot do.
+import { cosDeg } from '../../optics/angles.js';
+import { fresnelExact, normalIncidence } from '../../optics/fresnel.js';
+import { metalById, metalF0, metals } from '../../optics/materials.js';
+import { CHANNELS, metalCurveStats, metalCurves } from '../../optics/metalCurves.js';
+import { createLinePlot } from '../../ui/createLinePlot.js';
+import { createTwinStage } from '../shared/createTwinStage.js';
+import { transmittedIndex } from '../shared/indexPair.js';
+import { buildMetalsDom } from './buildMetalsDom.js';
+import fragment from './metals.frag.glsl?raw';
+import './styles.css';
+
+export const schema = {
+  metal: { type: 'enum', default: 'gold', options: Object.fromEntries(metals.map((m) => [m.id, m.name])), label: 'Metal (right)' },
+  fresnel: { type: 'enum', default: 'exact', options: { exact: 'Exact conductor Fresnel', schlick: "Schlick's approximation" }, label: 'Metal sphere uses' },
+  ...transmittedIndex({ what: 'dielectric, left', aliases: ['n'] }),
+};
+
+const SUN = { azimuth: 35, elevation: 40 };
+const SHORT = { red: 'R', green: 'G', blue: 'B' };
+const CHANNEL_VARS = ['--c-red', '--c-green', '--c-blue'];
+
+export function mount(root, ctx) {
+  const { values } = ctx;
+  const panel = document.createElement('div');
+  panel.className = 'mt-panel';
+  root.append(panel);
+  const uniforms = {
+    uN: { value: 1.5 }, uMetalN: { value: [1, 1, 1] }, uMetalK: { value: [0, 0, 0] },
+    uF0: { value: [0, 0, 0] }, uMethod: { value: 0 },
+  };
+  const stage = createTwinStage(panel, {
+    fragment,
+    uniforms,
+    onFrame: ctx.frameDrawn,
+    ariaLabel: 'Left: a dielectric sphere, dark head-on and bright only at its rim. Right: a metal sphere that '
+      + 'reflects most of the light at every angle, tinted by its colour.',
+    fallback: 'The spheres need WebGL2; the swatches, table and plot below still work.',
+  });
+  stage.setLight(SUN.azimuth, SUN.elevation);
+
+  const swatchMetals = metals.map((m) => ({ id: m.id, name: m.name, f0: metalF0(m) }));
+  const dom = buildMetalsDom(panel, swatchMetals, (metalId) => ctx.set({ metal: metalId }));
+
+  const plot = createLinePlot(dom.plotHost, {
+    xLabel: 'θ, angle of incidence', yLabel: 'Reflectance R', height: 340,
+    // uPlot range function (createLinePlot passes yRange through): from the lowest curve's
+    // tenth up to 1, so a dip of a few hundredths below a high F0 stays visible.
+    yRange: (_u, min) => [Math.min(0.9, Math.floor((Number.isFinite(min) ? min : 0) * 10) / 10), 1],
+    series: [
+      ...CHANNELS.map((c, ch) => ({ label: `Exact ${SHORT[c]}`, stroke: CHANNEL_VARS[ch], width: 3 })),
+      ...CHANNELS.map((c, ch) => ({ label: `Schlick ${SHORT[c]}`, stroke: CHANNEL_VARS[ch], dash: [10, 7] })),
+    ],
+  });
+
+  ctx.bind(ctx.gui.addFolder('Materials'), ['metal', 'fresnel', 'nT']);
+
+  let curves = null;
+  let stats = null;
+  let curvesFor = '';
+  function update() {
+    const metal = metalById(values.metal);
+    if (curvesFor !== metal.id) {
+      curvesFor = metal.id;
+      curves = metalCurves(metal);
+      stats = metalCurveStats(curves);
+      plot.setData([curves.theta, ...curves.exact, ...curves.schlick]);
+      // Where each channel's exact curve is lowest, when that is visibly below F0.
+      plot.setMarks(stats.filter((s) => s.dip > 0.002).map((s) => ({
+        x: s.minimum.theta, color: CHANNEL_VARS[CHANNELS.indexOf(s.channel)],
+        label: `${SHORT[s.channel]} dips ${s.dip.toFixed(3)} below F0`,
+      })));
+      dom.setTable(metal, stats);
+    }
+    const dielectricF0 = normalIncidence(1, values.nT);
+    dom.setSwatches({ n: values.nT, f0: dielectricF0 }, metal.id);
+    const method = values.fresnel === 'exact' ? 'exact' : 'Schlick';
+    stage.setLabels([`Dielectric, n = ${values.nT}`, `${metal.name}, ${method}`]);
+    if (!stage.view) return;
+    uniforms.uN.value = values.nT;
+    uniforms.uMetalN.value = [...metal.n];
+    uniforms.uMetalK.value = [...metal.k];
+    uniforms.uF0.value = [...curves.f0];
+    uniforms.uMethod.value = values.fresnel === 'exact' ? 0 : 1;
+    stage.render();
+  }
+  update();
+
+  return {
+    stage,
+    plot,
+    get curves() { return curves; },
+    get stats() { return stats; },
+    update,
+    describe() {
+      const metal = metalById(values.metal);
+      const list = (f) => stats.map(f).join(', ');
+      const deepest = stats.reduce((a, b) => (b.dip > a.dip ? b : a));
+      const dip = deepest.dip > 0
+        ? `The exact ${deepest.channel} curve dips to ${deepest.minimum.value.toFixed(4)} at ${deepest.minimum.theta.toFixed(1)}°, `
+          + `${deepest.dip.toFixed(4)} below F0, which Schlick cannot show.`
+        : 'The exact curves never fall below F0.';
+      return `${metal.name} (n + ik per channel): F0 is ${list((s) => s.f0.toFixed(3))} for red, green and blue, `
+        + `against ${normalIncidence(1, values.nT).toFixed(3)} for the dielectric of n = ${values.nT}. `
+        + `Schlick with these F0 is off by at most ${list((s) => `${s.maxError.value.toFixed(4)} at ${s.maxError.theta.toFixed(1)}°`)}. `
+        + `${dip} The metal sphere uses ${values.fresnel === 'exact' ? 'exact conductor Fresnel' : "Schlick's approximation"}.`;
+    },
+    csv() {
+      const columns = { theta_deg: curves.theta };
+      CHANNELS.forEach((c, ch) => { columns[`exact_${c}`] = curves.exact[ch]; });
+      CHANNELS.forEach((c, ch) => { columns[`schlick_${c}`] = curves.schlick[ch]; });
+      CHANNELS.forEach((c, ch) => { columns[`abs_error_${c}`] = curves.error[ch]; });
+      columns[`dielectric_n${values.nT}`] = curves.theta.map((t) => fresnelExact(cosDeg(t), 1, values.nT));
+      return { filename: `metals-${values.metal}.csv`, columns };
+    },
+    png: stage.view ? () => stage.view.toDataURL() : null,
+    dispose() {
+      plot.dispose();
+      stage.dispose();
+    },
+  };
+}

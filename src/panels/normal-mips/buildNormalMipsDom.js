@@ -1,0 +1,111 @@
+// The DOM of the normal-mips panel: the stage (canvas with its two captions and the ground-truth
+// sample counter), a line of key numbers, the mip-level legend of the overlay and the error table
+// (RMSE per technique, overall and per mip-level band). Styles: normal-mips.css (under .nm-panel).
+import { colormapGradient } from '../../ui/colormap.js';
+import { el } from '../../ui/el.js';
+import { TECHNIQUE_NAMES } from '../../normals/techniqueLayout.js';
+
+const fmt = (x) => (Number.isFinite(x) ? x.toFixed(4) : '–');
+
+let titles = 0; // ids for the error tables' titles (a page may mount the panel more than once)
+
+export function buildNormalMipsDom(host) {
+  const root = el('div', 'nm-panel');
+  const stage = el('div', 'nm-stage');
+  const canvas = el('canvas', 'nm-canvas');
+  canvas.setAttribute('role', 'img');
+  canvas.setAttribute('aria-label',
+    'A bumpy plane receding to the horizon under a low point light: on the left the highlight from the chosen mip technique, on the right the supersampled ground truth.');
+  const leftCap = el('div', 'nm-cap nm-cap-left');
+  const rightCap = el('div', 'nm-cap nm-cap-right');
+  const busy = el('div', 'nm-busy');
+  busy.setAttribute('role', 'status');
+  busy.hidden = true;
+  stage.append(canvas, leftCap, rightCap, busy);
+
+  const summary = el('p', 'nm-summary');
+  summary.setAttribute('aria-live', 'polite');
+  const legend = el('div', 'nm-legend');
+  const legendBar = el('span', 'nm-legend-bar');
+  legendBar.style.background = colormapGradient();
+  const legendLo = el('span', '', 'level 0');
+  const legendHi = el('span', '');
+  const legendLabel = el('span', 'nm-legend-label', 'Overlay / difference colours:');
+  legend.append(legendLabel, legendLo, legendBar, legendHi);
+
+  // The table's title sits outside its scrolling box, so it wraps to the column instead of
+  // scrolling away with a wide table; aria-labelledby keeps it the table's name.
+  const title = el('p', 'nm-errors-title', 'RMSE of each technique against the ground truth (tone-mapped RGB), over the plane and per mip-level band');
+  title.id = `nm-errors-title-${++titles}`;
+  const table = el('table', 'nm-errors');
+  table.setAttribute('aria-labelledby', title.id);
+  const thead = el('thead');
+  const tbody = el('tbody');
+  table.append(thead, tbody);
+  const shimmer = el('p', 'nm-shimmer');
+  shimmer.setAttribute('aria-live', 'polite');
+  const tableWrap = el('div', 'nm-table-wrap');
+  tableWrap.append(table);
+  const plotSlot = el('div', 'nm-plot-slot'); // the error-by-distance plot (normal-mipsPlot.js)
+  root.append(stage, summary, legend, title, tableWrap, plotSlot, shimmer);
+  host.append(root);
+
+  return {
+    stage,
+    root,
+    canvas,
+    plotSlot,
+    setCaptions(left, right) {
+      leftCap.textContent = left;
+      rightCap.textContent = right;
+      leftCap.hidden = !left;
+      rightCap.hidden = !right;
+    },
+    /** results: { technique: mean |Δ brightness| } or null (not measured for these settings, or measuring). */
+    setShimmer(results, measuring = false) {
+      if (measuring) {
+        shimmer.textContent = 'Shimmer meter: measuring every technique under four sub-pixel camera moves…';
+        return;
+      }
+      shimmer.textContent = results
+        ? `Shimmer (mean brightness change per pixel under a sub-pixel camera move, lower is steadier): ${
+          Object.entries(results).sort((a, b) => a[1] - b[1]).map(([t, v]) => `${TECHNIQUE_NAMES[t]} ${v.toFixed(4)}`).join(', ')}.`
+        : 'Shimmer meter: press “Measure shimmer” to compare how much each technique flickers when the camera moves by less than a pixel.';
+    },
+    /** A line over the stage while the chains build ('' hides it). */
+    setBusy(text) {
+      busy.textContent = text;
+      busy.hidden = !text;
+    },
+    setSummary(text) {
+      summary.textContent = text;
+    },
+    setLegend(hiText) {
+      legendHi.textContent = hiText;
+    },
+    /** errors: { technique: bandedRmse result } or null while the truth converges; current is highlighted. */
+    setErrors(errors, current, pendingText) {
+      thead.replaceChildren();
+      tbody.replaceChildren();
+      if (!errors) {
+        const row = el('tr');
+        const cell = el('td', 'nm-pending', pendingText);
+        row.append(cell);
+        tbody.append(row);
+        return;
+      }
+      const first = Object.values(errors)[0];
+      const used = first.bands.filter((b) => Object.values(errors).some((e) => e.bands[b.level].count > 0));
+      const head = el('tr');
+      head.append(el('th', '', 'Technique'), el('th', '', 'All'), ...used.map((b) => el('th', '', `λ ${b.level}`)));
+      thead.append(head);
+      const order = Object.entries(errors).sort((a, b) => a[1].rmse - b[1].rmse);
+      for (const [technique, e] of order) {
+        const row = el('tr', technique === current ? 'nm-current' : '');
+        row.dataset.technique = technique;
+        row.append(el('th', '', TECHNIQUE_NAMES[technique]), el('td', '', fmt(e.rmse)), ...used.map((b) => el('td', '', fmt(e.bands[b.level].rmse))));
+        tbody.append(row);
+      }
+    },
+  };
+}

@@ -1,0 +1,142 @@
+// Panel `polarization`: Rs, Rp and their mean (the exact unpolarized R) against θ, with Brewster's
+// angle (Rp = 0) and the critical angle marked, a readout at a chosen θ, and why a tool that shows
+// only Rs reads high at oblique angles. Curves from curves.js; point values from fresnel.js.
+import { brewsterAngle, criticalAngle, fresnelExact, fresnelPolarized } from '../../optics/fresnel.js';
+import { cosDeg, DEG } from '../../optics/angles.js';
+import { reflectanceCurves } from '../../optics/curves.js';
+import { createLinePlot } from '../../ui/createLinePlot.js';
+import { el } from '../../ui/el.js';
+import { brewsterMark, criticalMark, thetaMark } from '../../ui/plotMarks.js';
+import { addSwap, indexPair } from '../shared/indexPair.js';
+import './styles.css';
+
+export const schema = {
+  ...indexPair({ aliases: { nI: ['n1'], nT: ['n2'] } }),
+  theta: { type: 'number', default: 60, min: 0, max: 90, step: 0.01, label: 'Readout angle θ (°)' },
+};
+
+const SERIES = [
+  { label: 'Rs (s-polarized)', stroke: '--c-s', width: 3 },
+  { label: 'Rp (p-polarized)', stroke: '--c-p', width: 3 },
+  { label: 'Mean = exact unpolarized R', stroke: '--c-exact', width: 3.5, dash: [10, 6] },
+];
+
+/** Values at one angle: Rs, Rp (fresnelPolarized) and the unpolarized mean (fresnelExact). */
+function at(thetaDeg, nI, nT) {
+  const c = cosDeg(thetaDeg);
+  const { s, p } = fresnelPolarized(c, nI, nT);
+  return { s, p, mean: fresnelExact(c, nI, nT) };
+}
+
+function summaryItem(term) {
+  const wrap = el('div');
+  const dd = el('dd');
+  wrap.append(el('dt', '', term), dd);
+  return { wrap, dd };
+}
+
+export function mount(root, ctx) {
+  const { values } = ctx;
+  const panel = el('div', 'polarization-panel');
+  const summary = el('dl', 'pol-summary');
+  const items = {
+    brewster: summaryItem('Brewster angle'),
+    atBrewster: summaryItem('At Brewster'),
+    critical: summaryItem('Critical angle'),
+  };
+  summary.append(...Object.values(items).map((i) => i.wrap));
+  const plotHost = el('div', 'pol-plot');
+  plotHost.setAttribute('role', 'img');
+  plotHost.setAttribute('aria-label', 'Rs, Rp and their mean against the angle of incidence θ');
+  const readout = el('p', 'pol-readout');
+  readout.setAttribute('aria-live', 'polite');
+  // Why an Rs-only reading is high: Rs ≥ Rp at every angle for a dielectric (|rp| = |rs|·
+  // |cos(θ_i + θ_t)/cos(θ_i − θ_t)|, Hecht §4.6.2), so Rs is at least their mean; equal only head-on,
+  // at grazing incidence and under total internal reflection.
+  const note = el('p', 'pol-note',
+    'Some simulations and meters report only Rs, the reflectance for light polarized across the plane of '
+    + 'incidence. Sunlight and lamps are unpolarized: half their light is s and half is p, so what reflects is '
+    + 'the average of Rs and Rp. Rp is never larger than Rs and drops to zero at Brewster\'s angle, so an '
+    + 'Rs-only number reads too high at oblique angles. ');
+  const noteNumbers = el('strong', 'pol-note-numbers');
+  note.append(noteNumbers);
+  panel.append(summary, plotHost, readout, note);
+  root.append(panel);
+
+  const plot = createLinePlot(plotHost, {
+    xLabel: 'θ, angle of incidence', yLabel: 'Reflectance',
+    series: SERIES,
+    height: 340,
+  });
+
+  const folder = ctx.gui.addFolder('Interface and readout');
+  ctx.bind(folder, ['nI', 'nT', 'theta']);
+  folder.add({ go: () => ctx.set({ theta: Math.round((brewsterAngle(values.nI, values.nT) / DEG) * 100) / 100 }) }, 'go')
+    .name('Read at the Brewster angle');
+  addSwap(ctx, folder);
+
+  let curves = null;
+  let curvesKey = '';
+  let point = null;
+  let brewster = 0;
+  let critical = null;
+
+  function update() {
+    const { nI, nT, theta } = values;
+    const key = `${nI}|${nT}`;
+    if (key !== curvesKey) {
+      curvesKey = key;
+      curves = reflectanceCurves(nI, nT);
+      plot.setData([curves.theta, curves.s, curves.p, curves.exact]);
+      brewster = brewsterAngle(nI, nT) / DEG;
+      const c = criticalAngle(nI, nT);
+      critical = c === null ? null : c / DEG;
+      const b = at(brewster, nI, nT);
+      items.brewster.dd.textContent = `${brewster.toFixed(2)}°`;
+      items.atBrewster.dd.textContent = `Rp = ${b.p.toFixed(4)}, Rs = ${b.s.toFixed(4)}`;
+      items.critical.dd.textContent = critical === null ? 'none (n_i ≤ n_t)' : `${critical.toFixed(2)}°`;
+    }
+    plot.setMarks([brewsterMark(brewster), criticalMark(critical), thetaMark(theta)]);
+    point = at(theta, nI, nT);
+    readout.textContent = `At θ = ${theta.toFixed(2)}°   Rs = ${point.s.toFixed(4)}   Rp = ${point.p.toFixed(4)}   `
+      + `unpolarized mean = ${point.mean.toFixed(4)}`;
+    noteNumbers.textContent = explain(point, theta, nI, nT);
+  }
+
+  /** The sentence with this angle's numbers. */
+  function explain({ s, p, mean }, theta, nI, nT) {
+    if (nI === nT) return 'Here n_i = n_t: there is no interface and nothing reflects.';
+    if (s - mean < 5e-5) {
+      return `At ${theta.toFixed(2)}° the two agree (Rs = ${s.toFixed(4)}, mean = ${mean.toFixed(4)}): `
+        + (p > 0.9999 ? 'everything is reflected.' : 's and p reflect alike there.');
+    }
+    return `At ${theta.toFixed(2)}°: Rs = ${s.toFixed(4)} against the unpolarized ${mean.toFixed(4)}, `
+      + `${(s / mean).toFixed(2)} times too high (Rp = ${p.toFixed(4)}).`;
+  }
+  update();
+
+  return {
+    plot,
+    get point() { return point; },
+    update,
+    describe() {
+      const { nI, nT, theta } = values;
+      return `From n_i = ${nI} into n_t = ${nT}: at ${theta.toFixed(2)}° Rs = ${point.s.toFixed(4)}, `
+        + `Rp = ${point.p.toFixed(4)} and their mean, the unpolarized R, is ${point.mean.toFixed(4)}; `
+        + `Rp is 0 at the Brewster angle ${brewster.toFixed(2)}°`
+        + (critical === null ? '.' : `; past the critical angle ${critical.toFixed(2)}° both are 1.`);
+    },
+    csv() {
+      return {
+        filename: `polarization-nI${values.nI}-nT${values.nT}.csv`,
+        columns: { theta_deg: curves.theta, Rs: curves.s, Rp: curves.p, R_unpolarized: curves.exact },
+      };
+    },
+    /** The plot on the panel's background (uPlot's canvas is transparent). */
+    png: () => plot.toPng(),
+    dispose() {
+      plot.dispose();
+      panel.remove();
+    },
+  };
+}

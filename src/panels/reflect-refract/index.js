@@ -1,0 +1,108 @@
+// Panel `reflect-refract`: a flat water or glass surface from a steep to a grazing view. Each
+// pixel blends the reflected sky and the refracted pool floor by the exact Fresnel F at that
+// pixel's angle (reflect-refract.frag.glsl); the numbers are for the centre ray.
+import { createShaderView } from '../../gl/createShaderView.js';
+import { DEG } from '../../optics/angles.js';
+import { dielectrics } from '../../optics/materials.js';
+import { transmittedIndex } from '../shared/indexPair.js';
+import { startWebGL } from '../shared/startWebGL.js';
+import { centreRay, splitByElevation } from './model.js';
+import { buildReflectRefractDom } from './buildReflectRefractDom.js';
+import fragment from './reflect-refract.frag.glsl?raw';
+import './styles.css';
+
+export const schema = {
+  elevation: { type: 'number', default: 30, min: 2, max: 90, step: 0.1, label: 'View elevation ° (90 = straight down)' },
+  ...transmittedIndex({ what: 'surface', nT: 1.333, step: 0.0001, aliases: ['n'] }),
+  depth: { type: 'number', default: 1.5, min: 0.2, max: 5, step: 0.1, label: 'Pool depth (tiles)' },
+  layer: {
+    type: 'enum', default: 'both', label: 'Show',
+    options: { both: 'Both: F·sky + (1 − F)·floor', reflected: 'Reflected: F·sky', refracted: 'Refracted: (1 − F)·floor' },
+  },
+};
+
+const LAYERS = { both: 0, reflected: 1, refracted: 2 };
+// The scene: camera 6 tiles from the surface point under the centre of the view, 32° vertical
+// field of view; cream and terracotta tiles (linear RGB), warm so that they never look like sky.
+const CAMERA_DISTANCE = 6;
+const FOV_DEG = 32;
+export const TILE_COLOURS = Object.freeze({ a: [0.8, 0.62, 0.36], b: [0.45, 0.12, 0.05] });
+
+// The lecture's round values first, then measured dielectrics at 589 nm (materials.json).
+const PRESETS = [
+  { id: 'water-lecture', name: 'Water', n: 1.333 },
+  { id: 'glass-lecture', name: 'Glass', n: 1.5 },
+  ...dielectrics.filter((m) => m.id !== 'air'),
+];
+
+export function mount(root, ctx) {
+  const { values } = ctx;
+  const dom = buildReflectRefractDom(root);
+  const view = startWebGL(dom.stage, () => createShaderView(dom.canvas, {
+    fragment,
+    onFrame: ctx.frameDrawn,
+    uniforms: {
+      uElevation: { value: 0 },
+      uDistance: { value: CAMERA_DISTANCE },
+      uTanHalfFov: { value: Math.tan((FOV_DEG / 2) * DEG) },
+      uN: { value: 1.333 },
+      uDepth: { value: 1.5 },
+      uTile: { value: 1 },
+      uTileA: { value: [...TILE_COLOURS.a] },
+      uTileB: { value: [...TILE_COLOURS.b] },
+      uLayer: { value: 0 },
+      uSunDir: { value: [0, 1, 0] }, // declared by <environment>; the sun itself is not drawn
+    },
+  }), 'The picture needs WebGL2; the numbers below still work.');
+
+  const presetOptions = Object.fromEntries(PRESETS.map((p) => [`${p.name} (${p.n})`, p.id]));
+  presetOptions.Custom = 'custom';
+  const presetFor = (n) => PRESETS.find((p) => Math.abs(p.n - n) < 5e-7)?.id ?? 'custom';
+  const presetState = { material: presetFor(values.nT) };
+  ctx.bind(ctx.gui.addFolder('View'), ['elevation']);
+  const surface = ctx.gui.addFolder('Surface');
+  const preset = surface.add(presetState, 'material', presetOptions).name('Material')
+    .onChange((pid) => {
+      if (pid !== 'custom') ctx.set({ nT: PRESETS.find((p) => p.id === pid).n });
+    });
+  ctx.bind(surface, ['nT', 'depth']);
+  ctx.bind(ctx.gui.addFolder('Picture'), ['layer']);
+
+  let ray = null;
+  function update() {
+    ray = centreRay(values.elevation, values.nT);
+    dom.show(ray);
+    presetState.material = presetFor(values.nT);
+    preset.updateDisplay();
+    if (!view) return;
+    const u = view.uniforms;
+    u.uElevation.value = values.elevation * DEG;
+    u.uN.value = values.nT;
+    u.uDepth.value = values.depth;
+    u.uLayer.value = LAYERS[values.layer];
+    view.render();
+  }
+  update();
+
+  return {
+    view,
+    get ray() { return ray; },
+    update,
+    describe() {
+      return `Looking down at ${values.elevation.toFixed(1)}° above a surface of n_t = ${values.nT}: the centre ray is `
+        + `${ray.thetaDeg.toFixed(1)}° from the normal, so R = ${ray.R.toFixed(4)} of the light comes from the reflected sky `
+        + `and T = ${ray.T.toFixed(4)} from the floor, refracted to ${ray.thetaTDeg.toFixed(2)}° (${ray.band.label}).`;
+    },
+    csv() {
+      const { elevation, R, T } = splitByElevation(values.nT);
+      return {
+        filename: `reflect-refract-nT${values.nT}.csv`,
+        columns: { view_elevation_deg: elevation, theta_from_normal_deg: elevation.map((e) => 90 - e), R, T },
+      };
+    },
+    png: view ? () => view.toDataURL() : null,
+    dispose() {
+      view?.dispose();
+    },
+  };
+}

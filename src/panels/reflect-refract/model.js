@@ -1,0 +1,56 @@
+// The numbers of the reflect-refract panel, pure (no DOM) so Node tests can pin them: the split
+// of light between the reflected sky and the refracted floor for the ray through the centre of
+// the view, and the lecture's three words for how much reflection there is.
+// Light comes from air (n_i = 1) onto water or glass (n_t = n).
+import { fresnelExact, snellCosT } from '../../optics/fresnel.js';
+import { DEG } from '../../optics/angles.js';
+
+
+/**
+ * The lecture's captions ("Reflection vs. Refraction" slide), assigned by the reflected fraction R
+ * of the ray through the centre. The thresholds are this panel's reading of the photographs:
+ * under 10% the floor dominates the picture, from 40% the sky does.
+ */
+export const REFLECTION_BANDS = Object.freeze([
+  Object.freeze({ id: 'none', label: 'no reflection', below: 0.1 }),
+  Object.freeze({ id: 'some', label: 'some reflection', below: 0.4 }),
+  Object.freeze({ id: 'lots', label: 'lots of reflection', below: Infinity }),
+]);
+
+export function reflectionBand(R) {
+  return REFLECTION_BANDS.find((band) => R < band.below);
+}
+
+/**
+ * The centre ray of a camera looking down at `elevationDeg` above a flat surface: its angle from
+ * the normal is 90° − elevation, so cos θ = sin(elevation). R from the exact Fresnel formula,
+ * T = 1 − R (no absorption), θt from Snell's law (always exists: air into a denser medium).
+ */
+export function centreRay(elevationDeg, n) {
+  const cosI = Math.sin(elevationDeg * DEG);
+  const R = fresnelExact(cosI, 1, n);
+  const cosT = snellCosT(cosI, 1, n);
+  const sinT = Math.sqrt((1 - cosI) * (1 + cosI)) / n;
+  return {
+    thetaDeg: 90 - elevationDeg,
+    R,
+    T: 1 - R,
+    thetaTDeg: Math.atan2(sinT, cosT) / DEG,
+    band: reflectionBand(R),
+  };
+}
+
+/** R and T of the centre ray against the view elevation, for the CSV export. */
+export function splitByElevation(n, from = 1, to = 90, step = 0.5) {
+  const elevation = [];
+  const R = [];
+  const T = [];
+  for (let i = 0; from + i * step <= to + 1e-9; i += 1) {
+    const e = from + i * step;
+    const ray = centreRay(e, n);
+    elevation.push(e);
+    R.push(ray.R);
+    T.push(ray.T);
+  }
+  return { elevation, R, T };
+}

@@ -1,0 +1,123 @@
+// The table of the refractive-index panel: sort buttons in the header cells (with aria-sort), one
+// "Use" button per row, and the custom row in the footer. Rebuilt from data on every render, so the
+// DOM never disagrees with the values.
+import { el } from '../../ui/el.js';
+
+/** The table's columns, each a sort key of materialRows.js (SORT_KEYS). */
+export const COLUMNS = [
+  { key: 'name', label: 'Material' },
+  { key: 'n', label: 'n (589 nm)', numeric: true },
+  { key: 'speed', label: 'Speed c/n', numeric: true },
+  { key: 'r0', label: 'R0 from air', numeric: true },
+  { key: 'critical', label: 'Critical angle to air', numeric: true },
+  { key: 'source', label: 'Source' },
+];
+
+/** n with at least four decimals, and all the data has (air: 1.000293). */
+export function formatIndex(n) {
+  const text = String(Number(n.toFixed(6)));
+  const decimals = text.includes('.') ? text.split('.')[1].length : 0;
+  return decimals >= 4 ? text : n.toFixed(4);
+}
+
+/** 224850.3 → "224 850" with a narrow no-break space between thousands (SI style). */
+export function formatKmS(value) {
+  return Math.round(value).toString().replace(/\B(?=(\d{3})+(?!\d))/g, '\u202f');
+}
+
+/** Long paths may wrap after each '/' and inside the site name (a zero-width space), so the column stays narrow. */
+function breakable(text) {
+  return text.replaceAll('/', '/\u200b').replaceAll('refractiveindex.', 'refractiveindex.\u200b');
+}
+
+function cells(row) {
+  return [
+    formatIndex(row.n),
+    `${row.speed.toFixed(4)} c`,
+    row.r0.toFixed(3),
+    row.critical === null ? 'none' : `${row.critical.toFixed(1)}°`,
+  ];
+}
+
+export function buildIndexTable(host, { onSort, onUse }) {
+  const root = el('div', 'ri-panel');
+  const scroller = el('div', 'ri-scroll');
+  const table = el('table', 'ri-table');
+  const caption = el('caption', 'ri-caption',
+    'Dielectrics at 589 nm. Speed in km/s uses c = 299 792.458 km/s; R0 and the critical angle are for air taken as n = 1.');
+  const thead = el('thead');
+  const tbody = el('tbody');
+  const tfoot = el('tfoot');
+  table.append(caption, thead, tbody, tfoot);
+  scroller.append(table);
+  root.append(scroller);
+  host.append(root);
+
+  const headRow = el('tr');
+  const headers = {};
+  for (const column of COLUMNS) {
+    const th = el('th');
+    th.scope = 'col';
+    if (column.numeric) th.classList.add('ri-num');
+    const button = el('button', 'ri-sort');
+    button.type = 'button';
+    button.dataset.sort = column.key;
+    button.append(el('span', '', column.label), el('span', 'ri-sort-mark'));
+    button.addEventListener('click', () => onSort(column.key));
+    th.append(button);
+    headers[column.key] = { th, button };
+    headRow.append(th);
+  }
+  // The Apply column comes second, so it stays on screen when a narrow table scrolls sideways.
+  const useTh = el('th', '', 'Apply');
+  useTh.scope = 'col';
+  headRow.insertBefore(useTh, headers.n.th);
+  thead.append(headRow);
+
+  function rowElement(row, selected) {
+    const tr = el('tr', row.id === 'custom' ? 'ri-custom' : '');
+    tr.dataset.id = row.id;
+    const isSelected = row.id === selected;
+    if (isSelected) {
+      tr.classList.add('ri-selected');
+      tr.setAttribute('aria-current', 'true');
+    }
+    const name = el('th', 'ri-name', row.name);
+    name.scope = 'row';
+    const [n, speed, r0, critical] = cells(row);
+    const speedCell = el('td', 'ri-num');
+    speedCell.append(el('span', '', speed), el('span', 'ri-kms', `${formatKmS(row.speedKmS)} km/s`));
+    const useCell = el('td');
+    tr.append(name, useCell, el('td', 'ri-num ri-n', n), speedCell, el('td', 'ri-num ri-r0', r0),
+      el('td', 'ri-num ri-critical', critical), el('td', 'ri-source', breakable(row.source)));
+    const use = el('button', 'ri-use', isSelected ? 'In use' : 'Use');
+    use.type = 'button';
+    use.setAttribute('aria-pressed', String(isSelected));
+    use.setAttribute('aria-label', `Use ${row.name} (n = ${formatIndex(row.n)}) in every panel`);
+    use.addEventListener('click', () => onUse(row));
+    useCell.append(use);
+    return tr;
+  }
+
+  return {
+    table,
+    /** rows: sorted materials; custom: the custom row; state: { sort, dir, selected }. */
+    render(rows, custom, { sort, dir, selected }) {
+      for (const [key, { th }] of Object.entries(headers)) {
+        const active = key === sort;
+        th.setAttribute('aria-sort', active ? (dir === 'asc' ? 'ascending' : 'descending') : 'none');
+        th.querySelector('.ri-sort-mark').textContent = active ? (dir === 'asc' ? ' ▲' : ' ▼') : ' ↕';
+      }
+      // Keep keyboard focus on the same button across the rebuild.
+      const focused = root.contains(document.activeElement) ? document.activeElement : null;
+      const focusRow = focused?.closest('tr')?.dataset.id;
+      tbody.replaceChildren(...rows.map((row) => rowElement(row, selected)));
+      tfoot.replaceChildren(rowElement(custom, selected));
+      if (focused?.classList.contains('ri-use')) root.querySelector(`tr[data-id="${focusRow}"] .ri-use`)?.focus();
+      else if (focused?.classList.contains('ri-sort')) headers[focused.dataset.sort]?.button.focus();
+    },
+    dispose() {
+      root.remove();
+    },
+  };
+}

@@ -1,0 +1,84 @@
+// Panel `refractive-index`: the dielectrics of src/optics/materials.js in a sortable table (n,
+// speed c/n, R0 from air, critical angle to air, source), plus a live "Custom" row. "Use" applies
+// a material's n to every panel of the page. Rows come from src/optics/materialRows.js.
+import { dielectrics } from '../../optics/materials.js';
+import { customRow, materialRows, sortMaterialRows } from '../../optics/materialRows.js';
+import { buildIndexTable, COLUMNS } from './buildIndexTable.js';
+import './styles.css';
+
+const SELECTABLE = ['none', ...dielectrics.map((m) => m.id), 'custom'];
+
+export const schema = {
+  sort: { type: 'enum', default: 'n', options: Object.fromEntries(COLUMNS.map((c) => [c.key, c.label])), label: 'Sort by' },
+  dir: { type: 'enum', default: 'asc', options: { asc: 'Ascending', desc: 'Descending' }, label: 'Sort direction' },
+  selected: { type: 'enum', default: 'none', options: SELECTABLE, label: 'Material in use' },
+  customN: { type: 'number', default: 1.5, min: 1, max: 3, step: 0.0001, label: 'Custom n' },
+};
+
+export function mount(root, ctx) {
+  const { values } = ctx;
+  const rows = materialRows();
+  let custom = customRow(values.customN);
+  let shown = [];
+
+  // Choosing a row applies it to every panel of the page; the page-wide material marks its row
+  // here in turn (the manifest's materialSelect).
+  function choose(row) {
+    ctx.set({ selected: row.id });
+    ctx.applyMaterial({ id: row.id, name: row.name, n: row.n });
+  }
+
+  const table = buildIndexTable(root, {
+    onSort(key) {
+      ctx.set(values.sort === key ? { dir: values.dir === 'asc' ? 'desc' : 'asc' } : { sort: key, dir: 'asc' });
+    },
+    onUse: choose,
+  });
+
+  ctx.bind(ctx.gui.addFolder('Table'), ['customN', 'sort', 'dir']);
+
+  function update(keys = []) {
+    custom = customRow(values.customN);
+    shown = sortMaterialRows(rows, values.sort, values.dir);
+    table.render(shown, custom, { sort: values.sort, dir: values.dir, selected: values.selected });
+    // A custom material in use follows its control live.
+    if (keys.includes('customN') && values.selected === 'custom') {
+      ctx.applyMaterial({ id: 'custom', name: 'Custom', n: values.customN });
+    }
+  }
+  update();
+
+  const selectedRow = () => (values.selected === 'custom' ? custom : rows.find((r) => r.id === values.selected));
+
+  return {
+    table,
+    get rows() { return shown; },
+    update,
+    describe() {
+      const byN = sortMaterialRows(rows, 'n', 'asc');
+      const lo = byN[0];
+      const hi = byN[byN.length - 1];
+      const chosen = selectedRow();
+      return `${rows.length} materials, n from ${lo.n} (${lo.name}) to ${hi.n} (${hi.name}); `
+        + `${hi.name} reflects R0 = ${hi.r0.toFixed(3)} head-on, and light inside it cannot get out beyond ${hi.critical.toFixed(1)}°. `
+        + (chosen ? `In use: ${chosen.name}, n = ${chosen.n}, R0 = ${chosen.r0.toFixed(3)}.` : 'No material chosen yet.');
+    },
+    csv() {
+      const all = [...shown, custom];
+      return {
+        filename: 'refractive-index.csv',
+        columns: {
+          material: all.map((r) => r.id),
+          n_589nm: all.map((r) => r.n),
+          speed_fraction_of_c: all.map((r) => r.speed),
+          speed_km_per_s: all.map((r) => r.speedKmS),
+          R0_from_air: all.map((r) => r.r0),
+          critical_angle_deg: all.map((r) => (r.critical === null ? NaN : r.critical)),
+        },
+      };
+    },
+    dispose() {
+      table.dispose();
+    },
+  };
+}

@@ -1,0 +1,127 @@
+// The DOM of the speed-accuracy panel: the recommendation, a line about the error source (shown
+// while the GPU read-back runs or after it failed), the chart host, the benchmark bar (run,
+// cancel, progress, JSON export), the device line and the per-method table.
+import { el } from '../../ui/el.js';
+import { toDegrees } from '../../optics/angles.js';
+
+
+function button(text, className) {
+  const b = el('button', className, text);
+  b.type = 'button';
+  return b;
+}
+
+/** Codes to a short string: small values in scientific notation, NaN/∞ as words. */
+export function formatCodes(v) {
+  if (v === Infinity || Number.isNaN(v)) return 'NaN/∞';
+  if (v === 0) return '0';
+  return v < 0.01 ? v.toExponential(1) : v < 10 ? v.toFixed(2) : v.toFixed(1);
+}
+
+export function formatNs(spread) {
+  if (!spread || !Number.isFinite(spread.median)) return '–';
+  const f = (v) => (Math.abs(v) >= 100 ? v.toFixed(0) : Math.abs(v) >= 1 ? v.toFixed(2) : v.toPrecision(2));
+  return `${f(spread.median)} ns [${f(spread.min)}, ${f(spread.max)}]`;
+}
+
+export function buildSpeedAccuracyDom(host, { onRun, onCancel, onJson }) {
+  const root = el('div', 'sa-panel');
+  const advice = el('div', 'sa-advice');
+  advice.setAttribute('aria-live', 'polite');
+  const pick = el('p', 'sa-pick');
+  const reason = el('p', 'sa-reason');
+  const criterion = el('p', 'sa-criterion');
+  advice.append(pick, reason, criterion);
+
+  const source = el('p', 'sa-source');
+  source.setAttribute('role', 'status');
+  source.hidden = true;
+
+  const chartHost = el('div', 'sa-chart-host');
+  const legend = el('p', 'sa-legend',
+    'Filled dot: within the budget. Hollow dot: over it. ★ ringed: the recommendation. Bars: min to max over repeats. '
+    + 'The Pareto front joins the methods nothing else beats on both cost and error.');
+
+  const bench = el('div', 'sa-bench');
+  const run = button('Run benchmark', 'sa-run');
+  const cancel = button('Cancel', 'sa-cancel');
+  cancel.disabled = true;
+  const progress = el('progress', 'sa-progress');
+  progress.max = 1;
+  progress.value = 0;
+  progress.setAttribute('aria-label', 'Benchmark progress');
+  const status = el('span', 'sa-status');
+  status.setAttribute('role', 'status');
+  const json = button('Export JSON', 'sa-json');
+  bench.append(run, cancel, progress, status, json);
+  run.addEventListener('click', onRun);
+  cancel.addEventListener('click', onCancel);
+  json.addEventListener('click', onJson);
+
+  const device = el('p', 'sa-device');
+  const table = el('table', 'sa-table');
+  const caption = el('caption');
+  const thead = el('thead');
+  const tbody = el('tbody');
+  table.append(caption, thead, tbody);
+  const tableWrap = el('div', 'sa-table-wrap');
+  tableWrap.append(table);
+  const stage = el('div', 'sa-stage'); // off-screen: the frame-timing canvases live here while they run
+  stage.setAttribute('aria-hidden', 'true');
+
+  root.append(advice, source, chartHost, legend, bench, device, tableWrap, stage);
+  host.append(root);
+
+  return {
+    chartHost,
+    stage,
+    setAdvice({ label, sceneLabel, reasonText, criterionText }) {
+      pick.replaceChildren(el('span', 'sa-pick-scene', `Recommended for ${sceneLabel}: `), el('strong', 'sa-pick-method', label));
+      reason.textContent = reasonText;
+      criterion.textContent = criterionText;
+    },
+    /** A line about the error source; warning: styled as one. Empty text hides it. */
+    setSource(text, warning = false) {
+      source.textContent = text;
+      source.hidden = !text;
+      source.classList.toggle('sa-source-warning', warning);
+    },
+    setRunning(running) {
+      run.disabled = running;
+      cancel.disabled = !running;
+      if (!running) progress.value = 0;
+    },
+    setProgress(fraction, label) {
+      progress.value = Math.min(1, Math.max(0, fraction));
+      status.textContent = label;
+    },
+    setStatus(text) {
+      status.textContent = text;
+    },
+    setDevice(text) {
+      device.textContent = text;
+    },
+    /** rows: recommend()'s table plus { meanCodes, costText, caseText, onFront, recommended }. */
+    setTable(rows, { costHeader, captionText, budgetCodes }) {
+      caption.textContent = captionText;
+      const head = el('tr');
+      for (const h of ['Method', costHeader, 'Worst error (codes)', 'Where', 'Average (codes)', 'Max |ΔR|', 'Verdict']) {
+        const th = el('th', '', h);
+        th.scope = 'col';
+        head.append(th);
+      }
+      thead.replaceChildren(head);
+      tbody.replaceChildren(...rows.map((r) => {
+        const tr = el('tr', r.recommended ? 'sa-recommended' : '');
+        const name = el('th', '', r.label);
+        name.scope = 'row';
+        const where = r.nanCount > 0 ? `NaN at ${r.nanCount} samples`
+          : r.thetaAtMax === null ? '–' : `${toDegrees(r.thetaAtMax).toFixed(1)}°, ${r.caseText}`;
+        const verdict = `${r.passes ? 'within' : 'over'} ${budgetCodes} codes${r.onFront ? ', on the front' : ''}`;
+        tr.append(name, ...[r.costText, formatCodes(r.maxCodes), where, formatCodes(r.meanCodes),
+          Number.isFinite(r.max) ? r.max.toExponential(2) : 'NaN/∞', verdict].map((t) => el('td', '', t)));
+        return tr;
+      }));
+    },
+  };
+}

@@ -1,0 +1,104 @@
+// "Error measured by this GPU": every method of a scene's kind evaluated on a WebGL2 context over
+// the scene's domain (evaluateMethodsGpu: RGBA32F render, FLOAT read-back, NaN kept bit for bit),
+// turned into the advisor's statistics by gpuErrors.errorsFromValues. The panel holds no context
+// (usesWebGL = false): a measurement opens a small one and disposes it when done. Results are kept
+// for the page's session, per scene and precision; the benchmark's read-back seeds them too.
+import { createRenderer, WebGL2Unavailable } from '../../gl/createRenderer.js';
+import { createMethodsGpu, GpuFloatUnavailable, gpuPrecisionInfo } from '../../gl/evaluateMethodsGpu.js';
+import { deviceInfo } from '../../gl/timeMethodsGpu.js';
+import { domainExtra, domainInputs, errorsFromValues } from '../../optics/gpuErrors.js';
+import { methodsOfKind } from '../../optics/methods.js';
+
+const yieldToPage = () => new Promise((resolve) => { setTimeout(resolve, 0); });
+
+/**
+ * On a context the caller owns, every method of each scene's kind in each GLSL precision.
+ * Resolves to { errors: { [sceneId]: { [precision]: { [methodId]: stats } } }, probe
+ * (probePrecision: what mediump really is here), claimed (gpuPrecisionInfo: what the driver says),
+ * device (deviceInfo) }. Throws GpuFloatUnavailable without float render targets.
+ */
+export async function gpuErrorsOn(gl, scenes, precisions, { signal, onProgress } = {}) {
+  const gpu = createMethodsGpu(gl);
+  try {
+    const errors = {};
+    const total = scenes.reduce((n, s) => n + methodsOfKind(s.kind).length * precisions.length, 0);
+    let done = 0;
+    for (const scene of scenes) {
+      const inputs = domainInputs(scene);
+      errors[scene.id] = {};
+      for (const precision of precisions) {
+        errors[scene.id][precision] = {};
+        for (const method of methodsOfKind(scene.kind)) {
+          signal?.throwIfAborted();
+          const values = gpu.evaluate({ methodId: method.id, precision, inputs, extra: domainExtra(scene, method.id) });
+          errors[scene.id][precision][method.id] = errorsFromValues(scene, values);
+          done += 1;
+          onProgress?.(done, total, `Reading back ${method.id} (${precision}) on this GPU`);
+          await yieldToPage(); // one program compile at a time: the page stays responsive
+        }
+      }
+    }
+    return { errors, probe: gpu.probePrecision(), claimed: gpuPrecisionInfo(gl), device: deviceInfo(gl) };
+  } finally {
+    gpu.dispose();
+  }
+}
+
+const session = new Map(); // 'scene|precision' → Promise of { errors: { methodId: stats }, probe, claimed, device }
+const settled = new Map(); // the same, once resolved: read synchronously while drawing
+let lastProbe = null; // { probe, claimed, device } of the last measurement on this page
+
+/** Problems that will not go away by trying again on this page. */
+const permanent = (error) => error instanceof WebGL2Unavailable || error instanceof GpuFloatUnavailable;
+
+/** The cached measurement of a scene in a precision, or null when there is none (yet). */
+export function cachedGpuErrors(scene, precision) {
+  return settled.get(`${scene.id}|${precision}`) ?? null;
+}
+
+/** What mediump and highp are on this GPU, once anything has been measured here, or null. */
+export function gpuPrecisionProbe() {
+  return lastProbe;
+}
+
+/** Keeps gpuErrorsOn's result (e.g. the benchmark's) for the session. */
+export function rememberGpuErrors({ errors, probe, claimed, device }) {
+  lastProbe = { probe, claimed, device };
+  for (const [sceneId, byPrecision] of Object.entries(errors)) {
+    for (const [precision, byMethod] of Object.entries(byPrecision)) {
+      const key = `${sceneId}|${precision}`;
+      const entry = Object.freeze({ errors: byMethod, ...lastProbe });
+      settled.set(key, entry);
+      session.set(key, Promise.resolve(entry));
+    }
+  }
+}
+
+/**
+ * Measures a scene in one precision ('highp' | 'mediump') on a WebGL2 context opened for it and
+ * disposed after; resolves to { errors: { methodId: stats }, probe, claimed, device }. The same
+ * promise is returned for the rest of the session. Rejects with WebGL2Unavailable or
+ * GpuFloatUnavailable where the GPU cannot do it (kept: asking again gives the same answer).
+ */
+export function measureGpuErrors(scene, precision) {
+  const key = `${scene.id}|${precision}`;
+  if (!session.has(key)) {
+    const job = (async () => {
+      await yieldToPage(); // let the panel say "measuring" before the first compile
+      const canvas = document.createElement('canvas');
+      canvas.width = 1;
+      canvas.height = 1;
+      const renderer = createRenderer(canvas, { antialias: false, depth: false, stencil: false, alpha: false });
+      try {
+        const result = await gpuErrorsOn(renderer.getContext(), [scene], [precision]);
+        rememberGpuErrors(result);
+        return settled.get(key);
+      } finally {
+        renderer.dispose(); // releases the context and its place in the page's budget
+      }
+    })();
+    job.catch((error) => { if (!permanent(error)) session.delete(key); });
+    session.set(key, job);
+  }
+  return session.get(key);
+}

@@ -1,0 +1,107 @@
+// "Run benchmark": GPU cost per method (timeMethodsGpu), the GPU's own errors over the default
+// domains in highp and mediump (read back, speed-accuracyGpu), CPU cost per method
+// (timeMethodsCpu, in a worker: speed-accuracyCpu), and the hero's frame cost against three.js MeshPhysicalMaterial, one after the
+// other on the viewer's device, with progress and cancel; results kept for the session
+// (sessionStorage).
+import { createRenderer, WebGL2Unavailable } from '../../gl/createRenderer.js';
+import { deviceInfo, timeMethodsGpu } from '../../gl/timeMethodsGpu.js';
+import { benchResults, DEFAULT_DOMAIN, GPU_ERROR_KEYS } from '../../optics/benchResults.js';
+import { sceneById } from '../../optics/scenes.js';
+import { timeCpu } from './timeCpu.js';
+import { timeFrames } from './timeFrames.js';
+import { gpuErrorsOn, rememberGpuErrors } from './measureGpuErrors.js';
+
+/** Run sizes: 'normal' takes a few seconds on a GPU (longer on SwiftShader); 'tiny' is for tests. */
+export const BENCH_SIZES = Object.freeze({
+  normal: {
+    gpu: { size: 128, loops: 16, targetMs: 5, passes: 2, bestOf: 3, repeats: 5 },
+    cpu: { repeats: 5, minMs: 15, count: 2048 },
+    frames: { width: 900, height: 300, frames: 12, warmup: 3 },
+  },
+  tiny: {
+    gpu: { size: 8, loops: 2, targetMs: 1, passes: 1, bestOf: 2, repeats: 2 },
+    cpu: { repeats: 2, minMs: 1, count: 128 },
+    frames: { width: 150, height: 50, frames: 3, warmup: 1 },
+  },
+});
+
+const PHASES = { gpu: [0, 0.5], errors: [0.5, 0.6], cpu: [0.6, 0.8], frames: [0.8, 1] }; // share of the progress bar
+const CACHE_KEY = 'fresnel-lab:speed-accuracy:results';
+
+/**
+ * Runs every measurement. host: a laid-out element for the frame-timing canvases. Options:
+ * size ('normal' | 'tiny'), onProgress(fraction, label), signal (AbortSignal). Resolves to
+ * benchResults(); without WebGL2 the GPU and frame parts are null and the CPU is still timed;
+ * a GPU timing that fails (a shader the driver rejects) is reported in device.gpuError, a read-back
+ * that fails (no float render targets) in device.gpuReadbackError.
+ */
+export async function runBenchmark(host, { size = 'normal', onProgress, signal } = {}) {
+  const config = BENCH_SIZES[size];
+  if (!config) throw new RangeError(`unknown benchmark size ${size}`);
+  const report = (phase) => (done, total, label) => {
+    const [a, b] = PHASES[phase];
+    onProgress?.(a + ((b - a) * done) / Math.max(1, total), label ?? phase);
+  };
+  let gpu = null;
+  let gpuError = null;
+  let gpuErrors = null;
+  let gpuReadbackError = null;
+  let frames = null;
+  let renderer = null;
+  let device = null;
+  try {
+    renderer = createRenderer(document.createElement('canvas'), { antialias: false });
+  } catch (error) {
+    if (!(error instanceof WebGL2Unavailable)) throw error;
+  }
+  try {
+    if (renderer) {
+      device = deviceInfo(renderer.getContext());
+      try {
+        onProgress?.(0, 'Compiling the timing shaders');
+        gpu = await timeMethodsGpu(renderer.getContext(), { ...config.gpu, signal, onProgress: report('gpu') });
+      } catch (error) {
+        // A shader this GPU cannot compile must not hide the other numbers: say so instead.
+        if (error?.name === 'AbortError') throw error;
+        gpuError = error?.message ?? String(error);
+      }
+      try {
+        // The errors the GPU itself makes over the default domains, on the same context.
+        const scenes = [...new Set(Object.values(DEFAULT_DOMAIN))].map(sceneById);
+        const readBack = await gpuErrorsOn(renderer.getContext(), scenes, Object.keys(GPU_ERROR_KEYS), { signal, onProgress: report('errors') });
+        gpuErrors = readBack.errors;
+        rememberGpuErrors(readBack); // the panel's "Error measured by" needs no second read-back
+      } catch (error) {
+        if (error?.name === 'AbortError') throw error;
+        gpuReadbackError = error?.message ?? String(error);
+      }
+    }
+  } finally {
+    renderer?.dispose();
+  }
+  const cpu = await timeCpu({ ...config.cpu, signal, onProgress: report('cpu') });
+  if (renderer) frames = await timeFrames(host, { ...config.frames, signal, onProgress: report('frames') });
+  onProgress?.(1, 'Done');
+  return benchResults({
+    gpu, cpu, frames, gpuErrors,
+    meta: { date: new Date().toISOString(), userAgent: navigator.userAgent, config: { size }, gpuError, gpuReadbackError, device },
+  });
+}
+
+/** The results saved this session, or null. */
+export function loadCachedResults() {
+  try {
+    const saved = JSON.parse(sessionStorage.getItem(CACHE_KEY) ?? 'null');
+    return saved?.version && Array.isArray(saved.methods) ? saved : null;
+  } catch {
+    return null;
+  }
+}
+
+export function saveCachedResults(results) {
+  try {
+    sessionStorage.setItem(CACHE_KEY, JSON.stringify(results));
+  } catch {
+    // Storage blocked or full: the results still show until the page is left.
+  }
+}

@@ -1,0 +1,160 @@
+// Frame cost of the hero view (src/panels/spheres/createSphereTrio.js: three spheres with their own Fresnel
+// shader) against three spheres of three.js's MeshPhysicalMaterial, drawn the same way (one
+// sphere mesh, three viewports, the same sky dome, camera and canvas size), in the same run.
+// Each frame is drawn and fenced by a 1-pixel readPixels, and timed by the GPU timer query where
+// the browser offers it (GPU time only), else by wall clock (GPU time plus the same sync cost on
+// both sides); the median over frames is reported.
+import {
+  BackSide, Color, DirectionalLight, GLSL3, HemisphereLight, Mesh, MeshPhysicalMaterial, PerspectiveCamera,
+  PMREMGenerator, RawShaderMaterial, Scene, SphereGeometry, Vector2,
+} from 'three';
+import { createSphereTrio, SKY_SHADERS } from '../spheres/createSphereTrio.js';
+import { directionFromAngles } from '../../gl/directionFromAngles.js';
+import { cappedPixelRatio, createRenderer } from '../../gl/createRenderer.js';
+import { TIMER_QUERY, WALL_TIMER } from '../../gl/timeMethodsGpu.js';
+import { spreadOf } from '../../optics/timeMethodsCpu.js';
+import { schema as heroSchema } from '../spheres/schema.js';
+
+const defaults = Object.fromEntries(Object.entries(heroSchema).map(([key, spec]) => [key, spec.default]));
+const SUN = directionFromAngles(defaults.lightAz, defaults.lightEl);
+const nextFrame = () => new Promise((resolve) => { requestAnimationFrame(() => resolve()); });
+
+/** A canvas of this CSS size in host, laid out but not seen (ResizeObserver needs a real box). */
+function stageCanvas(host, width, height) {
+  const canvas = document.createElement('canvas');
+  canvas.className = 'sa-frame-canvas';
+  canvas.style.width = `${width}px`;
+  canvas.style.height = `${height}px`;
+  canvas.setAttribute('aria-hidden', 'true');
+  host.append(canvas);
+  return canvas;
+}
+
+/** GPU ms of one frame by EXT_disjoint_timer_query_webgl2, or NaN (disjoint: the result is void). */
+async function gpuTime(gl, ext, drawAndSync) {
+  const query = gl.createQuery();
+  gl.beginQuery(ext.TIME_ELAPSED_EXT, query);
+  drawAndSync();
+  gl.endQuery(ext.TIME_ELAPSED_EXT);
+  while (!gl.getQueryParameter(query, gl.QUERY_RESULT_AVAILABLE)) await new Promise((r) => { setTimeout(r, 0); });
+  const ms = gl.getParameter(ext.GPU_DISJOINT_EXT) ? NaN : gl.getQueryParameter(query, gl.QUERY_RESULT) / 1e6;
+  gl.deleteQuery(query);
+  return ms;
+}
+
+/** Frame times by the timer query where offered (as timeMethodsGpu), else by wall clock. */
+async function timeDraws(gl, drawAndSync, { frames, warmup, signal, now }) {
+  const ext = gl.getExtension(TIMER_QUERY);
+  for (let i = 0; i < warmup; i += 1) drawAndSync();
+  const samples = [];
+  for (let i = 0; i < frames; i += 1) {
+    signal?.throwIfAborted();
+    if (ext) {
+      samples.push(await gpuTime(gl, ext, drawAndSync));
+    } else {
+      const t0 = now();
+      drawAndSync();
+      samples.push(now() - t0);
+    }
+    if (i % 4 === 3) await nextFrame(); // let the page breathe (and the progress bar move)
+  }
+  return { msPerFrame: spreadOf(samples), samples, timer: ext ? TIMER_QUERY : WALL_TIMER };
+}
+
+/** The hero's own view, with its default parameters. */
+async function heroFrames(host, size, options) {
+  const canvas = stageCanvas(host, size.width, size.height);
+  const trio = createSphereTrio(canvas);
+  try {
+    trio.setParams({
+      nI: defaults.nI, nT: defaults.nT, kd: defaults.kd, ks: defaults.ks, sunDir: SUN, envStrength: defaults.env, errScale: 0.05,
+    });
+    trio.setView({ azimuth: defaults.viewAz, elevation: defaults.viewEl, distance: defaults.viewDist }, { silent: true });
+    await nextFrame(); // the ResizeObserver sizes the drawing buffer
+    await nextFrame();
+    const pixels = trio.renderer.getDrawingBufferSize(new Vector2());
+    const result = await timeDraws(trio.renderer.getContext(), () => trio.readPixel(1, 1), options);
+    return { ...result, pixels: pixels.x * pixels.y };
+  } finally {
+    trio.dispose();
+    canvas.remove();
+  }
+}
+
+/** Three MeshPhysicalMaterial spheres (a clear-coated red plastic, like the hero's), lit by the
+ *  same sun and by an environment prefiltered from the same sky. */
+async function physicalFrames(host, size, options) {
+  const canvas = stageCanvas(host, size.width, size.height);
+  const renderer = createRenderer(canvas);
+  const disposables = [];
+  try {
+    renderer.setScissorTest(true);
+    renderer.setPixelRatio(cappedPixelRatio(size.width, size.height, window.devicePixelRatio));
+    renderer.setSize(size.width, size.height, false);
+    const skyUniforms = { uSunDir: { value: SUN.clone() }, uEnvStrength: { value: defaults.env } };
+    const skyMaterial = new RawShaderMaterial({
+      glslVersion: GLSL3, vertexShader: SKY_SHADERS.vertex, fragmentShader: SKY_SHADERS.fragment,
+      uniforms: skyUniforms, side: BackSide, depthWrite: false,
+    });
+    const skyGeometry = new SphereGeometry(40, 32, 16);
+    const sky = new Mesh(skyGeometry, skyMaterial);
+    sky.renderOrder = -1;
+    const pmrem = new PMREMGenerator(renderer);
+    const skyScene = new Scene().add(new Mesh(skyGeometry, skyMaterial));
+    const environment = pmrem.fromScene(skyScene, 0, 0.1, 100, { size: 64 });
+    const geometry = new SphereGeometry(1, 96, 64);
+    const material = new MeshPhysicalMaterial({
+      color: new Color(defaults.kd), roughness: 0.5, clearcoat: 1, clearcoatRoughness: 0.02, ior: defaults.nT,
+    });
+    disposables.push(skyMaterial, skyGeometry, pmrem, environment, geometry, material);
+    const scene = new Scene();
+    scene.environment = environment.texture;
+    const sun = new DirectionalLight(0xffffff, 2);
+    sun.position.copy(SUN);
+    scene.add(sky, new Mesh(geometry, material), sun, new HemisphereLight(0xbfd8ff, 0x404040, 0.4));
+    const camera = new PerspectiveCamera(28, 1, 0.1, 100);
+    camera.position.copy(directionFromAngles(defaults.viewAz, defaults.viewEl)).multiplyScalar(defaults.viewDist);
+    camera.lookAt(0, 0, 0);
+    const buffer = renderer.getDrawingBufferSize(new Vector2());
+    const gl = renderer.getContext();
+    const pixel = new Uint8Array(4);
+    const draw = () => {
+      const w = size.width / 3;
+      camera.aspect = w / size.height;
+      camera.updateProjectionMatrix();
+      renderer.clear();
+      for (let i = 0; i < 3; i += 1) {
+        renderer.setViewport(i * w, 0, w, size.height);
+        renderer.setScissor(i * w, 0, w, size.height);
+        renderer.render(scene, camera);
+      }
+      gl.readPixels(1, 1, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+    };
+    const result = await timeDraws(gl, draw, options);
+    return { ...result, pixels: buffer.x * buffer.y };
+  } finally {
+    for (const d of disposables) d.dispose();
+    renderer.dispose();
+    canvas.remove();
+  }
+}
+
+/**
+ * Times both views at width × height CSS pixels in host (a laid-out element; the canvases are
+ * added and removed). Options: frames, warmup, signal, onProgress(done, total, label), now.
+ * Resolves to { spheres, threePhysical (each { msPerFrame: { median, min, max }, samples,
+ * pixels, timer }), ratio: physical median / spheres median, width, height }.
+ */
+export async function timeFrames(host, {
+  width = 900, height = 300, frames = 12, warmup = 3, signal, onProgress, now = () => performance.now(),
+} = {}) {
+  const size = { width, height };
+  const options = { frames, warmup, signal, now };
+  onProgress?.(0, 2, 'Frame cost: the hero spheres');
+  const spheres = await heroFrames(host, size, options);
+  signal?.throwIfAborted();
+  onProgress?.(1, 2, 'Frame cost: three.js MeshPhysicalMaterial');
+  const threePhysical = await physicalFrames(host, size, options);
+  onProgress?.(2, 2, 'Frame cost done');
+  return { spheres, threePhysical, ratio: threePhysical.msPerFrame.median / spheres.msPerFrame.median, width, height };
+}

@@ -1,0 +1,38 @@
+// The hero's R(θ) plot: exact, Schlick, Rs, Rp and the error, with the Brewster and critical
+// angles marked (the range past the critical angle shaded) and an optional θ from a hovered pixel.
+import { createLinePlot } from '../../ui/createLinePlot.js';
+import { brewsterMark, criticalMark, thetaMark } from '../../ui/plotMarks.js';
+
+export const R_SERIES = [
+  { label: 'Exact', stroke: '--c-exact', width: 3.5 },
+  { label: 'Schlick', stroke: '--c-schlick', width: 3.5, dash: [12, 6] },
+  { label: 'Rs', stroke: '--c-s', width: 2, dash: [3, 4] },
+  { label: 'Rp', stroke: '--c-p', width: 2, dash: [10, 4, 3, 4] },
+  { label: '|Exact − Schlick|', stroke: '--c-error', width: 2.5 },
+];
+
+export function createRPlot(container) {
+  const lines = createLinePlot(container, {
+    xLabel: 'θ, angle from the normal (degrees)', yLabel: 'Reflectance R', series: R_SERIES, height: 340,
+  });
+  let landmarks = { brewster: null, critical: null };
+  let hover = null;
+  const refresh = () => lines.setMarks([
+    brewsterMark(landmarks.brewster),
+    criticalMark(landmarks.critical),
+    hover != null && thetaMark(hover, `Pixel θ ${hover.toFixed(1)}°`),
+  ]);
+  return {
+    get plot() { return lines.plot; },
+    setCurves(curves, next) {
+      landmarks = next;
+      lines.setData([curves.theta, curves.exact, curves.schlick, curves.s, curves.p, curves.error]);
+      refresh();
+    },
+    setHover(theta) {
+      hover = theta;
+      refresh();
+    },
+    dispose: () => lines.dispose(),
+  };
+}

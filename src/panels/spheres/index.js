@@ -1,0 +1,136 @@
+// Hero panel `spheres`: exact Fresnel vs Schlick on three spheres (exact, Schlick, error heatmap),
+// one camera and light, with the live R(θ) plot below. Hovering a sphere marks that pixel's θ.
+import { colormapGradient } from '../../ui/colormap.js';
+import { angle as formatAngle } from '../../ui/format.js';
+import { directionFromAngles } from '../../gl/directionFromAngles.js';
+import { DEG } from '../../optics/angles.js';
+import { fresnelExact, fresnelSchlick, brewsterAngle, criticalAngle, normalIncidence } from '../../optics/fresnel.js';
+import { maxError, niceCeil, reflectanceCurves } from '../../optics/curves.js';
+import { indexPresets } from '../shared/indexPresets.js';
+import { addSwap } from '../shared/indexPair.js';
+import { startWebGL } from '../shared/startWebGL.js';
+import { createRPlot } from './createRPlot.js';
+import { createSphereTrio } from './createSphereTrio.js';
+import { buildSpheresDom } from './buildSpheresDom.js';
+import { schema } from './schema.js';
+
+export { schema };
+
+const VIEW_KEYS = ['viewAz', 'viewEl', 'viewDist'];
+
+export function mount(root, ctx) {
+  const { values } = ctx;
+  const dom = buildSpheresDom(root);
+  const plot = createRPlot(dom.plot);
+  const trio = startWebGL(dom.stage, () => createSphereTrio(dom.canvas, { onChange: onViewChange, onFrame: ctx.frameDrawn }),
+    'The spheres need WebGL2; the plot below still works.');
+
+  // Controls: index presets (derived from the indices, so the URL holds only n), then the schema.
+  const presets = indexPresets();
+  const presetState = { matI: presets.idFor(values.nI), matT: presets.idFor(values.nT) };
+  const optics = ctx.gui.addFolder('Indices of refraction');
+  const presetI = optics.add(presetState, 'matI', presets.options).name('Incident side')
+    .onChange((pid) => pid !== 'custom' && ctx.set({ nI: presets.index(pid) }));
+  const presetT = optics.add(presetState, 'matT', presets.options).name('Sphere material')
+    .onChange((pid) => pid !== 'custom' && ctx.set({ nT: presets.index(pid) }));
+  ctx.bind(optics, ['nI', 'nT']);
+  addSwap(ctx, optics, 'Swap n_i ↔ n_t (look out of the glass)');
+  ctx.bind(ctx.gui.addFolder('Look'), ['kd', 'ks', 'lightAz', 'lightEl', 'env', 'errScale']);
+  ctx.bind(ctx.gui.addFolder('Camera (or drag / arrow keys on the spheres)').close(), VIEW_KEYS);
+
+  function onViewChange(view) {
+    ctx.set({
+      viewAz: Math.round(view.azimuth * 10) / 10,
+      viewEl: Math.round(view.elevation * 10) / 10,
+      viewDist: Math.round(view.distance * 100) / 100,
+    });
+  }
+
+  let curvesKey = '';
+  let curves = null;
+  let worst = null;
+  let errScale = 0.05;
+
+  function update() {
+    const { nI, nT } = values;
+    const key = `${nI}|${nT}`;
+    if (key !== curvesKey) {
+      curvesKey = key;
+      curves = reflectanceCurves(nI, nT);
+      worst = maxError(curves);
+      const critical = criticalAngle(nI, nT);
+      const brewster = brewsterAngle(nI, nT) / DEG;
+      plot.setCurves(curves, { brewster, critical: critical === null ? null : critical / DEG });
+      dom.setSummary([
+        ['R0', normalIncidence(nI, nT).toFixed(5)],
+        ['Brewster', formatAngle(brewster)],
+        ['Critical', critical === null ? 'none (n_i ≤ n_t)' : formatAngle(critical / DEG)],
+        ['Max |exact − Schlick|', `${worst.value.toFixed(4)} at ${formatAngle(worst.theta)}`],
+      ]);
+    }
+    errScale = values.errScale === 'auto' ? niceCeil(worst.value) : Number(values.errScale);
+    dom.setLegend(errScale, colormapGradient());
+    presetState.matI = presets.idFor(nI);
+    presetState.matT = presets.idFor(nT);
+    presetI.updateDisplay();
+    presetT.updateDisplay();
+    if (!trio) return;
+    const view = trio.view;
+    if (view.azimuth !== values.viewAz || view.elevation !== values.viewEl || view.distance !== values.viewDist) {
+      trio.setView({ azimuth: values.viewAz, elevation: values.viewEl, distance: values.viewDist }, { silent: true });
+    }
+    trio.setParams({
+      nI, nT, kd: values.kd, ks: values.ks, envStrength: values.env, errScale,
+      sunDir: directionFromAngles(values.lightAz, values.lightEl),
+    });
+  }
+
+  // Hovering a sphere: its θ on the plot and the numbers at that pixel.
+  const onHover = (event) => {
+    const hit = trio?.pick(event.clientX, event.clientY);
+    if (!hit) return onLeave();
+    const theta = Math.acos(hit.cosTheta) / DEG;
+    const exact = fresnelExact(hit.cosTheta, values.nI, values.nT);
+    const schlick = fresnelSchlick(hit.cosTheta, values.nI, values.nT);
+    dom.setReadout({ theta, exact, schlick, error: Math.abs(exact - schlick) });
+    plot.setHover(theta);
+  };
+  const onLeave = () => {
+    dom.setReadout(null);
+    plot.setHover(null);
+  };
+  dom.canvas.addEventListener('pointermove', onHover);
+  dom.canvas.addEventListener('pointerleave', onLeave);
+  update();
+
+  return {
+    trio,
+    plot,
+    get curves() { return curves; },
+    get errScale() { return errScale; },
+    update,
+    describe() {
+      const at60 = fresnelExact(Math.cos(60 * DEG), values.nI, values.nT);
+      const s60 = fresnelSchlick(Math.cos(60 * DEG), values.nI, values.nT);
+      const critical = criticalAngle(values.nI, values.nT);
+      return `From n_i = ${values.nI} into n_t = ${values.nT}: R at 0° is ${normalIncidence(values.nI, values.nT).toFixed(4)}; `
+        + `R at 60° is ${at60.toFixed(4)} exact and ${s60.toFixed(4)} by Schlick; `
+        + `${critical === null ? 'no critical angle' : `critical angle ${formatAngle(critical / DEG)}`}; `
+        + `the largest error of Schlick is ${worst.value.toFixed(4)} at ${formatAngle(worst.theta)}.`;
+    },
+    csv() {
+      const { theta, exact, schlick, s, p, error } = curves;
+      return {
+        filename: `fresnel-nI${values.nI}-nT${values.nT}.csv`,
+        columns: { theta_deg: theta, R_exact: exact, R_schlick: schlick, Rs: s, Rp: p, abs_error: error },
+      };
+    },
+    png: trio ? () => trio.toDataURL() : null,
+    dispose() {
+      dom.canvas.removeEventListener('pointermove', onHover);
+      dom.canvas.removeEventListener('pointerleave', onLeave);
+      trio?.dispose();
+      plot.dispose();
+    },
+  };
+}

@@ -1,0 +1,228 @@
+// Panel `stability`: where each dielectric Fresnel method fails, over θ 0°–90° × n_i/n_t
+// 0.4–2.5 (both axes linear), on this GPU (RGBA32F read-back, classified in JS) beside the
+// JavaScript emulation (stabilityMap.classify). The precision picks the pair: GPU highp beside JS
+// float32 (or float64), GPU mediump beside JS float16. Whether mediump really is half precision
+// here is measured by rendering 1 + 2^-f, not taken from the driver, whose answer Safari/iOS has
+// got wrong (webglfundamentals "WebGL Precision Issues").
+import { createRenderer, WebGL2Unavailable } from '../../gl/createRenderer.js';
+import { disposeMethodsGpu, GpuFloatUnavailable, gpuPrecisionInfo, methodsGpu } from '../../gl/evaluateMethodsGpu.js';
+import { cellAt, classifyGrid, criticalAngleDeg, gridInputs } from '../../optics/classifyGrid.js';
+import { invisibleThreshold } from '../../optics/advisor.js';
+import { methodById, methodsOfKind } from '../../optics/methods.js';
+import { contextFor } from '../../optics/rounding.js';
+import { classify, classifyValue, CLASS_NAMES } from '../../optics/stabilityMap.js';
+import { buildStabilityDom, CLASS_LABELS } from './buildStabilityDom.js';
+import { drawMap } from './drawMap.js';
+import { composePng } from './composePng.js';
+import './styles.css';
+
+const DIELECTRICS = methodsOfKind('dielectric');
+
+export const schema = {
+  method: { type: 'enum', default: 'exact-cg', options: Object.fromEntries(DIELECTRICS.map((m) => [m.id, m.label])), label: 'Method' },
+  precision: {
+    type: 'enum', default: 'mediump', label: 'Precision',
+    options: { fp64: 'JS float64', fp32: 'JS float32', fp16: 'JS float16', highp: 'GPU highp', mediump: 'GPU mediump' },
+  },
+  tolerance: { type: 'number', default: invisibleThreshold(), min: 0, max: 0.5, step: 1e-7, label: 'Tolerance |R − R_exact|' },
+};
+
+/** The two maps a precision shows: the GPU qualifier, the JS context, and which one was chosen. */
+export function pairFor(precision) {
+  const half = precision === 'fp16' || precision === 'mediump';
+  return {
+    gpu: half ? 'mediump' : 'highp',
+    js: precision === 'fp64' ? 'fp64' : half ? 'fp16' : 'fp32',
+    selected: precision === 'highp' || precision === 'mediump' ? 'gpu' : 'js',
+  };
+}
+
+const fmt = (v) => (Number.isFinite(v) ? v.toPrecision(6) : String(v));
+const failing = (map) => map.width * map.height - map.counts.fine;
+
+export function mount(root, ctx) {
+  const { values } = ctx;
+  const dom = buildStabilityDom(root);
+  let renderer = null;
+  let gpu = null;
+  let gpuProblem = '';
+  let probe = null;
+  let claimed = null;
+  try {
+    renderer = createRenderer(document.createElement('canvas'), { antialias: false, depth: false, stencil: false });
+    gpu = methodsGpu(renderer.getContext());
+    probe = gpu.probePrecision();
+    claimed = gpuPrecisionInfo(renderer.getContext());
+    ctx.frameDrawn();
+  } catch (error) {
+    if (!(error instanceof WebGL2Unavailable || error instanceof GpuFloatUnavailable)) throw error;
+    gpuProblem = `${error.message} The GPU map needs WebGL2 with float render targets; the JavaScript map still works.`;
+  }
+
+  const folder = ctx.gui.addFolder('Map');
+  ctx.bind(folder, ['method', 'precision', 'tolerance']);
+
+  const gpuValues = new Map(); // 'method|qualifier' → Float32Array (independent of the tolerance)
+  let maps = { gpu: null, js: null };
+  let pair = pairFor(values.precision);
+  let probeCell = null;
+  const layouts = {};
+
+  function gpuMap(grid) {
+    if (!gpu) return null;
+    const key = `${values.method}|${pair.gpu}`;
+    if (!gpuValues.has(key)) {
+      try {
+        gpuValues.set(key, gpu.evaluate({ methodId: values.method, precision: pair.gpu, inputs: gridInputs(grid) }));
+      } catch (error) { // a lost context, say: the JavaScript map still stands
+        gpuProblem = `The GPU evaluation failed: ${error.message}`;
+        return null;
+      }
+      ctx.frameDrawn();
+    }
+    return { ...classifyGrid(gpuValues.get(key), grid, { methodId: values.method, precision: pair.gpu }), values: gpuValues.get(key) };
+  }
+
+  function note() {
+    if (!gpu || !maps.gpu) return gpuProblem;
+    const claim = claimed?.mediump ? ` (the driver claims ${claimed.mediump.precision + 1} bits; not trusted, measured instead)` : '';
+    if (probe.mediumpIsFullPrecision) {
+      return `mediump runs at full precision on this GPU: 1 + 2⁻¹² ≠ 1, ${probe.mediumpBits} significand bits${claim}. `
+        + 'Its map matches highp; the JavaScript float16 map shows what a phone GPU with true half precision does.';
+    }
+    return `mediump runs at reduced precision on this GPU: ${probe.mediumpBits} significand bits (float16 has 11)${claim}.`;
+  }
+
+  function draw() {
+    for (const side of ['gpu', 'js']) {
+      if (maps[side]) layouts[side] = drawMap(dom[side].canvas, maps[side], probeCell);
+    }
+  }
+
+  const fullMediump = () => Boolean(probe?.mediumpIsFullPrecision && pair.gpu === 'mediump');
+
+  function sideTitle(side) {
+    return side === 'gpu' ? `On this GPU · ${pair.gpu}` : `JavaScript · ${contextFor(pair.js).name}`;
+  }
+
+  function update() {
+    pair = pairFor(values.precision);
+    const method = methodById(values.method);
+    maps.js = classify(values.method, pair.js, { tolerance: values.tolerance });
+    maps.gpu = gpuMap(maps.js);
+    dom.setNote(note());
+    for (const side of ['gpu', 'js']) {
+      const map = maps[side];
+      dom[side].setTitle(sideTitle(side), pair.selected === side);
+      dom[side].setCounts(map);
+      if (map) {
+        dom[side].canvas.setAttribute('aria-label', `Stability map of ${method.label}, ${sideTitle(side)}: `
+          + `${failing(map)} of ${map.width * map.height} cells fail. Arrow keys move the probe.`);
+      }
+    }
+    dom.gpu.showMessage(maps.gpu ? '' : gpuProblem);
+    draw();
+    readout();
+  }
+
+  function readout() {
+    if (!probeCell || !maps.js) return dom.setReadout('');
+    const cell = cellAt(maps.js, probeCell.i, probeCell.j);
+    const method = methodById(values.method);
+    const critical = criticalAngleDeg(cell.ratio);
+    const parts = [`θ = ${cell.thetaDeg.toFixed(2)}°, n_i/n_t = ${cell.ratio.toFixed(3)}`
+      + `${critical === null ? '' : ` (θc = ${critical.toFixed(2)}°)`}`, `exact R = ${fmt(cell.reference)}`];
+    const k = cell.j * maps.js.width + cell.i;
+    if (maps.gpu) parts.push(`GPU ${pair.gpu}: ${fmt(maps.gpu.values[k])} (${CLASS_LABELS[CLASS_NAMES[maps.gpu.cells[k]]]})`);
+    const jsValue = method.evaluate(pair.js, cell.cos, cell.ratio, 1);
+    const jsClass = CLASS_NAMES[classifyValue(jsValue, cell.reference, values.tolerance)];
+    parts.push(`JS ${contextFor(pair.js).label}: ${fmt(jsValue)} (${CLASS_LABELS[jsClass]})`);
+    dom.setReadout(parts.join(' · '));
+  }
+
+  function setProbe(cell) {
+    probeCell = cell;
+    draw();
+    readout();
+  }
+
+  const onMove = (side) => (event) => {
+    const rect = dom[side].canvas.getBoundingClientRect();
+    const cell = layouts[side]?.cellAt(event.clientX - rect.left, event.clientY - rect.top);
+    if (cell && (cell.i !== probeCell?.i || cell.j !== probeCell?.j)) setProbe(cell);
+  };
+  const onKey = (event) => {
+    const map = maps.js;
+    const cell = probeCell ?? { i: Math.floor(map.width / 2), j: Math.floor(map.height / 2) };
+    const step = event.shiftKey ? 10 : 1;
+    const moves = { ArrowLeft: [-step, 0], ArrowRight: [step, 0], ArrowDown: [0, -step], ArrowUp: [0, step], Home: [-map.width, 0], End: [map.width, 0] };
+    if (!(event.key in moves)) return;
+    event.preventDefault();
+    const [di, dj] = moves[event.key];
+    setProbe({ i: Math.min(map.width - 1, Math.max(0, cell.i + di)), j: Math.min(map.height - 1, Math.max(0, cell.j + dj)) });
+  };
+  const listeners = ['gpu', 'js'].map((side) => {
+    const move = onMove(side);
+    dom[side].canvas.addEventListener('pointermove', move);
+    dom[side].canvas.addEventListener('keydown', onKey);
+    return [dom[side].canvas, move];
+  });
+  const redraw = () => draw();
+  const resizeObserver = new ResizeObserver(redraw);
+  resizeObserver.observe(dom.maps);
+  window.addEventListener('fresnel-lab:theme', redraw);
+  update();
+
+  return {
+    get maps() { return maps; },
+    get pair() { return pair; },
+    /** The shared evaluator of this panel's context (createMethodsGpu's handle), or null. */
+    get gpu() { return gpu; },
+    get precisionProbe() { return probe; },
+    get probeCell() { return probeCell; },
+    setProbe,
+    /** The drawn colour [r, g, b, a] at the centre of cell (i, j) of one map ('gpu' | 'js'). */
+    pixelAt(side, i, j) {
+      const { canvas } = dom[side];
+      const scale = canvas.width / canvas.getBoundingClientRect().width;
+      const x = Math.floor(layouts[side].x(maps[side].thetaDeg[i]) * scale);
+      const y = Math.floor(layouts[side].y(maps[side].ratio[j]) * scale);
+      return [...canvas.getContext('2d').getImageData(x, y, 1, 1).data];
+    },
+    update,
+    describe() {
+      const method = methodById(values.method);
+      const words = (map) => `${map.counts.fine} fine, ${map.counts.aboveTolerance} with error above ${values.tolerance.toPrecision(3)}, `
+        + `${map.counts.outOfRange} outside [0, 1] and ${map.counts.notFinite} NaN or infinite`;
+      const gpuText = maps.gpu ? `on this GPU in ${pair.gpu}: ${words(maps.gpu)}` : 'no GPU map (no float render targets)';
+      const mediump = fullMediump() ? ' mediump runs at full precision on this GPU.' : '';
+      return `${method.label} over ${maps.js.width} angles × ${maps.js.height} index ratios: ${gpuText}; `
+        + `in JavaScript ${contextFor(pair.js).label}: ${words(maps.js)}.${mediump}`;
+    },
+    csv() {
+      const columns = { class: [...CLASS_NAMES] };
+      if (maps.gpu) columns[`gpu_${pair.gpu}`] = CLASS_NAMES.map((c) => maps.gpu.counts[c]);
+      columns[`js_${pair.js}`] = CLASS_NAMES.map((c) => maps.js.counts[c]);
+      return { filename: `stability-${values.method}-${values.precision}.csv`, columns };
+    },
+    png() {
+      return composePng([['gpu', dom.gpu], ['js', dom.js]].filter(([side]) => maps[side])
+        .map(([side, d]) => ({ canvas: d.canvas, title: sideTitle(side), map: maps[side] })),
+      `${methodById(values.method).label}${fullMediump() ? ' (mediump runs at full precision on this GPU)' : ''}`);
+    },
+    dispose() {
+      resizeObserver.disconnect();
+      window.removeEventListener('fresnel-lab:theme', redraw);
+      for (const [canvas, move] of listeners) {
+        canvas.removeEventListener('pointermove', move);
+        canvas.removeEventListener('keydown', onKey);
+      }
+      if (renderer) {
+        disposeMethodsGpu(renderer.getContext());
+        renderer.dispose();
+      }
+      gpuValues.clear();
+      maps = { gpu: null, js: null };
+    },
+  };
+}

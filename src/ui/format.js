@@ -1,0 +1,21 @@
+// Numbers as the panels show them: fixed decimals (a column keeps its width as a slider moves)
+// and a real minus sign (U+2212), which a hyphen is not.
+
+export const MINUS = '\u2212';
+
+/** Fixed decimals with a real minus sign; NaN (an undefined quantity) as a dash. */
+export function fixed(value, digits = 4) {
+  if (Number.isNaN(value)) return '—';
+  return value.toFixed(digits).replace('-', MINUS);
+}
+
+/** Scientific notation with a real minus sign, 1.234567e−8 (e+ written as e). */
+export function sci(value, digits = 6) {
+  if (Number.isNaN(value)) return '—';
+  return value.toExponential(digits).replaceAll('-', MINUS).replace('e+', 'e');
+}
+
+/** An angle in degrees, 56.31°. */
+export function angle(deg, digits = 2) {
+  return `${fixed(deg, digits)}°`;
+}

@@ -1,0 +1,18 @@
+// The landmarks of an R(θ) plot, drawn alike in every panel: the Brewster angle (Rp = 0), the
+// critical angle with the total-internal-reflection range shaded to 90°, and a chosen θ.
+// Angles in degrees, to two decimals (both landmarks are exact: atan(n_t/n_i) and asin(n_t/n_i)).
+import { angle } from './format.js';
+
+export function brewsterMark(deg) {
+  return deg == null ? null : { x: deg, color: '--c-brewster', label: `Brewster ${angle(deg)}` };
+}
+
+/** null when there is no critical angle (n_i ≤ n_t). */
+export function criticalMark(deg) {
+  return deg == null ? null : { x: deg, color: '--c-critical', label: `Critical ${angle(deg)}`, shadeTo: 90 };
+}
+
+/** A chosen angle; the label defaults to "θ 60.00°". */
+export function thetaMark(deg, label = `θ ${angle(deg)}`) {
+  return deg == null ? null : { x: deg, color: '--c-marker', label };
+}
