@@ -1,7 +1,7 @@
 // Two unit spheres side by side, one in each half of the canvas, each seen from the same camera
 // placement and ray-cast analytically (no mesh): the normal is exact, and the centre of each half
 // looks straight at its sphere's centre (θ = 0). Used by the fresnel-lighting and metals panels;
-// the camera numbers come from src/panels/createTwinStage.js, which also maps θ to pixels.
+// the camera numbers come from src/panels/shared/createTwinStage.js, which also maps θ to pixels.
 uniform vec2 uResolution; // drawing-buffer pixels
 uniform vec3 uCamera;     // (distance to the sphere centre, focal length, elevation in radians)
 

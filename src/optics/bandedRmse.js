@@ -3,7 +3,7 @@
 // radiance in RGB and, in alpha, the mip level λ the pixel uses (negative where there is no
 // surface, e.g. sky). Errors are taken after the display tone map, so they measure what is seen.
 
-/** The display tone map 1 − e^(−x) per channel (GLSL twin: toneMap in shaders/normal-mips.frag.glsl). */
+/** The display tone map 1 − e^(−x) per channel (GLSL twin: toneMap in src/panels/normal-mips/normal-mips.frag.glsl). */
 export function toneMap(x) {
   return 1 - Math.exp(-Math.max(x, 0));
 }

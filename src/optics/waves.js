@@ -110,7 +110,7 @@ export function waveField(theta1, n1, n2, lambda0 = 1) {
 /**
  * The field the panel draws at (x, y) (in λ0) and phase ωt, from a waveField() result: above the
  * interface the incident wave (plus the reflected one when asked), below it the transmitted or
- * evanescent wave. The JS twin of shaders/refraction-waves.frag.glsl, for tests and probes.
+ * evanescent wave. The JS twin of src/panels/refraction-waves/refraction-waves.frag.glsl, for tests and probes.
  */
 export function fieldAt(w, x, y, phase, withReflected = false) {
   const along = w.kx * x - phase;

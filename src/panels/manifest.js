@@ -17,6 +17,7 @@
  * @property {string|null} material the parameter the page-wide material sets (its n), or null
  * @property {string} [materialSelect] instead: a parameter that takes the material's id
  * @property {boolean} [hero]       the first, large panel: it owns the short URL keys (?nT=…)
+ * @property {string} [animates]    the boolean parameter that runs its animation (off: it draws only on change)
  */
 
 /** @type {readonly PanelEntry[]} */
@@ -84,6 +85,7 @@ export const PANELS = Object.freeze([
     cite: 'Lecture: “Wave Theory – Refraction”.',
     webgl: true,
     material: 'nT',
+    animates: 'play',
   },
   {
     id: 'angle-ratio',

@@ -32,4 +32,51 @@ export async function openLab(page, path = './') {
   }
 }
 
+/**
+ * Waits until panel `id` has drawn nothing for `ticks` animation frames in a row (a requested frame
+ * is drawn on the next one), and returns its frame count. A condition, not a sleep: on a slow
+ * machine it simply takes more frames.
+ */
+export async function settledFrames(page, id, { ticks = 10, timeout = 60_000 } = {}) {
+  return page.evaluate(async ([panelId, quiet, limit]) => {
+    const host = window.fresnelLab.hosts[panelId];
+    const nextFrame = () => new Promise((resolve) => { requestAnimationFrame(resolve); });
+    const start = performance.now();
+    let last = host.frames;
+    for (let still = 0; still < quiet;) {
+      await nextFrame();
+      if (host.frames === last) still += 1;
+      else [last, still] = [host.frames, 0];
+      if (performance.now() - start > limit) throw new Error(`${panelId} kept drawing for ${limit} ms`);
+    }
+    return last;
+  }, [id, ticks, timeout]);
+}
+
+/** Panel `id`'s frame count (every frame its picture draws: ctx.frameDrawn). */
+export const hostFrames = (page, id) => page.evaluate((panelId) => window.fresnelLab.hosts[panelId].frames, id);
+
+/**
+ * Lets panel `id` settle, then checks that it draws nothing for `windowMs`: the one fixed wait
+ * these tests allow, the window in which nothing may happen. Returns the frame count.
+ */
+export async function expectIdle(page, id, windowMs = 800) {
+  const idle = await settledFrames(page, id);
+  await page.waitForTimeout(windowMs);
+  expect(await hostFrames(page, id), `${id} drew while nothing changed`).toBe(idle);
+  return idle;
+}
+
+/** After a change: waits for its frame, then checks that it was one frame and no more followed. */
+export async function expectOneFrame(page, id, from, windowMs = 500) {
+  await expect.poll(() => hostFrames(page, id), { message: `${id} drew the change` }).toBeGreaterThan(from);
+  await page.waitForTimeout(windowMs);
+  expect(await hostFrames(page, id), `${id} drew the change once`).toBe(from + 1);
+}
+
+/** Two animation frames: observers and requested frames of the last change have run. */
+export const nextFrames = (page) => page.evaluate(() => new Promise((resolve) => {
+  requestAnimationFrame(() => requestAnimationFrame(resolve));
+}));
+
 export { expect };

@@ -1,4 +1,4 @@
-import { test, expect, openLab } from './fixtures.js';
+import { test, expect, openLab, expectIdle, expectOneFrame } from './fixtures.js';
 
 // Pixel probes on the three spheres. The camera looks at each sphere's centre, so the centre of
 // each third of the canvas is θ = 0; the rim probe walks outward until the view angle passes 84°.
@@ -102,14 +102,9 @@ test('bad values in the URL fall back to defaults and say so', async ({ page }) 
 
 test('nothing draws while nothing changes; a change draws once', async ({ page }) => {
   await openLab(page);
-  const frames = () => page.evaluate(() => window.fresnelLab.panels.spheres.trio.frames.frames);
-  await page.waitForTimeout(500);
-  const idle = await frames();
-  await page.waitForTimeout(1000);
-  expect(await frames()).toBe(idle);
+  const idle = await expectIdle(page, 'spheres', 1000);
   await page.evaluate(() => { window.fresnelLab.hosts.spheres.set({ nT: 1.7, env: 0.5 }); });
-  await page.waitForTimeout(500);
-  expect(await frames()).toBe(idle + 1);
+  await expectOneFrame(page, 'spheres', idle);
 });
 
 test('without WebGL2 the page says so and the plot still works', async ({ page }) => {

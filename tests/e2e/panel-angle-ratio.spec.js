@@ -21,7 +21,7 @@ test('mounts alone, and R from air into glass is 0.0400 at 0° and 0.3877 at 80�
 });
 
 test('glass to air: the refracted ray disappears past the critical angle', async ({ page }) => {
-  await openLab(page, './embed.html?panel=angle-ratio&n1=1.5&n2=1&theta=41');
+  await openLab(page, './embed.html?panel=angle-ratio&nI=1.5&nT=1&theta=41');
   await expect(refracted(page)).toBeVisible();
   await expect(panel(page).locator('.ar-status')).toContainText('Critical angle 41.81°');
   await page.evaluate(() => window.fresnelLab.hosts['angle-ratio'].set({ theta: 42 }));
@@ -62,15 +62,15 @@ test('the keyboard, a drag and the controls change the angle and the rays', asyn
   expect(theta).toBeLessThan(31);
 
   const before = await bandWidth(page, 'ar-reflected');
-  const input = page.locator('.lil-gui .lil-controller', { hasText: 'n₂ (other side)' }).locator('input');
+  const input = page.locator('.lil-gui .lil-controller', { hasText: 'n_t (transmitted side)' }).locator('input');
   await input.fill('2.4');
   await input.press('Enter');
   expect(await bandWidth(page, 'ar-reflected')).not.toBe(before);
-  await expect(page).toHaveURL(/n2=2\.4/);
+  await expect(page).toHaveURL(/nT=2\.4/);
 });
 
 test('CSV holds R and T from 0° to 90°, and the PNG export is an image', async ({ page }) => {
-  await openLab(page, './embed.html?panel=angle-ratio&n1=1.3333&n2=1');
+  await openLab(page, './embed.html?panel=angle-ratio&nI=1.3333&nT=1');
   const table = await page.evaluate(() => window.fresnelLab.panels['angle-ratio'].csv());
   const { theta_deg: theta, R, T } = table.columns;
   expect(theta[0]).toBe(0);

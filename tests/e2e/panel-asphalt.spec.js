@@ -1,4 +1,4 @@
-import { test, expect, openLab } from './fixtures.js';
+import { test, expect, openLab, expectIdle, expectOneFrame } from './fixtures.js';
 
 const EMBED = './embed.html?panel=asphalt';
 const sum = (rgb) => rgb[0] + rgb[1] + rgb[2];
@@ -17,7 +17,7 @@ test('mounts in an embed with a labelled canvas and the key numbers', async ({ p
   const entry = (term) => page.locator('.asphalt-summary div', { hasText: term }).locator('dd');
   await expect(entry('F at the view centre')).toHaveText(`${centre.F.toFixed(3)} (θd = ${centre.thetaD.toFixed(1)}°)`);
   await expect(entry('Highlight luminance')).toContainText(peak.specular.toFixed(3));
-  await expect(page.locator('.panel-description')).toContainText('n = 1.55 (assumed for bitumen)');
+  await expect(page.locator('.panel-description')).toContainText('n_t = 1.55 (assumed for bitumen)');
   expect(centre.F).toBeGreaterThan(0.4); // default camera 6° above the road: near grazing
 });
 
@@ -57,24 +57,21 @@ test('hovering the road reads θd and F there; the sky has none', async ({ page 
 });
 
 test('URL parameters are honoured', async ({ page }) => {
-  await openLab(page, `${EMBED}&camEl=3&sunEl=15&roughness=0.5&n=1.6&fresnel=false`);
+  await openLab(page, `${EMBED}&camEl=3&sunEl=15&roughness=0.5&nT=1.6&fresnel=false`);
   const values = await page.evaluate(() => ({ ...window.fresnelLab.hosts.asphalt.values }));
-  expect(values).toEqual({ camEl: 3, sunEl: 15, roughness: 0.5, n: 1.6, fresnel: false });
+  expect(values).toEqual({ camEl: 3, sunEl: 15, roughness: 0.5, nT: 1.6, fresnel: false });
   await expect(page.locator('.asphalt-badge')).toContainText('F = R0 = 0.053');
   await expect(page.locator('.lil-gui .lil-controller', { hasText: 'Camera elevation' }).locator('input')).toHaveValue('3');
 });
 
 test('nothing draws while nothing changes; the arrow keys move the camera', async ({ page }) => {
   await openLab(page, EMBED);
-  const frames = () => page.evaluate(() => window.fresnelLab.panels.asphalt.view.frames.frames);
-  await page.waitForTimeout(400);
-  const idle = await frames();
-  await page.waitForTimeout(800);
-  expect(await frames()).toBe(idle);
+  const idle = await expectIdle(page, 'asphalt');
   await page.locator('.asphalt-canvas').focus();
   await page.keyboard.press('Shift+ArrowUp');
   await expect.poll(() => page.evaluate(() => window.fresnelLab.hosts.asphalt.values.camEl)).toBe(11);
   await expect(page.locator('.asphalt-summary')).toContainText('θd = 79.5°');
+  await expectOneFrame(page, 'asphalt', idle);
 });
 
 test('dispose frees the WebGL context and a remount works', async ({ page }) => {

@@ -36,19 +36,19 @@ test('near grazing the F side is brighter; overhead the two sides match', async 
 test('changing n in the controls changes the F curve and the formulas', async ({ page }) => {
   await openLab(page, EMBED);
   const before = await curveAt(page, 'phongF', 5);
-  const input = page.locator('.lil-gui .lil-controller', { hasText: 'Refractive index n' }).locator('input');
+  const input = page.locator('.lil-gui .lil-controller', { hasText: 'n_t (surface)' }).locator('input');
   await input.fill('2.4');
   await input.press('Enter');
   await expect(page.locator('.cspec-tex-phong')).toContainText('0.1696');
   const after = await curveAt(page, 'phongF', 5);
   expect(after).not.toBeCloseTo(before, 3);
-  await expect(page).toHaveURL(/n=2\.4/);
+  await expect(page).toHaveURL(/nT=2\.4/);
 });
 
 test('URL parameters are honoured and the view follows the light when linked', async ({ page }) => {
-  await openLab(page, `${EMBED}&lightEl=10&s=120&n=1.333`);
+  await openLab(page, `${EMBED}&lightEl=10&s=120&nT=1.333`);
   const values = await page.evaluate(() => ({ ...window.fresnelLab.hosts['changing-specular'].values }));
-  expect(values).toMatchObject({ lightEl: 10, viewEl: 10, linked: true, s: 120, n: 1.333 });
+  expect(values).toMatchObject({ lightEl: 10, viewEl: 10, linked: true, s: 120, nT: 1.333 });
   await expect(page.locator('.cspec-tex-fresnel')).toContainText('F(80.0∘)');
   await expect(page.locator('.lil-gui .lil-controller', { hasText: 'View elevation' }).locator('input')).toHaveValue('10');
   const input = page.locator('.lil-gui .lil-controller', { hasText: 'Light elevation' }).locator('input');

@@ -1,4 +1,4 @@
-import { test, expect, openLab } from './fixtures.js';
+import { test, expect, openLab, expectIdle, expectOneFrame } from './fixtures.js';
 
 const ID = 'fresnel-lighting';
 const embed = (query = '') => `./embed.html?panel=${ID}${query}`;
@@ -79,9 +79,9 @@ test('controls change the picture and the numbers', async ({ page }) => {
 });
 
 test('the URL sets n, the method and the weight', async ({ page }) => {
-  await openLab(page, embed('&n=2.4&method=schlick&weight=0.2&kd=1f4fa3'));
+  await openLab(page, embed('&nT=2.4&method=schlick&weight=0.2&kd=1f4fa3'));
   const values = await page.evaluate(() => ({ ...window.fresnelLab.hosts['fresnel-lighting'].values }));
-  expect(values).toMatchObject({ n: 2.4, method: 'schlick', weight: 0.2, kd: '#1f4fa3' });
+  expect(values).toMatchObject({ nT: 2.4, method: 'schlick', weight: 0.2, kd: '#1f4fa3' });
   await expect(page.locator('.fl-summary')).toContainText('0.1696'); // R0 for n = 2.4
   await expect(page.locator('.twin-stage-labels')).toContainText('F Schlick');
   await expect(page.locator('.panel-description')).toContainText("Schlick's approximation");
@@ -92,12 +92,7 @@ test('the URL sets n, the method and the weight', async ({ page }) => {
 
 test('nothing draws while nothing changes', async ({ page }) => {
   await openLab(page, embed());
-  const frames = () => page.evaluate(() => window.fresnelLab.panels['fresnel-lighting'].stage.view.frames.frames);
-  await page.waitForTimeout(400);
-  const idle = await frames();
-  await page.waitForTimeout(800);
-  expect(await frames()).toBe(idle);
-  await page.evaluate(() => window.fresnelLab.hosts['fresnel-lighting'].set({ lightAz: 90, n: 1.7 }));
-  await page.waitForTimeout(400);
-  expect(await frames()).toBe(idle + 1);
+  const idle = await expectIdle(page, 'fresnel-lighting');
+  await page.evaluate(() => window.fresnelLab.hosts['fresnel-lighting'].set({ lightAz: 90, nT: 1.7 }));
+  await expectOneFrame(page, 'fresnel-lighting', idle);
 });

@@ -1,4 +1,4 @@
-import { test, expect, openLab } from './fixtures.js';
+import { test, expect, openLab, expectIdle } from './fixtures.js';
 
 const PANEL = 'normal-mips';
 const URL = `./embed.html?panel=${PANEL}`;
@@ -9,7 +9,7 @@ test('mounts in an embed and honours the URL', async ({ page }) => {
   await openLab(page, `${URL}&technique=lean&map=grooves&precision=u8&channels=2&level=3&truth=false`);
   await expect(page.locator('.nm-canvas')).toHaveAttribute('aria-label', /receding/);
   const summary = page.locator('.nm-summary');
-  await expect(summary).toContainText('lean, u8, 2 channels');
+  await expect(summary).toContainText('LEAN, 8-bit unorm, 2 channels');
   await expect(summary).toContainText('forced to 3 of 0–8');
   const state = await page.evaluate(async (id) => {
     const p = window.fresnelLab.panels[id];
@@ -66,7 +66,7 @@ test('far bumps: variance-keeping techniques beat renormalized and naive, and th
       }
     }
   }
-  await expect(page.locator('.nm-plot-note')).toHaveText(/toksvig is closer to the truth than naive at every mip level/);
+  await expect(page.locator('.nm-plot-note')).toHaveText(/Toksvig is closer to the truth than the naive average at every mip level/);
   const plotted = await page.evaluate((id) => window.fresnelLab.panels[id].distancePlot.data, PANEL);
   expect(plotted[3]).toEqual(plotted[0].map((level) => errors.toksvig.bands[level].rmse)); // series 3: toksvig
   // The table lists techniques best first, with the same numbers.
@@ -74,7 +74,7 @@ test('far bumps: variance-keeping techniques beat renormalized and naive, and th
   expect(rows.slice(4).map((r) => r[0]).sort()).toEqual(['naive', 'renormalized']);
   for (const [technique, value] of rows) expect(value).toBeCloseTo(errors[technique].rmse, 4);
   await expect(page.locator('.panel-description')).toContainText(`RMSE against the ground truth ${errors.toksvig.rmse.toFixed(4)}`);
-  await expect(page.locator('.panel-description')).toContainText('toksvig is closer to the truth than naive at every mip level');
+  await expect(page.locator('.panel-description')).toContainText('Toksvig is closer to the truth than the naive average at every mip level');
   const csv = await page.evaluate((id) => window.fresnelLab.panels[id].csv(), PANEL);
   expect(csv.columns.technique).toEqual(['naive', 'renormalized', 'toksvig', 'lean', 'clean', 'vmf']);
   expect(csv.columns.rmse[2]).toBe(errors.toksvig.rmse);
@@ -91,9 +91,7 @@ test('far bumps: variance-keeping techniques beat renormalized and naive, and th
   expect(Math.abs(twoChannel.toksvig - twoChannel.renormalized)).toBeLessThan(0.05 * twoChannel.renormalized);
   expect(twoChannel.lean).toBeCloseTo(errors.lean.rmse, 6); // LEAN stores slopes, not normals
   // Rendering stops once the truth has converged and the errors are measured.
-  const frames = await page.evaluate((id) => window.fresnelLab.panels[id].scene.frames.frames, PANEL);
-  await page.waitForTimeout(400);
-  expect(await page.evaluate((id) => window.fresnelLab.panels[id].scene.frames.frames, PANEL)).toBe(frames);
+  await expectIdle(page, PANEL, 400);
 });
 
 test('controls change the picture', async ({ page }) => {
@@ -144,7 +142,7 @@ test('mip strip and texel inspector: V-grooves average to cos θ, one blob for t
   await cell.click({ position: { x: 5, y: box.height - 4 } }); // near the bottom-left corner: texel (0, 0)
   await expect.poll(() => page.evaluate((id) => window.fresnelLab.hosts[id].values.texelLevel, PANEL)).toBe(1);
   await expect(page.locator('.nm-inspector-verdict')).not.toContainText('Two spikes');
-  await expect(page.locator('.nm-costs tr.nm-current th')).toHaveText('toksvig');
+  await expect(page.locator('.nm-costs tr.nm-current th')).toHaveText('Toksvig');
 });
 
 test('shimmer meter: renormalized flickers more than Toksvig under sub-pixel camera moves', async ({ page }) => {
@@ -154,7 +152,7 @@ test('shimmer meter: renormalized flickers more than Toksvig under sub-pixel cam
   await expect(page.locator('.nm-shimmer')).toContainText('Shimmer (mean brightness change');
   const shimmer = await page.evaluate((id) => window.fresnelLab.panels[id].shimmer, PANEL);
   for (const good of ['toksvig', 'clean', 'lean', 'vmf']) expect(shimmer[good]).toBeLessThan(shimmer.renormalized);
-  await expect(page.locator('.panel-description')).toContainText(`Shimmer of toksvig: ${shimmer.toksvig.toFixed(4)}`);
+  await expect(page.locator('.panel-description')).toContainText(`Shimmer of Toksvig: ${shimmer.toksvig.toFixed(4)}`);
   // A change of view makes the old numbers stale.
   await page.evaluate((id) => window.fresnelLab.hosts[id].set({ viewEl: 12 }), PANEL);
   await expect(page.locator('.nm-shimmer')).toContainText('press');

@@ -9,7 +9,7 @@ test('mounts alone: Brewster 56.31° for air to glass, where Rp reads 0.0000', a
   await expect(panel(page).locator('.pol-plot canvas').first()).toBeVisible();
   await expect(panel(page).locator('.pol-summary')).toContainText('Brewster angle56.31°');
   await expect(panel(page).locator('.pol-summary')).toContainText('Rp = 0.0000, Rs = 0.1479');
-  await expect(panel(page).locator('.pol-summary')).toContainText('none (n₁ ≤ n₂)');
+  await expect(panel(page).locator('.pol-summary')).toContainText('none (n_i ≤ n_t)');
   await expect(readout(page)).toContainText('Rp = 0.0000');
   await expect(readout(page)).toContainText('At θ = 56.31°');
 });
@@ -32,7 +32,7 @@ test('the controls move the curves, the Brewster angle and the readout', async (
   await openLab(page, './embed.html?panel=polarization');
   const plot = panel(page).locator('.pol-plot canvas').first();
   const before = await plot.screenshot();
-  const input = page.locator('.lil-gui .lil-controller', { hasText: 'n₂ (other side)' }).locator('input');
+  const input = page.locator('.lil-gui .lil-controller', { hasText: 'n_t (transmitted side)' }).locator('input');
   await input.fill('2.4');
   await input.press('Enter');
   await expect(panel(page).locator('.pol-summary')).toContainText('67.38°');
@@ -44,7 +44,7 @@ test('the controls move the curves, the Brewster angle and the readout', async (
 });
 
 test('the URL is honoured: glass to air shows the critical angle and total reflection', async ({ page }) => {
-  await openLab(page, './embed.html?panel=polarization&n1=1.5&n2=1&theta=50');
+  await openLab(page, './embed.html?panel=polarization&nI=1.5&nT=1&theta=50');
   await expect(panel(page).locator('.pol-summary')).toContainText('Critical angle41.81°');
   await expect(panel(page).locator('.pol-summary')).toContainText('Brewster angle33.69°');
   await expect(readout(page)).toContainText('Rs = 1.0000   Rp = 1.0000   unpolarized mean = 1.0000');

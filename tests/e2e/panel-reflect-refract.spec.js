@@ -1,4 +1,4 @@
-import { test, expect, openLab } from './fixtures.js';
+import { test, expect, openLab, expectIdle, expectOneFrame } from './fixtures.js';
 import { fresnelExact } from '../../src/optics/fresnel.js';
 
 const PANEL = 'reflect-refract';
@@ -68,10 +68,10 @@ test('the glass preset and the n control change numbers and picture', async ({ p
   await page.locator('.lil-gui .lil-controller', { hasText: 'Material' }).locator('select')
     .selectOption({ label: 'Glass (1.5)' });
   await expect(page.locator('.rr-summary')).toContainText('R = 0.0400');
-  await expect(page).toHaveURL(/n=1\.5/);
+  await expect(page).toHaveURL(/nT=1\.5/);
   const glassSky = await centre(page, {});
   expect(dist(glassSky, waterSky)).toBeGreaterThan(6); // twice the reflected sky
-  const input = page.locator('.lil-gui .lil-controller', { hasText: 'n of the surface' }).locator('input');
+  const input = page.locator('.lil-gui .lil-controller', { hasText: 'n_t (surface)' }).locator('input');
   await input.fill('2.4');
   await input.press('Enter');
   await expect(page.locator('.rr-summary')).toContainText(`R = ${fresnelExact(1, 1, 2.4).toFixed(4)}`);
@@ -79,16 +79,11 @@ test('the glass preset and the n control change numbers and picture', async ({ p
 });
 
 test('a URL with glass and a view is restored; nothing draws while idle', async ({ page }) => {
-  await openLab(page, `./embed.html?panel=${PANEL}&n=1.5&elevation=45`);
+  await openLab(page, `./embed.html?panel=${PANEL}&nT=1.5&elevation=45`);
   const R = fresnelExact(Math.cos(45 * DEG), 1, 1.5);
   await expect(page.locator('.rr-summary')).toContainText(`R = ${R.toFixed(4)}`);
   await expect(page.locator('.lil-gui .lil-controller', { hasText: 'Material' }).locator('select')).toHaveValue('Glass (1.5)');
-  const frames = () => page.evaluate((id) => window.fresnelLab.panels[id].view.frames.frames, PANEL);
-  await page.waitForTimeout(400);
-  const idle = await frames();
-  await page.waitForTimeout(800);
-  expect(await frames()).toBe(idle);
+  const idle = await expectIdle(page, PANEL);
   await page.evaluate((id) => window.fresnelLab.hosts[id].set({ elevation: 20, depth: 3 }), PANEL);
-  await page.waitForTimeout(400);
-  expect(await frames()).toBe(idle + 1);
+  await expectOneFrame(page, PANEL, idle);
 });

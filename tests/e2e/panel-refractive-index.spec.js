@@ -65,8 +65,8 @@ test('on the lecture page "Use" on water sets n in the other panels', async ({ p
   await expect(section.locator('tr[data-id="water"]')).toHaveAttribute('aria-current', 'true');
   expect(await page.evaluate(() => window.fresnelLab.hosts.spheres.values.nT)).toBe(1.3333);
   // The neighbouring panels take it too, through their materialParam.
-  const n2 = await page.evaluate(() => ['angle-ratio', 'polarization'].map((id) => window.fresnelLab.hosts[id]?.values.n2));
-  expect(n2).toEqual([1.3333, 1.3333]);
+  const nT = await page.evaluate(() => ['angle-ratio', 'polarization'].map((id) => window.fresnelLab.hosts[id]?.values.nT));
+  expect(nT).toEqual([1.3333, 1.3333]);
   await expect(page).toHaveURL(/refractive-index\.selected=water/);
   await section.locator('tr[data-id="diamond"] .ri-use').click();
   expect(await page.evaluate(() => window.fresnelLab.hosts.spheres.values.nT)).toBe(2.4166);

@@ -1,4 +1,4 @@
-import { test, expect, openLab } from './fixtures.js';
+import { test, expect, openLab, expectIdle } from './fixtures.js';
 import { fresnelExact } from '../../src/optics/fresnel.js';
 import { methodsOfKind } from '../../src/optics/methods.js';
 
@@ -156,9 +156,7 @@ test('URL and controls: method, precision and tolerance; CSV, description, on-de
   expect(csv.columns.gpu_highp).toEqual([CELLS, 0, 0, 0]);
   await expect(page.locator('.panel-description')).toContainText(`in JavaScript float64: ${CELLS} fine, 0 with error above 0.00100`);
   // Nothing is evaluated again while nothing changes.
-  const frames = await page.evaluate(() => window.fresnelLab.hosts.stability.frames);
-  await page.waitForTimeout(400);
-  expect(await page.evaluate(() => window.fresnelLab.hosts.stability.frames)).toBe(frames);
+  await expectIdle(page, 'stability', 400);
   expect(await page.evaluate(() => window.fresnelLab.panels.stability.png())).toMatch(/^data:image\/png;base64,/);
   const live = await page.evaluate(() => {
     const before = window.fresnelLab.contexts.live;

@@ -1,5 +1,5 @@
 // The DOM of the asphalt panel: the stage (canvas and a badge saying which model is on), the hover
-// readout, the key numbers and the formula. Styled by asphalt.css under .asphalt-panel.
+// readout, the key numbers and the formula. Styled by styles.css under .asphalt-panel.
 import { texElement } from '../../ui/tex.js';
 import './styles.css';
 import { el } from '../../ui/el.js';

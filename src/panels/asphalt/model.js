@@ -1,6 +1,6 @@
 // The asphalt scene in float64: camera, sun and the shading of the road's mean (flat) surface.
 // Pure math, no DOM: the panel's numbers, its hover readout and its tests come from here, and the
-// shader (shaders/asphalt.frag.glsl) receives these same constants as uniforms.
+// shader (asphalt.frag.glsl) receives these same constants as uniforms.
 import { fresnelExact, normalIncidence } from '../../optics/fresnel.js';
 import { microfacetSpecular } from '../../optics/microfacet.js';
 import { DEG } from '../../optics/angles.js';

@@ -1,6 +1,6 @@
 // The DOM of the changing-specular panel: the two rendered floors with their labels, a cross-section
 // (SVG) of light, normal, mirror direction r, view v and Phong's lobe, the live formulas, and the
-// plot host. Styled by changing-specular.css under .cspec-panel.
+// plot host. Styled by styles.css under .cspec-panel.
 import { renderTex } from '../../ui/tex.js';
 import './styles.css';
 import { el } from '../../ui/el.js';

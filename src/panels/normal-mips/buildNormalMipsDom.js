@@ -1,6 +1,6 @@
 // The DOM of the normal-mips panel: the stage (canvas with its two captions and the ground-truth
 // sample counter), a line of key numbers, the mip-level legend of the overlay and the error table
-// (RMSE per technique, overall and per mip-level band). Styles: normal-mips.css (under .nm-panel).
+// (RMSE per technique, overall and per mip-level band). Styles: styles.css (under .nm-panel).
 import { colormapGradient } from '../../ui/colormap.js';
 import { el } from '../../ui/el.js';
 import { TECHNIQUE_NAMES } from '../../normals/techniqueLayout.js';

@@ -1,4 +1,4 @@
-// The receding plane of the normal-mips panel: one fragment program (shaders/normal-mips.frag.glsl)
+// The receding plane of the normal-mips panel: one fragment program (normal-mips.frag.glsl)
 // run in three passes into float targets: the technique's picture, the progressive ground truth
 // (a running mean over frames, stopped at a sample cap) and the composited display. Every
 // technique's chain is uploaded level by level from uploadLevels(), so the shader samples exactly

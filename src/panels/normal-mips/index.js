@@ -51,6 +51,8 @@ export const schema = {
 };
 
 const IOR = 1.5;
+/** The maps as a sentence names them. */
+const MAP_PHRASES = { bumps: 'bumps', grooves: 'V-grooves', checker: 'the slope checker', noise: 'value noise', mixed: 'the mixed map' };
 const CHAIN_KEYS = ['map', 'frequency', 'angle', 'size', 'precision', 'channels'];
 const LIGHT_KEYS = ['viewEl', 'lightEl', 'lightAz', 'lightDist'];
 const SHIMMER_KEYS = [...CHAIN_KEYS, ...LIGHT_KEYS, 'alpha', 'level', 'anisotropy', 'fresnel'];
@@ -308,9 +310,10 @@ export function mount(root, ctx) {
       const level = values.level < 0 ? 'the automatic mip level' : `mip level ${values.level}`;
       const name = TECHNIQUE_NAMES[values.technique];
       const flicker = shimmer ? ` Shimmer of ${name}: ${shimmer[values.technique].toFixed(4)} mean brightness change per pixel.` : '';
-      const head = `${name} on ${optionLabel(schema.map, values.map).toLowerCase()} at base α = ${values.alpha}, using ${level}`;
+      const head = `${name} on ${MAP_PHRASES[values.map]} at base α = ${values.alpha}, using ${level}`;
       if (!values.truth) return `${head}; the ground truth is off, so there is no error number.${flicker}`;
-      if (!errors) return `${head}; the ground truth is still converging (${scene?.state.samples ?? 0} samples per pixel).${flicker}`;
+      // The sample count is live in the caption; the description changes when the errors arrive.
+      if (!errors) return `${head}; the ground truth is still converging, so there is no error number yet.${flicker}`;
       const ranked = Object.entries(errors).sort((a, b) => a[1].rmse - b[1].rmse);
       return `${head}: RMSE against the ground truth ${errors[values.technique].rmse.toFixed(4)}; `
         + `best ${TECHNIQUE_NAMES[ranked[0][0]]} (${ranked[0][1].rmse.toFixed(4)}), worst ${TECHNIQUE_NAMES[ranked.at(-1)[0]]} (${ranked.at(-1)[1].rmse.toFixed(4)}). `

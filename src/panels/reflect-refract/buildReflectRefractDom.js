@@ -1,6 +1,6 @@
 // The DOM of the reflect-refract panel: the stage (canvas, centre mark, caption), the lecture's
 // three captions with the current one marked, the R/T bar for the centre ray, its numbers and
-// the blend formula with live values. Styles: reflect-refract.css (all under .rr-panel).
+// the blend formula with live values. Styles: styles.css (all under .rr-panel).
 import { renderTex, texNumber } from '../../ui/tex.js';
 import { REFLECTION_BANDS } from './model.js';
 import { el } from '../../ui/el.js';
