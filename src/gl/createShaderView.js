@@ -48,8 +48,10 @@ export function createFullscreenPass(fragment, uniforms) {
  * fragment: GLSL source (a panel's `.glsl` file imported with `?raw`). It receives `in vec2 vUv` (0..1 across
  * the canvas) and `uniform vec2 uResolution` (drawing-buffer pixels), and declares `out vec4`.
  * uniforms: three.js uniforms ({ name: { value } }); call render() after changing them.
+ * @param {HTMLCanvasElement} canvas
+ * @param {{ fragment: string, uniforms?: Record<string, { value: any }>, onFrame?: () => void, maxPixels?: number }} options
  */
-export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, maxPixels = 1_500_000 } = {}) {
+export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, maxPixels = 1_500_000 }) {
   const renderer = createRenderer(canvas, { antialias: false });
   const allUniforms = { ...uniforms, uResolution: { value: [1, 1] } };
   const pass = createFullscreenPass(fragment, allUniforms);

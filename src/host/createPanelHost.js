@@ -1,3 +1,4 @@
+// @ts-check
 // The frame around every panel. The host owns the panel's values: it reads them from the URL,
 // validates every write against the schema (from a control, the panel itself, a message or the
 // page), says on screen what it rejected, and passes each change on to the controls, the URL, the
@@ -29,6 +30,8 @@ function readOnly(values, id) {
  * prefix: URL key prefix ('' for the hero and embeds, 'id.' for other lecture-page panels).
  * @param {HTMLElement} container
  * @param {import('./panelContract.js').PanelDefinition} panel
+ * @param {{ prefix?: string, noticeHost?: HTMLElement, onFrame?: (frame: number) => void,
+ *   applyMaterial?: (material: { id?: string, name?: string, n: number }) => void }} [options]
  */
 export function createPanelHost(container, panel, {
   prefix = '', noticeHost = container, onFrame = () => {}, applyMaterial = () => {},

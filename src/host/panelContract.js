@@ -1,3 +1,4 @@
+// @ts-check
 // The contract between the host and a panel, written down once. A panel is a folder
 // src/panels/<id>/ whose index.js exports `schema` and `mount`; everything else the page needs
 // (id, title, traits) is its entry in src/panels/manifest.js. tests/e2e/contract.spec.js checks
@@ -28,7 +29,7 @@
 /**
  * What mount() gets.
  * @typedef {object} PanelContext
- * @property {Readonly<Record<string, any>>} values  the current values, read-only: the host owns them
+ * @property {any} values  the current values, read-only (writing one throws): the host owns them
  * @property {(update: Record<string, any>, options?: { source?: ChangeSource }) =>
  *   { applied: object, rejected: object[], changed: string[] }} set
  *   change values: validated, then controls, URL, picture and messages follow (update(keys) runs)
@@ -42,14 +43,16 @@
  */
 
 /**
- * What mount() returns.
- * @typedef {object} PanelInstance
+ * What mount() returns (PanelInstance: these, and any members of its own, for tests and the benchmark).
+ * @typedef {object} PanelCore
  * @property {(keys?: string[]) => void} update  values changed (keys: which; [] for a re-describe)
  * @property {() => string} describe  the key numbers in words: shown under the panel, and every canvas's description
  * @property {(() => { filename?: string, columns: Record<string, Array<number|string>> })} [csv]  the plotted numbers
  * @property {(() => string | null) | null} [png]  a PNG data URL of the picture
  * @property {() => void} dispose  free everything: contexts, observers, listeners, timers
  */
+
+/** @typedef {PanelCore & { [member: string]: any }} PanelInstance */
 
 /**
  * @typedef {import('../panels/manifest.js').PanelEntry & {

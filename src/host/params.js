@@ -1,3 +1,4 @@
+// @ts-check
 // Typed parameter schemas: one source of truth per panel for its controls, its URL state and
 // its messages. Pure functions; a bad value never throws, it is reported and replaced by the default
 // (in the manner of PhET's query-parameter tables).

@@ -81,8 +81,8 @@ function measure(scene, method, P) {
 
 function describe(row) {
   const where = row.thetaAtMax === null ? '' : ` at ${toDegrees(row.thetaAtMax).toFixed(1)}°`;
-  if (row.nanCount > 0) return `${row.methodId} (NaN or Infinity at ${row.nanCount} samples)`;
-  return `${row.methodId} (max |ΔR| ${row.max.toPrecision(2)}${where}, ${row.maxCodes.toFixed(2)} codes)`;
+  if (row.nanCount > 0) return `${row.label} (NaN or Infinity at ${row.nanCount} samples)`;
+  return `${row.label} (max |ΔR| ${row.max.toPrecision(2)}${where}, ${row.maxCodes.toFixed(2)} codes)`;
 }
 
 /**

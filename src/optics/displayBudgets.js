@@ -22,7 +22,7 @@ export const DISPLAY_BUDGETS = Object.freeze([
   { id: 'one-percent', codes: 2.55, label: '1 % of the range (2.55 codes)' },
   { id: 'acceptable', codes: 12.75, label: 'Acceptable: 5 % of the range (12.75 codes)' },
   { id: 'ten-percent', codes: 25.5, label: '10 % of the range (25.5 codes)' },
-].map(Object.freeze));
+].map((budget) => Object.freeze(budget)));
 
 export const DEFAULT_BUDGET = 'invisible';
 

@@ -75,6 +75,10 @@ export function errorsFromValues(scene, values) {
  * advisor.recommend with errors measured elsewhere (errorsFromValues of a read-back): { methodId:
  * stats } for every method of the scene's kind; where names them in the reason (default: the
  * scene's label); precision is returned as given.
+ * @param {object} scene
+ * @param {Record<string, object>} errors
+ * @param {Record<string, number>} [costs]
+ * @param {{ budgetCodes?: number, where?: string, precision?: string }} [options]
  */
 export function recommendWithErrors(scene, errors, costs = {}, { budgetCodes = HALF_STEP_CODES, where, precision } = {}) {
   return recommend(scene, costs, { budgetCodes, precision, errors, where: where ?? scene.label });

@@ -1,8 +1,10 @@
+// @ts-check
 // Loads a panel's module on demand (each panel is its own chunk, so an embed downloads only the
 // panel it shows) and joins it with its manifest entry into the definition the host runs.
 import { PANELS, panelEntry } from './manifest.js';
 
-const modules = import.meta.glob('./*/index.js');
+/** @typedef {{ schema?: import('../host/panelContract.js').Schema, mount?: import('../host/panelContract.js').PanelDefinition['mount'] }} PanelModule */
+const modules = /** @type {Record<string, () => Promise<PanelModule>>} */ (import.meta.glob('./*/index.js'));
 const moduleOf = (id) => modules[`./${id}/index.js`];
 
 /** Manifest ids whose folder has no index.js: a build or test failure, never a silent omission. */

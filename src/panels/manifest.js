@@ -1,3 +1,4 @@
+// @ts-check
 // The panel manifest: every panel of the lecture, in the lecture's order, with what the page needs
 // to know before the panel's code loads. The lecture page's sections (vite.config.js writes them
 // into index.html), the embed page, the README's id list and the tests all come from this list or

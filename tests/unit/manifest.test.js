@@ -76,6 +76,7 @@ describe.each(PANEL_IDS)('the %s module', (id) => {
       expect(entry.material).toBe('nT'); // one notation: the material sets n_t everywhere
     }
     if (entry.materialSelect) expect(module.schema[entry.materialSelect]?.type).toBe('enum');
+    if (entry.animates) expect(module.schema[entry.animates]?.type).toBe('boolean');
   });
   it('labels its indices in the lecture notation, n_i and n_t', () => {
     for (const key of ['nI', 'nT']) {

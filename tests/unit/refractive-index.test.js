@@ -1,11 +1,14 @@
 import { describe, expect, it } from 'vitest';
-import { C_KM_PER_S, customRow, materialRows, sortMaterialRows } from '../../src/optics/materialRows.js';
-import { formatIndex, formatKmS } from '../../src/panels/refractive-index/buildIndexTable.js';
+import { C_KM_PER_S, SORT_KEYS, customRow, materialRows, sortMaterialRows } from '../../src/optics/materialRows.js';
+import { COLUMNS, formatIndex, formatKmS } from '../../src/panels/refractive-index/buildIndexTable.js';
 
 const rows = materialRows();
 const byId = (id) => rows.find((r) => r.id === id);
 
 describe('material rows (refractive-index panel)', () => {
+  it('every column of the table is a sort key of the rows, and the other way round', () => {
+    expect(COLUMNS.map((c) => c.key)).toEqual(SORT_KEYS);
+  });
   it('crown glass N-BK7 reflects 0.042 head-on from air', () => {
     expect(byId('glass').n).toBe(1.5167);
     expect(byId('glass').r0.toFixed(3)).toBe('0.042');

@@ -1,3 +1,4 @@
+// @ts-check
 // Panel `angle-ratio`: one ray meets a flat interface and splits into a reflected part R and a
 // refracted part T = 1 − R; stroke widths carry the powers. Past the critical angle (n_i > n_t)
 // nothing goes through. Numbers from src/optics/interfaceSplit.js (which uses fresnel.js).
@@ -33,6 +34,11 @@ function bar(label, className) {
   };
 }
 
+/**
+ * @param {HTMLElement} root
+ * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @returns {import('../../host/panelContract.js').PanelInstance}
+ */
 export function mount(root, ctx) {
   const { values } = ctx;
   const panel = el('div', 'angle-ratio-panel');

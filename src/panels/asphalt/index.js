@@ -1,3 +1,4 @@
+// @ts-check
 // Panel `asphalt`: does a rough road have a specular highlight? A ray-cast road under a low sun
 // ahead of the camera; overhead it is dull, near grazing it shines, because F at the half-vector
 // angle grows towards 1 there (lecture, "Specular"). Fresnel off keeps F = R0 and shows what a model
@@ -40,6 +41,11 @@ function readBlock(view, x, y, radius = 3) {
   return sum.map((s) => s / (size * size));
 }
 
+/**
+ * @param {HTMLElement} root
+ * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @returns {import('../../host/panelContract.js').PanelInstance}
+ */
 export function mount(root, ctx) {
   const { values } = ctx;
   const dom = buildAsphaltDom(root);

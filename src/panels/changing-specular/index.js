@@ -1,3 +1,4 @@
+// @ts-check
 // Panel `changing-specular`: Phong's highlight (v·r)^s only asks how close the view is to the mirror
 // direction, never how the light meets the surface (lecture, "Changing Specular"). The same floor
 // is lit both ways side by side, with a cross-section of the vectors and a plot of the peak highlight
@@ -23,6 +24,11 @@ export const schema = {
 
 const SCENE = { fovY: 40, cameraDist: 4, light: 6, exposure: 1 };
 
+/**
+ * @param {HTMLElement} root
+ * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @returns {import('../../host/panelContract.js').PanelInstance}
+ */
 export function mount(root, ctx) {
   const { values } = ctx;
   const dom = buildChangingSpecularDom(root);

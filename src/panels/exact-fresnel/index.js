@@ -1,3 +1,4 @@
+// @ts-check
 // Panel `exact-fresnel`: the lecture's exact formula typeset, then every quantity in it evaluated
 // live (m, cos θ, c, g², g, both factors, R) and checked against fresnelExact and (Rs + Rp)/2.
 // Past the critical angle g² < 0 and the code returns 1; a side box evaluates g² in the slide's
@@ -44,6 +45,11 @@ function valueCell(key) {
   return cell;
 }
 
+/**
+ * @param {HTMLElement} root
+ * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @returns {import('../../host/panelContract.js').PanelInstance}
+ */
 export function mount(root, ctx) {
   const { values } = ctx;
   const panel = el('div', 'xf-panel');

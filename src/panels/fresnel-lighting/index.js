@@ -1,3 +1,4 @@
+// @ts-check
 // Panel `fresnel-lighting`: a diffuse sphere under a shiny coat, k = mix(kd, ks, F) (lecture,
 // "Fresnel reflection in lighting"), beside the same sphere with a constant weight w. Only the
 // Fresnel sphere's rim turns toward ks. F is taken at the view angle N·V (for a mirror coat the
@@ -55,6 +56,11 @@ async function copyCode(text, codeElement) {
   }
 }
 
+/**
+ * @param {HTMLElement} root
+ * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @returns {import('../../host/panelContract.js').PanelInstance}
+ */
 export function mount(root, ctx) {
   const { values } = ctx;
   const panel = el('div', 'fl-panel');

@@ -1,3 +1,4 @@
+// @ts-check
 // Panel `metals`: a dielectric and a conductor side by side (lecture, "Fresnel reflection and
 // materials"). The metal's index is complex, n + ik, per RGB channel, so its F0 is high and
 // coloured; its exact reflectance is compared with Schlick's on the channel's own F0, and near
@@ -23,6 +24,11 @@ const SUN = { azimuth: 35, elevation: 40 };
 const SHORT = { red: 'R', green: 'G', blue: 'B' };
 const CHANNEL_VARS = ['--c-red', '--c-green', '--c-blue'];
 
+/**
+ * @param {HTMLElement} root
+ * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @returns {import('../../host/panelContract.js').PanelInstance}
+ */
 export function mount(root, ctx) {
   const { values } = ctx;
   const panel = document.createElement('div');

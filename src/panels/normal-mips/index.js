@@ -1,3 +1,4 @@
+// @ts-check
 // Panel `normal-mips`: a bumpy plane receding to the horizon, its highlight shaded per pixel from
 // the mip chain each technique stores (src/normals/), split-screen against a progressive,
 // supersampled ground truth from the exact analytic normals, with an RMSE per technique.
@@ -100,6 +101,11 @@ function mergeKeys(pending, keys) {
   return pending === null || !keys ? null : [...pending, ...keys];
 }
 
+/**
+ * @param {HTMLElement} root
+ * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @returns {import('../../host/panelContract.js').PanelInstance}
+ */
 export function mount(root, ctx) {
   const { values } = ctx;
   const dom = buildNormalMipsDom(root);

@@ -1,3 +1,4 @@
+// @ts-check
 // Panel `polarization`: Rs, Rp and their mean (the exact unpolarized R) against θ, with Brewster's
 // angle (Rp = 0) and the critical angle marked, a readout at a chosen θ, and why a tool that shows
 // only Rs reads high at oblique angles. Curves from curves.js; point values from fresnel.js.
@@ -35,6 +36,11 @@ function summaryItem(term) {
   return { wrap, dd };
 }
 
+/**
+ * @param {HTMLElement} root
+ * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @returns {import('../../host/panelContract.js').PanelInstance}
+ */
 export function mount(root, ctx) {
   const { values } = ctx;
   const panel = el('div', 'polarization-panel');

@@ -1,3 +1,4 @@
+// @ts-check
 // Panel `r0-derivation`: the lecture's derivation of R(0°), line by line, each line typeset and
 // evaluated as written (src/optics/r0Steps.js) at the current indices, with a check that all
 // lines agree and that the last equals normalIncidence and fresnelExact(1, …). No WebGL: KaTeX.
@@ -16,6 +17,11 @@ const fixed = (value) => fixedTo(value, DIGITS);
 /** Differences at the rounding level: 0 or an exponent, never a misleading 0.000000. */
 const tiny = (value) => (value === 0 ? '0 (identical)' : sci(value, 1));
 
+/**
+ * @param {HTMLElement} root
+ * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @returns {import('../../host/panelContract.js').PanelInstance}
+ */
 export function mount(root, ctx) {
   const { values } = ctx;
   const panel = el('div', 'r0-panel');

@@ -1,3 +1,4 @@
+// @ts-check
 // Panel `reflect-refract`: a flat water or glass surface from a steep to a grazing view. Each
 // pixel blends the reflected sky and the refracted pool floor by the exact Fresnel F at that
 // pixel's angle (reflect-refract.frag.glsl); the numbers are for the centre ray.
@@ -35,6 +36,11 @@ const PRESETS = [
   ...dielectrics.filter((m) => m.id !== 'air'),
 ];
 
+/**
+ * @param {HTMLElement} root
+ * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @returns {import('../../host/panelContract.js').PanelInstance}
+ */
 export function mount(root, ctx) {
   const { values } = ctx;
   const dom = buildReflectRefractDom(root);

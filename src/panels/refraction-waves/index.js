@@ -1,3 +1,4 @@
+// @ts-check
 // Panel `refraction-waves`: plane wavefronts crossing a horizontal interface, slowing to c/n and
 // shortening to λ/n, bent by Snell's law; past the critical angle only an evanescent field is
 // left below. The wave numbers and amplitudes come from src/optics/waves.js; the fragment shader
@@ -24,6 +25,11 @@ const LAMBDA0_NM = 550; // the vacuum wavelength quoted in the labels (green lig
 const HALF_HEIGHT = 3;  // the view is 6 vacuum wavelengths tall
 const RAY_LENGTH = 2.4;
 
+/**
+ * @param {HTMLElement} root
+ * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @returns {import('../../host/panelContract.js').PanelInstance}
+ */
 export function mount(root, ctx) {
   const { values } = ctx;
   // Reduced motion: start on a still frame; Play is one click (or Enter) away.

@@ -1,3 +1,4 @@
+// @ts-check
 // Panel `refractive-index`: the dielectrics of src/optics/materials.js in a sortable table (n,
 // speed c/n, R0 from air, critical angle to air, source), plus a live "Custom" row. "Use" applies
 // a material's n to every panel of the page. Rows come from src/optics/materialRows.js.
@@ -15,6 +16,11 @@ export const schema = {
   customN: { type: 'number', default: 1.5, min: 1, max: 3, step: 0.0001, label: 'Custom n' },
 };
 
+/**
+ * @param {HTMLElement} root
+ * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @returns {import('../../host/panelContract.js').PanelInstance}
+ */
 export function mount(root, ctx) {
   const { values } = ctx;
   const rows = materialRows();

@@ -1,3 +1,4 @@
+// @ts-check
 // Panel `schlick`: Schlick's approximation typeset with the live R0 put in, exact against
 // Schlick (and Schlick on cos θt from the denser side) over θ with the error curves, the largest
 // error of each found by sampling, and a readout at a chosen θ. No WebGL: KaTeX + uPlot.
@@ -31,6 +32,11 @@ const SERIES = [
 
 const fixed = (value, digits = 6) => fixedTo(value, digits);
 
+/**
+ * @param {HTMLElement} root
+ * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @returns {import('../../host/panelContract.js').PanelInstance}
+ */
 export function mount(root, ctx) {
   const { values } = ctx;
   const panel = el('div', 'sk-panel');

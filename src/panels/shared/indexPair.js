@@ -1,3 +1,4 @@
+// @ts-check
 // The indices of refraction of an interface as the lecture writes them: n_i on the side the light
 // comes from, n_t on the side it goes to. One schema part for every panel with two media, one for
 // the panels whose light always comes from air (n_i = 1), and the swap button.
@@ -7,6 +8,9 @@ const INDEX_RANGE = { min: 1, max: 3 };
 /**
  * { nI, nT } schema entries. aliases: older URL keys of each ({ nI: ['n1'], nT: ['n2'] }), so
  * links shared before the rename still open the same view.
+ * @param {{ incident?: string, transmitted?: string, nI?: number, nT?: number, step?: number,
+ *   aliases?: { nI?: string[], nT?: string[] } }} [options]
+ * @returns {import('../../host/panelContract.js').Schema}
  */
 export function indexPair({
   incident = 'incident side', transmitted = 'transmitted side', nI = 1, nT = 1.5, step = 0.0001, aliases = {},
@@ -17,12 +21,20 @@ export function indexPair({
   };
 }
 
-/** { nT } for a medium lit from air (n_i = 1): a coat, a road, a pool. aliases: older keys (['n']). */
-export function transmittedIndex({ what, nT = 1.5, step = 0.001, aliases } = {}) {
+/**
+ * { nT } for a medium lit from air (n_i = 1): a coat, a road, a pool. aliases: older keys (['n']).
+ * @param {{ what: string, nT?: number, step?: number, aliases?: string[] }} options
+ * @returns {import('../../host/panelContract.js').Schema}
+ */
+export function transmittedIndex({ what, nT = 1.5, step = 0.001, aliases }) {
   return { nT: { type: 'number', default: nT, ...INDEX_RANGE, step, label: `n_t (${what})`, aliases } };
 }
 
-/** A button that swaps n_i and n_t (light leaving the denser side). */
+/**
+ * A button that swaps n_i and n_t (light leaving the denser side).
+ * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @param {import('lil-gui').default} folder
+ */
 export function addSwap(ctx, folder, name = 'Swap n_i ↔ n_t') {
   return folder.add({ swap: () => ctx.set({ nI: ctx.values.nT, nT: ctx.values.nI }) }, 'swap').name(name);
 }

@@ -29,7 +29,7 @@ function formatPower(e) {
 }
 
 /**
- * data: { points: [{ id, x, xMin, xMax, y, nan, recommended, passes }], front: [point index],
+ * data: { points: [{ id, name, x, xMin, xMax, y, nan, recommended, passes }], front: [point index],
  * budget: { codes, label }, xLabel, yLabel, title }. y is in 8-bit codes (0 is drawn at the floor).
  */
 export function createScatter(container, { ariaLabel }) {
@@ -199,7 +199,7 @@ export function createScatter(container, { ariaLabel }) {
     g.textBaseline = 'middle';
     g.textAlign = 'left';
     for (const { p, px, py } of [...drawn].sort((a, b) => a.px - b.px)) {
-      const label = p.recommended ? `${p.id} ★` : p.id;
+      const label = p.recommended ? `${p.name} ★` : p.name;
       const w = g.measureText(label).width;
       const candidates = [];
       for (const k of [0, -1, 1, -2, 2, -3, 3, -4, 4]) {

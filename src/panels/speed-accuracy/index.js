@@ -1,3 +1,4 @@
+// @ts-check
 // Panel `speed-accuracy`: every Fresnel method as a point, cost against worst display error, for a
 // scene (domain and precision from scenes.js), with the Pareto front, the chosen budget as a line,
 // and the advisor's pick (advisor.recommend via displayBudgets.recommendWithin) with its reason.
@@ -61,6 +62,11 @@ function noiseNote(rows) {
     + 'the machine was busy, so the order of close methods is uncertain; run again when it is idle.' : '';
 }
 
+/**
+ * @param {HTMLElement} root
+ * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @returns {import('../../host/panelContract.js').PanelInstance}
+ */
 export function mount(root, ctx) {
   const { values } = ctx;
   let results = loadCachedResults();
@@ -158,7 +164,7 @@ export function mount(root, ctx) {
       };
     });
     const points = rows.map((r) => ({
-      id: r.methodId, x: r.x, xMin: r.xMin, xMax: r.xMax, y: r.maxCodes, nan: !Number.isFinite(r.maxCodes),
+      id: r.methodId, name: methodById(r.methodId).short, x: r.x, xMin: r.xMin, xMax: r.xMax, y: r.maxCodes, nan: !Number.isFinite(r.maxCodes),
       passes: r.passes, recommended: r.recommended,
     }));
     const front = paretoFront(points.map((p) => ({ x: p.x, y: p.nan ? Infinity : p.y })));

@@ -34,6 +34,8 @@ const CACHE_KEY = 'fresnel-lab:speed-accuracy:results';
  * benchResults(); without WebGL2 the GPU and frame parts are null and the CPU is still timed;
  * a GPU timing that fails (a shader the driver rejects) is reported in device.gpuError, a read-back
  * that fails (no float render targets) in device.gpuReadbackError.
+ * @param {HTMLElement} host
+ * @param {{ size?: string, onProgress?: (fraction: number, label: string) => void, signal?: AbortSignal }} [options]
  */
 export async function runBenchmark(host, { size = 'normal', onProgress, signal } = {}) {
   const config = BENCH_SIZES[size];

@@ -1,3 +1,4 @@
+// @ts-check
 // Hero panel `spheres`: exact Fresnel vs Schlick on three spheres (exact, Schlick, error heatmap),
 // one camera and light, with the live R(θ) plot below. Hovering a sphere marks that pixel's θ.
 import { colormapGradient } from '../../ui/colormap.js';
@@ -18,6 +19,11 @@ export { schema };
 
 const VIEW_KEYS = ['viewAz', 'viewEl', 'viewDist'];
 
+/**
+ * @param {HTMLElement} root
+ * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @returns {import('../../host/panelContract.js').PanelInstance}
+ */
 export function mount(root, ctx) {
   const { values } = ctx;
   const dom = buildSpheresDom(root);

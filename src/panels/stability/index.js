@@ -1,3 +1,4 @@
+// @ts-check
 // Panel `stability`: where each dielectric Fresnel method fails, over θ 0°–90° × n_i/n_t
 // 0.4–2.5 (both axes linear), on this GPU (RGBA32F read-back, classified in JS) beside the
 // JavaScript emulation (stabilityMap.classify). The precision picks the pair: GPU highp beside JS
@@ -40,6 +41,11 @@ export function pairFor(precision) {
 const fmt = (v) => (Number.isFinite(v) ? v.toPrecision(6) : String(v));
 const failing = (map) => map.width * map.height - map.counts.fine;
 
+/**
+ * @param {HTMLElement} root
+ * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @returns {import('../../host/panelContract.js').PanelInstance}
+ */
 export function mount(root, ctx) {
   const { values } = ctx;
   const dom = buildStabilityDom(root);
@@ -206,8 +212,8 @@ export function mount(root, ctx) {
       return { filename: `stability-${values.method}-${values.precision}.csv`, columns };
     },
     png() {
-      return composePng([['gpu', dom.gpu], ['js', dom.js]].filter(([side]) => maps[side])
-        .map(([side, d]) => ({ canvas: d.canvas, title: sideTitle(side), map: maps[side] })),
+      return composePng(['gpu', 'js'].filter((side) => maps[side])
+        .map((side) => ({ canvas: dom[side].canvas, title: sideTitle(side), map: maps[side] })),
       `${methodById(values.method).label}${fullMediump() ? ' (mediump runs at full precision on this GPU)' : ''}`);
     },
     dispose() {
