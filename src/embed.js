@@ -6,7 +6,8 @@ import { loadPanel } from './panels/loadPanel.js';
 import { createPanelHost } from './host/createPanelHost.js';
 import { connectMessages } from './host/messageApi.js';
 import { applyTheme, loadTheme } from './ui/theme.js';
-import { showNotice } from './host/notices.js';
+import { setSubscripted } from './ui/subscripts.js';
+import { showNotice } from './host/showNotice.js';
 import { contextStats } from './gl/contextBudget.js';
 
 const root = document.getElementById('embed');
@@ -29,7 +30,7 @@ window.fresnelLab.ready = (async () => {
   document.title = `Fresnel Lab: ${entry.title}`;
   const heading = document.createElement('h1');
   heading.className = 'embed-title';
-  heading.textContent = entry.title;
+  setSubscripted(heading, entry.title); // n_t with a real subscript, as the lecture page's heading
   root.append(heading);
   let panel;
   try {

@@ -6,9 +6,9 @@ import { PANEL_IDS, lecturePrefix, panelEntry } from './panels/manifest.js';
 import { loadPanel, missingModules } from './panels/loadPanel.js';
 import { createPanelHost } from './host/createPanelHost.js';
 import { managePanels } from './host/managePanels.js';
-import { setupLectureMode } from './host/lectureMode.js';
-import { setupPageControls } from './host/pageControls.js';
-import { showNotice } from './host/notices.js';
+import { setupLectureMode } from './host/setupLectureMode.js';
+import { setupPageControls } from './host/setupPageControls.js';
+import { showNotice } from './host/showNotice.js';
 import { contextStats, MAX_LIVE_CONTEXTS } from './gl/contextBudget.js';
 import { describeProblem, readParams } from './host/params.js';
 

@@ -13,9 +13,3 @@ export const shaderChunks = Object.fromEntries(
 export function assembleShader(source, extra = {}) {
   return resolveIncludes(source, { ...shaderChunks, ...extra });
 }
-
-/** The named shared chunk with its includes resolved. */
-export function shaderSource(name) {
-  if (!(name in shaderChunks)) throw new Error(`no shader named ${name}`);
-  return assembleShader(shaderChunks[name]);
-}

@@ -8,7 +8,7 @@
 import { applyParams, describeProblem } from './params.js';
 import { bindGui, createPanelGui } from './bindGui.js';
 import { readUrlState, urlWriter } from './urlState.js';
-import { showNotice } from './notices.js';
+import { showNotice } from './showNotice.js';
 import { copyText, downloadText, downloadUrl, toCsv } from './exporters.js';
 import { embedCode, embedUrl, lectureUrl } from './shareLinks.js';
 import { checkInstance } from './panelContract.js';
@@ -96,22 +96,45 @@ export function createPanelHost(container, panel, {
     for (const canvas of content.querySelectorAll('canvas')) canvas.setAttribute('aria-describedby', description.id);
   }
 
+  // A change made while the panel is redrawing (ctx.set inside update) waits for that redraw to
+  // end, then redraws in turn: update never runs inside itself, and the description, the URL and
+  // the listeners follow once, with every key.
+  let updating = false;
+  let waiting = [];
+
   /** Values changed: controls, picture, description, URL, listeners. */
   function changed(keys, source) {
     for (const key of keys) {
       draft[key] = values[key];
       controllers[key]?.updateDisplay();
     }
-    instance?.update(keys);
+    if (updating) {
+      waiting.push(...keys);
+      return;
+    }
+    const all = new Set(keys);
+    updating = true;
+    try {
+      instance?.update(keys);
+      while (waiting.length) {
+        const next = [...new Set(waiting)];
+        waiting = [];
+        next.forEach((key) => all.add(key));
+        instance?.update(next);
+      }
+    } finally {
+      updating = false;
+      waiting = [];
+    }
     refreshDescription();
     writeUrl(values);
-    for (const listener of listeners) listener({ keys, source });
+    for (const listener of listeners) listener({ keys: [...all], source });
   }
 
   /**
    * Validated partial update; keys may be aliases. Rejected values are named on screen and the
    * controls show the values kept. source: 'user' (a control or the panel), 'api' (a message),
-   * 'page' (the page-wide material), 'url'.
+   * 'page' (the page-wide material).
    */
   function set(update, { source = 'api' } = {}) {
     const result = applyParams(schema, values, update);

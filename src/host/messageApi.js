@@ -1,6 +1,7 @@
 // The message API between a slide deck and an embedded panel (window.postMessage):
 //   deck → panel  {type:'fresnel-lab:set', params}   validated; rejected values answer fresnel-lab:error
 //   deck → panel  {type:'fresnel-lab:get'}           answers {type:'fresnel-lab:state', panel, params}
+//   panel → deck  {type:'fresnel-lab:state', …}       also after a change made in the panel (a control, a drag)
 //   panel → deck  {type:'fresnel-lab:ready', panel, params} once mounted
 //   panel → deck  {type:'fresnel-lab:rendered', panel, frame} after each frame drawn
 // Anything else is ignored. Nothing from a message is evaluated or inserted as HTML.
@@ -42,9 +43,23 @@ export function connectMessages(host, { parent = window.parent } = {}) {
     post(reply, { type: 'fresnel-lab:state', panel: host.id, params: snapshot(host.values) });
   };
   window.addEventListener('message', onMessage);
+  // Changes the deck did not ask for (a control, a drag, the page): the new state, at most once per
+  // animation frame, so a slider drag does not flood the deck.
+  let pending = 0;
+  const stopListening = host.onChange(({ source }) => {
+    if (source === 'api' || pending) return;
+    pending = requestAnimationFrame(() => {
+      pending = 0;
+      announce({ type: 'fresnel-lab:state', panel: host.id, params: snapshot(host.values) });
+    });
+  });
   return {
     ready: () => announce({ type: 'fresnel-lab:ready', panel: host.id, params: snapshot(host.values) }),
     rendered: (frame) => announce({ type: 'fresnel-lab:rendered', panel: host.id, frame }),
-    disconnect: () => window.removeEventListener('message', onMessage),
+    disconnect() {
+      window.removeEventListener('message', onMessage);
+      stopListening();
+      cancelAnimationFrame(pending);
+    },
   };
 }

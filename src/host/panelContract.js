@@ -21,9 +21,9 @@
 /** @typedef {Record<string, ParamSpec>} Schema */
 
 /**
- * Where a change came from: a control or the panel's own picture ('user'), a message ('api'),
- * the page-wide material ('page'), or the link the page opened with ('url').
- * @typedef {'user'|'api'|'page'|'url'} ChangeSource
+ * Where a change came from: a control or the panel's own picture ('user'), a message ('api'), or
+ * the page-wide material ('page'). (Values read from the link at start are not a change.)
+ * @typedef {'user'|'api'|'page'} ChangeSource
  */
 
 /**
@@ -32,7 +32,9 @@
  * @property {any} values  the current values, read-only (writing one throws): the host owns them
  * @property {(update: Record<string, any>, options?: { source?: ChangeSource }) =>
  *   { applied: object, rejected: object[], changed: string[] }} set
- *   change values: validated, then controls, URL, picture and messages follow (update(keys) runs)
+ *   change values: validated, then controls, URL, picture and messages follow (update(keys) runs).
+ *   Called inside update, the host runs update again with those keys once this one returns;
+ *   called during mount (before mount returns), it sets the values and the link only.
  * @property {() => void} invalidate  something other than the values changed (a result arrived): update([]) and describe() again
  * @property {import('lil-gui').default} gui  this mount's lil-gui root
  * @property {(folder: import('lil-gui').default | null, keys: string[]) => Record<string, object>} bind

@@ -18,10 +18,3 @@ export function urlWriter(schema, prefix = '', delayMs = 150) {
     }, delayMs);
   };
 }
-
-/** A link to the current page with these values in its query. */
-export function linkFor(schema, values, prefix = '') {
-  const url = new URL(window.location.href);
-  writeParams(schema, values, url.searchParams, prefix);
-  return url.toString();
-}

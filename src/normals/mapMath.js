@@ -6,12 +6,14 @@
 // normalize(−∂h/∂u, −∂h/∂v, 1) with +Y up, the OpenGL convention of three.js and glTF (glTF 2.0
 // spec, material.normalTexture: "+X is right and +Y is up").
 
+import { DEG } from '../optics/angles.js';
+
 export function fract(x) {
   return x - Math.floor(x);
 }
 
 export function degToRad(deg) {
-  return (deg * Math.PI) / 180;
+  return deg * DEG;
 }
 
 /** Writes the unit normal of slope (bx, by) into out and returns it. */

@@ -1,9 +1,8 @@
 // Rows of the refractive-index table: each dielectric of materials.js seen from air (n = 1),
 // plus an optional custom index, and a stable sort by any column. Pure data, no DOM.
+import { toDegrees } from './angles.js';
 import { dielectrics, dielectricSummary } from './materials.js';
-
-/** Speed of light in vacuum, exact by the SI definition of the metre (BIPM, SI Brochure 9th ed.). */
-export const C_KM_PER_S = 299792.458;
+import { SPEED_OF_LIGHT_KM_S } from './waves.js';
 
 export const SORT_KEYS = ['name', 'n', 'speed', 'r0', 'critical', 'source'];
 
@@ -16,9 +15,9 @@ export function materialRow(material) {
     n: s.n,
     source: s.source,
     speed: s.speed,
-    speedKmS: C_KM_PER_S * s.speed,
+    speedKmS: SPEED_OF_LIGHT_KM_S * s.speed,
     r0: s.r0,
-    critical: s.criticalAngle === null ? null : (s.criticalAngle * 180) / Math.PI,
+    critical: s.criticalAngle === null ? null : toDegrees(s.criticalAngle),
   };
 }
 

@@ -3,6 +3,7 @@
 // [0, 1], error above a tolerance, or fine. This is where the numerical failures show:
 // the slide's 1 + c² − m² at matched media near grazing, Schlick past the critical angle, and the
 // exact forms in float16 near the critical angle.
+import { DEG } from './angles.js';
 import { fresnelExact } from './fresnel.js';
 import { cosTheta, linspace } from './errorMetrics.js';
 import { methodById } from './methods.js';
@@ -55,7 +56,7 @@ export function classify(methodId, precision, { width = 181, height = 106, toler
   }
   const P = contextFor(precision);
   const thetaDeg = Float64Array.from(linspace(THETA_RANGE_DEG[0], THETA_RANGE_DEG[1], width));
-  const cos = thetaDeg.map((t) => cosTheta(t === 90 ? Math.PI / 2 : (t * Math.PI) / 180));
+  const cos = thetaDeg.map((t) => cosTheta(t === 90 ? Math.PI / 2 : t * DEG));
   const ratio = ratioRows(height);
   const cells = new Uint8Array(width * height);
   const tally = [0, 0, 0, 0];

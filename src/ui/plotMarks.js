@@ -3,8 +3,9 @@
 // Angles in degrees, to two decimals (both landmarks are exact: atan(n_t/n_i) and asin(n_t/n_i)).
 import { angle } from './format.js';
 
-export function brewsterMark(deg) {
-  return deg == null ? null : { x: deg, color: '--c-brewster', label: `Brewster ${angle(deg)}` };
+/** note: added after the angle, e.g. ' (Rp = 0)' where the plot shows Rp. */
+export function brewsterMark(deg, note = '') {
+  return deg == null ? null : { x: deg, color: '--c-brewster', label: `Brewster ${angle(deg)}${note}` };
 }
 
 /** null when there is no critical angle (n_i ≤ n_t). */

@@ -133,6 +133,9 @@ test('the message API sets, gets and rejects, and announces ready and rendered f
     frame.contentWindow.postMessage({ type: 'fresnel-lab:get' }, '*');
     await waitFor('fresnel-lab:error');
     await waitFor('fresnel-lab:state', 3);
+    // A change made in the panel itself (here as a control would make it) is announced too.
+    frame.contentWindow.fresnelLab.hosts.spheres.set({ nT: 1.9 }, { source: 'user' });
+    await waitFor('fresnel-lab:state', 4);
     return messages;
   }, `${baseURL}embed.html?panel=spheres`);
   const ready = log.find((m) => m.type === 'fresnel-lab:ready');
@@ -142,7 +145,8 @@ test('the message API sets, gets and rejects, and announces ready and rendered f
   expect(error.message).toContain('nI');
   expect(error.message).toContain('bogus');
   const states = log.filter((m) => m.type === 'fresnel-lab:state');
-  expect(states.at(-1).params).toMatchObject({ nI: 1, nT: 2.4 });
+  expect(states.at(-2).params).toMatchObject({ nI: 1, nT: 2.4 });
+  expect(states.at(-1).params).toMatchObject({ nI: 1, nT: 1.9 });
 });
 
 test('a link full of garbage loads with notices and defaults', async ({ page }) => {

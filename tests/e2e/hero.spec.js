@@ -116,9 +116,18 @@ test('without WebGL2 the page says so and the plot still works', async ({ page }
   });
   await page.goto('./');
   await page.evaluate(() => window.fresnelLab.ready);
-  await expect(page.locator('.stage-message')).toContainText('WebGL2');
-  await expect(page.locator('.plot canvas')).toBeVisible();
-  await expect(page.locator('.summary')).toContainText('0.04000');
+  const hero = page.locator('section[data-panel="spheres"]');
+  await expect(hero.locator('.stage-message')).toContainText('WebGL2');
+  await expect(hero.locator('.stage-canvas')).toBeHidden(); // the message replaces the picture
+  await expect(hero.locator('.plot canvas')).toBeVisible();
+  await expect(hero.locator('.summary')).toContainText('0.04000');
+  // The two-sphere stage falls back the same way: no blank canvas, no labels over nothing.
+  await page.goto('./embed.html?panel=fresnel-lighting');
+  await page.evaluate(() => window.fresnelLab.ready);
+  await expect(page.locator('.stage-message')).toContainText('The spheres need WebGL2');
+  await expect(page.locator('.twin-stage-canvas')).toBeHidden();
+  await expect(page.locator('.twin-stage-labels')).toBeHidden();
+  await expect(page.locator('.fl-summary')).toContainText('0.0400');
 });
 
 test('an embed shows one panel, and an unknown id lists the valid ones', async ({ page }) => {

@@ -64,7 +64,7 @@ test('on the lecture page "Use" on water sets n in the other panels', async ({ p
   await expect(use).toHaveText('In use');
   await expect(section.locator('tr[data-id="water"]')).toHaveAttribute('aria-current', 'true');
   expect(await page.evaluate(() => window.fresnelLab.hosts.spheres.values.nT)).toBe(1.3333);
-  // The neighbouring panels take it too, through their materialParam.
+  // The neighbouring panels take it too, through the manifest's material parameter (n_t).
   const nT = await page.evaluate(() => ['angle-ratio', 'polarization'].map((id) => window.fresnelLab.hosts[id]?.values.nT));
   expect(nT).toEqual([1.3333, 1.3333]);
   await expect(page).toHaveURL(/refractive-index\.selected=water/);

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { C_KM_PER_S, SORT_KEYS, customRow, materialRows, sortMaterialRows } from '../../src/optics/materialRows.js';
+import { SORT_KEYS, customRow, materialRows, sortMaterialRows } from '../../src/optics/materialRows.js';
+import { SPEED_OF_LIGHT_KM_S } from '../../src/optics/waves.js';
 import { COLUMNS, formatIndex, formatKmS } from '../../src/panels/refractive-index/buildIndexTable.js';
 
 const rows = materialRows();
@@ -18,7 +19,7 @@ describe('material rows (refractive-index panel)', () => {
     expect(water.critical.toFixed(1)).toBe('48.6');
     expect(water.critical).toBeCloseTo((Math.asin(1 / 1.3333) * 180) / Math.PI, 12);
     expect(water.speed).toBeCloseTo(1 / 1.3333, 15);
-    expect(water.speedKmS).toBeCloseTo(C_KM_PER_S / 1.3333, 9);
+    expect(water.speedKmS).toBeCloseTo(SPEED_OF_LIGHT_KM_S / 1.3333, 9);
     expect(formatKmS(water.speedKmS)).toBe('224\u202f850');
   });
   it('sorting by n puts diamond last ascending and first descending', () => {

@@ -4,6 +4,7 @@
 // angle grows towards 1 there (lecture, "Specular"). Fresnel off keeps F = R0 and shows what a model
 // without it misses. Every number comes from model.js (float64).
 import { createShaderView } from '../../gl/createShaderView.js';
+import { DEG } from '../../optics/angles.js';
 import { normalIncidence } from '../../optics/fresnel.js';
 import { transmittedIndex } from '../shared/indexPair.js';
 import { startWebGL } from '../shared/startWebGL.js';
@@ -55,7 +56,7 @@ export function mount(root, ctx) {
     uniforms: {
       uForward: { value: [0, -1, 0] }, uUp: { value: [0, 0, 1] }, uRight: { value: [-1, 0, 0] },
       uSunDir: { value: [0, 0.17, 0.98] },
-      uTanHalfFov: { value: Math.tan((SCENE.fovY / 2) * (Math.PI / 180)) },
+      uTanHalfFov: { value: Math.tan((SCENE.fovY / 2) * DEG) },
       uCameraHeight: { value: SCENE.cameraHeight },
       uN: { value: 1.55 }, uAlpha: { value: 0.64 }, uFresnel: { value: 1 },
       uAlbedo: { value: SCENE.albedo }, uSun: { value: SCENE.sun }, uAmbient: { value: SCENE.ambient },

@@ -129,7 +129,7 @@ export function buildChangingSpecularDom(host) {
         + `${h.F.toFixed(4)} \\times ${lobe} = \\mathbf{${h.phongF.toFixed(4)}}`, { display: false });
       const ratio = (h.F / h.R0).toFixed(2);
       note.textContent = h.R0 === 0
-        ? 'At the centre of each view. With n = 1 there is no interface: nothing is reflected at any angle.'
+        ? 'At the centre of each view. With n_t = 1 there is no interface: nothing is reflected at any angle.'
         : `At the centre of each view. F is ${ratio}× R0 here, so the right-hand floor reflects ${ratio}× `
           + 'the light of the left one at every point of its highlight.';
     },

@@ -72,7 +72,7 @@ export function mount(root, ctx) {
   function update(keys = []) {
     const link = linkUpdate(keys);
     if (link) {
-      ctx.set(link); // draws once, with both elevations
+      ctx.set(link); // the host runs update again with the followed key: that draws, not this one
       return;
     }
     if (curvesN !== values.nT) {

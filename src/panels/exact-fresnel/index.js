@@ -139,6 +139,7 @@ export function mount(root, ctx) {
 
   function update() {
     const { theta, nI, nT } = values;
+    // Math.cos, not cosDeg: at 90° its 6e-17 is the tiny c that shows the slide's order failing.
     const cos = Math.cos(theta * DEG);
     terms = fresnelTerms(cos, nI, nT);
     exact = fresnelExact(cos, nI, nT);

@@ -16,7 +16,7 @@ import './styles.css';
 
 export const schema = {
   metal: { type: 'enum', default: 'gold', options: Object.fromEntries(metals.map((m) => [m.id, m.name])), label: 'Metal (right)' },
-  fresnel: { type: 'enum', default: 'exact', options: { exact: 'Exact conductor Fresnel', schlick: "Schlick's approximation" }, label: 'Metal sphere uses' },
+  fresnel: { type: 'enum', default: 'exact', options: { exact: 'Exact', schlick: 'Schlick' }, label: 'Metal sphere uses' },
   ...transmittedIndex({ what: 'dielectric, left', aliases: ['n'] }),
 };
 

@@ -110,7 +110,7 @@ export function buildMipStrip(host, { onPick } = {}) {
 
   return {
     /** chains from buildAllChains; technique and base α pick the α′ row. Returns the level-wise mean |N_a|. */
-    draw(chains, technique, alpha, { precision, channels }) {
+    draw(chains, technique, alpha, { precision, precisionName = precision, channels }) {
       const naive = chains.naive;
       const levels = naive.levels.length;
       if (cells[0]?.length !== levels) layout(levels);
@@ -128,7 +128,7 @@ export function buildMipStrip(host, { onPick } = {}) {
         paint(cells[2][l], size, (t) => heat(texelLobe(chains[technique], l, t, base, lobe).alpha));
         meanLength.push(meanStoredLength(naive, l));
       });
-      costs.replaceChildren(el('caption', '', `Storage of each technique's whole chain (${naive.size}², ${precision}, ${channels} channels)`));
+      costs.replaceChildren(el('caption', '', `Storage of each technique's whole chain (${naive.size}², ${precisionName}, ${channels} channels)`));
       const head = el('tr');
       head.append(el('th', '', 'Technique'), el('th', '', 'KiB'), el('th', '', 'scalars / texel'), el('th', '', 'keeps the spread'));
       costs.append(head);

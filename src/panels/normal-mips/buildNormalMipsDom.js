@@ -46,7 +46,7 @@ export function buildNormalMipsDom(host) {
   shimmer.setAttribute('aria-live', 'polite');
   const tableWrap = el('div', 'nm-table-wrap');
   tableWrap.append(table);
-  const plotSlot = el('div', 'nm-plot-slot'); // the error-by-distance plot (normal-mipsPlot.js)
+  const plotSlot = el('div', 'nm-plot-slot'); // the error-by-distance plot (createErrorDistancePlot.js)
   root.append(stage, summary, legend, title, tableWrap, plotSlot, shimmer);
   host.append(root);
 

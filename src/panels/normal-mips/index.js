@@ -31,13 +31,13 @@ export const schema = {
   technique: { type: 'enum', default: 'toksvig', options: TECHNIQUE_NAMES, label: 'Technique' },
   alpha: { type: 'number', default: 0.2, min: 0.02, max: 1, step: 0.005, label: 'Base roughness α' },
   precision: { type: 'enum', default: 'f16', options: { u8: '8-bit unorm', f16: '16-bit float', f32: '32-bit float' }, label: 'Storage precision' },
-  channels: { type: 'enum', default: '3', options: { 3: '3 (x, y, z)', 2: '2 (z rebuilt)' }, label: 'Channels' },
+  channels: { type: 'enum', default: '3', options: ['3', '2'], label: 'Channels (2: z rebuilt)' },
   level: { type: 'number', default: -1, min: -1, max: 10, step: 1, label: 'Mip level (−1: auto)' },
   anisotropy: { type: 'enum', default: '1', options: ['1', '2', '4', '8', '16'], label: 'Anisotropic taps (1 = off)' },
   overlay: { type: 'boolean', default: false, label: 'Colour the mip level in use' },
   view: {
     type: 'enum', default: 'split', label: 'Picture',
-    options: { split: 'Split: technique | truth', technique: 'Technique only', truth: 'Ground truth only', difference: 'Difference' },
+    options: { split: 'Split', technique: 'Technique', truth: 'Ground truth', difference: 'Difference' },
   },
   viewEl: { type: 'number', default: 8, min: 2, max: 40, step: 0.5, label: 'View angle below horizon °' },
   lightEl: { type: 'number', default: 6, min: 1, max: 60, step: 0.5, label: 'Light elevation °' },
@@ -224,7 +224,7 @@ export function mount(root, ctx) {
     const base = values.alpha;
     const channels = Number(values.channels);
     if (has([...CHAIN_KEYS, 'technique', 'alpha']) || !stripStats) {
-      stripStats = strip.draw(chains, values.technique, base, { precision: values.precision, channels });
+      stripStats = strip.draw(chains, values.technique, base, { precision: values.precision, precisionName: optionLabel(schema.precision, values.precision), channels });
     }
     if (has([...CHAIN_KEYS, ...INSPECT_KEYS, 'alpha']) || !inspected) {
       const level = Math.min(values.texelLevel, levels - 1);
@@ -239,7 +239,7 @@ export function mount(root, ctx) {
     dom.setSummary(`${TECHNIQUE_NAMES[values.technique]}, ${optionLabel(schema.precision, values.precision)}, ${values.channels} channels; base Beckmann α = ${base} `
       + `(Blinn-Phong s = ${exponentFromAlpha(base).toFixed(1)}); mip level ${values.level < 0 ? `automatic, ${anisoText}` : `forced to ${Math.min(values.level, levels - 1)}`} `
       + `of 0–${levels - 1}; R0 = ${normalIncidence(1, IOR).toFixed(3)}; all six chains of the ${built.size}² map built in ${built.ms.toFixed(0)} ms (${built.where}).`
-      + (values.precision === 'f32' && scene && !scene.floatLinear ? ' This GPU cannot filter 32-bit float textures: pick f16.' : ''));
+      + (values.precision === 'f32' && scene && !scene.floatLinear ? ' This GPU cannot filter 32-bit float textures: pick 16-bit float.' : ''));
     dom.setLegend(`level ${levels - 1} (difference: 0 to 0.25)`);
     if (!scene) return;
     if (changed?.size === 0) { // a re-describe (new errors, a finished build): nothing to draw

@@ -102,7 +102,7 @@ export function mount(root, ctx) {
       items.atBrewster.dd.textContent = `Rp = ${b.p.toFixed(4)}, Rs = ${b.s.toFixed(4)}`;
       items.critical.dd.textContent = critical === null ? 'none (n_i ≤ n_t)' : `${critical.toFixed(2)}°`;
     }
-    plot.setMarks([brewsterMark(brewster), criticalMark(critical), thetaMark(theta)]);
+    plot.setMarks([brewsterMark(brewster, ' (Rp = 0)'), criticalMark(critical), thetaMark(theta, `θ = ${theta.toFixed(2)}°`)]);
     point = at(theta, nI, nT);
     readout.textContent = `At θ = ${theta.toFixed(2)}°   Rs = ${point.s.toFixed(4)}   Rp = ${point.p.toFixed(4)}   `
       + `unpolarized mean = ${point.mean.toFixed(4)}`;

@@ -6,6 +6,7 @@ import { createShaderView } from '../../gl/createShaderView.js';
 import { DEG } from '../../optics/angles.js';
 import { dielectrics } from '../../optics/materials.js';
 import { transmittedIndex } from '../shared/indexPair.js';
+import { indexPresets } from '../shared/indexPresets.js';
 import { startWebGL } from '../shared/startWebGL.js';
 import { centreRay, splitByElevation } from './model.js';
 import { buildReflectRefractDom } from './buildReflectRefractDom.js';
@@ -17,8 +18,8 @@ export const schema = {
   ...transmittedIndex({ what: 'surface', nT: 1.333, step: 0.0001, aliases: ['n'] }),
   depth: { type: 'number', default: 1.5, min: 0.2, max: 5, step: 0.1, label: 'Pool depth (tiles)' },
   layer: {
-    type: 'enum', default: 'both', label: 'Show',
-    options: { both: 'Both: F·sky + (1 − F)·floor', reflected: 'Reflected: F·sky', refracted: 'Refracted: (1 − F)·floor' },
+    type: 'enum', default: 'both', label: 'Show F·sky, (1−F)·floor or both',
+    options: { both: 'Both', reflected: 'F·sky only', refracted: '(1 − F)·floor only' },
   },
 };
 
@@ -61,16 +62,12 @@ export function mount(root, ctx) {
     },
   }), 'The picture needs WebGL2; the numbers below still work.');
 
-  const presetOptions = Object.fromEntries(PRESETS.map((p) => [`${p.name} (${p.n})`, p.id]));
-  presetOptions.Custom = 'custom';
-  const presetFor = (n) => PRESETS.find((p) => Math.abs(p.n - n) < 5e-7)?.id ?? 'custom';
-  const presetState = { material: presetFor(values.nT) };
+  const presets = indexPresets(PRESETS);
+  const presetState = { material: presets.idFor(values.nT) };
   ctx.bind(ctx.gui.addFolder('View'), ['elevation']);
   const surface = ctx.gui.addFolder('Surface');
-  const preset = surface.add(presetState, 'material', presetOptions).name('Material')
-    .onChange((pid) => {
-      if (pid !== 'custom') ctx.set({ nT: PRESETS.find((p) => p.id === pid).n });
-    });
+  const preset = surface.add(presetState, 'material', presets.options).name('Material')
+    .onChange((pid) => pid !== 'custom' && ctx.set({ nT: presets.index(pid) }));
   ctx.bind(surface, ['nT', 'depth']);
   ctx.bind(ctx.gui.addFolder('Picture'), ['layer']);
 
@@ -78,7 +75,7 @@ export function mount(root, ctx) {
   function update() {
     ray = centreRay(values.elevation, values.nT);
     dom.show(ray);
-    presetState.material = presetFor(values.nT);
+    presetState.material = presets.idFor(values.nT);
     preset.updateDisplay();
     if (!view) return;
     const u = view.uniforms;

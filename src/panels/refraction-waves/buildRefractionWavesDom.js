@@ -1,7 +1,7 @@
 // The DOM of the refraction-waves panel: the stage (canvas, a label per medium with its
 // wavelength and speed, the total-internal-reflection banner), a play/pause button, the numbers
 // and Snell's law with live values. Styles: styles.css (all under .rw-panel).
-import { toDegrees } from '../../optics/angles.js';
+import { DEG, toDegrees } from '../../optics/angles.js';
 import { angle, fixed } from '../../ui/format.js';
 import { setSubscripted } from '../../ui/subscripts.js';
 import { renderTex, texNumber } from '../../ui/tex.js';
@@ -80,7 +80,7 @@ export function buildRefractionWavesDom(host, { onPlayToggle }) {
       note.textContent = 'The picture shows s-polarized light (electric field out of the screen), incident amplitude 1: '
         + `reflected r_s = ${amplitude(s.r)}, transmitted t_s = 1 + r_s = ${amplitude(s.t)}`
         + `${s.thetaT === null ? ' (evanescent)' : ''}. R and T above are for unpolarized light.`;
-      const lhs = `n_i \\sin\\theta_i = ${texNumber(s.nI, 3)} \\sin ${texNumber(s.thetaI, 2)}^\\circ = ${texNumber(s.nI * Math.sin(s.thetaI * Math.PI / 180), 4)}`;
+      const lhs = `n_i \\sin\\theta_i = ${texNumber(s.nI, 3)} \\sin ${texNumber(s.thetaI, 2)}^\\circ = ${texNumber(s.nI * Math.sin(s.thetaI * DEG), 4)}`;
       renderTex(snell, s.thetaT === null
         ? `${lhs} > n_t = ${texNumber(s.nT, 3)} \\;\\Rightarrow\\; \\text{no } \\theta_t`
         : `${lhs} = n_t \\sin\\theta_t = ${texNumber(s.nT, 3)} \\sin ${texNumber(s.thetaT, 2)}^\\circ`);

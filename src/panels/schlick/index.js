@@ -2,7 +2,7 @@
 // Panel `schlick`: Schlick's approximation typeset with the live R0 put in, exact against
 // Schlick (and Schlick on cos θt from the denser side) over θ with the error curves, the largest
 // error of each found by sampling, and a readout at a chosen θ. No WebGL: KaTeX + uPlot.
-import { DEG } from '../../optics/angles.js';
+import { cosDeg, DEG } from '../../optics/angles.js';
 import {
   fresnelExact, fresnelSchlick, fresnelSchlickTIR, normalIncidence, snellCosT,
 } from '../../optics/fresnel.js';
@@ -110,7 +110,7 @@ export function mount(root, ctx) {
       key = `${nI}|${nT}`;
       refreshCurves();
     }
-    const cos = Math.cos(theta * DEG);
+    const cos = cosDeg(theta);
     const r0 = normalIncidence(nI, nT);
     const exact = fresnelExact(cos, nI, nT);
     const schlick = fresnelSchlick(cos, nI, nT);
@@ -149,7 +149,7 @@ export function mount(root, ctx) {
     get comparison() { return cmp; },
     describe() {
       const { nI, nT, theta } = values;
-      const cos = Math.cos(theta * DEG);
+      const cos = cosDeg(theta);
       const inside = nI > nT
         ? ` Schlick on cos θt is off by at most ${fixed(cmp.worstT.value, 4)} at ${deg(cmp.worstT.theta)}.`
         : '';

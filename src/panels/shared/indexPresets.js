@@ -8,8 +8,8 @@ const LECTURE_VALUES = [
   { id: 'glass-1.5', name: 'Glass (lecture)', n: 1.5 },
 ];
 
-export function indexPresets() {
-  const list = [...LECTURE_VALUES, ...dielectrics];
+/** list: [{ id, name, n }] to offer (the lecture's values and the measured dielectrics by default). */
+export function indexPresets(list = [...LECTURE_VALUES, ...dielectrics]) {
   const options = Object.fromEntries(list.map((m) => [`${m.name} (${m.n})`, m.id]));
   options.Custom = 'custom';
   return {

@@ -4,9 +4,12 @@
 import { WebGL2Unavailable } from '../../gl/contextBudget.js';
 import { el } from '../../ui/el.js';
 
-/** Replaces what the stage shows with a message (its children stay, hidden). */
+/** Replaces what the stage shows with a message (its children stay in the DOM, out of sight). */
 export function showStageFallback(stage, text) {
-  for (const child of stage.children) child.hidden = true;
+  for (const child of stage.children) {
+    child.hidden = true;
+    child.style.display = 'none'; // a stage's own CSS (display: block) would beat [hidden]
+  }
   const message = el('p', 'stage-message', text);
   message.setAttribute('role', 'status');
   stage.append(message);

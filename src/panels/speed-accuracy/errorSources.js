@@ -1,6 +1,6 @@
 // Where the speed-accuracy panel's errors come from: the JS emulation at the scene's precision
 // (rounding.js contexts, advisor.methodError), or values read back from this GPU in highp or
-// mediump (speed-accuracyGpu). The options of the "Error measured by" control, and the words
+// mediump (measureGpuErrors.js). The options of the "Error measured by" control, and the words
 // the chart, the recommendation, describe() and the CSV use to say which one was used.
 
 // Short labels: lil-gui's select is narrow. The chart title and the reason give the details.

@@ -5,13 +5,14 @@
 // Costs are the static SPIR-V instruction counts (computed; see methods.js) until "Run benchmark"
 // measures them on this device (GPU ns per evaluation at the scene's precision, or CPU ns).
 // Errors come from the JS emulation at the scene's precision, or ("Error measured by") from this
-// GPU in highp or mediump: every sample rendered and read back (speed-accuracyGpu, gpuErrors.js).
+// GPU in highp or mediump: every sample rendered and read back (measureGpuErrors.js, gpuErrors.js).
 // ?bench=normal|tiny runs the benchmark on load (npm run bench uses it).
 import { benchCsv, benchResults, benchTable, gpuPrecisionFor, measuredCosts } from '../../optics/benchResults.js';
 import {
   CRITERION, DEFAULT_BUDGET, DISPLAY_BUDGETS, displayBudget, meanDisplayCodes, recommendWithin,
 } from '../../optics/displayBudgets.js';
 import { recommendWithErrors } from '../../optics/gpuErrors.js';
+import { toDegrees } from '../../optics/angles.js';
 import { methodById } from '../../optics/methods.js';
 import { paretoFront } from '../../optics/paretoFront.js';
 import { SCENES, sceneById } from '../../optics/scenes.js';
@@ -50,7 +51,7 @@ function caseText(kind, args) {
 function practicalNote(alt, rec, rows) {
   if (!alt?.invisible || alt.methodId === rec.methodId) return '';
   const row = rows.find((r) => r.methodId === alt.methodId);
-  const where = row.thetaAtMax === null ? '' : ` at ${(row.thetaAtMax * (180 / Math.PI)).toFixed(1)}°`; // as advisor.js writes it
+  const where = row.thetaAtMax === null ? '' : ` at ${toDegrees(row.thetaAtMax).toFixed(1)}°`; // as the advisor's reason writes it
   return ` If a visible error of up to 5 % of the range is acceptable (the judgement behind the Schlick that engines ship), `
     + `${row.label} would do: ${formatCodes(row.maxCodes)} codes at worst${where}, ${formatCodes(row.meanCodes)} on average.`;
 }
@@ -275,7 +276,7 @@ export function mount(root, ctx) {
           worst_codes: rows.map((r) => r.maxCodes),
           mean_codes: rows.map((r) => r.meanCodes),
           max_abs_error: rows.map((r) => r.max),
-          theta_at_max_deg: rows.map((r) => (r.thetaAtMax === null ? NaN : (r.thetaAtMax * 180) / Math.PI)),
+          theta_at_max_deg: rows.map((r) => (r.thetaAtMax === null ? NaN : toDegrees(r.thetaAtMax))),
           within_budget: rows.map((r) => (r.passes ? 1 : 0)),
           on_front: rows.map((r) => (r.onFront ? 1 : 0)),
         },

@@ -1,7 +1,7 @@
 // "Error measured by this GPU": every method of a scene's kind evaluated on a WebGL2 context over
 // the scene's domain (evaluateMethodsGpu: RGBA32F render, FLOAT read-back, NaN kept bit for bit),
 // turned into the advisor's statistics by gpuErrors.errorsFromValues. The panel holds no context
-// (usesWebGL = false): a measurement opens a small one and disposes it when done. Results are kept
+// (its manifest entry says webgl: false): a measurement opens a small one and disposes it when done. Results are kept
 // for the page's session, per scene and precision; the benchmark's read-back seeds them too.
 import { createRenderer, WebGL2Unavailable } from '../../gl/createRenderer.js';
 import { createMethodsGpu, GpuFloatUnavailable, gpuPrecisionInfo } from '../../gl/evaluateMethodsGpu.js';
@@ -33,7 +33,7 @@ export async function gpuErrorsOn(gl, scenes, precisions, { signal, onProgress }
           const values = gpu.evaluate({ methodId: method.id, precision, inputs, extra: domainExtra(scene, method.id) });
           errors[scene.id][precision][method.id] = errorsFromValues(scene, values);
           done += 1;
-          onProgress?.(done, total, `Reading back ${method.id} (${precision}) on this GPU`);
+          onProgress?.(done, total, `Reading back ${method.label} (${precision}) on this GPU`);
           await yieldToPage(); // one program compile at a time: the page stays responsive
         }
       }

@@ -1,6 +1,6 @@
 // "Run benchmark": GPU cost per method (timeMethodsGpu), the GPU's own errors over the default
-// domains in highp and mediump (read back, speed-accuracyGpu), CPU cost per method
-// (timeMethodsCpu, in a worker: speed-accuracyCpu), and the hero's frame cost against three.js MeshPhysicalMaterial, one after the
+// domains in highp and mediump (read back, measureGpuErrors.js), CPU cost per method
+// (timeMethodsCpu, in a worker: timeCpu.js), and the hero's frame cost against three.js MeshPhysicalMaterial, one after the
 // other on the viewer's device, with progress and cancel; results kept for the session
 // (sessionStorage).
 import { createRenderer, WebGL2Unavailable } from '../../gl/createRenderer.js';
@@ -26,6 +26,8 @@ export const BENCH_SIZES = Object.freeze({
 });
 
 const PHASES = { gpu: [0, 0.5], errors: [0.5, 0.6], cpu: [0.6, 0.8], frames: [0.8, 1] }; // share of the progress bar
+// What the progress line says during a phase whose steps carry no label of their own.
+const PHASE_NAMES = { gpu: 'Timing every method on this GPU…', errors: 'Reading errors back from this GPU…', cpu: 'Timing every method in JavaScript…', frames: 'Timing frames…' };
 const CACHE_KEY = 'fresnel-lab:speed-accuracy:results';
 
 /**
@@ -42,7 +44,7 @@ export async function runBenchmark(host, { size = 'normal', onProgress, signal }
   if (!config) throw new RangeError(`unknown benchmark size ${size}`);
   const report = (phase) => (done, total, label) => {
     const [a, b] = PHASES[phase];
-    onProgress?.(a + ((b - a) * done) / Math.max(1, total), label ?? phase);
+    onProgress?.(a + ((b - a) * done) / Math.max(1, total), label ?? PHASE_NAMES[phase]);
   };
   let gpu = null;
   let gpuError = null;

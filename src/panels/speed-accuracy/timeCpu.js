@@ -1,4 +1,4 @@
-// CPU timing for the benchmark, in a worker of its own (speed-accuracyCpuWorker.js) where only the
+// CPU timing for the benchmark, in a worker of its own (cpuWorker.js) where only the
 // float64 arithmetic runs; where workers are unavailable, on the page as before. Resolves to
 // timeMethodsCpu's result plus `where` ('worker' or 'page').
 import { timeMethodsCpu } from '../../optics/timeMethodsCpu.js';

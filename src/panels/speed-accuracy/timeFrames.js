@@ -3,7 +3,8 @@
 // sphere mesh, three viewports, the same sky dome, camera and canvas size), in the same run.
 // Each frame is drawn and fenced by a 1-pixel readPixels, and timed by the GPU timer query where
 // the browser offers it (GPU time only), else by wall clock (GPU time plus the same sync cost on
-// both sides); the median over frames is reported.
+// both sides); the median over frames is reported. It measures the hero itself, so it imports the
+// hero's scene and schema from src/panels/spheres/ (the one place a panel reaches into another).
 import {
   BackSide, Color, DirectionalLight, GLSL3, HemisphereLight, Mesh, MeshPhysicalMaterial, PerspectiveCamera,
   PMREMGenerator, RawShaderMaterial, Scene, SphereGeometry, Vector2,
@@ -14,8 +15,9 @@ import { cappedPixelRatio, createRenderer } from '../../gl/createRenderer.js';
 import { TIMER_QUERY, WALL_TIMER } from '../../gl/timeMethodsGpu.js';
 import { spreadOf } from '../../optics/timeMethodsCpu.js';
 import { schema as heroSchema } from '../spheres/schema.js';
+import { defaults as defaultValues } from '../../host/params.js';
 
-const defaults = Object.fromEntries(Object.entries(heroSchema).map(([key, spec]) => [key, spec.default]));
+const defaults = defaultValues(heroSchema);
 const SUN = directionFromAngles(defaults.lightAz, defaults.lightEl);
 const nextFrame = () => new Promise((resolve) => { requestAnimationFrame(() => resolve()); });
 

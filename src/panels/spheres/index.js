@@ -4,7 +4,7 @@
 import { colormapGradient } from '../../ui/colormap.js';
 import { angle as formatAngle } from '../../ui/format.js';
 import { directionFromAngles } from '../../gl/directionFromAngles.js';
-import { DEG } from '../../optics/angles.js';
+import { cosDeg, DEG } from '../../optics/angles.js';
 import { fresnelExact, fresnelSchlick, brewsterAngle, criticalAngle, normalIncidence } from '../../optics/fresnel.js';
 import { maxError, niceCeil, reflectanceCurves } from '../../optics/curves.js';
 import { indexPresets } from '../shared/indexPresets.js';
@@ -116,8 +116,8 @@ export function mount(root, ctx) {
     get errScale() { return errScale; },
     update,
     describe() {
-      const at60 = fresnelExact(Math.cos(60 * DEG), values.nI, values.nT);
-      const s60 = fresnelSchlick(Math.cos(60 * DEG), values.nI, values.nT);
+      const at60 = fresnelExact(cosDeg(60), values.nI, values.nT);
+      const s60 = fresnelSchlick(cosDeg(60), values.nI, values.nT);
       const critical = criticalAngle(values.nI, values.nT);
       return `From n_i = ${values.nI} into n_t = ${values.nT}: R at 0° is ${normalIncidence(values.nI, values.nT).toFixed(4)}; `
         + `R at 60° is ${at60.toFixed(4)} exact and ${s60.toFixed(4)} by Schlick; `
