@@ -218,7 +218,7 @@ export const METHODS = Object.freeze([
     { short: 'Exact c/g', tirAware: true, note: 'SPIR-V count: 8 fp-arith + 6 fma + 1 sqrt + 1 branch' }, exactCg),
   dielectric('exact-cg-literal', 'Exact c/g (lecture order 1 + c² − m²)', { static: 17, alu: 15, sfu: 3 },
     {
-      short: 'Exact c/g, lecture order',
+      short: 'Lecture order',
       tirAware: true,
       // Charted to show why the order matters; never recommended (it fails for matched media).
       demonstratesFailure: true,
