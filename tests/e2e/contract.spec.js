@@ -5,11 +5,12 @@
 // reads the keys of older links, and cannot write its values itself.
 import { test, expect, openLab, expectIdle, settledFrames } from './fixtures.js';
 import { PANELS } from '../../src/panels/manifest.js';
+import { stepDecimals } from '../../src/host/params.js';
 
 /** The first parameter, a value for it other than the default, and how the link writes it. */
 function probeValue(spec) {
   if (spec.type === 'number') {
-    const decimals = spec.step >= 1 ? 0 : Math.ceil(-Math.log10(spec.step) - 1e-9);
+    const decimals = stepDecimals(spec.step);
     const steps = Math.round((0.37 * (spec.max - spec.min)) / spec.step);
     const value = Number((spec.min + steps * spec.step).toFixed(decimals));
     return value === spec.default ? Number((value + spec.step).toFixed(decimals)) : value;
