@@ -43,12 +43,14 @@ export default defineConfig({
   plugins: [panelManifest()],
   build: {
     target: 'es2022',
-    // three.js's WebGLRenderer is most of the hero chunk (about 170 kB gzipped); it loads once.
+    // three.js's WebGLRenderer is most of the normal-map viewer's chunk; only that panel loads it.
     chunkSizeWarningLimit: 700,
     rollupOptions: {
       input: {
         index: resolve(root, 'index.html'),
         embed: resolve(root, 'embed.html'),
+        // npm run bench also builds the three.js peer the hero is measured against (not shipped).
+        ...(process.env.FRESNEL_LAB_BENCH_PEER === '1' ? { peer: resolve(root, 'bench/peer.html') } : {}),
       },
     },
   },

@@ -3,7 +3,7 @@
 // lecture-mode keys.
 import './styles.css';
 import { PANEL_IDS, lecturePrefix, panelEntry } from './panels/manifest.js';
-import { loadPanel, missingModules } from './panels/loadPanel.js';
+import { missingModules, panelDefinition } from './panels/loadPanel.js';
 import { createPanelHost } from './host/createPanelHost.js';
 import { managePanels } from './host/managePanels.js';
 import { setupLectureMode } from './host/setupLectureMode.js';
@@ -53,12 +53,12 @@ const problems = [
 ];
 showNotice(main, 'This page does not match its panel manifest:', problems, { kind: 'error' });
 
+// Every panel's host (values, link, messages) at once; each panel's module when it comes near.
 window.fresnelLab.ready = (async () => {
-  const entries = await Promise.all(sections.map(async (section) => {
+  const entries = sections.map((section) => {
     const id = section.dataset.panel;
     try {
-      const panel = await loadPanel(id);
-      hosts[id] = createPanelHost(section.querySelector('.panel-mount'), panel, {
+      hosts[id] = createPanelHost(section.querySelector('.panel-mount'), panelDefinition(id), {
         prefix: lecturePrefix(id), noticeHost: section, applyMaterial,
       });
       return { section, host: hosts[id] };
@@ -66,7 +66,7 @@ window.fresnelLab.ready = (async () => {
       showNotice(section, `The ${panelEntry(id)?.title ?? id} panel could not load.`, [error.message], { kind: 'error' });
       return null;
     }
-  }));
+  });
   const lecture = setupLectureMode(sections, { onHideControls: controls.toggleControls });
   const manager = managePanels(entries.filter(Boolean), { maxLive });
   lecture.holdHashTarget(manager.first);

@@ -4,12 +4,8 @@ import { WebGLRenderer } from 'three';
 import { countContext, hasWebGL2, WebGL2Unavailable } from './contextBudget.js';
 
 export { MAX_LIVE_CONTEXTS, WebGL2Unavailable, contextStats, hasWebGL2 } from './contextBudget.js';
+export { cappedPixelRatio } from './cappedPixelRatio.js';
 
-/** Device pixel ratio capped at maxRatio and so that the drawing buffer holds at most maxPixels. */
-export function cappedPixelRatio(cssWidth, cssHeight, deviceRatio, maxRatio = 2, maxPixels = 3_000_000) {
-  const area = Math.max(1, cssWidth * cssHeight);
-  return Math.max(0.5, Math.min(deviceRatio || 1, maxRatio, Math.sqrt(maxPixels / area)));
-}
 
 /** A WebGLRenderer whose dispose() also releases the context and its place in the budget. */
 export function createRenderer(canvas, options = {}) {

@@ -1,66 +1,38 @@
 // A canvas drawn by one full-screen fragment shader: the cheapest scene for panels whose picture
-// is analytic (a ray-traced plane, a wave field, a lit sphere on a flat background). Renders on
-// demand, counts against the context budget, and can read pixels back for tests and exports.
-import {
-  BufferGeometry, Float32BufferAttribute, GLSL3, Mesh, OrthographicCamera, RawShaderMaterial, Scene, Vector2,
-} from 'three';
+// is analytic (ray-cast spheres, a ray-traced plane, a wave field). Plain WebGL2, no three.js:
+// no geometry, no depth or stencil buffer, no MSAA (shaders anti-alias their own edges). Renders on
+// demand, counts against the context budget, survives a lost context, and reads pixels back for
+// tests and exports.
+import { cappedPixelRatio } from './cappedPixelRatio.js';
+import { countContext, hasWebGL2, WebGL2Unavailable } from './contextBudget.js';
+import { createProgram } from './createProgram.js';
 import { assembleShader } from './shaderChunks.js';
-import { cappedPixelRatio, createRenderer } from './createRenderer.js';
 import { onDemand } from './onDemand.js';
-import { readPixel } from './readPixel.js';
-
-/** The vertex shader of a full-screen triangle: vUv runs 0..1 across the canvas. */
-export const FULLSCREEN_VERTEX_GLSL = `precision highp float;
-in vec3 position;
-out vec2 vUv;
-void main() {
-  vUv = position.xy * 0.5 + 0.5;
-  gl_Position = vec4(position.xy, 0.0, 1.0);
-}`;
-
-/**
- * One full-screen triangle drawn by the GLSL `fragment` (its includes resolved by assembleShader) with these
- * three.js uniforms: { scene, camera, material, dispose() } for renderer.render(scene, camera).
- */
-export function createFullscreenPass(fragment, uniforms) {
-  const material = new RawShaderMaterial({
-    glslVersion: GLSL3, vertexShader: FULLSCREEN_VERTEX_GLSL, fragmentShader: assembleShader(fragment), uniforms,
-    depthTest: false, depthWrite: false,
-  });
-  const geometry = new BufferGeometry();
-  geometry.setAttribute('position', new Float32BufferAttribute([-1, -1, 0, 3, -1, 0, -1, 3, 0], 3));
-  const mesh = new Mesh(geometry, material);
-  mesh.frustumCulled = false;
-  const scene = new Scene();
-  scene.add(mesh);
-  return {
-    scene,
-    camera: new OrthographicCamera(),
-    material,
-    dispose() {
-      geometry.dispose();
-      material.dispose();
-    },
-  };
-}
 
 /**
  * fragment: GLSL source (a panel's `.glsl` file imported with `?raw`). It receives `in vec2 vUv` (0..1 across
  * the canvas) and `uniform vec2 uResolution` (drawing-buffer pixels), and declares `out vec4`.
- * uniforms: three.js uniforms ({ name: { value } }); call render() after changing them.
+ * uniforms: { name: { value } } (numbers, booleans, arrays, {x,y,z} or {r,g,b}); call render() after changing them.
  * @param {HTMLCanvasElement} canvas
  * @param {{ fragment: string, uniforms?: Record<string, { value: any }>, onFrame?: () => void, maxPixels?: number }} options
  */
 export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, maxPixels = 1_500_000 }) {
-  const renderer = createRenderer(canvas, { antialias: false });
+  if (!hasWebGL2()) throw new WebGL2Unavailable('This browser has no WebGL2.');
+  const gl = canvas.getContext('webgl2', {
+    alpha: false, antialias: false, depth: false, stencil: false, powerPreference: 'high-performance',
+  });
+  if (!gl) throw new WebGL2Unavailable('WebGL2 could not start on this canvas.');
+  const source = assembleShader(fragment);
+  let program = createProgram(gl, source);
+  const release = countContext();
   const allUniforms = { ...uniforms, uResolution: { value: [1, 1] } };
-  const pass = createFullscreenPass(fragment, allUniforms);
-  const { scene, camera } = pass;
-  const size = { width: 1, height: 1 };
+  const size = { width: 1, height: 1, ratio: 1 };
 
   function draw() {
-    renderer.clear();
-    renderer.render(scene, camera);
+    if (gl.isContextLost()) return;
+    gl.viewport(0, 0, gl.drawingBufferWidth, gl.drawingBufferHeight);
+    program.setUniforms(allUniforms);
+    program.draw();
     onFrame?.();
   }
   const frames = onDemand(draw);
@@ -69,24 +41,46 @@ export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, max
     const rect = canvas.getBoundingClientRect();
     size.width = Math.max(1, Math.round(rect.width));
     size.height = Math.max(1, Math.round(rect.height));
-    renderer.setPixelRatio(cappedPixelRatio(size.width, size.height, window.devicePixelRatio, 2, maxPixels));
-    renderer.setSize(size.width, size.height, false);
-    const buffer = renderer.getDrawingBufferSize(new Vector2());
-    allUniforms.uResolution.value = [buffer.x, buffer.y];
+    size.ratio = cappedPixelRatio(size.width, size.height, window.devicePixelRatio, 2, maxPixels);
+    canvas.width = Math.max(1, Math.floor(size.width * size.ratio));
+    canvas.height = Math.max(1, Math.floor(size.height * size.ratio));
+    allUniforms.uResolution.value = [canvas.width, canvas.height];
     frames.request();
   });
   resizeObserver.observe(canvas);
 
+  // A lost context (a GPU reset, too many tabs) comes back if the page asks for it: keep the
+  // canvas, rebuild the program, and draw again.
+  const onLost = (event) => {
+    event.preventDefault();
+    frames.cancel();
+  };
+  const onRestored = () => {
+    program = createProgram(gl, source);
+    frames.request();
+  };
+  canvas.addEventListener('webglcontextlost', onLost);
+  canvas.addEventListener('webglcontextrestored', onRestored);
+
   return {
-    renderer,
+    gl,
+    canvas,
     uniforms: allUniforms,
     frames,
+    /** The linked WebGLProgram (tests read back the source the driver compiled). */
+    get program() { return program.program; },
+    /** Drawing-buffer pixels per CSS pixel. */
+    get pixelRatio() { return size.ratio; },
     /** Schedules one frame (coalesced with any others this animation frame). */
     render: () => frames.request(),
+    /** Draws now (the drawing buffer is readable until this task ends). */
+    drawNow: draw,
     /** Draws now and reads one pixel at CSS coordinates within the canvas: [r, g, b, a] bytes. */
     readPixel(x, y) {
       draw();
-      return readPixel(renderer, x, y, size.height);
+      const out = new Uint8Array(4);
+      gl.readPixels(Math.floor(x * size.ratio), Math.floor((size.height - y) * size.ratio), 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, out);
+      return [...out];
     },
     /** Draws now and returns a PNG data URL (the drawing buffer is not preserved between frames). */
     toDataURL() {
@@ -96,8 +90,11 @@ export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, max
     dispose() {
       frames.cancel();
       resizeObserver.disconnect();
-      pass.dispose();
-      renderer.dispose();
+      canvas.removeEventListener('webglcontextlost', onLost);
+      canvas.removeEventListener('webglcontextrestored', onRestored);
+      program.dispose();
+      gl.getExtension('WEBGL_lose_context')?.loseContext(); // give the context back now, not at GC
+      release();
     },
   };
 }

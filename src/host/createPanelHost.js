@@ -71,6 +71,26 @@ export function createPanelHost(container, panel, {
   let controllers = {};
   let frames = 0;
   let rejectedNotice = null;
+  let mountPanel = panel.mount ?? null; // or, until panel.load() resolves, null
+  let loading = null;
+  let wanted = false;
+
+  /** A frame of the panel's picture is drawn: counted, marked once for timing, and announced. */
+  function frameDrawn() {
+    frames += 1;
+    if (frames === 1) performance.mark?.(`fresnel-lab:first-frame:${panel.id}`);
+    onFrame(frames);
+  }
+  // A panel without WebGL draws its picture (plots, tables, formulas) during update; its frame is
+  // the next animation frame, when the browser shows it (uPlot commits in a microtask before that).
+  let domFrame = 0;
+  const domFrameDrawn = () => {
+    if (panel.webgl || domFrame) return;
+    domFrame = requestAnimationFrame(() => {
+      domFrame = 0;
+      if (instance) frameDrawn();
+    });
+  };
 
   const say = (text) => {
     status.textContent = text;
@@ -127,6 +147,7 @@ export function createPanelHost(container, panel, {
       waiting = [];
     }
     refreshDescription();
+    domFrameDrawn();
     writeUrl(values);
     for (const listener of listeners) listener({ keys: [...all], source });
   }
@@ -153,6 +174,38 @@ export function createPanelHost(container, panel, {
     return result;
   }
 
+  /** Loads the panel's module once; a failure is shown in the panel and rejects. */
+  function load() {
+    if (mountPanel) return Promise.resolve();
+    loading ??= panel.load().then((fn) => { mountPanel = fn; }, (error) => {
+      showNotice(noticeHost, `The ${panel.title} panel could not load.`, [error.message], { kind: 'error' });
+      throw error;
+    });
+    return loading;
+  }
+
+  function mountNow() {
+    wanted = true;
+    container.style.minHeight = '';
+    gui = createPanelGui(guiHost, `${panel.title}: controls`);
+    controllers = {};
+    try {
+      instance = checkInstance(panel.id, mountPanel(content, ctx));
+    } catch (error) {
+      instance = null;
+      gui.destroy();
+      gui = null;
+      content.replaceChildren();
+      showNotice(noticeHost, `The ${panel.title} panel could not start.`, [error.message], { kind: 'error' });
+      throw error;
+    }
+    buttons.png.disabled = !instance.png;
+    buttons.csv.disabled = !instance.csv;
+    refreshDescription();
+    domFrameDrawn();
+    return instance;
+  }
+
   /** @type {import('./panelContract.js').PanelContext} */
   const ctx = {
     values: view,
@@ -166,11 +219,9 @@ export function createPanelHost(container, panel, {
     invalidate() {
       instance?.update([]);
       refreshDescription();
+      domFrameDrawn();
     },
-    frameDrawn() {
-      frames += 1;
-      onFrame(frames);
-    },
+    frameDrawn,
     applyMaterial: (material) => applyMaterial(material),
     reducedMotion: window.matchMedia?.('(prefers-reduced-motion: reduce)').matches ?? false,
   };
@@ -178,34 +229,31 @@ export function createPanelHost(container, panel, {
   return {
     id: panel.id,
     panel,
+    container,
     values: view,
     usesWebGL: panel.webgl,
     get mounted() { return instance !== null; },
     get instance() { return instance; },
     get frames() { return frames; },
+    /** Whether the panel's module is here (mount() then works at once). */
+    get loaded() { return mountPanel !== null; },
+    load,
+    /**
+     * Shows the panel: its instance, or (while its module loads) a promise of it, which resolves
+     * to null when the panel was unmounted meanwhile. A failure is shown in the panel and thrown.
+     */
     mount() {
       if (instance) return instance;
-      container.style.minHeight = '';
-      gui = createPanelGui(guiHost, `${panel.title}: controls`);
-      controllers = {};
-      try {
-        instance = checkInstance(panel.id, panel.mount(content, ctx));
-      } catch (error) {
-        instance = null;
-        gui.destroy();
-        gui = null;
-        content.replaceChildren();
-        showNotice(noticeHost, `The ${panel.title} panel could not start.`, [error.message], { kind: 'error' });
-        throw error;
-      }
-      buttons.png.disabled = !instance.png;
-      buttons.csv.disabled = !instance.csv;
-      refreshDescription();
-      return instance;
+      if (mountPanel) return mountNow();
+      wanted = true;
+      return load().then(() => (wanted && !instance ? mountNow() : instance));
     },
     unmount() {
+      wanted = false;
       if (!instance) return;
       container.style.minHeight = `${container.offsetHeight}px`; // no layout jump while it is away
+      cancelAnimationFrame(domFrame);
+      domFrame = 0;
       instance.dispose();
       instance = null;
       gui?.destroy();

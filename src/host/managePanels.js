@@ -1,10 +1,14 @@
 // Mount on approach, dispose when far: only panels on or near the screen hold a view, and never
 // more than maxLive WebGL panels at once (the farthest one gives its context up first).
-// Panels without WebGL stay mounted once they have been seen.
+// Panels without WebGL stay mounted once they have been seen. A panel's module is fetched when the
+// panel first comes near (so the page downloads only what is about to be seen); it mounts when
+// the module arrives, if it is still near.
 import { MAX_LIVE_CONTEXTS } from '../gl/contextBudget.js';
 
 export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = MAX_LIVE_CONTEXTS } = {}) {
   const near = new Set();
+  const loading = new Set(); // near entries whose module is on its way (they hold a place in the budget)
+  const failed = new Set(); // entries whose module would not load (their notice says so; never retried in a loop)
   const distance = ({ section }) => {
     const r = section.getBoundingClientRect();
     return Math.abs(r.top + r.height / 2 - window.innerHeight / 2);
@@ -19,14 +23,16 @@ export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = 
     }) ?? null;
   };
 
+  /** Mounts what is near and unmounts what is far; resolves once the modules it asked for have mounted. */
   function settle() {
     const anchor = anchorEntry();
     const before = anchor?.section.getBoundingClientRect().top;
-    mountAndUnmount();
+    const arrived = mountAndUnmount();
     if (anchor) {
       const shift = anchor.section.getBoundingClientRect().top - before;
       if (Math.abs(shift) >= 1) window.scrollBy(0, shift); // keep the reader's panel where it was
     }
+    return arrived;
   }
 
   function mountAndUnmount() {
@@ -34,9 +40,10 @@ export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = 
       if (entry.host.mounted && entry.host.usesWebGL && !near.has(entry)) entry.host.unmount();
     }
     const wanted = [...near].sort((a, b) => distance(a) - distance(b));
-    let glMounted = entries.filter((e) => e.host.mounted && e.host.usesWebGL).length;
+    let glMounted = entries.filter((e) => (e.host.mounted || loading.has(e)) && e.host.usesWebGL).length;
+    const arrivals = [];
     for (const entry of wanted) {
-      if (entry.host.mounted) continue;
+      if (entry.host.mounted || loading.has(entry) || failed.has(entry)) continue;
       if (entry.host.usesWebGL) {
         if (glMounted >= maxLive) {
           const farthest = entries.filter((e) => e.host.mounted && e.host.usesWebGL)
@@ -47,12 +54,22 @@ export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = 
         }
         glMounted += 1;
       }
+      if (!entry.host.loaded) {
+        loading.add(entry);
+        arrivals.push(entry.host.load().catch((error) => {
+          failed.add(entry);
+          console.warn(`panel ${entry.host.id} failed to load`, error); // its notice is on the page
+        }).finally(() => loading.delete(entry)));
+        continue;
+      }
       try {
         entry.host.mount();
       } catch (error) {
         console.warn(`panel ${entry.host.id} failed to mount`, error); // its notice is on the page
       }
     }
+    // Modules that arrive mount in a settle of their own (which keeps the reader's panel in place).
+    return arrivals.length ? Promise.all(arrivals).then(() => settle()) : Promise.resolve();
   }
 
   let firstSettled;
@@ -63,8 +80,7 @@ export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = 
       if (record.isIntersecting) near.add(entry);
       else near.delete(entry);
     }
-    settle();
-    firstSettled();
+    settle().then(() => firstSettled());
   }, { rootMargin: margin });
   for (const { section } of entries) observer.observe(section);
 
@@ -72,7 +88,7 @@ export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = 
   // re-ranks by distance (once per frame, and only while some near panel is waiting).
   let pending = 0;
   const onScroll = () => {
-    if (pending || ![...near].some((e) => !e.host.mounted)) return;
+    if (pending || ![...near].some((e) => !e.host.mounted && !loading.has(e) && !failed.has(e))) return;
     pending = requestAnimationFrame(() => {
       pending = 0;
       settle();

@@ -59,8 +59,9 @@
 /**
  * @typedef {import('../panels/manifest.js').PanelEntry & {
  *   schema: Schema,
- *   mount: (root: HTMLElement, ctx: PanelContext) => PanelInstance,
- * }} PanelDefinition
+ *   mount?: (root: HTMLElement, ctx: PanelContext) => PanelInstance,
+ *   load?: () => Promise<(root: HTMLElement, ctx: PanelContext) => PanelInstance>,
+ * }} PanelDefinition  mount, or load() that resolves to it (the module arrives when the panel is first wanted)
  */
 
 /** The instance, if it keeps the contract; otherwise an error that names the panel and what is missing. */

@@ -163,7 +163,7 @@ export function benchTable(results) {
   const f = results.frames;
   if (f) {
     out.push('', `Frames at ${f.width}×${f.height} CSS px: hero spheres ${ns(f.spheres.msPerFrame)} ms, `
-      + `three.js MeshPhysicalMaterial ${ns(f.threePhysical.msPerFrame)} ms, ratio ${fixed(f.ratio, 2)}${f.timer ? ` (${f.timer})` : ''}`);
+      + `three.js MeshPhysicalMaterial ${ns(f.threePhysical.msPerFrame)} ms, hero/peer ${fixed(f.ratio, 2)}${f.timer ? ` (${f.timer})` : ''}`);
   }
   out.push(`Device: ${results.device.renderer ?? 'no WebGL2'}; timer: ${results.device.timer ?? '–'}`
     + `; errors: JS emulation (fp64, fp32, fp16)${results.methods.some((r) => r.error.gpuHighp) ? ' and read back from this GPU (highp, mediump)' : ''}`);

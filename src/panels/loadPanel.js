@@ -1,27 +1,48 @@
 // @ts-check
-// Loads a panel's module on demand (each panel is its own chunk, so an embed downloads only the
-// panel it shows) and joins it with its manifest entry into the definition the host runs.
+// Panels for the host. A panel's schema (pure data) comes with the page, so every panel's link,
+// values and messages work at once; its module (DOM, scene, shaders, libraries) is its own chunk,
+// loaded only when the panel is about to be seen, so a page downloads only what it shows.
 import { PANELS, panelEntry } from './manifest.js';
 
 /** @typedef {{ schema?: import('../host/panelContract.js').Schema, mount?: import('../host/panelContract.js').PanelDefinition['mount'] }} PanelModule */
 const modules = /** @type {Record<string, () => Promise<PanelModule>>} */ (import.meta.glob('./*/index.js'));
+const schemas = /** @type {Record<string, import('../host/panelContract.js').Schema>} */ (
+  import.meta.glob('./*/schema.js', { eager: true, import: 'schema' }));
 const moduleOf = (id) => modules[`./${id}/index.js`];
 
-/** Manifest ids whose folder has no index.js: a build or test failure, never a silent omission. */
-export const missingModules = PANELS.filter((p) => !moduleOf(p.id)).map((p) => p.id);
+/** Manifest ids whose folder has no index.js or schema.js: a build or test failure, never a silent omission. */
+export const missingModules = PANELS.filter((p) => !moduleOf(p.id) || !schemas[`./${p.id}/schema.js`]).map((p) => p.id);
+
+/** The module's mount(), checked: the module must keep the contract and export the same schema. */
+async function loadMount(id) {
+  const module = await moduleOf(id)();
+  if (typeof module.mount !== 'function' || module.schema !== schemas[`./${id}/schema.js`]) {
+    throw new Error(`src/panels/${id}/index.js must export mount() and the schema of its schema.js.`);
+  }
+  return module.mount;
+}
 
 /**
- * The panel `id`: its manifest entry with the module's schema and mount (src/host/panelContract.js).
- * Throws, naming the panel, when the id is unknown or the module does not keep the contract.
+ * The panel `id` without its module yet: its manifest entry, its schema, and load(), which
+ * resolves to its mount(). Throws, naming the panel, when the id is unknown.
+ * @returns {import('../host/panelContract.js').PanelDefinition}
+ */
+export function panelDefinition(id) {
+  const entry = panelEntry(id);
+  const schema = schemas[`./${id}/schema.js`];
+  if (!entry || !moduleOf(id) || !schema || typeof schema !== 'object') {
+    throw new Error(`There is no panel module src/panels/${id}/index.js with a schema.js in the manifest.`);
+  }
+  let loading = null;
+  return Object.freeze({ ...entry, schema, load: () => (loading ??= loadMount(id)) });
+}
+
+/**
+ * The panel `id` with its module loaded: the definition the host runs at once (the embed page).
  * @returns {Promise<import('../host/panelContract.js').PanelDefinition>}
  */
 export async function loadPanel(id) {
-  const entry = panelEntry(id);
-  const load = moduleOf(id);
-  if (!entry || !load) throw new Error(`There is no panel module src/panels/${id}/index.js in the manifest.`);
-  const module = await load();
-  if (typeof module.mount !== 'function' || !module.schema || typeof module.schema !== 'object') {
-    throw new Error(`src/panels/${id}/index.js must export schema and mount().`);
-  }
-  return Object.freeze({ ...entry, schema: module.schema, mount: module.mount });
+  const definition = panelDefinition(id);
+  const mount = await definition.load();
+  return Object.freeze({ ...definition, mount });
 }

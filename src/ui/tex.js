@@ -1,11 +1,43 @@
-// Formulas typeset with KaTeX (bundled; no CDN). Live numbers are best shown with a fixed number
-// of decimals (toFixed) so a formula keeps its width as sliders move.
-import katex from 'katex';
-import 'katex/dist/katex.min.css';
+// Formulas typeset with KaTeX (bundled; no CDN). KaTeX is the largest library a panel uses, and
+// a formula matters less in the first second than the picture and the numbers: it is fetched
+// when the page is next idle after the first formula is asked for, and until it arrives each
+// formula shows its TeX source. Live numbers are best shown with a fixed number of decimals
+// (toFixed) so a formula keeps its width as sliders move.
 
-/** Typesets TeX into an element (display style by default). Errors show as red source text, never throw. */
+/** @type {null | ((element: HTMLElement, tex: string, display: boolean) => void)} */
+let typeset = null;
+/** @type {Promise<void> | null} */
+let loading = null;
+/** Elements waiting for KaTeX, with the latest TeX asked for each. */
+const waiting = new Map();
+
+/** Resolves once KaTeX is here (a test or an export can wait for typeset formulas). */
+export function texReady() {
+  loading ??= new Promise((resolve) => {
+    const start = () => resolve(import('./typesetTex.js'));
+    if (typeof requestIdleCallback === 'function') requestIdleCallback(start, { timeout: 300 });
+    else setTimeout(start, 0);
+  }).then((module) => {
+    typeset = module.typesetTex;
+    for (const [element, { tex, display }] of waiting) {
+      element.removeAttribute('aria-busy');
+      typeset(element, tex, display);
+    }
+    waiting.clear();
+  });
+  return loading;
+}
+
+/** Typesets TeX into an element (display style by default); never throws. */
 export function renderTex(element, tex, { display = true } = {}) {
-  katex.render(tex, element, { displayMode: display, throwOnError: false, output: 'htmlAndMathml' });
+  if (typeset) {
+    typeset(element, tex, display);
+    return element;
+  }
+  waiting.set(element, { tex, display });
+  element.textContent = tex;
+  element.setAttribute('aria-busy', 'true');
+  texReady();
   return element;
 }
 

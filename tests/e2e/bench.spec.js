@@ -57,7 +57,7 @@ test('npm run bench -- --tiny writes a valid results.json and a chart PNG', asyn
     expect(stdout).toMatch(/GPU highp\s+GPU mediump/);
     expect(isSpread(results.frames.spheres.msPerFrame)).toBe(true);
     expect(isSpread(results.frames.threePhysical.msPerFrame)).toBe(true);
-    expect(results.frames.ratio).toBeCloseTo(results.frames.threePhysical.msPerFrame.median / results.frames.spheres.msPerFrame.median, 9);
+    expect(results.frames.ratio).toBeCloseTo(results.frames.spheres.msPerFrame.median / results.frames.threePhysical.msPerFrame.median, 9);
     expect(results.recommendations.plastic.invisible.methodId).toMatch(/^exact-/);
     // The normal-map viewer's chain build (64² when tiny), off the page's thread.
     const nm = results.normalMips;

@@ -47,6 +47,8 @@ test('glass to air at 50° (from the URL): g² < 0, g imaginary, R = 1', async (
 test('the controls move the numbers and the URL; the layout stays put', async ({ page }) => {
   await openLab(page, './embed.html?panel=exact-fresnel');
   const box = () => page.locator('.xf-panel').boundingBox();
+  // Formulas show their TeX source until KaTeX (fetched after the picture) typesets them.
+  await expect(page.locator('.xf-panel [aria-busy="true"]')).toHaveCount(0);
   const before = await box();
   const input = page.locator('.lil-gui .lil-controller', { hasText: 'θ, angle' }).locator('input');
   await input.fill('30');

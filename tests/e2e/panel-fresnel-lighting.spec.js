@@ -44,9 +44,7 @@ test('the GLSL shown is the GLSL compiled, and Copy GLSL copies it', async ({ pa
   await expect(code).toContainText('fresnelExact(dot(N, V), 1.0, n)');
   const shown = await code.textContent();
   const compiled = await page.evaluate(() => {
-    const { renderer } = window.fresnelLab.panels['fresnel-lighting'].stage.view;
-    const gl = renderer.getContext();
-    const { program } = renderer.info.programs[0];
+    const { gl, program } = window.fresnelLab.panels['fresnel-lighting'].stage.view;
     return gl.getAttachedShaders(program).map((s) => gl.getShaderSource(s)).join('\n');
   });
   expect(compiled).toContain(shown);

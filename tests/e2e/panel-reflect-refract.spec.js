@@ -11,7 +11,7 @@ async function centre(page, update) {
   return page.evaluate(([id, values]) => {
     window.fresnelLab.hosts[id].set(values);
     const { view } = window.fresnelLab.panels[id];
-    const rect = view.renderer.domElement.getBoundingClientRect();
+    const rect = view.canvas.getBoundingClientRect();
     return view.readPixel(rect.width / 2, rect.height / 2);
   }, [PANEL, update]);
 }

@@ -20,8 +20,8 @@ function probe(page, points) {
     const { view } = window.fresnelLab.panels[id];
     const [W, H] = view.uniforms.uResolution.value;
     const hh = view.uniforms.uHalfHeight.value;
-    const ratio = view.renderer.getPixelRatio();
-    const cssHeight = view.renderer.domElement.getBoundingClientRect().height;
+    const ratio = view.pixelRatio;
+    const cssHeight = view.canvas.getBoundingClientRect().height;
     return pts.map(([x, y]) => {
       const i = Math.floor((x / (hh * W / H) * 0.5 + 0.5) * W);
       const j = Math.floor((y / hh * 0.5 + 0.5) * H);

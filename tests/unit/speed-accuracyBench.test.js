@@ -218,7 +218,7 @@ describe('benchResults', () => {
     const table = benchTable(results);
     for (const m of METHODS) expect(table).toContain(m.id);
     expect(table).toContain('1.000 [0.000, 2.000]');
-    expect(table).toMatch(/ratio 2\.00/);
+    expect(table).toMatch(/hero\/peer 2\.00/);
     expect(table).toContain('Test GPU');
   });
 });

@@ -6,14 +6,12 @@ import { interfaceSplit, interfaceSplitCurve } from '../../optics/interfaceSplit
 import { el } from '../../ui/el.js';
 import { setSubscripted } from '../../ui/subscripts.js';
 import { cssVar } from '../../ui/theme.js';
-import { addSwap, indexPair } from '../shared/indexPair.js';
+import { addSwap } from '../shared/indexPair.js';
 import { buildAngleRatioDiagram, svgToPng } from './buildAngleRatioDiagram.js';
 import './styles.css';
+import { schema } from './schema.js';
 
-export const schema = {
-  theta: { type: 'number', default: 45, min: 0, max: 90, step: 0.1, label: 'Angle of incidence θ_i (°)' },
-  ...indexPair({ aliases: { nI: ['n1'], nT: ['n2'] } }),
-};
+export { schema };
 
 /** A labelled horizontal bar with its number; the bar itself is decoration (the number is text). */
 function bar(label, className) {

@@ -6,21 +6,13 @@
 import { createShaderView } from '../../gl/createShaderView.js';
 import { DEG } from '../../optics/angles.js';
 import { normalIncidence } from '../../optics/fresnel.js';
-import { transmittedIndex } from '../shared/indexPair.js';
 import { startWebGL } from '../shared/startWebGL.js';
 import { SCENE, cameraBasis, highlightInView, pixelRay, shadeRoad, sunDirection } from './model.js';
 import { buildAsphaltDom } from './buildAsphaltDom.js';
 import fragment from './asphalt.frag.glsl?raw';
+import { schema } from './schema.js';
 
-// No published refractive index of bitumen was found; 1.55 is an assumption in the range of
-// organic binders and plastics (1.5–1.6).
-export const schema = {
-  camEl: { type: 'number', default: 6, min: 2, max: 90, step: 0.5, label: 'Camera elevation °' },
-  sunEl: { type: 'number', default: 10, min: 2, max: 45, step: 0.5, label: 'Sun elevation °' },
-  roughness: { type: 'number', default: 0.8, min: 0.2, max: 1, step: 0.01, label: 'Roughness (α = r²)' },
-  ...transmittedIndex({ what: 'binder, assumed', nT: 1.55, aliases: ['n'] }),
-  fresnel: { type: 'boolean', default: true, label: 'Fresnel on' },
-};
+export { schema };
 
 const f3 = (x) => x.toFixed(3);
 const deg = (x) => `${x.toFixed(1)}°`;
@@ -28,8 +20,8 @@ const deg = (x) => `${x.toFixed(1)}°`;
 /** Mean RGB (0–255) of a square of drawing-buffer pixels around CSS (x, y), drawn just now. */
 function readBlock(view, x, y, radius = 3) {
   view.readPixel(x, y); // draws the frame; the buffer is readable until this task ends
-  const gl = view.renderer.getContext();
-  const ratio = view.renderer.getPixelRatio();
+  const { gl } = view;
+  const ratio = view.pixelRatio;
   const size = 2 * radius + 1;
   const cx = Math.floor(x * ratio);
   const cy = gl.drawingBufferHeight - 1 - Math.floor(y * ratio);

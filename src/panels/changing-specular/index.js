@@ -9,18 +9,12 @@ import { createLinePlot } from '../../ui/createLinePlot.js';
 import { thetaMark } from '../../ui/plotMarks.js';
 import { DEG } from '../../optics/angles.js';
 import { peakHighlightCurves, phongHighlights } from '../../optics/phong.js';
-import { transmittedIndex } from '../shared/indexPair.js';
 import { startWebGL } from '../shared/startWebGL.js';
 import { buildChangingSpecularDom } from './buildChangingSpecularDom.js';
 import fragment from './changing-specular.frag.glsl?raw';
+import { schema } from './schema.js';
 
-export const schema = {
-  lightEl: { type: 'number', default: 30, min: 1, max: 90, step: 0.5, label: 'Light elevation °' },
-  viewEl: { type: 'number', default: 30, min: 1, max: 90, step: 0.5, label: 'View elevation °' },
-  linked: { type: 'boolean', default: true, label: 'View follows light (mirror)' },
-  s: { type: 'number', default: 60, min: 1, max: 500, step: 1, label: 'Phong exponent s' },
-  ...transmittedIndex({ what: 'surface', aliases: ['n'] }),
-};
+export { schema };
 
 const SCENE = { fovY: 40, cameraDist: 4, light: 6, exposure: 1 };
 

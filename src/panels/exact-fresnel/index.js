@@ -12,13 +12,11 @@ import { el } from '../../ui/el.js';
 import { fixed as fixedTo, sci } from '../../ui/format.js';
 import { criticalMark, thetaMark } from '../../ui/plotMarks.js';
 import { texElement } from '../../ui/tex.js';
-import { addSwap, indexPair } from '../shared/indexPair.js';
+import { addSwap } from '../shared/indexPair.js';
 import './styles.css';
+import { schema } from './schema.js';
 
-export const schema = {
-  theta: { type: 'number', default: 60, min: 0, max: 90, step: 0.01, label: 'θ, angle of incidence (°)' },
-  ...indexPair(),
-};
+export { schema };
 
 // The slide's formula (lecture "Reflection Math"; Cook & Torrance 1982).
 const FORMULA = String.raw`R(\theta) = \frac{1}{2}\left(\frac{g-c}{g+c}\right)^{2}\left(1+\left(\frac{c(g+c)-m^{2}}{c(g-c)+m^{2}}\right)^{2}\right)`;

@@ -3,7 +3,7 @@
 // "Fresnel reflection in lighting"), beside the same sphere with a constant weight w. Only the
 // Fresnel sphere's rim turns toward ks. F is taken at the view angle N·V (for a mirror coat the
 // half vector is N, so V·H = N·V). The GLSL under the picture is the file the shader includes.
-import { Color } from 'three';
+import { hexToLinear } from '../../ui/srgb.js';
 import { assembleShader } from '../../gl/shaderChunks.js';
 import { cosDeg } from '../../optics/angles.js';
 import { reflectanceCurves } from '../../optics/curves.js';
@@ -12,22 +12,14 @@ import { createLinePlot } from '../../ui/createLinePlot.js';
 import { el } from '../../ui/el.js';
 import { thetaMark } from '../../ui/plotMarks.js';
 import { createTwinStage } from '../shared/createTwinStage.js';
-import { transmittedIndex } from '../shared/indexPair.js';
 import fragmentSource from './fresnel-lighting.frag.glsl?raw';
 import mixSource from './fresnel-lighting-mix.glsl?raw';
 import './styles.css';
+import { schema } from './schema.js';
 
 const METHOD_NAMES = { exact: 'exact Fresnel', schlick: "Schlick's approximation" };
 
-export const schema = {
-  ...transmittedIndex({ what: 'coat', aliases: ['n'] }),
-  method: { type: 'enum', default: 'exact', options: { exact: 'Exact Fresnel', schlick: "Schlick's approximation" }, label: 'F on the left sphere' },
-  weight: { type: 'number', default: 0.04, min: 0, max: 1, step: 0.001, label: 'Constant ks weight w (right)' },
-  kd: { type: 'color', default: '#a3241c', label: 'kd (diffuse layer)' },
-  ks: { type: 'color', default: '#ffffff', label: 'ks (coat)' },
-  lightAz: { type: 'number', default: 35, min: -180, max: 180, step: 1, label: 'Light azimuth °' },
-  lightEl: { type: 'number', default: 40, min: -10, max: 90, step: 1, label: 'Light elevation °' },
-};
+export { schema };
 
 /** The GLSL shown under the picture: the very chunk the shader compiles (#include <fresnel-lighting-mix>). */
 export const MIX_GLSL = mixSource.trimEnd();
@@ -66,7 +58,7 @@ export function mount(root, ctx) {
   const panel = el('div', 'fl-panel');
   root.append(panel);
   const uniforms = {
-    uKd: { value: new Color() }, uKs: { value: new Color() }, uN: { value: 1.5 },
+    uKd: { value: [0, 0, 0] }, uKs: { value: [0, 0, 0] }, uN: { value: 1.5 },
     uWeight: { value: 0.04 }, uMethod: { value: 0 },
   };
   const stage = createTwinStage(panel, {
@@ -139,8 +131,8 @@ export function mount(root, ctx) {
     for (const line of lines) line.classList.toggle('fl-live', line.textContent.startsWith(`vec3 ${live} `) || line.textContent.startsWith('vec3 kConstant '));
     stage.setLabels([`k = mix(kd, ks, F), F ${method === 'exact' ? 'exact' : 'Schlick'}`, `k = mix(kd, ks, ${weight.toFixed(3)})`]);
     if (!stage.view) return;
-    uniforms.uKd.value.set(values.kd); // hex is sRGB; three.js stores it linear
-    uniforms.uKs.value.set(values.ks);
+    uniforms.uKd.value = hexToLinear(values.kd); // the control's hex is sRGB; the shader lights in linear
+    uniforms.uKs.value = hexToLinear(values.ks);
     uniforms.uN.value = nT;
     uniforms.uWeight.value = weight;
     uniforms.uMethod.value = method === 'exact' ? 0 : 1;

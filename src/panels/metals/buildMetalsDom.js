@@ -1,12 +1,12 @@
 // The DOM of the metals panel below its spheres: F0 swatches (buttons that pick the metal), the
 // per-channel table and the plot's caption. F0 is a linear reflectance; swatches show it encoded
-// to sRGB (three.js Color: linear working space in, sRGB hex out) with the linear numbers beside.
-import { Color } from 'three';
+// to sRGB (the sRGB transfer function, src/ui/srgb.js) with the linear numbers beside.
+import { linearToHex } from '../../ui/srgb.js';
 import { el } from '../../ui/el.js';
 
 /** CSS colour of a linear RGB reflectance. */
 export function swatchColor(rgb) {
-  return `#${new Color(rgb[0], rgb[1], rgb[2]).getHexString()}`;
+  return linearToHex(rgb);
 }
 
 const CHANNEL_VARS = { red: '--c-red', green: '--c-green', blue: '--c-blue' };

@@ -9,16 +9,12 @@ import { metalById, metalF0, metals } from '../../optics/materials.js';
 import { CHANNELS, metalCurveStats, metalCurves } from '../../optics/metalCurves.js';
 import { createLinePlot } from '../../ui/createLinePlot.js';
 import { createTwinStage } from '../shared/createTwinStage.js';
-import { transmittedIndex } from '../shared/indexPair.js';
 import { buildMetalsDom } from './buildMetalsDom.js';
 import fragment from './metals.frag.glsl?raw';
 import './styles.css';
+import { schema } from './schema.js';
 
-export const schema = {
-  metal: { type: 'enum', default: 'gold', options: Object.fromEntries(metals.map((m) => [m.id, m.name])), label: 'Metal (right)' },
-  fresnel: { type: 'enum', default: 'exact', options: { exact: 'Exact', schlick: 'Schlick' }, label: 'Metal sphere uses' },
-  ...transmittedIndex({ what: 'dielectric, left', aliases: ['n'] }),
-};
+export { schema };
 
 const SUN = { azimuth: 35, elevation: 40 };
 const SHORT = { red: 'R', green: 'G', blue: 'B' };

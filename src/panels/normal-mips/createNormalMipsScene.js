@@ -9,7 +9,7 @@ import {
 } from 'three';
 import { cappedPixelRatio, createRenderer } from '../../gl/createRenderer.js';
 import { onDemand } from '../../gl/onDemand.js';
-import { createFullscreenPass } from '../../gl/createShaderView.js';
+import { createFullscreenPass } from '../../gl/createFullscreenPass.js';
 import fragment from './normal-mips.frag.glsl?raw';
 import { TECHNIQUES } from '../../normals/techniqueLayout.js';
 import { uploadLevels } from '../../normals/uploadLevels.js';
@@ -68,7 +68,7 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
   const rtTruth = [floatTarget(), floatTarget()];
   let textures = {}; // technique → [{ tex, scale, offset }]
   const state = {
-    technique: 'naive', channels: 3, samples: 0, cap: 256, truthOn: true, errors: null, measuring: false, frame: 0, anisotropy: 1,
+    technique: 'naive', channels: 3, samples: 0, cap: 256, truthOn: true, onScreen: false, errors: null, measuring: false, frame: 0, anisotropy: 1,
   };
   let cur = 0;
 
@@ -154,7 +154,7 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
     u.uDebug.value = 0;
     bindTechnique(state.technique);
     pass(0, rtTech);
-    const accumulating = state.truthOn && state.samples < state.cap;
+    const accumulating = state.truthOn && state.onScreen && state.samples < state.cap;
     if (accumulating) {
       const next = 1 - cur;
       u.uPrev.value = rtTruth[cur].texture;
@@ -171,6 +171,14 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
     if (accumulating && state.samples < state.cap) frames.request();
   }
   const frames = onDemand(draw);
+
+  // The ground truth accumulates only while the canvas is on screen: a panel mounted ahead of the
+  // reader (or scrolled past) spends nothing on it, and picks up where it stopped when seen.
+  const visibility = new IntersectionObserver(([record]) => {
+    state.onScreen = record.isIntersecting;
+    if (state.onScreen && state.truthOn && state.samples < state.cap) frames.request();
+  });
+  visibility.observe(canvas);
 
   // The drawing buffer follows the canvas size, but changes under 10 % (a scrollbar coming and
   // going as the table fills) are left to CSS scaling: a resize restarts the ground truth.
@@ -315,6 +323,7 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
       disposed = true;
       if (state.measuring) stopMeasure();
       resizeObserver.disconnect();
+      visibility.disconnect();
       disposeTextures();
       dummy.dispose();
       rtTech.dispose();

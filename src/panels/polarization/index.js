@@ -8,13 +8,11 @@ import { reflectanceCurves } from '../../optics/curves.js';
 import { createLinePlot } from '../../ui/createLinePlot.js';
 import { el } from '../../ui/el.js';
 import { brewsterMark, criticalMark, thetaMark } from '../../ui/plotMarks.js';
-import { addSwap, indexPair } from '../shared/indexPair.js';
+import { addSwap } from '../shared/indexPair.js';
 import './styles.css';
+import { schema } from './schema.js';
 
-export const schema = {
-  ...indexPair({ aliases: { nI: ['n1'], nT: ['n2'] } }),
-  theta: { type: 'number', default: 60, min: 0, max: 90, step: 0.01, label: 'Readout angle θ (°)' },
-};
+export { schema };
 
 const SERIES = [
   { label: 'Rs (s-polarized)', stroke: '--c-s', width: 3 },

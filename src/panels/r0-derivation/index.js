@@ -7,10 +7,11 @@ import { maxSpread, r0Steps } from '../../optics/r0Steps.js';
 import { el } from '../../ui/el.js';
 import { fixed as fixedTo, sci } from '../../ui/format.js';
 import { renderTex, texElement } from '../../ui/tex.js';
-import { addSwap, indexPair } from '../shared/indexPair.js';
+import { addSwap } from '../shared/indexPair.js';
 import './styles.css';
+import { schema } from './schema.js';
 
-export const schema = indexPair();
+export { schema };
 
 const DIGITS = 6;
 const fixed = (value) => fixedTo(value, DIGITS);

@@ -5,23 +5,15 @@
 import { createShaderView } from '../../gl/createShaderView.js';
 import { DEG } from '../../optics/angles.js';
 import { dielectrics } from '../../optics/materials.js';
-import { transmittedIndex } from '../shared/indexPair.js';
 import { indexPresets } from '../shared/indexPresets.js';
 import { startWebGL } from '../shared/startWebGL.js';
 import { centreRay, splitByElevation } from './model.js';
 import { buildReflectRefractDom } from './buildReflectRefractDom.js';
 import fragment from './reflect-refract.frag.glsl?raw';
 import './styles.css';
+import { schema } from './schema.js';
 
-export const schema = {
-  elevation: { type: 'number', default: 30, min: 2, max: 90, step: 0.1, label: 'View elevation ° (90 = straight down)' },
-  ...transmittedIndex({ what: 'surface', nT: 1.333, step: 0.0001, aliases: ['n'] }),
-  depth: { type: 'number', default: 1.5, min: 0.2, max: 5, step: 0.1, label: 'Pool depth (tiles)' },
-  layer: {
-    type: 'enum', default: 'both', label: 'Show F·sky, (1−F)·floor or both',
-    options: { both: 'Both', reflected: 'F·sky only', refracted: '(1 − F)·floor only' },
-  },
-};
+export { schema };
 
 const LAYERS = { both: 0, reflected: 1, refracted: 2 };
 // The scene: camera 6 tiles from the surface point under the centre of the view, 32° vertical

@@ -7,19 +7,13 @@ import { createShaderView } from '../../gl/createShaderView.js';
 import { DEG } from '../../optics/angles.js';
 import { criticalAngle, fresnelExact } from '../../optics/fresnel.js';
 import { evanescentDepth, mediumWave, waveField } from '../../optics/waves.js';
-import { indexPair } from '../shared/indexPair.js';
 import { startWebGL } from '../shared/startWebGL.js';
 import { buildRefractionWavesDom } from './buildRefractionWavesDom.js';
 import fragment from './refraction-waves.frag.glsl?raw';
 import './styles.css';
+import { schema } from './schema.js';
 
-export const schema = {
-  angle: { type: 'number', default: 30, min: 0, max: 89, step: 0.1, label: 'Incidence angle θ_i °' },
-  ...indexPair({ incident: 'top medium', transmitted: 'bottom medium', step: 0.001, aliases: { nI: ['n1'], nT: ['n2'] } }),
-  reflected: { type: 'boolean', default: false, label: 'Show the reflected wave' },
-  play: { type: 'boolean', default: true, label: 'Play' },
-  speed: { type: 'number', default: 0.5, min: 0.05, max: 2, step: 0.05, label: 'Speed (periods per second)' },
-};
+export { schema };
 
 const LAMBDA0_NM = 550; // the vacuum wavelength quoted in the labels (green light)
 const HALF_HEIGHT = 3;  // the view is 6 vacuum wavelengths tall

@@ -2,19 +2,13 @@
 // Panel `refractive-index`: the dielectrics of src/optics/materials.js in a sortable table (n,
 // speed c/n, R0 from air, critical angle to air, source), plus a live "Custom" row. "Use" applies
 // a material's n to every panel of the page. Rows come from src/optics/materialRows.js.
-import { dielectrics } from '../../optics/materials.js';
 import { customRow, materialRows, sortMaterialRows } from '../../optics/materialRows.js';
-import { buildIndexTable, COLUMNS } from './buildIndexTable.js';
+import { buildIndexTable } from './buildIndexTable.js';
 import './styles.css';
+import { schema } from './schema.js';
 
-const SELECTABLE = ['none', ...dielectrics.map((m) => m.id), 'custom'];
 
-export const schema = {
-  sort: { type: 'enum', default: 'n', options: Object.fromEntries(COLUMNS.map((c) => [c.key, c.label])), label: 'Sort by' },
-  dir: { type: 'enum', default: 'asc', options: { asc: 'Ascending', desc: 'Descending' }, label: 'Sort direction' },
-  selected: { type: 'enum', default: 'none', options: SELECTABLE, label: 'Material in use' },
-  customN: { type: 'number', default: 1.5, min: 1, max: 3, step: 0.0001, label: 'Custom n' },
-};
+export { schema };
 
 /**
  * @param {HTMLElement} root

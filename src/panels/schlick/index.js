@@ -12,13 +12,11 @@ import { el } from '../../ui/el.js';
 import { angle as deg, fixed as fixedTo } from '../../ui/format.js';
 import { criticalMark, thetaMark } from '../../ui/plotMarks.js';
 import { renderTex, texElement } from '../../ui/tex.js';
-import { addSwap, indexPair } from '../shared/indexPair.js';
+import { addSwap } from '../shared/indexPair.js';
 import './styles.css';
+import { schema } from './schema.js';
 
-export const schema = {
-  ...indexPair(),
-  theta: { type: 'number', default: 60, min: 0, max: 90, step: 0.01, label: 'θ for the readout (°)' },
-};
+export { schema };
 
 // Schlick, "An Inexpensive BRDF Model for Physically-based Rendering", CGF 13(3), 1994; lecture slide.
 const FORMULA = String.raw`R(\theta) \approx R_{\mathrm{S}}(\theta) = R_0 + (1 - R_0)(1 - \cos\theta)^{5}`;

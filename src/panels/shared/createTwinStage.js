@@ -1,7 +1,6 @@
 // The two-sphere stage of the fresnel-lighting and metals panels: one canvas drawn by one
 // full-screen shader (the spheres are ray-cast in shaders/twinStage.glsl), a label
 // over each half, and the map from a view angle θ to the pixel that shows it (for probes and tests).
-import { Vector3 } from 'three';
 import { createShaderView } from '../../gl/createShaderView.js';
 import { directionFromAngles } from '../../gl/directionFromAngles.js';
 import { startWebGL } from './startWebGL.js';
@@ -48,7 +47,7 @@ export function createTwinStage(host, { fragment, uniforms, ariaLabel, fallback,
     uniforms: {
       ...uniforms,
       uCamera: { value: [distance, 1 / Math.tan((fovDeg * DEG) / 2), elevationDeg * DEG] },
-      uSunDir: { value: new Vector3(0, 1, 0) },
+      uSunDir: { value: [0, 1, 0] },
     },
   }), fallback);
 
@@ -74,7 +73,7 @@ export function createTwinStage(host, { fragment, uniforms, ariaLabel, fallback,
       texts.forEach((text, i) => { labels[i].textContent = text; });
     },
     setLight(azimuthDeg, elevationDeg) {
-      view?.uniforms.uSunDir.value.copy(directionFromAngles(azimuthDeg, elevationDeg));
+      if (view) view.uniforms.uSunDir.value = directionFromAngles(azimuthDeg, elevationDeg);
     },
     render: () => view?.render(),
     /** [r, g, b, a] bytes at view angle θ on a sphere (drawn now). */

@@ -9,35 +9,25 @@
 // ?bench=normal|tiny runs the benchmark on load (npm run bench uses it).
 import { benchCsv, benchResults, benchTable, gpuPrecisionFor, measuredCosts } from '../../optics/benchResults.js';
 import {
-  CRITERION, DEFAULT_BUDGET, DISPLAY_BUDGETS, displayBudget, meanDisplayCodes, recommendWithin,
+  CRITERION, displayBudget, meanDisplayCodes, recommendWithin,
 } from '../../optics/displayBudgets.js';
 import { recommendWithErrors } from '../../optics/gpuErrors.js';
 import { toDegrees } from '../../optics/angles.js';
 import { methodById } from '../../optics/methods.js';
 import { paretoFront } from '../../optics/paretoFront.js';
-import { SCENES, sceneById } from '../../optics/scenes.js';
+import { sceneById } from '../../optics/scenes.js';
 import { downloadText } from '../../host/exporters.js';
 import { BENCH_SIZES, loadCachedResults, runBenchmark, saveCachedResults } from './runBenchmark.js';
 import { createScatter } from './createScatter.js';
 import { buildSpeedAccuracyDom, formatCodes, formatNs } from './buildSpeedAccuracyDom.js';
 import { cachedGpuErrors, gpuPrecisionProbe, measureGpuErrors } from './measureGpuErrors.js';
 import {
-  ERROR_SOURCES, glslOf, mediumpNote, PRECISION_WORDS, sourceWords,
+  glslOf, mediumpNote, PRECISION_WORDS, sourceWords,
 } from './errorSources.js';
 import './styles.css';
+import { schema } from './schema.js';
 
-export const schema = {
-  scene: { type: 'enum', default: 'plastic', options: Object.fromEntries(SCENES.map((s) => [s.id, s.label])), label: 'Scene' },
-  budget: {
-    type: 'enum', default: DEFAULT_BUDGET, options: Object.fromEntries(DISPLAY_BUDGETS.map((b) => [b.id, b.label])), label: 'Error budget',
-  },
-  errors: { type: 'enum', default: 'js', options: ERROR_SOURCES, label: 'Error measured by' },
-  cost: {
-    type: 'enum', default: 'gpu',
-    options: { gpu: 'GPU ns per evaluation', cpu: 'CPU ns per evaluation (JS)', static: 'Static instruction count' },
-    label: 'Cost axis',
-  },
-};
+export { schema };
 
 function caseText(kind, args) {
   if (!args) return '';
@@ -207,7 +197,7 @@ export function mount(root, ctx) {
     if (!results) return 'No benchmark run yet on this device: the costs are static instruction counts.';
     const f = results.frames;
     const frames = f ? ` Frame at ${f.width}×${f.height}: hero spheres ${formatNs(f.spheres.msPerFrame).replace(' ns', ' ms')}, `
-      + `three.js MeshPhysicalMaterial ${formatNs(f.threePhysical.msPerFrame).replace(' ns', ' ms')} (×${f.ratio.toFixed(2)}).` : '';
+      + `three.js MeshPhysicalMaterial ${formatNs(f.threePhysical.msPerFrame).replace(' ns', ' ms')} (the hero costs ×${f.ratio.toFixed(2)}).` : '';
     const failed = results.device.gpuError ? ` GPU timing failed: ${results.device.gpuError}` : '';
     return `Measured ${results.date ? new Date(results.date).toLocaleString() : ''} on ${results.device.renderer ?? 'no WebGL2 (CPU only)'}; `
       + `timer: ${results.device.timer ?? '–'}.${frames}${failed}`;

@@ -1,17 +1,13 @@
-// Frame cost of the hero view (src/panels/spheres/createSphereTrio.js: three spheres with their own Fresnel
-// shader) against three spheres of three.js's MeshPhysicalMaterial, drawn the same way (one
-// sphere mesh, three viewports, the same sky dome, camera and canvas size), in the same run.
-// Each frame is drawn and fenced by a 1-pixel readPixels, and timed by the GPU timer query where
-// the browser offers it (GPU time only), else by wall clock (GPU time plus the same sync cost on
-// both sides); the median over frames is reported. It measures the hero itself, so it imports the
-// hero's scene and schema from src/panels/spheres/ (the one place a panel reaches into another).
-import {
-  BackSide, Color, DirectionalLight, GLSL3, HemisphereLight, Mesh, MeshPhysicalMaterial, PerspectiveCamera,
-  PMREMGenerator, RawShaderMaterial, Scene, SphereGeometry, Vector2,
-} from 'three';
-import { createSphereTrio, SKY_SHADERS } from '../spheres/createSphereTrio.js';
+// Frame cost of the hero view (src/panels/spheres/createSphereTrio.js: three analytic spheres in
+// one full-screen pass) against three spheres of three.js's MeshPhysicalMaterial drawn the ordinary
+// way (createPhysicalPeer.js), at the same canvas size, in the same run. Each frame is drawn and
+// fenced by a 1-pixel readPixels, and timed by the GPU timer query where the browser offers it (GPU
+// time only), else by wall clock (GPU time plus the same sync cost on both sides); the median over
+// frames is reported. It measures the hero itself, so it imports the hero's scene and schema from
+// src/panels/spheres/ (the one place a panel reaches into another).
+import { createSphereTrio } from '../spheres/createSphereTrio.js';
+import { createPhysicalPeer } from './createPhysicalPeer.js';
 import { directionFromAngles } from '../../gl/directionFromAngles.js';
-import { cappedPixelRatio, createRenderer } from '../../gl/createRenderer.js';
 import { TIMER_QUERY, WALL_TIMER } from '../../gl/timeMethodsGpu.js';
 import { spreadOf } from '../../optics/timeMethodsCpu.js';
 import { schema as heroSchema } from '../spheres/schema.js';
@@ -20,6 +16,7 @@ import { defaults as defaultValues } from '../../host/params.js';
 const defaults = defaultValues(heroSchema);
 const SUN = directionFromAngles(defaults.lightAz, defaults.lightEl);
 const nextFrame = () => new Promise((resolve) => { requestAnimationFrame(() => resolve()); });
+const sync = (gl) => gl.readPixels(1, 1, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
 
 /** A canvas of this CSS size in host, laid out but not seen (ResizeObserver needs a real box). */
 function stageCanvas(host, width, height) {
@@ -74,69 +71,25 @@ async function heroFrames(host, size, options) {
     trio.setView({ azimuth: defaults.viewAz, elevation: defaults.viewEl, distance: defaults.viewDist }, { silent: true });
     await nextFrame(); // the ResizeObserver sizes the drawing buffer
     await nextFrame();
-    const pixels = trio.renderer.getDrawingBufferSize(new Vector2());
-    const result = await timeDraws(trio.renderer.getContext(), () => trio.readPixel(1, 1), options);
-    return { ...result, pixels: pixels.x * pixels.y };
+    const { gl } = trio.shaderView;
+    const result = await timeDraws(gl, () => { trio.shaderView.drawNow(); sync(gl); }, options);
+    return { ...result, pixels: gl.drawingBufferWidth * gl.drawingBufferHeight };
   } finally {
     trio.dispose();
     canvas.remove();
   }
 }
 
-/** Three MeshPhysicalMaterial spheres (a clear-coated red plastic, like the hero's), lit by the
- *  same sun and by an environment prefiltered from the same sky. */
+/** Three MeshPhysicalMaterial spheres (a clear-coated red plastic, like the hero's). */
 async function physicalFrames(host, size, options) {
   const canvas = stageCanvas(host, size.width, size.height);
-  const renderer = createRenderer(canvas);
-  const disposables = [];
+  const peer = createPhysicalPeer(canvas, { width: size.width, height: size.height, nT: defaults.nT, color: defaults.kd });
   try {
-    renderer.setScissorTest(true);
-    renderer.setPixelRatio(cappedPixelRatio(size.width, size.height, window.devicePixelRatio));
-    renderer.setSize(size.width, size.height, false);
-    const skyUniforms = { uSunDir: { value: SUN.clone() }, uEnvStrength: { value: defaults.env } };
-    const skyMaterial = new RawShaderMaterial({
-      glslVersion: GLSL3, vertexShader: SKY_SHADERS.vertex, fragmentShader: SKY_SHADERS.fragment,
-      uniforms: skyUniforms, side: BackSide, depthWrite: false,
-    });
-    const skyGeometry = new SphereGeometry(40, 32, 16);
-    const sky = new Mesh(skyGeometry, skyMaterial);
-    sky.renderOrder = -1;
-    const pmrem = new PMREMGenerator(renderer);
-    const skyScene = new Scene().add(new Mesh(skyGeometry, skyMaterial));
-    const environment = pmrem.fromScene(skyScene, 0, 0.1, 100, { size: 64 });
-    const geometry = new SphereGeometry(1, 96, 64);
-    const material = new MeshPhysicalMaterial({
-      color: new Color(defaults.kd), roughness: 0.5, clearcoat: 1, clearcoatRoughness: 0.02, ior: defaults.nT,
-    });
-    disposables.push(skyMaterial, skyGeometry, pmrem, environment, geometry, material);
-    const scene = new Scene();
-    scene.environment = environment.texture;
-    const sun = new DirectionalLight(0xffffff, 2);
-    sun.position.copy(SUN);
-    scene.add(sky, new Mesh(geometry, material), sun, new HemisphereLight(0xbfd8ff, 0x404040, 0.4));
-    const camera = new PerspectiveCamera(28, 1, 0.1, 100);
-    camera.position.copy(directionFromAngles(defaults.viewAz, defaults.viewEl)).multiplyScalar(defaults.viewDist);
-    camera.lookAt(0, 0, 0);
-    const buffer = renderer.getDrawingBufferSize(new Vector2());
-    const gl = renderer.getContext();
-    const pixel = new Uint8Array(4);
-    const draw = () => {
-      const w = size.width / 3;
-      camera.aspect = w / size.height;
-      camera.updateProjectionMatrix();
-      renderer.clear();
-      for (let i = 0; i < 3; i += 1) {
-        renderer.setViewport(i * w, 0, w, size.height);
-        renderer.setScissor(i * w, 0, w, size.height);
-        renderer.render(scene, camera);
-      }
-      gl.readPixels(1, 1, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
-    };
-    const result = await timeDraws(gl, draw, options);
-    return { ...result, pixels: buffer.x * buffer.y };
+    const gl = peer.renderer.getContext();
+    const result = await timeDraws(gl, () => { peer.drawNow(); sync(gl); }, options);
+    return { ...result, pixels: peer.drawingBufferPixels() };
   } finally {
-    for (const d of disposables) d.dispose();
-    renderer.dispose();
+    peer.dispose();
     canvas.remove();
   }
 }
@@ -145,7 +98,7 @@ async function physicalFrames(host, size, options) {
  * Times both views at width × height CSS pixels in host (a laid-out element; the canvases are
  * added and removed). Options: frames, warmup, signal, onProgress(done, total, label), now.
  * Resolves to { spheres, threePhysical (each { msPerFrame: { median, min, max }, samples,
- * pixels, timer }), ratio: physical median / spheres median, width, height }.
+ * pixels, timer }), ratio: spheres median / physical median (below 1: the hero is cheaper), width, height }.
  */
 export async function timeFrames(host, {
   width = 900, height = 300, frames = 12, warmup = 3, signal, onProgress, now = () => performance.now(),
@@ -158,5 +111,5 @@ export async function timeFrames(host, {
   onProgress?.(1, 2, 'Frame cost: three.js MeshPhysicalMaterial');
   const threePhysical = await physicalFrames(host, size, options);
   onProgress?.(2, 2, 'Frame cost done');
-  return { spheres, threePhysical, ratio: threePhysical.msPerFrame.median / spheres.msPerFrame.median, width, height };
+  return { spheres, threePhysical, ratio: spheres.msPerFrame.median / threePhysical.msPerFrame.median, width, height };
 }

@@ -1,84 +1,35 @@
 // Three spheres from one camera in one WebGL context: exact Fresnel, Schlick, and the error
-// heatmap. One sphere mesh drawn into three viewports with a mode uniform; the sky is a
-// back-facing dome with the same procedural environment the spheres reflect.
-import {
-  BackSide, Color, GLSL3, Mesh, PerspectiveCamera, RawShaderMaterial, Raycaster, Scene, Sphere,
-  SphereGeometry, Vector2, Vector3,
-} from 'three';
-import { assembleShader } from '../../gl/shaderChunks.js';
-import sphereVertex from './spheres.vert.glsl?raw';
-import sphereFragment from './spheres.frag.glsl?raw';
-import skyFragment from './sky.frag.glsl?raw';
-import { cappedPixelRatio, createRenderer } from '../../gl/createRenderer.js';
-import { onDemand } from '../../gl/onDemand.js';
-import { readPixel } from '../../gl/readPixel.js';
-import { directionFromAngles } from '../../gl/directionFromAngles.js';
+// heatmap, ray-cast in one full-screen pass (spheres.frag.glsl) with the camera of trioCamera.js.
+// The sphere is exact, so no mesh is drawn: a software rasterizer or a weak integrated GPU pays
+// once per pixel, not per triangle, and the hover readout uses the very same ray.
+import { createShaderView } from '../../gl/createShaderView.js';
+import { hexToLinear } from '../../ui/srgb.js';
+import fragment from './spheres.frag.glsl?raw';
+import { hitSphere, rayThrough, trioCamera, VIEW_COUNT } from './trioCamera.js';
 
 export const SPHERE_MODES = ['exact', 'schlick', 'error'];
-/** The sky dome's shaders (the benchmark draws the same sky behind its peer). */
-export const SKY_SHADERS = Object.freeze({ vertex: assembleShader(sphereVertex), fragment: assembleShader(skyFragment) });
-
 
 export function createSphereTrio(canvas, { onChange, onFrame } = {}) {
-  const renderer = createRenderer(canvas);
-  renderer.setScissorTest(true);
-  const camera = new PerspectiveCamera(28, 1, 0.1, 100);
-  const shared = { uSunDir: { value: new Vector3(0, 1, 0) }, uEnvStrength: { value: 1 } };
   const uniforms = {
-    ...shared,
-    uMode: { value: 0 },
-    uNI: { value: 1 },
-    uNT: { value: 1.5 },
-    uKd: { value: new Color() },
-    uKs: { value: new Color() },
-    uErrScale: { value: 0.05 },
+    uEye: { value: [0, 0, 6] }, uForward: { value: [0, 0, -1] }, uRight: { value: [1, 0, 0] }, uUp: { value: [0, 1, 0] },
+    uTanHalfFov: { value: 0.25 },
+    uNI: { value: 1 }, uNT: { value: 1.5 },
+    uKd: { value: [0, 0, 0] }, uKs: { value: [1, 1, 1] },
+    uSunDir: { value: [0, 1, 0] }, uEnvStrength: { value: 1 }, uErrScale: { value: 0.05 },
   };
-  const vertexShader = SKY_SHADERS.vertex;
-  const sphereMaterial = new RawShaderMaterial({
-    glslVersion: GLSL3, vertexShader, fragmentShader: assembleShader(sphereFragment), uniforms,
-  });
-  const skyMaterial = new RawShaderMaterial({
-    glslVersion: GLSL3, vertexShader, fragmentShader: SKY_SHADERS.fragment, uniforms: shared,
-    side: BackSide, depthWrite: false,
-  });
-  const scene = new Scene();
-  const sky = new Mesh(new SphereGeometry(40, 32, 16), skyMaterial);
-  sky.renderOrder = -1;
-  const sphere = new Mesh(new SphereGeometry(1, 96, 64), sphereMaterial);
-  scene.add(sky, sphere);
-
+  const shaderView = createShaderView(canvas, { fragment, uniforms, onFrame, maxPixels: 1_500_000 });
   const view = { azimuth: 0, elevation: 15, distance: 6 };
-  const size = { width: 1, height: 1 };
+  let camera = trioCamera(view);
 
   function placeCamera() {
-    camera.position.copy(directionFromAngles(view.azimuth, view.elevation)).multiplyScalar(view.distance);
-    camera.lookAt(0, 0, 0);
+    camera = trioCamera(view);
+    uniforms.uEye.value = camera.eye;
+    uniforms.uForward.value = camera.forward;
+    uniforms.uRight.value = camera.right;
+    uniforms.uUp.value = camera.up;
+    uniforms.uTanHalfFov.value = camera.tanHalfFov;
   }
-
-  function draw() {
-    const w = size.width / 3;
-    camera.aspect = w / size.height;
-    camera.updateProjectionMatrix();
-    renderer.clear();
-    SPHERE_MODES.forEach((_, i) => {
-      renderer.setViewport(i * w, 0, w, size.height);
-      renderer.setScissor(i * w, 0, w, size.height);
-      uniforms.uMode.value = i;
-      renderer.render(scene, camera);
-    });
-    onFrame?.();
-  }
-  const frames = onDemand(draw);
-
-  const resizeObserver = new ResizeObserver(() => {
-    const rect = canvas.getBoundingClientRect();
-    size.width = Math.max(3, Math.round(rect.width));
-    size.height = Math.max(1, Math.round(rect.height));
-    renderer.setPixelRatio(cappedPixelRatio(size.width, size.height, window.devicePixelRatio));
-    renderer.setSize(size.width, size.height, false);
-    frames.request();
-  });
-  resizeObserver.observe(canvas);
+  placeCamera();
 
   // Orbit by pointer drag and by arrow keys (the canvas is focusable); wheel zooms.
   let drag = null;
@@ -88,7 +39,7 @@ export function createSphereTrio(canvas, { onChange, onFrame } = {}) {
   };
   const onPointerMove = (event) => {
     if (!drag) return;
-    const scale = 180 / Math.max(200, size.height);
+    const scale = 180 / Math.max(200, canvas.getBoundingClientRect().height);
     setView({
       azimuth: drag.azimuth - (event.clientX - drag.x) * scale,
       elevation: drag.elevation + (event.clientY - drag.y) * scale,
@@ -121,70 +72,49 @@ export function createSphereTrio(canvas, { onChange, onFrame } = {}) {
     view.elevation = Math.min(85, Math.max(-85, next.elevation ?? view.elevation));
     view.distance = Math.min(10, Math.max(2.2, next.distance ?? view.distance));
     placeCamera();
-    frames.request();
+    shaderView.render();
     if (!silent) onChange?.({ ...view });
   }
 
-  const raycaster = new Raycaster();
-  const unitSphere = new Sphere(new Vector3(), 1);
-  const ndc = new Vector2();
-  const hit = new Vector3();
-
   return {
-    renderer,
-    frames,
+    shaderView,
+    frames: shaderView.frames,
     get view() { return { ...view }; },
     setView,
-    /** Updates the optics and look; values as in the panel's params (colours linear after Color.set). */
+    /** Updates the optics and look; colours as the controls give them ('#rrggbb', sRGB). */
     setParams({ nI, nT, kd, ks, sunDir, envStrength, errScale }) {
       uniforms.uNI.value = nI;
       uniforms.uNT.value = nT;
-      uniforms.uKd.value.set(kd);
-      uniforms.uKs.value.set(ks);
-      shared.uSunDir.value.copy(sunDir);
-      shared.uEnvStrength.value = envStrength;
+      uniforms.uKd.value = hexToLinear(kd);
+      uniforms.uKs.value = hexToLinear(ks);
+      uniforms.uSunDir.value = sunDir;
+      uniforms.uEnvStrength.value = envStrength;
       uniforms.uErrScale.value = errScale;
-      frames.request();
+      shaderView.render();
     },
     /** Which sphere is under a client point, and the cos θ between its normal and the view there. */
     pick(clientX, clientY) {
       const rect = canvas.getBoundingClientRect();
-      const w = rect.width / 3;
+      const w = rect.width / VIEW_COUNT;
       const index = Math.floor((clientX - rect.left) / w);
-      if (index < 0 || index > 2) return null;
-      ndc.set(((clientX - rect.left - index * w) / w) * 2 - 1, -((clientY - rect.top) / rect.height) * 2 + 1);
-      camera.aspect = w / rect.height;
-      camera.updateProjectionMatrix();
-      raycaster.setFromCamera(ndc, camera);
-      if (!raycaster.ray.intersectSphere(unitSphere, hit)) return null;
-      const normal = hit.clone().normalize();
-      const toEye = camera.position.clone().sub(hit).normalize();
-      return { mode: SPHERE_MODES[index], cosTheta: Math.min(1, Math.max(0, normal.dot(toEye))) };
+      if (index < 0 || index >= VIEW_COUNT) return null;
+      const x = ((clientX - rect.left - index * w) / w) * 2 - 1;
+      const y = 1 - ((clientY - rect.top) / rect.height) * 2;
+      const hit = hitSphere(camera.eye, rayThrough(camera, x, y, w / rect.height));
+      return hit && { mode: SPHERE_MODES[index], cosTheta: hit.cosTheta };
     },
     /** Draws now and reads one pixel (CSS coordinates within the canvas) as [r, g, b, a] bytes. */
-    readPixel(x, y) {
-      draw();
-      return readPixel(renderer, x, y, size.height);
-    },
+    readPixel: (x, y) => shaderView.readPixel(x, y),
     /** Draws now and returns the canvas as a PNG data URL (the drawing buffer is not preserved). */
-    toDataURL() {
-      draw();
-      return canvas.toDataURL('image/png');
-    },
+    toDataURL: () => shaderView.toDataURL(),
     dispose() {
-      frames.cancel();
-      resizeObserver.disconnect();
       canvas.removeEventListener('pointerdown', onPointerDown);
       canvas.removeEventListener('pointermove', onPointerMove);
       canvas.removeEventListener('pointerup', onPointerUp);
       canvas.removeEventListener('pointercancel', onPointerUp);
       canvas.removeEventListener('wheel', onWheel);
       canvas.removeEventListener('keydown', onKeyDown);
-      sphere.geometry.dispose();
-      sky.geometry.dispose();
-      sphereMaterial.dispose();
-      skyMaterial.dispose();
-      renderer.dispose();
+      shaderView.dispose();
     },
   };
 }

@@ -1,39 +1,62 @@
-// The hero view: a coated diffuse sphere, k = mix(kd, ks, F) (lecture, "Fresnel reflection in
-// lighting"), with F exact (mode 0) or Schlick (mode 1), or the heatmap |exact − Schlick| (mode 2).
+// The hero view: three unit spheres side by side (exact Fresnel, Schlick, and the heatmap
+// |exact − Schlick|), ray-cast analytically in one full-screen pass (trioCamera.js holds the same
+// camera in JS). Exact normals and silhouettes with no mesh; the silhouette is anti-aliased by its
+// coverage of the pixel, the background is the environment the spheres reflect. The sphere is a
+// coated diffuse surface, k = mix(kd, ks, F) (lecture, "Fresnel reflection in lighting").
 precision highp float;
 #include <fresnel>
 #include <environment>
 #include <color>
 #include <colormap>
 
-uniform vec3 cameraPosition;
-uniform int uMode;
+uniform vec2 uResolution;  // drawing-buffer pixels
+uniform vec3 uEye;         // camera position; the sphere is the unit sphere at the origin
+uniform vec3 uForward;
+uniform vec3 uRight;
+uniform vec3 uUp;
+uniform float uTanHalfFov;
 uniform float uNI;
 uniform float uNT;
 uniform vec3 uKd;          // linear RGB
 uniform vec3 uKs;          // linear RGB
 uniform float uEnvStrength;
 uniform float uErrScale;   // the error that maps to the top of the legend
-in vec3 vWorldPos;
 out vec4 fragColor;
 
-void main() {
-  // The sphere is centred at the origin: its exact normal is the normalized position, which
-  // avoids the interpolation error of vertex normals (cos θ a little above 1 or off the true value).
-  vec3 N = normalize(vWorldPos);
-  vec3 V = normalize(cameraPosition - vWorldPos);
-  float cosTheta = dot(N, V);
+vec3 shade(int mode, vec3 N, vec3 V) {
+  float cosTheta = clamp(dot(N, V), 0.0, 1.0);
   float fExact = fresnelExact(cosTheta, uNI, uNT);
   float fSchlick = fresnelSchlick(cosTheta, uNI, uNT);
-  if (uMode == 2) {
-    fragColor = vec4(colormap(abs(fExact - fSchlick) / uErrScale), 1.0);
-    return;
-  }
-  float F = uMode == 0 ? fExact : fSchlick;
+  if (mode == 2) return colormap(abs(fExact - fSchlick) / uErrScale);
+  float F = mode == 0 ? fExact : fSchlick;
   vec3 L = normalize(uSunDir);
   vec3 R = reflect(-V, N);
   // Diffuse layer: the sun plus a little sky light from above; coating: the mirrored environment.
   vec3 diffuse = uKd * (max(dot(N, L), 0.0) + 0.3 * uEnvStrength * skyLight(N));
   vec3 coat = uKs * uEnvStrength * environment(R);
-  fragColor = vec4(linearToSrgb(mix(diffuse, coat, F)), 1.0);
+  return linearToSrgb(mix(diffuse, coat, F));
+}
+
+void main() {
+  float viewWidth = uResolution.x / 3.0;
+  int mode = int(min(2.0, floor(gl_FragCoord.x / viewWidth)));
+  vec2 ndc = vec2((gl_FragCoord.x - float(mode) * viewWidth) / viewWidth, gl_FragCoord.y / uResolution.y) * 2.0 - 1.0;
+  vec2 screen = ndc * uTanHalfFov * vec2(viewWidth / uResolution.y, 1.0);
+  vec3 dir = normalize(uForward + screen.x * uRight + screen.y * uUp);
+  vec3 background = linearToSrgb(environment(dir) * max(uEnvStrength, 0.15));
+  // The ray passes the centre at distance d = √(|eye|² − b²); the silhouette is d = 1. Coverage
+  // of the pixel by the disc: d's change across one pixel (fwidth) sets the width of the ramp.
+  float b = dot(uEye, dir);
+  float d = sqrt(max(dot(uEye, uEye) - b * b, 0.0));
+  float coverage = clamp(0.5 + (1.0 - d) / max(fwidth(d), 1e-6), 0.0, 1.0);
+  if (coverage <= 0.0) {
+    fragColor = vec4(background, 1.0);
+    return;
+  }
+  // Nearer root of |eye + t·dir|² = 1; at the fringe just outside (h < 0) the grazing point.
+  float h = b * b - (dot(uEye, uEye) - 1.0);
+  float t = -b - sqrt(max(h, 0.0));
+  vec3 N = normalize(uEye + t * dir);
+  vec3 sphere = shade(mode, N, -dir);
+  fragColor = vec4(mix(background, sphere, coverage), 1.0);
 }

@@ -8,25 +8,16 @@
 import { createRenderer, WebGL2Unavailable } from '../../gl/createRenderer.js';
 import { disposeMethodsGpu, GpuFloatUnavailable, gpuPrecisionInfo, methodsGpu } from '../../gl/evaluateMethodsGpu.js';
 import { cellAt, classifyGrid, criticalAngleDeg, gridInputs } from '../../optics/classifyGrid.js';
-import { invisibleThreshold } from '../../optics/advisor.js';
-import { methodById, methodsOfKind } from '../../optics/methods.js';
+import { methodById } from '../../optics/methods.js';
 import { contextFor } from '../../optics/rounding.js';
 import { classify, classifyValue, CLASS_NAMES } from '../../optics/stabilityMap.js';
 import { buildStabilityDom, CLASS_LABELS } from './buildStabilityDom.js';
 import { drawMap } from './drawMap.js';
 import { composePng } from './composePng.js';
 import './styles.css';
+import { schema } from './schema.js';
 
-const DIELECTRICS = methodsOfKind('dielectric');
-
-export const schema = {
-  method: { type: 'enum', default: 'exact-cg', options: Object.fromEntries(DIELECTRICS.map((m) => [m.id, m.label])), label: 'Method' },
-  precision: {
-    type: 'enum', default: 'mediump', label: 'Precision',
-    options: { fp64: 'JS float64', fp32: 'JS float32', fp16: 'JS float16', highp: 'GPU highp', mediump: 'GPU mediump' },
-  },
-  tolerance: { type: 'number', default: invisibleThreshold(), min: 0, max: 0.5, step: 1e-7, label: 'Tolerance |R − R_exact|' },
-};
+export { schema };
 
 /** The two maps a precision shows: the GPU qualifier, the JS context, and which one was chosen. */
 export function pairFor(precision) {

@@ -1,0 +1,208 @@
+// Page-level measurements for npm run bench, each in a fresh browser context (a cold cache):
+// - updateCosts: a run of `fresnel-lab:set` messages to an embed in an iframe of a given size, each
+//   sent when the `fresnel-lab:rendered` of the one before arrives (the message-driven update a deck
+//   sees). `rendered` comes when a frame's commands are issued, before the GPU has run them, and
+//   the browser keeps at most a frame or two in flight, so one round trip says little; the time of
+//   the whole run divided by its updates includes the GPU's work: that is the cost per update.
+// - heroVsPeer: the hero embed and the three.js peer (bench/peer.html) driven by the same messages,
+//   interleaved in rounds so that drift in the machine's load hits both alike; ratio = hero / peer.
+// - pageLoad: time from navigation to a panel's first frame (performance mark
+//   `fresnel-lab:first-frame:<id>`, set by the panel host), the gzipped JavaScript fetched until
+//   then (and until `ready`), and what CSS and fonts were fetched.
+// - layoutShift: cumulative layout shift over a full scroll of the lecture page.
+import { readFileSync, existsSync } from 'node:fs';
+import { join } from 'node:path';
+import { gzipSync } from 'node:zlib';
+
+const HOST_PATH = '__bench-host.html'; // a blank same-origin page for the iframes (routed, not built)
+
+/** Errors any measured page logged (the run fails on them, as the panel benchmark does). */
+export const problems = [];
+
+async function freshContext(browser, viewport) {
+  const context = await browser.newContext({ viewport });
+  context.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
+  context.on('weberror', (e) => problems.push(e.error().message));
+  return context;
+}
+
+const median = (xs) => {
+  const s = [...xs].sort((a, b) => a - b);
+  const m = s.length >> 1;
+  return s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2;
+};
+export const spread = (xs) => ({ median: median(xs), min: Math.min(...xs), max: Math.max(...xs) });
+
+async function hostPage(browser, base, viewport) {
+  const context = await freshContext(browser, viewport);
+  await context.route(`${base}${HOST_PATH}`, (route) => route.fulfill({
+    contentType: 'text/html', body: '<!doctype html><html><body style="margin:0"></body></html>',
+  }));
+  const page = await context.newPage();
+  await page.goto(`${base}${HOST_PATH}`);
+  return { context, page };
+}
+
+/** ms per update of the frame at `url`, one sample per run of `updates` set → rendered round trips, after `warmup`. */
+function timeUpdates(page, url, { width, height, key, values, updates, warmup, runs = 1 }) {
+  return page.evaluate(async (o) => {
+    const frame = document.createElement('iframe');
+    frame.style.cssText = `width:${o.width}px;height:${o.height}px;border:0;display:block`;
+    const next = (type) => new Promise((resolve, reject) => {
+      const timer = setTimeout(() => reject(new Error(`no ${type} from ${o.url} within 60 s`)), 60_000);
+      const on = (event) => {
+        if (event.source !== frame.contentWindow || event.data?.type !== type) return;
+        window.removeEventListener('message', on);
+        clearTimeout(timer);
+        resolve(event.data);
+      };
+      window.addEventListener('message', on);
+    });
+    const ready = next('fresnel-lab:ready');
+    frame.src = o.url;
+    document.body.append(frame);
+    await ready;
+    let count = 0; // every message changes the value, so every one draws a frame
+    const update = async () => {
+      const rendered = next('fresnel-lab:rendered');
+      count += 1;
+      frame.contentWindow.postMessage({ type: 'fresnel-lab:set', params: { [o.key]: o.values[count % o.values.length] } }, '*');
+      await rendered;
+    };
+    for (let i = 0; i < o.warmup; i += 1) await update();
+    const samples = [];
+    for (let r = 0; r < o.runs; r += 1) {
+      const t0 = performance.now();
+      for (let i = 0; i < o.updates; i += 1) await update();
+      samples.push((performance.now() - t0) / o.updates);
+    }
+    frame.remove();
+    return samples;
+  }, { url, width, height, key, values, updates, warmup, runs });
+}
+
+/** The hero embed against the peer, both width × height, in `rounds` interleaved rounds. */
+export async function heroVsPeer(browser, base, { width = 1500, height = 600, rounds = 5, updates = 12, warmup = 3 } = {}) {
+  const { context, page } = await hostPage(browser, base, { width: width + 40, height: height + 40 });
+  const spec = { width, height, key: 'nT', values: [1.45, 1.55, 1.65, 1.75], updates, warmup };
+  const hero = [];
+  const peer = [];
+  const ratios = [];
+  try {
+    for (let r = 0; r < rounds; r += 1) {
+      const h = await timeUpdates(page, `${base}embed.html?panel=spheres`, spec);
+      const p = await timeUpdates(page, `${base}bench/peer.html`, spec);
+      hero.push(...h);
+      peer.push(...p);
+      ratios.push(h[0] / p[0]);
+    }
+  } finally {
+    await context.close();
+  }
+  return {
+    width, height, rounds, updates,
+    hero: { msPerUpdate: spread(hero), samples: hero },
+    peer: { msPerUpdate: spread(peer), samples: peer, scene: 'three.js MeshPhysicalMaterial, 3 spheres of 64×32 segments, RoomEnvironment through PMREM, antialias' },
+    ratio: median(hero) / median(peer),
+    ratioPerRound: ratios,
+  };
+}
+
+/** What each WebGL panel's update costs in an embed of width × height (the key it changes and two values). */
+export const PANEL_UPDATES = {
+  spheres: { key: 'nT', values: [1.45, 1.55] },
+  asphalt: { key: 'nT', values: [1.5, 1.6] },
+  'changing-specular': { key: 'nT', values: [1.45, 1.55] },
+  'reflect-refract': { key: 'nT', values: [1.3, 1.4] },
+  'refraction-waves': { key: 'nT', values: [1.45, 1.55], query: '&play=false' },
+  'fresnel-lighting': { key: 'nT', values: [1.45, 1.55] },
+  metals: { key: 'nT', values: [1.45, 1.55] },
+  'normal-mips': { key: 'lightEl', values: [6, 7], query: '&truth=false' },
+};
+
+export async function panelUpdateCosts(browser, base, { width = 1280, height = 720, updates = 8, warmup = 3, runs = 3 } = {}) {
+  const { context, page } = await hostPage(browser, base, { width: width + 40, height: height + 40 });
+  const out = {};
+  try {
+    for (const [id, { key, values, query = '' }] of Object.entries(PANEL_UPDATES)) {
+      const samples = await timeUpdates(page, `${base}embed.html?panel=${id}${query}`, { width, height, key, values, updates, warmup, runs });
+      out[id] = { msPerUpdate: spread(samples), key };
+    }
+  } finally {
+    await context.close();
+  }
+  return { width, height, panels: out };
+}
+
+/** Gzipped size (zlib default level, as a static server sends it) of a built file, by its URL. */
+function gzippedBytes(siteDir, base, url) {
+  const path = join(siteDir, decodeURIComponent(new URL(url).pathname.slice(new URL(base).pathname.length)));
+  return existsSync(path) ? gzipSync(readFileSync(path)).length : 0;
+}
+
+/**
+ * Loads `url` in a cold context and waits for panel `id`'s first frame (and `ready`). Returns the
+ * ms from navigation to that frame, and the gzipped JS (and CSS, fonts) fetched before it and
+ * before `ready`.
+ */
+export async function pageLoad(browser, base, siteDir, url, { id, viewport = { width: 1280, height: 800 } }) {
+  const context = await freshContext(browser, viewport);
+  try {
+    const page = await context.newPage();
+    await page.goto(url);
+    const readyAt = await page.evaluate(async () => { await window.fresnelLab.ready; return performance.now(); });
+    // A build older than the mark has none: then the first frame counts as `ready`.
+    await page.waitForFunction((name) => performance.getEntriesByName(name).length > 0, `fresnel-lab:first-frame:${id}`, { timeout: 5_000 })
+      .catch(() => {});
+    const { firstFrame, resources } = await page.evaluate((name) => ({
+      firstFrame: performance.getEntriesByName(name)[0]?.startTime ?? null,
+      resources: performance.getEntriesByType('resource').map((r) => ({ url: r.name, start: r.startTime })),
+    }), `fresnel-lab:first-frame:${id}`);
+    const sum = (until, test) => resources.filter((r) => r.start <= until && test(r.url))
+      .reduce((acc, r) => acc + gzippedBytes(siteDir, base, r.url), 0);
+    const isJs = (u) => /\.js(\?|$)/.test(u);
+    return {
+      firstFrameMs: firstFrame,
+      jsGzipBeforeFirstFrame: sum(firstFrame ?? readyAt, isJs),
+      jsGzipBeforeReady: sum(readyAt, isJs),
+      cssGzipBeforeReady: sum(readyAt, (u) => /\.css(\?|$)/.test(u)),
+      fontsBeforeReady: resources.filter((r) => r.start <= readyAt && /\.(woff2?|ttf)(\?|$)/.test(r.url)).length,
+      scripts: resources.filter((r) => isJs(r.url) && r.start <= readyAt).map((r) => new URL(r.url).pathname.split('/').pop()),
+    };
+  } finally {
+    await context.close();
+  }
+}
+
+/** Sum of layout-shift values over a scroll of the lecture page from top to bottom, each step waiting for the panels in view to mount. */
+export async function layoutShift(browser, base, { viewport = { width: 1280, height: 800 } } = {}) {
+  const context = await freshContext(browser, viewport);
+  try {
+    const page = await context.newPage();
+    await page.addInitScript(() => {
+      window.__shifts = [];
+      new PerformanceObserver((list) => {
+        for (const e of list.getEntries()) if (!e.hadRecentInput) window.__shifts.push({ value: e.value, at: e.startTime });
+      }).observe({ type: 'layout-shift', buffered: true });
+    });
+    await page.goto(base);
+    await page.evaluate(() => window.fresnelLab.ready);
+    for (;;) {
+      const more = await page.evaluate(() => {
+        const before = window.scrollY;
+        window.scrollBy(0, window.innerHeight * 0.8);
+        return window.scrollY > before;
+      });
+      await page.waitForFunction(() => Object.values(window.fresnelLab.hosts).every((h) => {
+        const r = h.container?.getBoundingClientRect?.();
+        return !r || r.bottom < 0 || r.top > window.innerHeight || h.mounted;
+      }), null, { timeout: 60_000 }).catch(() => {});
+      await page.evaluate(() => new Promise((r) => { requestAnimationFrame(() => requestAnimationFrame(r)); }));
+      if (!more) break;
+    }
+    const shifts = await page.evaluate(() => window.__shifts);
+    return { total: shifts.reduce((a, s) => a + s.value, 0), shifts: shifts.length, largest: Math.max(0, ...shifts.map((s) => s.value)) };
+  } finally {
+    await context.close();
+  }
+}

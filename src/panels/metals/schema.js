@@ -1,0 +1,10 @@
+// Parameters of the `metals` panel: controls, URL keys and messages all use them. Pure data
+// (no DOM), loaded with the page so the panel's link and state work before its module arrives.
+import { metals } from '../../optics/materials.js';
+import { transmittedIndex } from '../shared/indexPair.js';
+
+export const schema = {
+  metal: { type: 'enum', default: 'gold', options: Object.fromEntries(metals.map((m) => [m.id, m.name])), label: 'Metal (right)' },
+  fresnel: { type: 'enum', default: 'exact', options: { exact: 'Exact', schlick: 'Schlick' }, label: 'Metal sphere uses' },
+  ...transmittedIndex({ what: 'dielectric, left', aliases: ['n'] }),
+};

@@ -1,0 +1,5 @@
+// Parameters of the `r0-derivation` panel: controls, URL keys and messages all use them. Pure data
+// (no DOM), loaded with the page so the panel's link and state work before its module arrives.
+import { indexPair } from '../shared/indexPair.js';
+
+export const schema = indexPair();

@@ -1,0 +1,13 @@
+// Parameters of the `reflect-refract` panel: controls, URL keys and messages all use them. Pure data
+// (no DOM), loaded with the page so the panel's link and state work before its module arrives.
+import { transmittedIndex } from '../shared/indexPair.js';
+
+export const schema = {
+  elevation: { type: 'number', default: 30, min: 2, max: 90, step: 0.1, label: 'View elevation ° (90 = straight down)' },
+  ...transmittedIndex({ what: 'surface', nT: 1.333, step: 0.0001, aliases: ['n'] }),
+  depth: { type: 'number', default: 1.5, min: 0.2, max: 5, step: 0.1, label: 'Pool depth (tiles)' },
+  layer: {
+    type: 'enum', default: 'both', label: 'Show F·sky, (1−F)·floor or both',
+    options: { both: 'Both', reflected: 'F·sky only', refracted: '(1 − F)·floor only' },
+  },
+};
