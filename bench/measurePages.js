@@ -82,7 +82,7 @@ function timeUpdates(page, url, { width, height, key, values, updates, warmup, r
 }
 
 /** The hero embed against the peer, both width × height, in `rounds` interleaved rounds. */
-export async function heroVsPeer(browser, base, { width = 1500, height = 600, rounds = 5, updates = 12, warmup = 3 } = {}) {
+export async function heroVsPeer(browser, base, { width = 1500, height = 600, rounds = 5, updates = 16, warmup = 6 } = {}) {
   const { context, page } = await hostPage(browser, base, { width: width + 40, height: height + 40 });
   const spec = { width, height, key: 'nT', values: [1.45, 1.55, 1.65, 1.75], updates, warmup };
   const hero = [];

@@ -9,6 +9,13 @@ export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = 
   const near = new Set();
   const loading = new Set(); // near entries whose module is on its way (they hold a place in the budget)
   const failed = new Set(); // entries whose module would not load (their notice says so; never retried in a loop)
+  // At start only the panels on screen fetch their modules; those just ahead wait until the first
+  // picture is up, so the reader's panel is not queued behind modules nobody sees yet.
+  let started = false;
+  const onScreen = ({ section }) => {
+    const r = section.getBoundingClientRect();
+    return r.bottom > 0 && r.top < window.innerHeight / 2; // under the reader's eye, not peeking in at the bottom
+  };
   const distance = ({ section }) => {
     const r = section.getBoundingClientRect();
     return Math.abs(r.top + r.height / 2 - window.innerHeight / 2);
@@ -55,6 +62,10 @@ export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = 
         glMounted += 1;
       }
       if (!entry.host.loaded) {
+        if (!started && !onScreen(entry)) {
+          glMounted -= entry.host.usesWebGL ? 1 : 0;
+          continue;
+        }
         loading.add(entry);
         arrivals.push(entry.host.load().catch((error) => {
           failed.add(entry);
@@ -80,7 +91,15 @@ export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = 
       if (record.isIntersecting) near.add(entry);
       else near.delete(entry);
     }
-    settle().then(() => firstSettled());
+    settle().then(() => {
+      firstSettled();
+      if (started) return;
+      // The on-screen panels have mounted and asked for their first frame: after that frame, the rest.
+      requestAnimationFrame(() => setTimeout(() => {
+        started = true;
+        settle();
+      }, 0));
+    });
   }, { rootMargin: margin });
   for (const { section } of entries) observer.observe(section);
 

@@ -23,12 +23,12 @@ uniform float uEnvStrength;
 uniform float uErrScale;   // the error that maps to the top of the legend
 out vec4 fragColor;
 
+// Each view evaluates only what it shows (the mode is the same over a whole view, so the branch
+// costs nothing on a GPU's SIMD lanes).
 vec3 shade(int mode, vec3 N, vec3 V) {
   float cosTheta = clamp(dot(N, V), 0.0, 1.0);
-  float fExact = fresnelExact(cosTheta, uNI, uNT);
-  float fSchlick = fresnelSchlick(cosTheta, uNI, uNT);
-  if (mode == 2) return colormap(abs(fExact - fSchlick) / uErrScale);
-  float F = mode == 0 ? fExact : fSchlick;
+  if (mode == 2) return colormap(abs(fresnelExact(cosTheta, uNI, uNT) - fresnelSchlick(cosTheta, uNI, uNT)) / uErrScale);
+  float F = mode == 0 ? fresnelExact(cosTheta, uNI, uNT) : fresnelSchlick(cosTheta, uNI, uNT);
   vec3 L = normalize(uSunDir);
   vec3 R = reflect(-V, N);
   // Diffuse layer: the sun plus a little sky light from above; coating: the mirrored environment.
@@ -43,12 +43,13 @@ void main() {
   vec2 ndc = vec2((gl_FragCoord.x - float(mode) * viewWidth) / viewWidth, gl_FragCoord.y / uResolution.y) * 2.0 - 1.0;
   vec2 screen = ndc * uTanHalfFov * vec2(viewWidth / uResolution.y, 1.0);
   vec3 dir = normalize(uForward + screen.x * uRight + screen.y * uUp);
-  vec3 background = linearToSrgb(environment(dir) * max(uEnvStrength, 0.15));
   // The ray passes the centre at distance d = √(|eye|² − b²); the silhouette is d = 1. Coverage
   // of the pixel by the disc: d's change across one pixel (fwidth) sets the width of the ramp.
   float b = dot(uEye, dir);
   float d = sqrt(max(dot(uEye, uEye) - b * b, 0.0));
   float coverage = clamp(0.5 + (1.0 - d) / max(fwidth(d), 1e-6), 0.0, 1.0);
+  // The background (the environment the spheres reflect) only where the sphere does not cover the pixel.
+  vec3 background = coverage < 1.0 ? linearToSrgb(environment(dir) * max(uEnvStrength, 0.15)) : vec3(0.0);
   if (coverage <= 0.0) {
     fragColor = vec4(background, 1.0);
     return;

@@ -1,0 +1,74 @@
+// Download only what is used, draw only on screen: which modules a page fetches, and what it
+// announces. three.js is recognised by its WebGLRenderer in a script's text.
+import { test, expect, openLab } from './fixtures.js';
+
+/** Every script the page fetched, and whether each holds three.js's renderer. */
+function watchScripts(page) {
+  const scripts = [];
+  page.on('response', async (response) => {
+    if (response.request().resourceType() !== 'script') return;
+    const body = await response.text().catch(() => '');
+    scripts.push({ url: response.url(), three: body.includes('WebGLRenderer'), katex: body.includes('KaTeX') });
+  });
+  return scripts;
+}
+
+test('a plot-only embed and the hero load no three.js; KaTeX comes only with formulas', async ({ page }) => {
+  const scripts = watchScripts(page);
+  await openLab(page, './embed.html?panel=schlick');
+  await expect(page.locator('.katex').first()).toBeVisible(); // the formulas are typeset after the plot
+  expect(scripts.some((s) => s.three), scripts.map((s) => s.url).join('\n')).toBe(false);
+  expect(scripts.some((s) => s.katex)).toBe(true);
+
+  scripts.length = 0;
+  await openLab(page, './embed.html?panel=spheres');
+  await expect.poll(() => page.evaluate(() => window.fresnelLab.hosts.spheres.frames)).toBeGreaterThan(0);
+  expect(scripts.some((s) => s.three)).toBe(false);
+  expect(scripts.some((s) => s.katex)).toBe(false);
+});
+
+test('the lecture page fetches other panels\' modules only after the first picture is up', async ({ page }) => {
+  await openLab(page, './');
+  // Every host exists at once: its values work before its module arrives.
+  expect(await page.evaluate(() => window.fresnelLab.hosts.stability.values.method)).toBe('exact-cg');
+  // The rest arrive while the page is idle, without scrolling, and none was asked for before the hero drew.
+  await expect.poll(() => page.evaluate(() => window.fresnelLab.hosts.stability.loaded), { timeout: 60_000 }).toBe(true);
+  const times = await page.evaluate(() => ({
+    firstFrame: performance.getEntriesByName('fresnel-lab:first-frame:spheres')[0].startTime,
+    modules: performance.getEntriesByType('resource')
+      .filter((e) => /\/assets\/(normal-mips|asphalt|stability)-[^/]*\.js$/.test(e.name)).map((e) => e.startTime),
+  }));
+  expect(times.modules).toHaveLength(3);
+  for (const start of times.modules) expect(start).toBeGreaterThan(times.firstFrame);
+  await page.locator('section[data-panel="stability"]').scrollIntoViewIfNeeded();
+  await expect.poll(() => page.evaluate(() => window.fresnelLab.hosts.stability.mounted)).toBe(true);
+});
+
+test('a panel without WebGL announces rendered after a change, like the WebGL ones', async ({ page, baseURL }) => {
+  await page.route('**/deck-under-test.html', (route) => route.fulfill({
+    contentType: 'text/html', body: '<!doctype html><title>Deck</title><link rel="icon" href="data:,"><body></body>',
+  }));
+  await page.goto('./deck-under-test.html');
+  const frames = await page.evaluate(async (src) => {
+    const rendered = [];
+    const frame = document.createElement('iframe');
+    const next = (type) => new Promise((resolve) => {
+      const on = (e) => {
+        if (e.source !== frame.contentWindow || e.data?.type !== type) return;
+        window.removeEventListener('message', on);
+        resolve(e.data);
+      };
+      window.addEventListener('message', on);
+    });
+    const ready = next('fresnel-lab:ready');
+    frame.src = src;
+    document.body.append(frame);
+    await ready;
+    rendered.push((await next('fresnel-lab:rendered')).frame); // the first picture
+    const after = next('fresnel-lab:rendered');
+    frame.contentWindow.postMessage({ type: 'fresnel-lab:set', params: { nT: 1.7 } }, '*');
+    rendered.push((await after).frame);
+    return rendered;
+  }, `${baseURL}embed.html?panel=schlick`);
+  expect(frames[1]).toBeGreaterThan(frames[0]);
+});
