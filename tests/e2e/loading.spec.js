@@ -2,29 +2,34 @@
 // announces. three.js is recognised by its WebGLRenderer in a script's text.
 import { test, expect, openLab } from './fixtures.js';
 
-/** Every script the page fetched, and whether each holds three.js's renderer. */
+/** Every script the page fetches; `all()` resolves to them once each one's text has been read. */
 function watchScripts(page) {
-  const scripts = [];
-  page.on('response', async (response) => {
+  const seen = [];
+  page.on('response', (response) => {
     if (response.request().resourceType() !== 'script') return;
-    const body = await response.text().catch(() => '');
-    scripts.push({ url: response.url(), three: body.includes('WebGLRenderer'), katex: body.includes('KaTeX') });
+    seen.push(response.text().catch(() => '').then((body) => ({
+      url: response.url(), three: body.includes('WebGLRenderer'), katex: body.includes('KaTeX'),
+    })));
   });
-  return scripts;
+  return { all: () => Promise.all(seen) };
 }
 
 test('a plot-only embed and the hero load no three.js; KaTeX comes only with formulas', async ({ page }) => {
-  const scripts = watchScripts(page);
+  const plotOnly = watchScripts(page);
   await openLab(page, './embed.html?panel=schlick');
   await expect(page.locator('.katex').first()).toBeVisible(); // the formulas are typeset after the plot
+  const scripts = await plotOnly.all();
   expect(scripts.some((s) => s.three), scripts.map((s) => s.url).join('\n')).toBe(false);
   expect(scripts.some((s) => s.katex)).toBe(true);
 
-  scripts.length = 0;
-  await openLab(page, './embed.html?panel=spheres');
-  await expect.poll(() => page.evaluate(() => window.fresnelLab.hosts.spheres.frames)).toBeGreaterThan(0);
-  expect(scripts.some((s) => s.three)).toBe(false);
-  expect(scripts.some((s) => s.katex)).toBe(false);
+  const heroPage = await page.context().newPage(); // a page of its own: no late response of the first counts
+  const hero = watchScripts(heroPage);
+  await openLab(heroPage, './embed.html?panel=spheres');
+  await expect.poll(() => heroPage.evaluate(() => window.fresnelLab.hosts.spheres.frames)).toBeGreaterThan(0);
+  const heroScripts = await hero.all();
+  expect(heroScripts.some((s) => s.three)).toBe(false);
+  expect(heroScripts.some((s) => s.katex)).toBe(false);
+  await heroPage.close();
 });
 
 test('the lecture page fetches other panels\' modules only after the first picture is up', async ({ page }) => {
