@@ -70,20 +70,10 @@ window.fresnelLab.ready = (async () => {
   const lecture = setupLectureMode(sections, { onHideControls: controls.toggleControls });
   const manager = managePanels(entries.filter(Boolean), { maxLive });
   lecture.holdHashTarget(manager.first);
-  await manager.first; // `ready` means the panels on screen are mounted
-  prefetchWhenIdle(entries.filter(Boolean).map((e) => e.host));
+  await manager.first; // the panels on screen are mounted
+  // Once the first picture is up, the other panels' modules are fetched (small chunks, in
+  // parallel), so a panel scrolled or keyed to mounts at once, at full size, moving nothing.
+  // `ready` means both: the page behaves from then on as if everything were here.
+  await new Promise((resolve) => { requestAnimationFrame(() => setTimeout(resolve, 0)); });
+  await Promise.allSettled(entries.filter(Boolean).map((e) => e.host.load())); // a failure is shown in its panel
 })();
-
-/**
- * Once the first picture is up, the other panels' modules are fetched one at a time while the
- * page is idle, so a panel scrolled to quickly mounts at once (at full size, moving nothing)
- * instead of waiting for its module in view.
- */
-function prefetchWhenIdle(queue) {
-  const idle = (fn) => (typeof requestIdleCallback === 'function' ? requestIdleCallback(fn, { timeout: 2000 }) : setTimeout(fn, 200));
-  const next = () => {
-    const host = queue.find((h) => !h.loaded);
-    if (host) host.load().catch(() => {}).finally(() => idle(next)); // a failure is shown in its panel
-  };
-  idle(next);
-}
