@@ -79,4 +79,12 @@ export const nextFrames = (page) => page.evaluate(() => new Promise((resolve) =>
   requestAnimationFrame(() => requestAnimationFrame(resolve));
 }));
 
+/** A stand-in slide deck on the lab's own origin (served by the test, not part of the site), opened in page. */
+export async function openDeck(page) {
+  await page.route('**/deck-under-test.html', (route) => route.fulfill({
+    contentType: 'text/html', body: '<!doctype html><title>Deck</title><link rel="icon" href="data:,"><body></body>',
+  }));
+  await page.goto('./deck-under-test.html');
+}
+
 export { expect };

@@ -1,6 +1,6 @@
 // The lecture page as a whole: lecture-mode keys, the context budget while scrolling, the message
 // API of embeds, bad links, themes. (Every panel mounting, here and alone: contract.spec.js.)
-import { test, expect, openLab, nextFrames } from './fixtures.js';
+import { test, expect, openDeck, openLab, nextFrames } from './fixtures.js';
 
 test('never more than 8 live WebGL contexts while scrolling the whole page, and none leak', async ({ page }) => {
   test.setTimeout(180_000);
@@ -105,11 +105,7 @@ test('lecture-mode keys move between panels and keep the panel in the hash', asy
 });
 
 test('the message API sets, gets and rejects, and announces ready and rendered frames', async ({ page, baseURL }) => {
-  // A stand-in slide deck on the lab's own origin (served by the test, not part of the site).
-  await page.route('**/deck-under-test.html', (route) => route.fulfill({
-    contentType: 'text/html', body: '<!doctype html><title>Deck</title><link rel="icon" href="data:,"><body></body>',
-  }));
-  await page.goto('./deck-under-test.html');
+  await openDeck(page);
   const log = await page.evaluate(async (src) => {
     const messages = [];
     window.addEventListener('message', (e) => messages.push(e.data));

@@ -1,6 +1,6 @@
 // Download only what is used, draw only on screen: which modules a page fetches, and what it
 // announces. three.js is recognised by its WebGLRenderer in a script's text.
-import { test, expect, openLab } from './fixtures.js';
+import { test, expect, openDeck, openLab } from './fixtures.js';
 
 /** Every script the page fetches; `all()` resolves to them once each one's text has been read. */
 function watchScripts(page) {
@@ -50,10 +50,7 @@ test('the lecture page fetches other panels\' modules only after the first pictu
 });
 
 test('a panel without WebGL announces rendered after a change, like the WebGL ones', async ({ page, baseURL }) => {
-  await page.route('**/deck-under-test.html', (route) => route.fulfill({
-    contentType: 'text/html', body: '<!doctype html><title>Deck</title><link rel="icon" href="data:,"><body></body>',
-  }));
-  await page.goto('./deck-under-test.html');
+  await openDeck(page);
   const frames = await page.evaluate(async (src) => {
     const rendered = [];
     const frame = document.createElement('iframe');
