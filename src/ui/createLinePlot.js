@@ -10,6 +10,26 @@ export function resolveColor(color) {
   return typeof color === 'string' && color.startsWith('--') ? cssVar(color) : color;
 }
 
+/**
+ * Runs `make` with every 2D context it creates asked for with willReadFrequently, which keeps the
+ * canvas on the CPU. uPlot makes its canvas and context inside its constructor and takes no context
+ * attributes, hence the wrap. Why: a plot redraw is a few thick dashed polylines and some text,
+ * which a CPU rasterizes in a millisecond or two; drawn through a software GPU (SwiftShader) Skia's
+ * GPU path cost the hero about as much as its whole WebGL pass (npm run bench, README).
+ */
+function withCpuCanvas(make) {
+  const proto = HTMLCanvasElement.prototype;
+  const { getContext } = proto;
+  proto.getContext = function getCpuContext(type, attributes) {
+    return getContext.call(this, type, type === '2d' ? { ...attributes, willReadFrequently: true } : attributes);
+  };
+  try {
+    return make();
+  } finally {
+    proto.getContext = getContext;
+  }
+}
+
 function fmt(v, digits) {
   return v == null || Number.isNaN(v) ? '–' : v.toFixed(digits);
 }
@@ -44,7 +64,7 @@ export function createLinePlot(container, options) {
   function build() {
     plot?.destroy();
     const scale = lineScale();
-    plot = new uPlot({
+    plot = withCpuCanvas(() => new uPlot({
       width: Math.max(280, container.clientWidth),
       height,
       scales: { x: { time: false, range: xRange ?? undefined }, y: { range: yRange ?? undefined } },
@@ -59,7 +79,7 @@ export function createLinePlot(container, options) {
       legend: { live: true },
       cursor: { drag: { x: false, y: false } },
       hooks: { draw: [(u) => drawMarks(u, marks)] },
-    }, data, container);
+    }, data, container));
   }
   build();
 
