@@ -51,6 +51,7 @@ function typeInfo(gl, type) {
     [gl.FLOAT]: [1, false], [gl.FLOAT_VEC2]: [2, false], [gl.FLOAT_VEC3]: [3, false], [gl.FLOAT_VEC4]: [4, false],
     [gl.INT]: [1, true], [gl.INT_VEC2]: [2, true], [gl.INT_VEC3]: [3, true], [gl.INT_VEC4]: [4, true],
     [gl.BOOL]: [1, true], [gl.BOOL_VEC2]: [2, true], [gl.BOOL_VEC3]: [3, true], [gl.BOOL_VEC4]: [4, true],
+    [gl.SAMPLER_2D]: [1, true], // its value is a texture unit; the caller binds the texture there
   };
   return table[type] ?? null;
 }
@@ -80,7 +81,7 @@ export function createProgram(gl, fragment) {
   for (let i = 0; i < count; i += 1) {
     const info = gl.getActiveUniform(program, i);
     const kind = typeInfo(gl, info.type);
-    if (!kind) throw new ShaderError(`The uniform ${info.name} has a type this view does not set (only float, int and bool vectors).`);
+    if (!kind) throw new ShaderError(`The uniform ${info.name} has a type this view does not set (only float, int and bool vectors and sampler2D).`);
     const [size, isInt] = kind;
     const location = gl.getUniformLocation(program, info.name);
     const name = info.name.replace(/\[0\]$/, '');

@@ -1,115 +1,134 @@
-// The receding plane of the normal-mips panel: one fragment program (normal-mips.frag.glsl)
-// run in three passes into float targets: the technique's picture, the progressive ground truth
-// (a running mean over frames, stopped at a sample cap) and the composited display. Every
-// technique's chain is uploaded level by level from uploadLevels(), so the shader samples exactly
-// what the technique stored (three.js uploads texture.mipmaps and sets generateMipmaps = false).
-import {
-  DataTexture, FloatType, HalfFloatType, LinearFilter, LinearMipmapLinearFilter, NearestFilter, NoColorSpace, RedFormat,
-  RepeatWrapping, RGBAFormat, RGFormat, UnsignedByteType, Vector2, WebGLRenderTarget,
-} from 'three';
-import { cappedPixelRatio, createRenderer } from '../../gl/createRenderer.js';
+// The receding plane of the normal-mips panel: one fragment source (normal-mips.frag.glsl)
+// compiled into three programs, one per pass, drawn into float targets: the technique's picture,
+// the progressive ground truth (a running mean over frames, stopped at a sample cap) and the
+// composited display. Plain WebGL2: every technique's chain is uploaded level by level from
+// uploadLevels() (createMipTexture), so the shader samples exactly what the technique stored.
+import { cappedPixelRatio } from '../../gl/cappedPixelRatio.js';
+import { countContext, hasWebGL2, WebGL2Unavailable } from '../../gl/contextBudget.js';
+import { createFloatTarget } from '../../gl/createFloatTarget.js';
+import { createMipTexture, maxAnisotropy, setAnisotropy } from '../../gl/createMipTexture.js';
+import { createProgram } from '../../gl/createProgram.js';
+import { assembleShader } from '../../gl/shaderChunks.js';
 import { onDemand } from '../../gl/onDemand.js';
-import { createFullscreenPass } from '../../gl/createFullscreenPass.js';
 import fragment from './normal-mips.frag.glsl?raw';
 import { TECHNIQUES } from '../../normals/techniqueLayout.js';
 import { uploadLevels } from '../../normals/uploadLevels.js';
 import { bandedRmse } from '../../optics/bandedRmse.js';
 import { meanBrightnessChange } from '../../optics/shimmer.js';
 
-const FORMATS = { RGBA: RGBAFormat, RG: RGFormat, R: RedFormat };
-const TYPES = { u8: UnsignedByteType, f16: HalfFloatType, f32: FloatType };
 // Small batches keep each frame short on slow (software) GPUs while the truth accumulates.
 export const SAMPLES_PER_FRAME = 8;
 
-// One DataTexture per uploaded texture, every level supplied; u8 decodes as min + (max − min)·c.
-// anisotropy: EXT_texture_filter_anisotropic's level (three.js sets it when the texture uploads).
-function makeTexture(upload, anisotropy) {
-  const [first] = upload.mipmaps;
-  const tex = new DataTexture(first.data, first.width, first.height, FORMATS[upload.format], TYPES[upload.type]);
-  tex.mipmaps = upload.mipmaps;
-  tex.generateMipmaps = false;
-  tex.minFilter = LinearMipmapLinearFilter;
-  tex.magFilter = LinearFilter;
-  tex.wrapS = RepeatWrapping;
-  tex.wrapT = RepeatWrapping;
-  tex.colorSpace = NoColorSpace;
-  tex.anisotropy = anisotropy;
-  tex.needsUpdate = true;
+// The texture unit of each sampler of the shader.
+const UNITS = { uTexA: 0, uTexB: 1, uPrev: 2, uTech: 3, uTruth: 4 };
+
+// u8 decodes in the shader as min + (max − min)·c; float types as they are.
+function decodeOf(upload) {
   const unorm = upload.type === 'u8';
   const scale = [0, 1, 2, 3].map((k) => (unorm && upload.ranges[k] ? upload.ranges[k].max - upload.ranges[k].min : 1));
   const offset = [0, 1, 2, 3].map((k) => (unorm && upload.ranges[k] ? upload.ranges[k].min : 0));
-  return { tex, scale, offset };
+  return { scale, offset };
 }
 
-function floatTarget() {
-  return new WebGLRenderTarget(1, 1, {
-    type: FloatType, format: RGBAFormat, minFilter: NearestFilter, magFilter: NearestFilter, depthBuffer: false,
+function startContext(canvas) {
+  if (!hasWebGL2()) throw new WebGL2Unavailable('This browser has no WebGL2.');
+  const gl = canvas.getContext('webgl2', {
+    alpha: false, antialias: false, depth: false, stencil: false, powerPreference: 'high-performance',
   });
+  if (!gl) throw new WebGL2Unavailable('WebGL2 could not start on this canvas.');
+  enableExtensions(gl);
+  if (!gl.getExtension('EXT_color_buffer_float')) {
+    gl.getExtension('WEBGL_lose_context')?.loseContext();
+    throw new WebGL2Unavailable('This GPU cannot draw into float textures (EXT_color_buffer_float).');
+  }
+  return gl;
+}
+
+/** Extensions are enabled per context, so again after a restore. */
+function enableExtensions(gl) {
+  gl.getExtension('EXT_color_buffer_float');
+  gl.getExtension('OES_texture_float_linear');
+  gl.getExtension('EXT_texture_filter_anisotropic');
 }
 
 export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onConverged, maxPixels = 120_000 }) {
-  const renderer = createRenderer(canvas, { antialias: false });
-  const dummy = new DataTexture(new Uint8Array(4), 1, 1);
-  dummy.needsUpdate = true;
+  const gl = startContext(canvas);
+  const release = countContext();
+  const source = assembleShader(fragment);
   const u = {
-    uResolution: { value: [1, 1] }, uPass: { value: 0 }, uDebug: { value: 0 },
-    uTexA: { value: dummy }, uTexB: { value: dummy },
+    uResolution: { value: [1, 1] }, uDebug: { value: 0 },
     uScaleA: { value: [1, 1, 1, 1] }, uOffsetA: { value: [0, 0, 0, 0] },
     uScaleB: { value: [1, 1, 1, 1] }, uOffsetB: { value: [0, 0, 0, 0] },
     uTechnique: { value: 0 }, uChannels: { value: 3 },
-    uPrev: { value: dummy }, uSamples: { value: SAMPLES_PER_FRAME }, uFrame: { value: 0 }, uBlend: { value: 1 },
-    uTech: { value: dummy }, uTruth: { value: dummy }, uJitter: { value: [0, 0] },
+    uSamples: { value: SAMPLES_PER_FRAME }, uFrame: { value: 0 }, uBlend: { value: 1 }, uJitter: { value: [0, 0] },
   };
   for (const [k, v] of Object.entries(initial)) u[k] = { value: v };
-  const fullscreen = createFullscreenPass(fragment, u);
-  const { scene, camera } = fullscreen;
-  const rtTech = floatTarget();
-  const rtMeasure = floatTarget(); // the error measurement draws here, so the picture's target is left alone
-  const rtTruth = [floatTarget(), floatTarget()];
+  const samplers = Object.fromEntries(Object.entries(UNITS).map(([name, unit]) => [name, { value: unit }]));
+  let programs = [];
+  let dummy = null; // a 1×1 texture on the units a pass does not read
+  const rtTech = createFloatTarget(gl);
+  const rtMeasure = createFloatTarget(gl); // the error measurement draws here, so the picture's target is left alone
+  const rtTruth = [createFloatTarget(gl), createFloatTarget(gl)];
+  let uploads = {}; // technique → packed chains, kept to upload again after a lost context
   let textures = {}; // technique → [{ tex, scale, offset }]
   const state = {
     technique: 'naive', channels: 3, samples: 0, cap: 256, truthOn: true, onScreen: false, errors: null, measuring: false, frame: 0, anisotropy: 1,
   };
   let cur = 0;
+  const bound = { uTexA: null, uTexB: null };
+
+  function build() {
+    programs = [0, 1, 2].map((pass) => createProgram(gl, `#define PASS ${pass}\n${source}`));
+    dummy = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, dummy);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 1, 1, 0, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    const [w, h] = u.uResolution.value;
+    for (const rt of [rtTech, rtMeasure, ...rtTruth]) rt.setSize(w, h);
+  }
+  build();
 
   function bindTechnique(technique) {
     const [a, b] = textures[technique] ?? [];
     u.uTechnique.value = TECHNIQUES.indexOf(technique);
-    u.uTexA.value = a?.tex ?? dummy;
+    bound.uTexA = a?.tex ?? null;
     u.uScaleA.value = a?.scale ?? [1, 1, 1, 1];
     u.uOffsetA.value = a?.offset ?? [0, 0, 0, 0];
-    u.uTexB.value = b?.tex ?? dummy;
+    bound.uTexB = b?.tex ?? null;
     u.uScaleB.value = b?.scale ?? [1, 1, 1, 1];
     u.uOffsetB.value = b?.offset ?? [0, 0, 0, 0];
   }
 
   // Only the display pass reads the targets; the others must not bind the target they draw into.
   function pass(index, target) {
-    u.uPass.value = index;
-    u.uTech.value = index === 2 ? rtTech.texture : dummy;
-    u.uTruth.value = index === 2 ? rtTruth[cur].texture : dummy;
-    renderer.setRenderTarget(target);
-    renderer.render(scene, camera);
-  }
-
-  function readTarget(target) {
-    const out = new Float32Array(target.width * target.height * 4);
-    renderer.readRenderTargetPixels(target, 0, 0, target.width, target.height, out);
-    return out;
+    const textureOf = {
+      uTexA: index === 0 ? bound.uTexA : null,
+      uTexB: index === 0 ? bound.uTexB : null,
+      uPrev: index === 1 ? rtTruth[cur].texture : null,
+      uTech: index === 2 ? rtTech.texture : null,
+      uTruth: index === 2 ? rtTruth[cur].texture : null,
+    };
+    for (const [name, unit] of Object.entries(UNITS)) {
+      gl.activeTexture(gl.TEXTURE0 + unit);
+      gl.bindTexture(gl.TEXTURE_2D, textureOf[name] ?? dummy);
+    }
+    gl.bindFramebuffer(gl.FRAMEBUFFER, target?.framebuffer ?? null);
+    gl.viewport(0, 0, target ? target.width : gl.drawingBufferWidth, target ? target.height : gl.drawingBufferHeight);
+    const program = programs[index];
+    program.setUniforms(samplers);
+    program.setUniforms(u);
+    program.draw();
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
   }
 
   // The error of every technique against the converged truth. Each technique is drawn into its own
-  // target and read back asynchronously (three.js readRenderTargetPixelsAsync: a pixel-pack buffer
-  // and a fence), so the page never waits for the GPU: on a slow GPU six synchronous read-backs
-  // would freeze it for seconds. The previous errors stay in state.errors until the new set is
-  // complete; a restart or a newer measurement makes a running one stale.
+  // target and read back asynchronously (a pixel-pack buffer and a fence), so the page never waits
+  // for the GPU: on a slow GPU six synchronous read-backs would freeze it for seconds. The previous
+  // errors stay in state.errors until the new set is complete; a restart, a newer measurement or a
+  // lost context makes a running one stale.
   let measureId = 0;
   let measured = []; // resolvers of whenMeasured()
   let disposed = false;
-
-  const readAsync = (target) => renderer.readRenderTargetPixelsAsync(
-    target, 0, 0, target.width, target.height, new Float32Array(target.width * target.height * 4),
-  );
 
   function startMeasure() {
     measureId += 1;
@@ -124,15 +143,14 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
 
   async function runMeasure(id) {
     const stale = () => id !== measureId || disposed;
-    const truth = await readAsync(rtTruth[cur]);
+    const truth = await rtTruth[cur].readAsync();
     if (stale()) return;
     const errors = {};
     for (const technique of TECHNIQUES) {
       bindTechnique(technique);
       pass(0, rtMeasure);
       bindTechnique(state.technique);
-      renderer.setRenderTarget(null);
-      const image = await readAsync(rtMeasure);
+      const image = await rtMeasure.readAsync();
       if (stale()) return;
       errors[technique] = bandedRmse(image, truth, { bands: u.uMaxLevel.value + 1 });
     }
@@ -150,23 +168,21 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
   }
 
   function draw() {
-    if (!Object.keys(textures).length) return; // nothing to show until the first chains arrive
+    if (gl.isContextLost() || !Object.keys(textures).length) return; // nothing to show until the first chains arrive
     u.uDebug.value = 0;
     bindTechnique(state.technique);
     pass(0, rtTech);
     const accumulating = state.truthOn && state.onScreen && state.samples < state.cap;
     if (accumulating) {
       const next = 1 - cur;
-      u.uPrev.value = rtTruth[cur].texture;
       u.uFrame.value = state.frame++;
       u.uBlend.value = SAMPLES_PER_FRAME / (state.samples + SAMPLES_PER_FRAME);
-      pass(1, rtTruth[next]);
+      pass(1, rtTruth[next]); // reads rtTruth[cur]
       cur = next;
       state.samples += SAMPLES_PER_FRAME;
       if (state.samples >= state.cap) startMeasure();
     }
     pass(2, null);
-    renderer.setRenderTarget(null);
     onFrame?.();
     if (accumulating && state.samples < state.cap) frames.request();
   }
@@ -189,11 +205,10 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
     const ratio = cappedPixelRatio(width, height, window.devicePixelRatio, 2, maxPixels);
     const [w0, h0] = u.uResolution.value;
     if (Math.abs(width * ratio - w0) < 0.1 * w0 && Math.abs(height * ratio - h0) < 0.1 * h0) return;
-    renderer.setPixelRatio(ratio);
-    renderer.setSize(width, height, false);
-    const buffer = renderer.getDrawingBufferSize(new Vector2());
-    u.uResolution.value = [buffer.x, buffer.y];
-    for (const rt of [rtTech, rtMeasure, ...rtTruth]) rt.setSize(buffer.x, buffer.y);
+    canvas.width = Math.max(1, Math.floor(width * ratio));
+    canvas.height = Math.max(1, Math.floor(height * ratio));
+    u.uResolution.value = [canvas.width, canvas.height];
+    for (const rt of [rtTech, rtMeasure, ...rtTruth]) rt.setSize(canvas.width, canvas.height);
     restartTruth();
   });
   resizeObserver.observe(canvas);
@@ -206,17 +221,41 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
     frames.request();
   }
 
+  function uploadTextures() {
+    disposeTextures();
+    for (const [technique, packed] of Object.entries(uploads)) {
+      textures[technique] = packed.map((upload) => ({ tex: createMipTexture(gl, upload, state.anisotropy), ...decodeOf(upload) }));
+    }
+  }
+
   function disposeTextures() {
-    for (const list of Object.values(textures)) for (const { tex } of list) tex.dispose();
+    for (const list of Object.values(textures)) for (const { tex } of list) gl.deleteTexture(tex);
     textures = {};
   }
 
+  // A lost context (a GPU reset, too many tabs) comes back if the page asks for it: the programs,
+  // targets and textures are made again from what the scene kept, and the truth starts over.
+  const onLost = (event) => {
+    event.preventDefault();
+    frames.cancel();
+    if (state.measuring) stopMeasure();
+  };
+  const onRestored = () => {
+    enableExtensions(gl);
+    textures = {}; // the old objects went with the context
+    build();
+    uploadTextures();
+    restartTruth();
+  };
+  canvas.addEventListener('webglcontextlost', onLost);
+  canvas.addEventListener('webglcontextrestored', onRestored);
+
   return {
-    renderer,
-    /** 32-bit float textures are filtered only with OES_texture_float_linear (three.js warns without it). */
-    floatLinear: renderer.extensions.has('OES_texture_float_linear'),
+    gl,
+    /** 32-bit float textures are filtered only with OES_texture_float_linear. */
+    floatLinear: Boolean(gl.getExtension('OES_texture_float_linear')),
     /** The largest anisotropic filtering level this GPU offers (1 without the extension). */
-    maxAnisotropy: renderer.capabilities.getMaxAnisotropy(),
+    maxAnisotropy: maxAnisotropy(gl),
     uniforms: u,
     state,
     frames,
@@ -224,12 +263,9 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
      * Uploads every technique's chain (from buildAllChains) and restarts nothing else; uploads,
      * when given, are the chains already packed by uploadLevels (as buildChainsFor returns them).
      */
-    setChains(chains, uploads = {}) {
-      disposeTextures();
-      for (const technique of TECHNIQUES) {
-        const packed = uploads[technique] ?? uploadLevels(chains[technique]);
-        textures[technique] = packed.map((upload) => makeTexture(upload, state.anisotropy));
-      }
+    setChains(chains, packed = {}) {
+      uploads = Object.fromEntries(TECHNIQUES.map((technique) => [technique, packed[technique] ?? uploadLevels(chains[technique])]));
+      uploadTextures();
       frames.request();
     },
     /** Sets uniforms; truthChanged restarts the ground truth (and the error table). */
@@ -238,12 +274,8 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
       if (anisotropy !== undefined && anisotropy !== state.anisotropy) {
         state.anisotropy = anisotropy;
         u.uAniso.value = anisotropy;
-        for (const list of Object.values(textures)) {
-          for (const { tex } of list) {
-            tex.anisotropy = anisotropy;
-            tex.needsUpdate = true; // three.js applies the level when it (re)uploads
-          }
-        }
+        for (const list of Object.values(textures)) for (const { tex } of list) setAnisotropy(gl, tex, anisotropy);
+        gl.bindTexture(gl.TEXTURE_2D, null);
       }
       if (channels !== undefined) u.uChannels.value = channels;
       if (cap !== undefined) state.cap = cap;
@@ -267,10 +299,9 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
       u.uForcedLevel.value = level;
       u.uDebug.value = textureIndex + 1;
       pass(0, rtTech);
-      const data = readTarget(rtTech);
+      const data = rtTech.read();
       u.uDebug.value = 0;
       u.uForcedLevel.value = forced;
-      renderer.setRenderTarget(null);
       frames.request();
       return { data, width: rtTech.width, height: rtTech.height };
     },
@@ -280,29 +311,28 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
      */
     async measureShimmer() {
       const offsets = [[0.5, 0], [0, 0.5], [0.5, 0.5], [0.25, 0.75]];
-      const draw = (technique, jitter) => {
+      const drawMoved = (technique, jitter) => {
         bindTechnique(technique);
         u.uJitter.value = jitter;
         pass(0, rtMeasure);
         u.uJitter.value = [0, 0]; // the picture itself is never jittered
         bindTechnique(state.technique);
-        renderer.setRenderTarget(null);
-        return readAsync(rtMeasure);
+        return rtMeasure.readAsync();
       };
       const result = {};
       try {
         for (const technique of TECHNIQUES) {
-          const still = await draw(technique, [0, 0]);
+          const still = await drawMoved(technique, [0, 0]);
           let sum = 0;
           for (const offset of offsets) {
-            const moved = await draw(technique, offset);
+            const moved = await drawMoved(technique, offset);
             if (disposed) return null;
             sum += meanBrightnessChange(still, moved);
           }
           result[technique] = sum / offsets.length;
         }
       } catch (error) {
-        if (disposed) return null; // the context went away under a read-back
+        if (disposed || gl.isContextLost()) return null; // the context went away under a read-back
         throw error;
       }
       return result;
@@ -311,8 +341,7 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
     readTechnique() {
       bindTechnique(state.technique);
       pass(0, rtTech);
-      renderer.setRenderTarget(null);
-      return readTarget(rtTech);
+      return rtTech.read();
     },
     toDataURL() {
       draw();
@@ -324,13 +353,14 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
       if (state.measuring) stopMeasure();
       resizeObserver.disconnect();
       visibility.disconnect();
+      canvas.removeEventListener('webglcontextlost', onLost);
+      canvas.removeEventListener('webglcontextrestored', onRestored);
       disposeTextures();
-      dummy.dispose();
-      rtTech.dispose();
-      rtMeasure.dispose();
-      rtTruth.forEach((rt) => rt.dispose());
-      fullscreen.dispose();
-      renderer.dispose();
+      gl.deleteTexture(dummy);
+      for (const rt of [rtTech, rtMeasure, ...rtTruth]) rt.dispose();
+      programs.forEach((program) => program.dispose());
+      gl.getExtension('WEBGL_lose_context')?.loseContext(); // give the context back now, not at GC
+      release();
     },
   };
 }

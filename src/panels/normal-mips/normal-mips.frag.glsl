@@ -1,4 +1,5 @@
-// The receding plane of the normal-mips panel. One program, three passes (uPass):
+// The receding plane of the normal-mips panel. One source, three passes (PASS, defined by the
+// scene: one program per pass, since a software rasterizer pays for the code of every branch):
 //   0 technique: the highlight from the chosen technique's uploaded mip chain → (linear RGB, LOD)
 //   1 truth: uSamples jittered rays per pixel shaded with the exact analytic normals at base α,
 //     folded into a running mean with the previous frames (uPrev) → (linear RGB, LOD)
@@ -17,7 +18,9 @@ precision highp int;
 in vec2 vUv;
 out vec4 fragColor;
 uniform vec2 uResolution;
-uniform int uPass;
+#ifndef PASS
+#define PASS 0
+#endif
 uniform int uDebug;
 // camera and light
 uniform float uCamHeight;
@@ -168,7 +171,7 @@ vec3 levelColour(float lod) {
 
 void main() {
   vec2 pixel = gl_FragCoord.xy;
-  if (uPass == 2) {
+  if (PASS == 2) {
     ivec2 ip = ivec2(pixel);
     vec4 tech = texelFetch(uTech, ip, 0);
     vec4 truth = texelFetch(uTruth, ip, 0);
@@ -184,19 +187,19 @@ void main() {
     fragColor = vec4(linearToSrgb(c), 1.0);
     return;
   }
-  if (uPass == 0 && uDebug > 0) {
+  if (PASS == 0 && uDebug > 0) {
     float levelSize = max(1.0, floor(uMapSize / exp2(uForcedLevel)));
     vec2 uv = (mod(floor(pixel), levelSize) + 0.5) / levelSize;
     fragColor = uDebug == 2 ? fetchB(uv) : fetchA(uv);
     return;
   }
   // uv and its derivatives in uniform control flow (sky pixels get a far, unused point).
-  vec3 dir = rayDir(pixel + (uPass == 0 ? uJitter : vec2(0.0)));
+  vec3 dir = rayDir(pixel + (PASS == 0 ? uJitter : vec2(0.0)));
   bool sky = dir.y >= -1e-5;
   vec3 hit = vec3(0.0, uCamHeight, 0.0) + dir * min(uCamHeight / max(-dir.y, 1e-5), 1e4);
   vec2 uv = hit.xz / uTile;
   float lod = lodAt(uv);
-  if (uPass == 0) {
+  if (PASS == 0) {
     vec4 light = lightAt(hit);
     vec3 rad = techniqueRadiance(uv, toTangent(-dir), light.xyz, light.w);
     fragColor = sky ? vec4(environment(dir), -1.0) : vec4(rad, lod);
