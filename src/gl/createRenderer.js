@@ -1,11 +1,8 @@
-// One WebGL2 renderer on a canvas, counted against the page's budget of live contexts
-// (contextBudget.js), with a capped pixel count so a 4K projector or a retina laptop stays fast.
+// A three.js WebGLRenderer on a canvas, counted against the page's budget of live contexts
+// (contextBudget.js). Only the benchmark's peer (the ordinary three.js way of drawing the hero's
+// spheres) uses three.js; the panels draw with createContext / createShaderView.
 import { WebGLRenderer } from 'three';
 import { countContext, hasWebGL2, WebGL2Unavailable } from './contextBudget.js';
-
-export { MAX_LIVE_CONTEXTS, WebGL2Unavailable, contextStats, hasWebGL2 } from './contextBudget.js';
-export { cappedPixelRatio } from './cappedPixelRatio.js';
-
 
 /** A WebGLRenderer whose dispose() also releases the context and its place in the budget. */
 export function createRenderer(canvas, options = {}) {

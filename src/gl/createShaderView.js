@@ -4,7 +4,7 @@
 // demand, counts against the context budget, survives a lost context, and reads pixels back for
 // tests and exports.
 import { cappedPixelRatio } from './cappedPixelRatio.js';
-import { countContext, hasWebGL2, WebGL2Unavailable } from './contextBudget.js';
+import { createContext } from './createContext.js';
 import { createProgram } from './createProgram.js';
 import { assembleShader } from './shaderChunks.js';
 import { onDemand } from './onDemand.js';
@@ -17,14 +17,10 @@ import { onDemand } from './onDemand.js';
  * @param {{ fragment: string, uniforms?: Record<string, { value: any }>, onFrame?: () => void, maxPixels?: number }} options
  */
 export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, maxPixels = 1_500_000 }) {
-  if (!hasWebGL2()) throw new WebGL2Unavailable('This browser has no WebGL2.');
-  const gl = canvas.getContext('webgl2', {
-    alpha: false, antialias: false, depth: false, stencil: false, powerPreference: 'high-performance',
-  });
-  if (!gl) throw new WebGL2Unavailable('WebGL2 could not start on this canvas.');
+  const context = createContext(canvas);
+  const { gl } = context;
   const source = assembleShader(fragment);
   let program = createProgram(gl, source);
-  const release = countContext();
   const allUniforms = { ...uniforms, uResolution: { value: [1, 1] } };
   const size = { width: 1, height: 1, ratio: 1 };
 
@@ -93,8 +89,7 @@ export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, max
       canvas.removeEventListener('webglcontextlost', onLost);
       canvas.removeEventListener('webglcontextrestored', onRestored);
       program.dispose();
-      gl.getExtension('WEBGL_lose_context')?.loseContext(); // give the context back now, not at GC
-      release();
+      context.dispose();
     },
   };
 }

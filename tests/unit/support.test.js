@@ -5,7 +5,7 @@ import { maxError, niceCeil, reflectanceCurves, sampleAngles } from '../../src/o
 import { dielectrics, dielectricById, metals, metalById, metalF0, dielectricSummary } from '../../src/optics/materials.js';
 import { colormap, COLORMAP_STOPS } from '../../src/ui/colormap.js';
 import { toCsv } from '../../src/host/exporters.js';
-import { cappedPixelRatio } from '../../src/gl/createRenderer.js';
+import { cappedPixelRatio } from '../../src/gl/cappedPixelRatio.js';
 
 describe('GLSL includes', () => {
   const chunks = { a: 'float a;\n#include <b>', b: 'float b;', loop: '#include <loop>' };

@@ -4,7 +4,8 @@
 // composited display. Plain WebGL2: every technique's chain is uploaded level by level from
 // uploadLevels() (createMipTexture), so the shader samples exactly what the technique stored.
 import { cappedPixelRatio } from '../../gl/cappedPixelRatio.js';
-import { countContext, hasWebGL2, WebGL2Unavailable } from '../../gl/contextBudget.js';
+import { WebGL2Unavailable } from '../../gl/contextBudget.js';
+import { createContext } from '../../gl/createContext.js';
 import { createFloatTarget } from '../../gl/createFloatTarget.js';
 import { createMipTexture, maxAnisotropy, setAnisotropy } from '../../gl/createMipTexture.js';
 import { createProgram } from '../../gl/createProgram.js';
@@ -31,17 +32,13 @@ function decodeOf(upload) {
 }
 
 function startContext(canvas) {
-  if (!hasWebGL2()) throw new WebGL2Unavailable('This browser has no WebGL2.');
-  const gl = canvas.getContext('webgl2', {
-    alpha: false, antialias: false, depth: false, stencil: false, powerPreference: 'high-performance',
-  });
-  if (!gl) throw new WebGL2Unavailable('WebGL2 could not start on this canvas.');
-  enableExtensions(gl);
-  if (!gl.getExtension('EXT_color_buffer_float')) {
-    gl.getExtension('WEBGL_lose_context')?.loseContext();
+  const context = createContext(canvas);
+  enableExtensions(context.gl);
+  if (!context.gl.getExtension('EXT_color_buffer_float')) {
+    context.dispose();
     throw new WebGL2Unavailable('This GPU cannot draw into float textures (EXT_color_buffer_float).');
   }
-  return gl;
+  return context;
 }
 
 /** Extensions are enabled per context, so again after a restore. */
@@ -52,8 +49,8 @@ function enableExtensions(gl) {
 }
 
 export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onConverged, maxPixels = 120_000 }) {
-  const gl = startContext(canvas);
-  const release = countContext();
+  const context = startContext(canvas);
+  const { gl } = context;
   const source = assembleShader(fragment);
   const u = {
     uResolution: { value: [1, 1] }, uDebug: { value: 0 },
@@ -359,8 +356,7 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
       gl.deleteTexture(dummy);
       for (const rt of [rtTech, rtMeasure, ...rtTruth]) rt.dispose();
       programs.forEach((program) => program.dispose());
-      gl.getExtension('WEBGL_lose_context')?.loseContext(); // give the context back now, not at GC
-      release();
+      context.dispose();
     },
   };
 }

@@ -8,7 +8,8 @@ import {
   Color, DirectionalLight, Mesh, MeshPhysicalMaterial, PerspectiveCamera, PMREMGenerator, Scene, SphereGeometry, Vector2,
 } from 'three';
 import { RoomEnvironment } from 'three/examples/jsm/environments/RoomEnvironment.js';
-import { cappedPixelRatio, createRenderer } from '../../gl/createRenderer.js';
+import { cappedPixelRatio } from '../../gl/cappedPixelRatio.js';
+import { createRenderer } from '../../gl/createRenderer.js';
 import { onDemand } from '../../gl/onDemand.js';
 
 /** canvas: sized by CSS (width × height); the peer draws at its size, capped like the hero. */

@@ -3,7 +3,8 @@
 // turned into the advisor's statistics by gpuErrors.errorsFromValues. The panel holds no context
 // (its manifest entry says webgl: false): a measurement opens a small one and disposes it when done. Results are kept
 // for the page's session, per scene and precision; the benchmark's read-back seeds them too.
-import { createRenderer, WebGL2Unavailable } from '../../gl/createRenderer.js';
+import { WebGL2Unavailable } from '../../gl/contextBudget.js';
+import { createContext } from '../../gl/createContext.js';
 import { createMethodsGpu, GpuFloatUnavailable, gpuPrecisionInfo } from '../../gl/evaluateMethodsGpu.js';
 import { deviceInfo } from '../../gl/timeMethodsGpu.js';
 import { domainExtra, domainInputs, errorsFromValues } from '../../optics/gpuErrors.js';
@@ -88,13 +89,13 @@ export function measureGpuErrors(scene, precision) {
       const canvas = document.createElement('canvas');
       canvas.width = 1;
       canvas.height = 1;
-      const renderer = createRenderer(canvas, { antialias: false, depth: false, stencil: false, alpha: false });
+      const context = createContext(canvas);
       try {
-        const result = await gpuErrorsOn(renderer.getContext(), [scene], [precision]);
+        const result = await gpuErrorsOn(context.gl, [scene], [precision]);
         rememberGpuErrors(result);
         return settled.get(key);
       } finally {
-        renderer.dispose(); // releases the context and its place in the page's budget
+        context.dispose(); // releases the context and its place in the page's budget
       }
     })();
     job.catch((error) => { if (!permanent(error)) session.delete(key); });

@@ -3,7 +3,8 @@
 // (timeMethodsCpu, in a worker: timeCpu.js), and the hero's frame cost against three.js MeshPhysicalMaterial, one after the
 // other on the viewer's device, with progress and cancel; results kept for the session
 // (sessionStorage).
-import { createRenderer, WebGL2Unavailable } from '../../gl/createRenderer.js';
+import { WebGL2Unavailable } from '../../gl/contextBudget.js';
+import { createContext } from '../../gl/createContext.js';
 import { deviceInfo, timeMethodsGpu } from '../../gl/timeMethodsGpu.js';
 import { benchResults, DEFAULT_DOMAIN, GPU_ERROR_KEYS } from '../../optics/benchResults.js';
 import { sceneById } from '../../optics/scenes.js';
@@ -51,19 +52,19 @@ export async function runBenchmark(host, { size = 'normal', onProgress, signal }
   let gpuErrors = null;
   let gpuReadbackError = null;
   let frames = null;
-  let renderer = null;
+  let context = null;
   let device = null;
   try {
-    renderer = createRenderer(document.createElement('canvas'), { antialias: false });
+    context = createContext(document.createElement('canvas'));
   } catch (error) {
     if (!(error instanceof WebGL2Unavailable)) throw error;
   }
   try {
-    if (renderer) {
-      device = deviceInfo(renderer.getContext());
+    if (context) {
+      device = deviceInfo(context.gl);
       try {
         onProgress?.(0, 'Compiling the timing shaders');
-        gpu = await timeMethodsGpu(renderer.getContext(), { ...config.gpu, signal, onProgress: report('gpu') });
+        gpu = await timeMethodsGpu(context.gl, { ...config.gpu, signal, onProgress: report('gpu') });
       } catch (error) {
         // A shader this GPU cannot compile must not hide the other numbers: say so instead.
         if (error?.name === 'AbortError') throw error;
@@ -72,7 +73,7 @@ export async function runBenchmark(host, { size = 'normal', onProgress, signal }
       try {
         // The errors the GPU itself makes over the default domains, on the same context.
         const scenes = [...new Set(Object.values(DEFAULT_DOMAIN))].map(sceneById);
-        const readBack = await gpuErrorsOn(renderer.getContext(), scenes, Object.keys(GPU_ERROR_KEYS), { signal, onProgress: report('errors') });
+        const readBack = await gpuErrorsOn(context.gl, scenes, Object.keys(GPU_ERROR_KEYS), { signal, onProgress: report('errors') });
         gpuErrors = readBack.errors;
         rememberGpuErrors(readBack); // the panel's "Error measured by" needs no second read-back
       } catch (error) {
@@ -81,10 +82,10 @@ export async function runBenchmark(host, { size = 'normal', onProgress, signal }
       }
     }
   } finally {
-    renderer?.dispose();
+    context?.dispose();
   }
   const cpu = await timeCpu({ ...config.cpu, signal, onProgress: report('cpu') });
-  if (renderer) frames = await timeFrames(host, { ...config.frames, signal, onProgress: report('frames') });
+  if (context) frames = await timeFrames(host, { ...config.frames, signal, onProgress: report('frames') });
   onProgress?.(1, 'Done');
   return benchResults({
     gpu, cpu, frames, gpuErrors,

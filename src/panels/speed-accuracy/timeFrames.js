@@ -4,9 +4,9 @@
 // fenced by a 1-pixel readPixels, and timed by the GPU timer query where the browser offers it (GPU
 // time only), else by wall clock (GPU time plus the same sync cost on both sides); the median over
 // frames is reported. It measures the hero itself, so it imports the hero's scene and schema from
-// src/panels/spheres/ (the one place a panel reaches into another).
+// src/panels/spheres/ (the one place a panel reaches into another). The peer (and three.js with it)
+// is loaded when a run gets to it.
 import { createSphereTrio } from '../spheres/createSphereTrio.js';
-import { createPhysicalPeer } from './createPhysicalPeer.js';
 import { directionFromAngles } from '../../gl/directionFromAngles.js';
 import { TIMER_QUERY, WALL_TIMER } from '../../gl/timeMethodsGpu.js';
 import { spreadOf } from '../../optics/timeMethodsCpu.js';
@@ -82,6 +82,8 @@ async function heroFrames(host, size, options) {
 
 /** Three MeshPhysicalMaterial spheres (a clear-coated red plastic, like the hero's). */
 async function physicalFrames(host, size, options) {
+  // three.js comes only with a benchmark run: the panel itself does not need it.
+  const { createPhysicalPeer } = await import('./createPhysicalPeer.js');
   const canvas = stageCanvas(host, size.width, size.height);
   const peer = createPhysicalPeer(canvas, { width: size.width, height: size.height, nT: defaults.nT, color: defaults.kd });
   try {

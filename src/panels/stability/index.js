@@ -5,7 +5,8 @@
 // float32 (or float64), GPU mediump beside JS float16. Whether mediump really is half precision
 // here is measured by rendering 1 + 2^-f, not taken from the driver, whose answer Safari/iOS has
 // got wrong (webglfundamentals "WebGL Precision Issues").
-import { createRenderer, WebGL2Unavailable } from '../../gl/createRenderer.js';
+import { WebGL2Unavailable } from '../../gl/contextBudget.js';
+import { createContext } from '../../gl/createContext.js';
 import { disposeMethodsGpu, GpuFloatUnavailable, gpuPrecisionInfo, methodsGpu } from '../../gl/evaluateMethodsGpu.js';
 import { cellAt, classifyGrid, criticalAngleDeg, gridInputs } from '../../optics/classifyGrid.js';
 import { methodById } from '../../optics/methods.js';
@@ -40,16 +41,16 @@ const failing = (map) => map.width * map.height - map.counts.fine;
 export function mount(root, ctx) {
   const { values } = ctx;
   const dom = buildStabilityDom(root);
-  let renderer = null;
+  let context = null;
   let gpu = null;
   let gpuProblem = '';
   let probe = null;
   let claimed = null;
   try {
-    renderer = createRenderer(document.createElement('canvas'), { antialias: false, depth: false, stencil: false });
-    gpu = methodsGpu(renderer.getContext());
+    context = createContext(document.createElement('canvas'));
+    gpu = methodsGpu(context.gl);
     probe = gpu.probePrecision();
-    claimed = gpuPrecisionInfo(renderer.getContext());
+    claimed = gpuPrecisionInfo(context.gl);
     ctx.frameDrawn();
   } catch (error) {
     if (!(error instanceof WebGL2Unavailable || error instanceof GpuFloatUnavailable)) throw error;
@@ -214,9 +215,9 @@ export function mount(root, ctx) {
         canvas.removeEventListener('pointermove', move);
         canvas.removeEventListener('keydown', onKey);
       }
-      if (renderer) {
-        disposeMethodsGpu(renderer.getContext());
-        renderer.dispose();
+      if (context) {
+        disposeMethodsGpu(context.gl);
+        context.dispose();
       }
       gpuValues.clear();
       maps = { gpu: null, js: null };

@@ -1,0 +1,28 @@
+// A WebGL2 context on a canvas, counted against the page's budget of live contexts
+// (contextBudget.js). No depth, stencil or MSAA unless asked: the lab's passes are full-screen
+// triangles that anti-alias themselves, and read-back contexts draw into float targets.
+import { countContext, hasWebGL2, WebGL2Unavailable } from './contextBudget.js';
+
+/**
+ * @param {HTMLCanvasElement} canvas
+ * @param {WebGLContextAttributes} [attributes]
+ * @returns {{ gl: WebGL2RenderingContext, dispose: () => void }} dispose() gives the context back now (not at GC) and its place in the budget.
+ */
+export function createContext(canvas, attributes = {}) {
+  if (!hasWebGL2()) throw new WebGL2Unavailable('This browser has no WebGL2.');
+  const gl = canvas.getContext('webgl2', {
+    alpha: false, antialias: false, depth: false, stencil: false, powerPreference: 'high-performance', ...attributes,
+  });
+  if (!gl) throw new WebGL2Unavailable('WebGL2 could not start on this canvas.');
+  const release = countContext();
+  let disposed = false;
+  return {
+    gl,
+    dispose() {
+      if (disposed) return;
+      disposed = true;
+      gl.getExtension('WEBGL_lose_context')?.loseContext();
+      release();
+    },
+  };
+}
