@@ -182,7 +182,16 @@ export async function layoutShift(browser, base, { viewport = { width: 1280, hei
     await page.addInitScript(() => {
       window.__shifts = [];
       new PerformanceObserver((list) => {
-        for (const e of list.getEntries()) if (!e.hadRecentInput) window.__shifts.push({ value: e.value, at: e.startTime });
+        for (const e of list.getEntries()) {
+          if (e.hadRecentInput) continue;
+          // What moved, so a shift can be traced to its panel: tag.class [section], top before → after.
+          const moved = e.sources.map(({ node, previousRect, currentRect }) => {
+            const element = node?.nodeType === 1 ? node : node?.parentElement;
+            const name = element ? `${element.tagName.toLowerCase()}.${[...element.classList].join('.')}` : '?';
+            return `${name} [${element?.closest('section')?.id ?? ''}] ${Math.round(previousRect.y)}→${Math.round(currentRect.y)}`;
+          });
+          window.__shifts.push({ value: e.value, at: e.startTime, moved });
+        }
       }).observe({ type: 'layout-shift', buffered: true });
     });
     await page.goto(base);
@@ -201,7 +210,8 @@ export async function layoutShift(browser, base, { viewport = { width: 1280, hei
       if (!more) break;
     }
     const shifts = await page.evaluate(() => window.__shifts);
-    return { total: shifts.reduce((a, s) => a + s.value, 0), shifts: shifts.length, largest: Math.max(0, ...shifts.map((s) => s.value)) };
+    const largest = shifts.reduce((a, s) => (s.value > (a?.value ?? 0) ? s : a), null);
+    return { total: shifts.reduce((a, s) => a + s.value, 0), shifts: shifts.length, largest: largest?.value ?? 0, largestMoved: largest?.moved ?? [] };
   } finally {
     await context.close();
   }

@@ -2,6 +2,7 @@
 // writes them into index.html), each mounted as it approaches the screen; the page controls and
 // lecture-mode keys.
 import './styles.css';
+import './panelPlaces.css';
 import { PANEL_IDS, lecturePrefix, panelEntry } from './panels/manifest.js';
 import { missingModules, panelDefinition } from './panels/loadPanel.js';
 import { createPanelHost } from './host/createPanelHost.js';
@@ -11,6 +12,7 @@ import { setupPageControls } from './host/setupPageControls.js';
 import { showNotice } from './host/showNotice.js';
 import { contextStats, MAX_LIVE_CONTEXTS } from './gl/contextBudget.js';
 import { describeProblem, readParams } from './host/params.js';
+import { texReady } from './ui/tex.js';
 
 const hosts = {};
 window.fresnelLab = {
@@ -73,7 +75,9 @@ window.fresnelLab.ready = (async () => {
   await manager.first; // the panels on screen are mounted
   // Once the first picture is up, the other panels' modules are fetched (small chunks, in
   // parallel), so a panel scrolled or keyed to mounts at once, at full size, moving nothing.
-  // `ready` means both: the page behaves from then on as if everything were here.
+  // `ready` means all of it: the page behaves from then on as if everything were here.
   await new Promise((resolve) => { requestAnimationFrame(() => setTimeout(resolve, 0)); });
-  await Promise.allSettled(entries.filter(Boolean).map((e) => e.host.load())); // a failure is shown in its panel
+  // KaTeX too: the page's formulas are typeset as their panels mount, not after (which would
+  // change their height under the reader).
+  await Promise.allSettled([texReady(), ...entries.filter(Boolean).map((e) => e.host.load())]); // a failure is shown in its panel
 })();

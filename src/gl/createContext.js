@@ -1,7 +1,7 @@
 // A WebGL2 context on a canvas, counted against the page's budget of live contexts
 // (contextBudget.js). No depth, stencil or MSAA unless asked: the lab's passes are full-screen
 // triangles that anti-alias themselves, and read-back contexts draw into float targets.
-import { countContext, hasWebGL2, WebGL2Unavailable } from './contextBudget.js';
+import { countContext, WebGL2Unavailable } from './contextBudget.js';
 
 /**
  * @param {HTMLCanvasElement} canvas
@@ -9,7 +9,9 @@ import { countContext, hasWebGL2, WebGL2Unavailable } from './contextBudget.js';
  * @returns {{ gl: WebGL2RenderingContext, dispose: () => void }} dispose() gives the context back now (not at GC) and its place in the budget.
  */
 export function createContext(canvas, attributes = {}) {
-  if (!hasWebGL2()) throw new WebGL2Unavailable('This browser has no WebGL2.');
+  // No probe on a canvas of its own first (hasWebGL2): making a context costs a software GPU a
+  // good part of a second, and the context itself answers the question.
+  if (typeof WebGL2RenderingContext === 'undefined') throw new WebGL2Unavailable('This browser has no WebGL2.');
   const gl = canvas.getContext('webgl2', {
     alpha: false, antialias: false, depth: false, stencil: false, powerPreference: 'high-performance', ...attributes,
   });

@@ -38,10 +38,15 @@ export function createMipTexture(gl, { format: layout, type, mipmaps }, anisotro
   return texture;
 }
 
+const maxima = new WeakMap(); // per context: a getParameter waits for the GPU, so it is asked once
+
 /** The most anisotropic taps this GPU offers (1 without EXT_texture_filter_anisotropic). */
 export function maxAnisotropy(gl) {
-  const ext = gl.getExtension('EXT_texture_filter_anisotropic');
-  return ext ? gl.getParameter(ext.MAX_TEXTURE_MAX_ANISOTROPY_EXT) : 1;
+  if (!maxima.has(gl)) {
+    const ext = gl.getExtension('EXT_texture_filter_anisotropic');
+    maxima.set(gl, ext ? gl.getParameter(ext.MAX_TEXTURE_MAX_ANISOTROPY_EXT) : 1);
+  }
+  return maxima.get(gl);
 }
 
 export function setAnisotropy(gl, texture, anisotropy) {

@@ -5,6 +5,7 @@
 // panel's picture, its description and any listener (the message API). It also holds the toolbar
 // (copy link, copy embed code, PNG, CSV) and mounts and disposes the panel's view. Values outlive
 // the view, so a panel disposed to free its WebGL context comes back exactly as it was.
+import { warmGpu } from '../gl/warmGpu.js';
 import { applyParams, describeProblem } from './params.js';
 import { bindGui, createPanelGui } from './bindGui.js';
 import { readUrlState, urlWriter } from './urlState.js';
@@ -54,6 +55,9 @@ export function createPanelHost(container, panel, {
   const description = el('p', 'panel-description');
   description.id = `panel-description-${(nextDescriptionId += 1)}`;
   side.append(guiHost, toolbar);
+  // Shown from the mount on, below the controls: were it shown before, the controls arriving above
+  // it would move it (a layout shift on the lecture page).
+  toolbar.hidden = true;
   shell.append(content, side);
   container.append(shell, description);
 
@@ -177,7 +181,8 @@ export function createPanelHost(container, panel, {
   /** Loads the panel's module once; a failure is shown in the panel and rejects. */
   function load() {
     if (mountPanel) return Promise.resolve();
-    loading ??= panel.load().then((fn) => { mountPanel = fn; }, (error) => {
+    // A WebGL panel also waits for the GPU channel to open off the page's thread (warmGpu.js).
+    loading ??= Promise.all([panel.load(), panel.webgl ? warmGpu() : null]).then(([fn]) => { mountPanel = fn; }, (error) => {
       showNotice(noticeHost, `The ${panel.title} panel could not load.`, [error.message], { kind: 'error' });
       throw error;
     });
@@ -188,6 +193,7 @@ export function createPanelHost(container, panel, {
     wanted = true;
     container.style.minHeight = '';
     gui = createPanelGui(guiHost, `${panel.title}: controls`);
+    toolbar.hidden = false;
     controllers = {};
     try {
       instance = checkInstance(panel.id, mountPanel(content, ctx));
@@ -258,6 +264,7 @@ export function createPanelHost(container, panel, {
       instance = null;
       gui?.destroy();
       gui = null;
+      toolbar.hidden = true;
       controllers = {};
       content.replaceChildren();
     },

@@ -12,6 +12,14 @@ export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = 
   // At start only the panels on screen fetch their modules; those just ahead wait until the first
   // picture is up, so the reader's panel is not queued behind modules nobody sees yet.
   let started = false;
+  // Until the reader first scrolls, only panels in the window mount: mounting one ahead costs a
+  // software GPU ~0.1 s of the page's thread, which is better spent when the reader moves (the
+  // places are reserved, so a panel that mounts as it comes into view moves nothing).
+  let moved = false;
+  const inWindow = ({ section }) => {
+    const r = section.getBoundingClientRect();
+    return r.bottom > 0 && r.top < window.innerHeight;
+  };
   const onScreen = ({ section }) => {
     const r = section.getBoundingClientRect();
     return r.bottom > 0 && r.top < window.innerHeight / 2; // under the reader's eye, not peeking in at the bottom
@@ -51,6 +59,7 @@ export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = 
     const arrivals = [];
     for (const entry of wanted) {
       if (entry.host.mounted || loading.has(entry) || failed.has(entry)) continue;
+      if (!moved && !inWindow(entry)) continue;
       if (entry.host.usesWebGL) {
         if (glMounted >= maxLive) {
           const farthest = entries.filter((e) => e.host.mounted && e.host.usesWebGL)
@@ -107,6 +116,10 @@ export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = 
   // re-ranks by distance (once per frame, and only while some near panel is waiting).
   let pending = 0;
   const onScroll = () => {
+    if (!moved) {
+      moved = true;
+      settle();
+    }
     if (pending || ![...near].some((e) => !e.host.mounted && !loading.has(e) && !failed.has(e))) return;
     pending = requestAnimationFrame(() => {
       pending = 0;

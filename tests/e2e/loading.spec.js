@@ -32,7 +32,8 @@ test('a plot-only embed and the hero load no three.js; KaTeX comes only with for
   await heroPage.close();
 });
 
-test('the lecture page fetches other panels\' modules only after the first picture is up', async ({ page }) => {
+test('the lecture page fetches other panels\' modules only after the first picture is up, and no panel brings three.js', async ({ page }) => {
+  const lecture = watchScripts(page);
   await openLab(page, './');
   // Every host exists at once: its values work before its module arrives.
   expect(await page.evaluate(() => window.fresnelLab.hosts.stability.values.method)).toBe('exact-cg');
@@ -47,6 +48,9 @@ test('the lecture page fetches other panels\' modules only after the first pictu
   for (const start of times.modules) expect(start).toBeGreaterThan(times.firstFrame);
   await page.locator('section[data-panel="stability"]').scrollIntoViewIfNeeded();
   await expect.poll(() => page.evaluate(() => window.fresnelLab.hosts.stability.mounted)).toBe(true);
+  // Every panel's module is in by now (ready waits for them); three.js is the benchmark's peer only.
+  const scripts = await lecture.all();
+  expect(scripts.filter((s) => s.three).map((s) => s.url)).toEqual([]);
 });
 
 test('a panel without WebGL announces rendered after a change, like the WebGL ones', async ({ page, baseURL }) => {
@@ -73,4 +77,25 @@ test('a panel without WebGL announces rendered after a change, like the WebGL on
     return rendered;
   }, `${baseURL}embed.html?panel=schlick`);
   expect(frames[1]).toBeGreaterThan(frames[0]);
+});
+
+test('each panel\'s place is reserved before it mounts, and never taller than the panel', async ({ page }) => {
+  test.setTimeout(180_000);
+  for (const width of [800, 1280, 1920]) {
+    await page.setViewportSize({ width, height: 800 });
+    await openLab(page, './');
+    const ids = await page.evaluate(() => Object.keys(window.fresnelLab.hosts));
+    for (const id of ids) {
+      const reserved = await page.evaluate((pid) => parseFloat(getComputedStyle(document.querySelector(`#${pid} > .panel-mount`)).minHeight), id);
+      await page.evaluate((pid) => document.getElementById(pid).scrollIntoView(), id);
+      await expect.poll(() => page.evaluate((pid) => window.fresnelLab.hosts[pid].mounted, id), { timeout: 60_000 }).toBe(true);
+      // The panel's own height: from the top of its mount to the bottom of its description.
+      const height = await page.evaluate((pid) => {
+        const mount = document.querySelector(`#${pid} > .panel-mount`);
+        return mount.querySelector('.panel-description').getBoundingClientRect().bottom - mount.getBoundingClientRect().top;
+      }, id);
+      expect(reserved, `${id} at ${width} px`).toBeLessThanOrEqual(height);
+      expect(reserved, `${id} at ${width} px`).toBeGreaterThan(0.4 * height);
+    }
+  }
 });

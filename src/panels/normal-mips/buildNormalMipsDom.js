@@ -18,6 +18,8 @@ export function buildNormalMipsDom(host) {
     'A bumpy plane receding to the horizon under a low point light: on the left the highlight from the chosen mip technique, on the right the supersampled ground truth.');
   const leftCap = el('div', 'nm-cap nm-cap-left');
   const rightCap = el('div', 'nm-cap nm-cap-right');
+  leftCap.hidden = true; // until setCaptions: an empty caption that fills in would grow in place
+  rightCap.hidden = true;
   const busy = el('div', 'nm-busy');
   busy.setAttribute('role', 'status');
   busy.hidden = true;

@@ -136,6 +136,7 @@ export function mount(root, ctx) {
   function rebuildChains(keys) {
     deferred = mergeKeys(deferred, keys);
     dom.setBusy(`Building the mip chains of a ${size()}² map…`);
+    if (!chains) describeSettings();
     const request = { kind: values.map, params: mapParams(values), size: size(), precision: values.precision, channels: Number(values.channels) };
     buildDone = builder.build(request).then((result) => {
       if (!result || disposed) return;
@@ -183,6 +184,24 @@ export function mount(root, ctx) {
     else apply(keys);
   }
 
+  // The line of key numbers and the legend; before the first chains arrive too, so that the panel
+  // has its full height from its mount on.
+  // The anisotropic taps in use: what was asked for, as far as this GPU offers them.
+  const anisotropyInUse = () => (scene ? Math.min(Number(values.anisotropy), scene.maxAnisotropy) : 1);
+
+  function describeSettings() {
+    const levels = levelCount(size());
+    const base = values.alpha;
+    const aniso = anisotropyInUse();
+    const anisoText = Number(values.anisotropy) === 1 ? 'trilinear' : `${aniso}× anisotropic filtering`
+      + (aniso < Number(values.anisotropy) ? ` (this GPU offers at most ${scene.maxAnisotropy}×)` : '');
+    dom.setSummary(`${TECHNIQUE_NAMES[values.technique]}, ${optionLabel(schema.precision, values.precision)}, ${values.channels} channels; base Beckmann α = ${base} `
+      + `(Blinn-Phong s = ${exponentFromAlpha(base).toFixed(1)}); mip level ${values.level < 0 ? `automatic, ${anisoText}` : `forced to ${Math.min(values.level, levels - 1)}`} `
+      + `of 0–${levels - 1}; R0 = ${normalIncidence(1, IOR).toFixed(3)}; ${built.size ? `all six chains of the ${built.size}² map built in ${built.ms.toFixed(0)} ms (${built.where})` : `the six chains of the ${size()}² map are being built`}.`
+      + (values.precision === 'f32' && scene && !scene.floatLinear ? ' This GPU cannot filter 32-bit float textures: pick 16-bit float.' : ''));
+    dom.setLegend(`level ${levels - 1} (difference: 0 to 0.25)`);
+  }
+
   function apply(keys) {
     const changed = keys ? new Set(keys) : null;
     const has = (list) => !changed || list.some((k) => changed.has(k));
@@ -205,14 +224,7 @@ export function mount(root, ctx) {
         pyramid, chains, level, i: Math.min(values.texelX, last), j: Math.min(values.texelY, last), alpha: base, mapKind: values.map,
       });
     }
-    const aniso = scene ? Math.min(Number(values.anisotropy), scene.maxAnisotropy) : 1;
-    const anisoText = Number(values.anisotropy) === 1 ? 'trilinear' : `${aniso}× anisotropic filtering`
-      + (aniso < Number(values.anisotropy) ? ` (this GPU offers at most ${scene.maxAnisotropy}×)` : '');
-    dom.setSummary(`${TECHNIQUE_NAMES[values.technique]}, ${optionLabel(schema.precision, values.precision)}, ${values.channels} channels; base Beckmann α = ${base} `
-      + `(Blinn-Phong s = ${exponentFromAlpha(base).toFixed(1)}); mip level ${values.level < 0 ? `automatic, ${anisoText}` : `forced to ${Math.min(values.level, levels - 1)}`} `
-      + `of 0–${levels - 1}; R0 = ${normalIncidence(1, IOR).toFixed(3)}; all six chains of the ${built.size}² map built in ${built.ms.toFixed(0)} ms (${built.where}).`
-      + (values.precision === 'f32' && scene && !scene.floatLinear ? ' This GPU cannot filter 32-bit float textures: pick 16-bit float.' : ''));
-    dom.setLegend(`level ${levels - 1} (difference: 0 to 0.25)`);
+    describeSettings();
     if (!scene) return;
     if (changed?.size === 0) { // a re-describe (new errors, a finished build): nothing to draw
       showStatus();
@@ -224,7 +236,7 @@ export function mount(root, ctx) {
       channels,
       cap: values.truthSamples,
       truthOn: values.truth,
-      anisotropy: aniso,
+      anisotropy: anisotropyInUse(),
       uAlpha: base,
       uForcedLevel: values.level < 0 ? -1 : Math.min(values.level, levels - 1),
       uMapSize: size(),
