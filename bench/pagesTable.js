@@ -3,7 +3,7 @@ const ms = ({ median, min, max }) => `${median.toFixed(0)} [${min.toFixed(0)}, $
 const kb = (bytes) => `${(bytes / 1024).toFixed(0)} KB`;
 
 export function pagesTable(pages) {
-  const { hero, panels, loads, layoutShift } = pages;
+  const { hero, panels, loads, layoutShift, lighthouse } = pages;
   const lines = [
     `Hero embed ${hero.width}×${hero.height} vs three.js peer, ms per update (runs of ${hero.updates} set → rendered), median [min, max] over ${hero.rounds} interleaved rounds:`,
     `  hero ${ms(hero.hero.msPerUpdate)}, peer ${ms(hero.peer.msPerUpdate)}, hero/peer ${hero.ratio.toFixed(2)} `
@@ -16,5 +16,10 @@ export function pagesTable(pages) {
     ...Object.entries(loads.embeds).map(([id, e]) => `  ${id.padEnd(18)} ${(e.firstFrameMs ?? NaN).toFixed(0).padStart(6)} ms  ${kb(e.jsGzipBeforeReady)}`),
   ];
   if (layoutShift) lines.push(`Layout shift over a full scroll of the lecture page: ${layoutShift.total.toFixed(3)} (${layoutShift.shifts} shifts, largest ${layoutShift.largest.toFixed(3)})`);
+  if (lighthouse) {
+    lines.push(`Lighthouse ${lighthouse.version} (${lighthouse.preset}) on the lecture page, median [min, max] of ${lighthouse.runs}: performance ${ms(lighthouse.score)}, `
+      + `total blocking time ${ms(lighthouse.totalBlockingTimeMs)} ms, layout shift ${lighthouse.cumulativeLayoutShift.median.toFixed(3)}, `
+      + `LCP ${ms(lighthouse.largestContentfulPaintMs)} ms`);
+  }
   return lines.join('\n');
 }

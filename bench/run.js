@@ -1,5 +1,5 @@
 #!/usr/bin/env node
-// npm run bench [-- --tiny] [-- --out DIR] [-- --pages-only] [-- --site DIR]
+// npm run bench [-- --tiny] [-- --out DIR] [-- --pages-only] [-- --site DIR] [-- --no-lighthouse]
 // Builds the site with the benchmark's three.js peer page (into a private folder; --site DIR serves
 // a site built already, with bench/peer.html in it), serves it with vite preview on a free loopback
 // port, and runs in Chromium launched exactly as playwright.config.js launches it (same executable
@@ -7,8 +7,9 @@
 // 1. the speed-accuracy panel's benchmark (embed.html?panel=speed-accuracy&bench=…): every method's
 //    cost and error, and the normal-mips chain build (its bench());
 // 2. the pages (measurePages.js): the hero against the three.js peer per message-driven update,
-//    every WebGL panel's update at 1280×720, time to the first frame and gzipped JS per page, and
-//    layout shift over a scroll of the lecture page.
+//    every WebGL panel's update at 1280×720, time to the first frame and gzipped JS per page,
+//    layout shift over a scroll of the lecture page, and Lighthouse on it (measureLighthouse.js;
+//    --no-lighthouse leaves it out).
 // Prints the tables and writes results.json and results.png (the chart) to bench/ (or --out);
 // --pages-only runs part 2 alone and merges it into the results.json already there.
 import { chromium } from '@playwright/test';
@@ -21,6 +22,7 @@ import { fileURLToPath } from 'node:url';
 import config from '../playwright.config.js';
 import { heroVsPeer, layoutShift, pageLoad, panelUpdateCosts, problems } from './measurePages.js';
 import { pagesTable } from './pagesTable.js';
+import { lighthouse } from './measureLighthouse.js';
 import { PANEL_IDS } from '../src/panels/manifest.js';
 
 const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
@@ -155,7 +157,9 @@ try {
   }
   log('layout shift over a scroll of the lecture page');
   const shift = tiny ? null : await layoutShift(browser, base);
-  results.pages = { hero, panels, loads, layoutShift: shift };
+  log('Lighthouse on the lecture page (desktop, 3 runs)');
+  const audit = tiny || flag('no-lighthouse') ? null : await lighthouse(base, launchOptions);
+  results.pages = { hero, panels, loads, layoutShift: shift, lighthouse: audit };
   table = `${table}\n${pagesTable(results.pages)}`;
 
   results.config = { ...results.config, script: 'bench/run.js', wallSeconds: (Date.now() - started) / 1000, chromium: browser.version() };

@@ -1,11 +1,12 @@
 // Makes (and drops) one WebGL2 context off the page's thread; see warmGpu.js.
-let ok = false;
-try {
-  const gl = new OffscreenCanvas(1, 1).getContext('webgl2');
-  ok = Boolean(gl);
-  gl?.getExtension('WEBGL_lose_context')?.loseContext();
-} catch {
-  ok = false;
+function makeContext() {
+  try {
+    const gl = new OffscreenCanvas(1, 1).getContext('webgl2');
+    gl?.getExtension('WEBGL_lose_context')?.loseContext();
+    return Boolean(gl);
+  } catch {
+    return false;
+  }
 }
-postMessage(ok);
+postMessage(makeContext());
 close();

@@ -175,6 +175,24 @@ test('a running benchmark can be cancelled', async ({ page }) => {
   expect(await page.evaluate((id) => window.fresnelLab.panels[id].results, PANEL)).toBeNull();
 });
 
+test('a running benchmark pauses while the panel is off screen and goes on when it is back', async ({ page }) => {
+  await openLab(page, `./embed.html?panel=${PANEL}`);
+  await page.evaluate(() => {
+    const spacer = document.createElement('div');
+    spacer.style.height = '4000px';
+    document.body.prepend(spacer); // the panel is now far below the window
+  });
+  await page.evaluate((id) => { window.benchDone = window.fresnelLab.panels[id].run('tiny').then(() => true); }, PANEL);
+  await expect(page.locator('.sa-status')).toContainText('Paused while the panel is off screen');
+  const paused = await page.locator('.sa-progress').evaluate((p) => p.value);
+  await page.waitForTimeout(1000); // a window in which a paused run must not move
+  expect(await page.locator('.sa-progress').evaluate((p) => p.value)).toBe(paused);
+  expect(paused).toBeLessThan(1);
+  await page.locator('.sa-run').scrollIntoViewIfNeeded();
+  expect(await page.evaluate(() => window.benchDone)).toBe(true);
+  await expect(page.locator('.sa-status')).toContainText('Done in');
+});
+
 test('"Error measured by" this GPU plots the errors read back from the GPU, and says so', async ({ page }) => {
   test.setTimeout(60_000); // SwiftShader compiles seven programs
   await openLab(page, `./embed.html?panel=${PANEL}&scene=phone-mediump`);

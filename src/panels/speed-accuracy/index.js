@@ -17,6 +17,7 @@ import { methodById } from '../../optics/methods.js';
 import { paretoFront } from '../../optics/paretoFront.js';
 import { sceneById } from '../../optics/scenes.js';
 import { downloadText } from '../../host/exporters.js';
+import { createVisibilityGate } from '../../ui/createVisibilityGate.js';
 import { BENCH_SIZES, loadCachedResults, runBenchmark, saveCachedResults } from './runBenchmark.js';
 import { createScatter } from './createScatter.js';
 import { buildSpeedAccuracyDom, formatCodes, formatNs } from './buildSpeedAccuracyDom.js';
@@ -72,6 +73,10 @@ export function mount(root, ctx) {
     onRun: () => { run('normal').catch(() => {}); },
     onCancel: () => controller?.abort(new DOMException('Benchmark cancelled', 'AbortError')),
     onJson: () => downloadText('fresnel-lab-speed-accuracy.json', `${JSON.stringify(currentResults(), null, 2)}\n`, 'application/json'),
+  });
+  // A run pauses between its steps while the panel is off screen, and says so.
+  const gate = createVisibilityGate(root, {
+    onPause: () => dom.setStatus('Paused while the panel is off screen; it goes on when you scroll back.'),
   });
   const chart = createScatter(dom.chartHost, {
     ariaLabel: 'Scatter of every Fresnel method: cost across, worst display error up (log scale), with the Pareto '
@@ -209,7 +214,7 @@ export function mount(root, ctx) {
     dom.setRunning(true);
     const started = performance.now();
     running = runBenchmark(dom.stage, {
-      size, signal: controller.signal, onProgress: (fraction, label) => dom.setProgress(fraction, label),
+      size, signal: controller.signal, whenVisible: gate.whenVisible, onProgress: (fraction, label) => dom.setProgress(fraction, label),
     }).then((next) => {
       results = next;
       saveCachedResults(next);
@@ -280,6 +285,7 @@ export function mount(root, ctx) {
     dispose() {
       disposed = true;
       controller?.abort(new DOMException('Panel closed', 'AbortError'));
+      gate.dispose();
       chart.dispose();
     },
   };

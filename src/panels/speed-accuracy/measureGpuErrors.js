@@ -18,7 +18,7 @@ const yieldToPage = () => new Promise((resolve) => { setTimeout(resolve, 0); });
  * (probePrecision: what mediump really is here), claimed (gpuPrecisionInfo: what the driver says),
  * device (deviceInfo) }. Throws GpuFloatUnavailable without float render targets.
  */
-export async function gpuErrorsOn(gl, scenes, precisions, { signal, onProgress } = {}) {
+export async function gpuErrorsOn(gl, scenes, precisions, { signal, onProgress, whenVisible } = {}) {
   const gpu = createMethodsGpu(gl);
   try {
     const errors = {};
@@ -36,6 +36,7 @@ export async function gpuErrorsOn(gl, scenes, precisions, { signal, onProgress }
           done += 1;
           onProgress?.(done, total, `Reading back ${method.label} (${precision}) on this GPU`);
           await yieldToPage(); // one program compile at a time: the page stays responsive
+          await whenVisible?.();
         }
       }
     }

@@ -33,14 +33,15 @@ const CACHE_KEY = 'fresnel-lab:speed-accuracy:results';
 
 /**
  * Runs every measurement. host: a laid-out element for the frame-timing canvases. Options:
- * size ('normal' | 'tiny'), onProgress(fraction, label), signal (AbortSignal). Resolves to
+ * size ('normal' | 'tiny'), onProgress(fraction, label), signal (AbortSignal), whenVisible (a
+ * promise between steps: the run waits there while its panel is off screen). Resolves to
  * benchResults(); without WebGL2 the GPU and frame parts are null and the CPU is still timed;
  * a GPU timing that fails (a shader the driver rejects) is reported in device.gpuError, a read-back
  * that fails (no float render targets) in device.gpuReadbackError.
  * @param {HTMLElement} host
- * @param {{ size?: string, onProgress?: (fraction: number, label: string) => void, signal?: AbortSignal }} [options]
+ * @param {{ size?: string, onProgress?: (fraction: number, label: string) => void, signal?: AbortSignal, whenVisible?: () => Promise<void> }} [options]
  */
-export async function runBenchmark(host, { size = 'normal', onProgress, signal } = {}) {
+export async function runBenchmark(host, { size = 'normal', onProgress, signal, whenVisible } = {}) {
   const config = BENCH_SIZES[size];
   if (!config) throw new RangeError(`unknown benchmark size ${size}`);
   const report = (phase) => (done, total, label) => {
@@ -64,7 +65,7 @@ export async function runBenchmark(host, { size = 'normal', onProgress, signal }
       device = deviceInfo(context.gl);
       try {
         onProgress?.(0, 'Compiling the timing shaders');
-        gpu = await timeMethodsGpu(context.gl, { ...config.gpu, signal, onProgress: report('gpu') });
+        gpu = await timeMethodsGpu(context.gl, { ...config.gpu, signal, whenVisible, onProgress: report('gpu') });
       } catch (error) {
         // A shader this GPU cannot compile must not hide the other numbers: say so instead.
         if (error?.name === 'AbortError') throw error;
@@ -73,7 +74,7 @@ export async function runBenchmark(host, { size = 'normal', onProgress, signal }
       try {
         // The errors the GPU itself makes over the default domains, on the same context.
         const scenes = [...new Set(Object.values(DEFAULT_DOMAIN))].map(sceneById);
-        const readBack = await gpuErrorsOn(context.gl, scenes, Object.keys(GPU_ERROR_KEYS), { signal, onProgress: report('errors') });
+        const readBack = await gpuErrorsOn(context.gl, scenes, Object.keys(GPU_ERROR_KEYS), { signal, whenVisible, onProgress: report('errors') });
         gpuErrors = readBack.errors;
         rememberGpuErrors(readBack); // the panel's "Error measured by" needs no second read-back
       } catch (error) {
@@ -84,8 +85,9 @@ export async function runBenchmark(host, { size = 'normal', onProgress, signal }
   } finally {
     context?.dispose();
   }
+  await whenVisible?.();
   const cpu = await timeCpu({ ...config.cpu, signal, onProgress: report('cpu') });
-  if (context) frames = await timeFrames(host, { ...config.frames, signal, onProgress: report('frames') });
+  if (context) frames = await timeFrames(host, { ...config.frames, signal, whenVisible, onProgress: report('frames') });
   onProgress?.(1, 'Done');
   return benchResults({
     gpu, cpu, frames, gpuErrors,

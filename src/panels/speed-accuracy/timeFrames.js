@@ -98,18 +98,21 @@ async function physicalFrames(host, size, options) {
 
 /**
  * Times both views at width × height CSS pixels in host (a laid-out element; the canvases are
- * added and removed). Options: frames, warmup, signal, onProgress(done, total, label), now.
+ * added and removed). Options: frames, warmup, signal, onProgress(done, total, label), whenVisible
+ * (awaited before each scene), now.
  * Resolves to { spheres, threePhysical (each { msPerFrame: { median, min, max }, samples,
  * pixels, timer }), ratio: spheres median / physical median (below 1: the hero is cheaper), width, height }.
  */
 export async function timeFrames(host, {
-  width = 900, height = 300, frames = 12, warmup = 3, signal, onProgress, now = () => performance.now(),
+  width = 900, height = 300, frames = 12, warmup = 3, signal, onProgress, whenVisible, now = () => performance.now(),
 } = {}) {
   const size = { width, height };
   const options = { frames, warmup, signal, now };
   onProgress?.(0, 2, 'Frame cost: the hero spheres');
+  await whenVisible?.();
   const spheres = await heroFrames(host, size, options);
   signal?.throwIfAborted();
+  await whenVisible?.();
   onProgress?.(1, 2, 'Frame cost: three.js MeshPhysicalMaterial');
   const threePhysical = await physicalFrames(host, size, options);
   onProgress?.(2, 2, 'Frame cost done');
