@@ -215,3 +215,22 @@ test('noise and mixed maps: the ground truth runs their GLSL twins, and keeping 
   }, PANEL);
   expect(noise).toEqual({ kind: 3, channels: 2 });
 });
+
+test('a lost context comes back: textures and targets are rebuilt and the picture is the same', async ({ page }) => {
+  await openLab(page, `${URL}&truth=false`);
+  await page.evaluate((id) => window.fresnelLab.panels[id].whenBuilt(), PANEL);
+  const before = await page.evaluate((id) => Array.from(window.fresnelLab.panels[id].scene.readTechnique()), PANEL);
+  await page.evaluate((id) => new Promise((resolve) => {
+    const { scene } = window.fresnelLab.panels[id];
+    window.loseContext = scene.gl.getExtension('WEBGL_lose_context');
+    scene.gl.canvas.addEventListener('webglcontextlost', () => resolve(), { once: true });
+    window.loseContext.loseContext();
+  }), PANEL);
+  const frames = await page.evaluate((id) => window.fresnelLab.hosts[id].frames, PANEL);
+  await page.evaluate(() => window.loseContext.restoreContext());
+  await expect.poll(() => page.evaluate((id) => window.fresnelLab.hosts[id].frames, PANEL)).toBeGreaterThan(frames);
+  const after = await page.evaluate((id) => Array.from(window.fresnelLab.panels[id].scene.readTechnique()), PANEL);
+  expect(after.length).toBe(before.length);
+  expect(after.some((v) => v !== 0)).toBe(true);
+  expect(after.every((v, i) => v === before[i])).toBe(true);
+});
