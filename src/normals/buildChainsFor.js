@@ -1,6 +1,6 @@
 // Everything the normal-mips panel derives from its controls before it can draw: the analytic
 // map sampled at level 0, every technique's chain (buildChain) and the packed arrays that
-// three.js uploads (uploadLevels). Pure; it runs in chain workers (chainWorker.js), each on a
+// the GPU is given (uploadLevels). Pure; it runs in chain workers (chainWorker.js), each on a
 // share of the techniques (splitTechniques), or, where there are none, on the calling thread.
 // Packing is part of it because at 1024² it costs about as much as the chains themselves.
 import { buildChain } from './buildChain.js';

@@ -1,7 +1,7 @@
 // Level 0 of a normal map: the exact unit normal point-sampled at every texel centre.
 // Layout: row-major, texel (i, j) at index (j·size + i)·components, centre u = (i + ½)/size,
-// v = (j + ½)/size. Row 0 is v ≈ 0, which is where a DataTexture with flipY = false puts it
-// (three.js DataTexture default, src/textures/DataTexture.js). Values are the normal's x, y, z in [−1, 1]
+// v = (j + ½)/size. Row 0 is v ≈ 0, which is where texSubImage2D puts it (UNPACK_FLIP_Y_WEBGL is
+// false by default). Values are the normal's x, y, z in [−1, 1]
 // (not the c = n/2 + ½ colour encoding; storagePrecision.js does that), and alpha = 1 when
 // components = 4.
 

@@ -4,7 +4,7 @@
 //        between codes 127 and 128, and Math.round takes 128, as a baker's round(255·c) does.
 //   f16  IEEE binary16, round to nearest even (@petamoriken/float16 f16round; RGBA16F / HalfFloatType)
 //   f32  IEEE binary32 (Math.fround; RGBA32F / FloatType, which needs OES_texture_float_linear
-//        to be filtered; three.js WebGLTextures.js warns without it)
+//        to be filtered; the panel says so where it is missing)
 // The decoded value is rounded to float32 at the end: the shader computes in 32-bit floats.
 import { f16round } from '@petamoriken/float16';
 import { roundHalfArray } from './float16Bits.js';

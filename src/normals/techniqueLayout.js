@@ -20,8 +20,8 @@
 // min + (max − min)·c/255. Normals use the usual affine encoding c = n/2 + ½. Slope moments use a
 // scale S (the largest |b| component of level 0), like the "LEAN scale factor" of MJP's
 // SpecularAA sample (TheRealMJP/SpecularAA).
-// WebGL2 has no sized 3-channel internal format that three.js (r187 WebGLTextures.js
-// getInternalFormat) picks for byte, half or float data, so 3-channel data is padded to RGBA.
+// 3-channel data is padded to RGBA: textures are RGBA, RG or R only (createMipTexture.js), the
+// layouts the upload and its read-back test (every level sampled exactly) cover.
 
 export const TECHNIQUES = Object.freeze(['naive', 'renormalized', 'toksvig', 'lean', 'clean', 'vmf']);
 

@@ -1,11 +1,9 @@
-// Typed arrays ready for three.js: one entry per texture of the technique, each with a `mipmaps`
-// array for a DataTexture ([{ data, width, height }], level 0 first, down to 1×1). Passing the
-// whole chain makes three.js upload every level itself and set generateMipmaps = false (three.js
-// WebGLTextures.js). The panel maps format 'RGBA' | 'RG' | 'R' to RGBAFormat / RGFormat /
-// RedFormat and type 'u8' | 'f16' | 'f32' to UnsignedByteType / HalfFloatType / FloatType, keeps
-// NoColorSpace (for an sRGB RGBA8 texture three.js picks SRGB8_ALPHA8, which would decode the
-// vectors as colours), and decodes
-// u8 in the shader with value = min + (max − min)·c using `ranges` (per texture component).
+// Typed arrays ready for upload: one entry per texture of the technique, each with a `mipmaps`
+// array ([{ data, width, height }], level 0 first, down to 1×1) that createMipTexture.js uploads
+// level by level (no generateMipmap). Format 'RGBA' | 'RG' | 'R' and type 'u8' | 'f16' | 'f32' map
+// to RGBA8 / RG8 / R8, RGBA16F … and RGBA32F …: linear formats, never SRGB8_ALPHA8, which would
+// decode the vectors as colours. u8 decodes in the shader as value = min + (max − min)·c using
+// `ranges` (per texture component).
 import { halfBits, halfBitsOfFloat32Bits } from './float16Bits.js';
 import { encodeUnorm8 } from './storagePrecision.js';
 
