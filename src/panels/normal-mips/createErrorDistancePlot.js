@@ -23,12 +23,14 @@ export function verdict(errors, technique, levels) {
     + 'spike) with steep ones (a wide cloud), and one lobe cannot fit both. The texel inspector shows the cloud.';
 }
 
+const PENDING = 'Which technique stays closest to the truth at each distance is said here once the ground truth has converged.';
+
 /** createErrorDistancePlot(host) → { show(errors), dispose() }; errors as the error table's, or null. */
 export function createErrorDistancePlot(host) {
   const box = el('div', 'nm-plot');
   const title = el('p', 'nm-plot-title', 'RMSE against the ground truth by mip level in use (farther to the right)');
   const plotHost = el('div', 'nm-plot-host');
-  const note = el('p', 'nm-plot-note');
+  const note = el('p', 'nm-plot-note', PENDING);
   note.setAttribute('aria-live', 'polite');
   box.append(title, plotHost, note);
   host.append(box);
@@ -49,7 +51,7 @@ export function createErrorDistancePlot(host) {
       shownTechnique = technique;
       if (!errors) {
         plot.setData([[], ...TECHNIQUES.map(() => [])]);
-        note.textContent = '';
+        note.textContent = PENDING;
         return;
       }
       // Bands no pixel fell into stay out of the plot (null), as they stay out of the table.
@@ -58,7 +60,7 @@ export function createErrorDistancePlot(host) {
       note.textContent = verdict(errors, technique, used.map((b) => b.level));
     },
     /** The sentence under the plot ('' while there are no errors). */
-    get note() { return note.textContent; },
+    get note() { return note.textContent === PENDING ? '' : note.textContent; },
     /** [levels, ...one RMSE series per technique in TECHNIQUES order], as plotted. */
     get data() { return plot.data; },
     toPng: () => plot.toPng(),
