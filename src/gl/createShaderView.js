@@ -5,6 +5,7 @@
 // tests and exports.
 import { cappedPixelRatio } from './cappedPixelRatio.js';
 import { createContext } from './createContext.js';
+import { createFloatTarget } from './createFloatTarget.js';
 import { createProgram } from './createProgram.js';
 import { assembleShader } from './shaderChunks.js';
 import { onDemand } from './onDemand.js';
@@ -13,21 +14,60 @@ import { onDemand } from './onDemand.js';
  * fragment: GLSL source (a panel's `.glsl` file imported with `?raw`). It receives `in vec2 vUv` (0..1 across
  * the canvas) and `uniform vec2 uResolution` (drawing-buffer pixels), and declares `out vec4`.
  * uniforms: { name: { value } } (numbers, booleans, arrays, {x,y,z} or {r,g,b}); call render() after changing them.
+ * cache: { live: [uniform names] } for a fragment that can split its work: compiled with CACHE_PASS
+ * it writes per-pixel terms (a vec4) that depend on no `live` uniform, and compiled with CACHED it
+ * reads them from `uniform sampler2D uCache` (texelFetch at gl_FragCoord) and finishes the pixel.
+ * The terms are drawn again only when another uniform or the size changes, so a change of a live
+ * uniform costs the finishing pass alone. Without float render targets (EXT_color_buffer_float) the
+ * fragment is compiled with neither define and does everything in one pass.
  * @param {HTMLCanvasElement} canvas
- * @param {{ fragment: string, uniforms?: Record<string, { value: any }>, onFrame?: () => void, maxPixels?: number }} options
+ * @param {{ fragment: string, uniforms?: Record<string, { value: any }>, onFrame?: () => void, maxPixels?: number, cache?: { live: string[] } }} options
  */
-export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, maxPixels = 1_500_000 }) {
+export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, maxPixels = 1_500_000, cache = null }) {
   const context = createContext(canvas);
   const { gl } = context;
   const source = assembleShader(fragment);
-  let program = createProgram(gl, source);
+  const cached = () => Boolean(cache && gl.getExtension('EXT_color_buffer_float'));
+  let program = null;
+  let termsProgram = null;
+  let terms = null; // the float target of the cached terms
+  let termsKey = null; // the uniforms (but the live ones) and the size they were drawn for
+  let termsDrawn = 0;
+  function build() {
+    const split = cached();
+    program = createProgram(gl, split ? `#define CACHED\n${source}` : source);
+    termsProgram = split ? createProgram(gl, `#define CACHE_PASS\n${source}`) : null;
+    terms = split ? createFloatTarget(gl) : null;
+    termsKey = null;
+  }
+  build();
   const allUniforms = { ...uniforms, uResolution: { value: [1, 1] } };
   const size = { width: 1, height: 1, ratio: 1 };
 
+  function drawTerms() {
+    const key = JSON.stringify(Object.entries(allUniforms).filter(([name]) => !cache.live.includes(name)));
+    if (key === termsKey) return;
+    if (terms.width !== gl.drawingBufferWidth || terms.height !== gl.drawingBufferHeight) {
+      terms.setSize(gl.drawingBufferWidth, gl.drawingBufferHeight);
+    }
+    gl.bindFramebuffer(gl.FRAMEBUFFER, terms.framebuffer);
+    gl.viewport(0, 0, terms.width, terms.height);
+    termsProgram.setUniforms(allUniforms);
+    termsProgram.draw();
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    termsKey = key;
+    termsDrawn += 1;
+  }
+
   function draw() {
     if (gl.isContextLost()) return;
+    if (terms) {
+      drawTerms();
+      gl.activeTexture(gl.TEXTURE0);
+      gl.bindTexture(gl.TEXTURE_2D, terms.texture);
+    }
     gl.viewport(0, 0, gl.drawingBufferWidth, gl.drawingBufferHeight);
-    program.setUniforms(allUniforms);
+    program.setUniforms(terms ? { ...allUniforms, uCache: { value: 0 } } : allUniforms);
     program.draw();
     onFrame?.();
   }
@@ -52,7 +92,7 @@ export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, max
     frames.cancel();
   };
   const onRestored = () => {
-    program = createProgram(gl, source);
+    build(); // the old programs and target went with the context
     frames.request();
   };
   canvas.addEventListener('webglcontextlost', onLost);
@@ -65,6 +105,8 @@ export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, max
     frames,
     /** The linked WebGLProgram (tests read back the source the driver compiled). */
     get program() { return program.program; },
+    /** How many times the cached terms were drawn (0 without a cache). */
+    get termsDrawn() { return termsDrawn; },
     /** Drawing-buffer pixels per CSS pixel. */
     get pixelRatio() { return size.ratio; },
     /** Schedules one frame (coalesced with any others this animation frame). */
@@ -89,6 +131,8 @@ export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, max
       canvas.removeEventListener('webglcontextlost', onLost);
       canvas.removeEventListener('webglcontextrestored', onRestored);
       program.dispose();
+      termsProgram?.dispose();
+      terms?.dispose();
       context.dispose();
     },
   };

@@ -4,6 +4,10 @@
 // (or the constant R0 when Fresnel is off) plus Lambert diffuse. Camera, sun and light levels come
 // from model.js beside it, which computes the panel's numbers for the same scene.
 // Deliberately left out: sky reflected in the road (the lesson is the sun's highlight).
+// The picture is radiance = A + uSun·K·F: A and K depend on the view, the sun and the roughness
+// only, F on n and the Fresnel switch. Compiled three ways (createShaderView's `cache`):
+// CACHE_PASS writes (A, K) into a float target; CACHED reads them back and adds F, so moving n or
+// switching Fresnel costs one texel fetch and F per pixel; with neither, one pass does both.
 precision highp float;
 #include <fresnel>
 #include <environment>
@@ -88,7 +92,8 @@ vec4 stones(vec2 p) {
   return vec4(cover, slope, float(id.y >> 24u) / 255.0);
 }
 
-vec3 shadeRoad(vec3 dir) {
+// (A, K) of a road pixel: A the diffuse light, K the specular without F (times uSun·F later).
+vec4 roadTerms(vec3 dir) {
   float t = min(uCameraHeight / -dir.y, 1e4);
   vec2 p = (t * dir).xz;
   // The pixel's footprint on the road: its ellipse has axes t·δ across the view and t·δ/|dir.y|
@@ -114,12 +119,10 @@ vec3 shadeRoad(vec3 dir) {
   vec3 L = normalize(uSunDir);
   vec3 V = -dir;
   vec3 H = normalize(L + V);
-  // F on the half-vector angle: the microfacets that send the sun to the eye face along H.
-  float F = uFresnel > 0.5 ? fresnelExact(dot(L, H), 1.0, uN) : normalIncidence(1.0, uN);
   float cosL = dot(N, L);
-  float spec = microfacetSpecular(cosL, dot(N, V), dot(N, H), uAlpha, F);
+  float spec = microfacetSpecular(cosL, dot(N, V), dot(N, H), uAlpha, 1.0);
   vec3 diffuse = albedo * (uSun * max(cosL, 0.0) / MF_PI + uAmbient);
-  return diffuse + uSun * spec * max(cosL, 0.0);
+  return vec4(diffuse, spec * max(cosL, 0.0));
 }
 
 // The sky of <environment> with a sun disc of 1° radius (the real one is 0.27°; larger to be seen).
@@ -129,11 +132,37 @@ vec3 sky(vec3 dir) {
     + uSun * 0.15 * pow(max(c, 0.0), 400.0);
 }
 
-void main() {
+vec3 viewDir() {
   vec2 ndc = vUv * 2.0 - 1.0;
   float aspect = uResolution.x / uResolution.y;
-  vec3 dir = normalize(uForward + ndc.x * uTanHalfFov * aspect * uRight + ndc.y * uTanHalfFov * uUp);
-  vec3 radiance = dir.y < 0.0 ? shadeRoad(dir) : sky(dir);
+  return normalize(uForward + ndc.x * uTanHalfFov * aspect * uRight + ndc.y * uTanHalfFov * uUp);
+}
+
+// (A, K) of any pixel; the sky has no specular term.
+vec4 viewTerms(vec3 dir) {
+  return dir.y < 0.0 ? roadTerms(dir) : vec4(sky(dir), 0.0);
+}
+
+#ifdef CACHE_PASS
+void main() {
+  fragColor = viewTerms(viewDir());
+}
+#else
+#ifdef CACHED
+uniform sampler2D uCache;
+#endif
+void main() {
+  vec3 dir = viewDir();
+#ifdef CACHED
+  vec4 terms = texelFetch(uCache, ivec2(gl_FragCoord.xy), 0);
+#else
+  vec4 terms = viewTerms(dir);
+#endif
+  // F on the half-vector angle: the microfacets that send the sun to the eye face along H.
+  vec3 H = normalize(normalize(uSunDir) - dir);
+  float F = uFresnel > 0.5 ? fresnelExact(dot(normalize(uSunDir), H), 1.0, uN) : normalIncidence(1.0, uN);
+  vec3 radiance = terms.rgb + uSun * terms.a * clamp(F, 0.0, 1.0);
   // A smooth shoulder instead of a hard clip, so a brighter highlight always reads brighter.
   fragColor = vec4(linearToSrgb(1.0 - exp(-uExposure * radiance)), 1.0);
 }
+#endif

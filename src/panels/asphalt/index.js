@@ -44,6 +44,7 @@ export function mount(root, ctx) {
   const dom = buildAsphaltDom(root);
   const view = startWebGL(dom.stage, () => createShaderView(dom.canvas, {
     fragment,
+    cache: { live: ['uN', 'uFresnel'] }, // the index and the Fresnel switch redraw only F (asphalt.frag.glsl)
     onFrame: ctx.frameDrawn,
     uniforms: {
       uForward: { value: [0, -1, 0] }, uUp: { value: [0, 0, 1] }, uRight: { value: [-1, 0, 0] },
