@@ -1,4 +1,5 @@
 import { test, expect, openLab, expectIdle, expectOneFrame } from './fixtures.js';
+import { compare, counts, onePassPage, pixelsAfter } from './cachedTerms.js';
 
 const EMBED = './embed.html?panel=asphalt';
 const sum = (rgb) => rgb[0] + rgb[1] + rgb[2];
@@ -89,51 +90,24 @@ test('dispose frees the WebGL context and a remount works', async ({ page }) => 
 });
 
 test('n and the Fresnel switch redraw only F over cached terms, and the picture is the one-pass picture', async ({ page, browser }) => {
-  // Every pixel of the view as drawn now, after a change of n and of the switch.
-  const pixels = (p) => p.evaluate(async () => {
-    window.fresnelLab.hosts.asphalt.set({ nT: 1.33, fresnel: false });
-    window.fresnelLab.hosts.asphalt.set({ fresnel: true });
-    const { view } = window.fresnelLab.panels.asphalt;
-    view.drawNow();
-    const { gl } = view;
-    const out = new Uint8Array(gl.drawingBufferWidth * gl.drawingBufferHeight * 4);
-    gl.readPixels(0, 0, gl.drawingBufferWidth, gl.drawingBufferHeight, gl.RGBA, gl.UNSIGNED_BYTE, out);
-    return Array.from(out);
-  });
+  const changes = [{ nT: 1.33, fresnel: false }, { fresnel: true }];
   await openLab(page, EMBED);
-  const split = await pixels(page);
-  // The same page where float render targets are missing: one pass does it all.
-  const context = await browser.newContext({ viewport: page.viewportSize() });
-  await context.addInitScript(() => {
-    const original = WebGL2RenderingContext.prototype.getExtension;
-    WebGL2RenderingContext.prototype.getExtension = function getExtension(name) {
-      return name === 'EXT_color_buffer_float' ? null : original.call(this, name);
-    };
-  });
-  const onePassPage = await context.newPage();
-  await openLab(onePassPage, EMBED);
-  const onePass = await pixels(onePassPage);
-  await context.close();
-  expect(split.length).toBe(onePass.length);
-  let differing = 0;
-  let largest = 0;
-  for (let i = 0; i < split.length; i += 1) {
-    const d = Math.abs(split[i] - onePass[i]);
-    if (d > 0) differing += 1;
-    largest = Math.max(largest, d);
-  }
+  const split = await pixelsAfter(page, 'asphalt', changes);
+  const onePass = await onePassPage(browser, page.viewportSize());
+  await openLab(onePass.page, EMBED);
+  const whole = await pixelsAfter(onePass.page, 'asphalt', changes);
+  await onePass.close();
+  const { largest, share, sameSize } = compare(split, whole);
+  expect(sameSize).toBe(true);
   expect(largest).toBeLessThanOrEqual(1); // float32 terms stored and read back exactly: at most a rounding step
-  expect(differing / split.length).toBeLessThan(1e-3);
+  expect(share).toBeLessThan(1e-3);
   // A change of n draws a frame but not the terms; a change of the camera draws both.
-  const counts = () => page.evaluate(() => ({
-    frames: window.fresnelLab.hosts.asphalt.frames, terms: window.fresnelLab.panels.asphalt.view.termsDrawn,
-  }));
-  const before = await counts();
+  const before = await counts(page, 'asphalt');
   await page.evaluate(() => window.fresnelLab.hosts.asphalt.set({ nT: 1.6 }));
-  await expect.poll(async () => (await counts()).frames).toBeGreaterThan(before.frames);
-  expect((await counts()).terms).toBe(before.terms);
-  const afterN = await counts();
+  await expect.poll(async () => (await counts(page, 'asphalt')).frames).toBeGreaterThan(before.frames);
+  expect((await counts(page, 'asphalt')).terms).toBe(before.terms);
+  const afterN = await counts(page, 'asphalt');
   await page.evaluate(() => window.fresnelLab.hosts.asphalt.set({ camEl: 12 }));
-  await expect.poll(async () => (await counts()).frames).toBeGreaterThan(afterN.frames);
-  expect((await counts()).terms).toBe(afterN.terms + 1);
+  await expect.poll(async () => (await counts(page, 'asphalt')).frames).toBeGreaterThan(afterN.frames);
+  expect((await counts(page, 'asphalt')).terms).toBe(afterN.terms + 1);
 });

@@ -39,6 +39,8 @@ export function mount(root, ctx) {
   const dom = buildReflectRefractDom(root);
   const view = startWebGL(dom.stage, () => createShaderView(dom.canvas, {
     fragment,
+    // n, the depth, the layer and the floor redraw over the sky kept from the view (the .glsl file)
+    cache: { live: ['uN', 'uDepth', 'uLayer', 'uTile', 'uTileA', 'uTileB'] },
     onFrame: ctx.frameDrawn,
     uniforms: {
       uElevation: { value: 0 },

@@ -2,6 +2,9 @@
 // Each pixel's view ray meets the surface at its own angle θ from the normal; the exact Fresnel
 // F(θ) splits it: colour = F·sky(reflected ray) + (1 − F)·floor(refracted ray), in linear RGB.
 // The floor is a checkered pool bottom at depth uDepth, reached by GLSL refract() (Snell).
+// The sky a pixel shows or reflects depends on the view only: compiled with CACHE_PASS it is
+// written to a float target, with CACHED read back (createShaderView's `cache`), so that moving n,
+// the depth or the layer redraws F and the floor alone; with neither, one pass does it all.
 precision highp float;
 #include <fresnel>
 #include <environment>
@@ -50,31 +53,57 @@ vec3 sky(vec3 d) {
   return mix(base, vec3(1.0), 0.9 * cover);
 }
 
-void main() {
+vec3 viewDir() {
   vec2 ndc = vUv * 2.0 - 1.0;
   ndc.x *= uResolution.x / uResolution.y;
   float s = sin(uElevation);
   float c = cos(uElevation);
-  vec3 eye = uDistance * vec3(0.0, s, c);
   vec3 forward = vec3(0.0, -s, -c);
   vec3 right = vec3(1.0, 0.0, 0.0);
   vec3 up = cross(right, forward);
-  vec3 d = normalize(forward + uTanHalfFov * (ndc.x * right + ndc.y * up));
+  return normalize(forward + uTanHalfFov * (ndc.x * right + ndc.y * up));
+}
+
+vec3 eyePosition() {
+  return uDistance * vec3(0.0, sin(uElevation), cos(uElevation));
+}
+
+// The sky seen along the ray, or mirrored by the surface below the horizon.
+vec3 skyOf(vec3 d) {
+  return d.y >= 0.0 ? sky(d) : sky(reflect(d, vec3(0.0, 1.0, 0.0)));
+}
+
+#ifdef CACHE_PASS
+void main() {
+  fragColor = vec4(skyOf(viewDir()), 1.0);
+}
+#else
+#ifdef CACHED
+uniform sampler2D uCache;
+#endif
+void main() {
+  vec3 d = viewDir();
+  vec3 eye = eyePosition();
+#ifdef CACHED
+  vec3 skySeen = texelFetch(uCache, ivec2(gl_FragCoord.xy), 0).rgb;
+#else
+  vec3 skySeen = skyOf(d);
+#endif
 
   vec3 colour;
   if (d.y >= 0.0) {
-    colour = uLayer == 2 ? vec3(0.0) : sky(d); // above the horizon: the sky itself
+    colour = uLayer == 2 ? vec3(0.0) : skySeen; // above the horizon: the sky itself
   } else {
     vec3 normal = vec3(0.0, 1.0, 0.0);
     vec3 hit = eye + (eye.y / -d.y) * d;
     float cosTheta = dot(-d, normal); // this pixel's angle between view ray and normal
     float F = fresnelExact(cosTheta, 1.0, uN);
-    vec3 skyColour = sky(reflect(d, normal));
     vec3 t = refract(d, normal, 1.0 / uN); // eta = n_i / n_t
     vec3 bottom = floorColour((hit + (uDepth / -t.y) * t).xz);
-    vec3 reflected = F * skyColour;
+    vec3 reflected = F * skySeen;
     vec3 refracted = (1.0 - F) * bottom;
     colour = uLayer == 1 ? reflected : uLayer == 2 ? refracted : reflected + refracted;
   }
   fragColor = vec4(linearToSrgb(colour), 1.0);
 }
+#endif

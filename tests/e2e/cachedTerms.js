@@ -1,0 +1,47 @@
+// For panels whose view keeps terms in a float target (createShaderView's `cache`): the picture
+// after some changes, read whole, in this page and in a page without float render targets, where
+// the same fragment does everything in one pass.
+
+/** Every pixel (RGBA bytes) of panel `id`'s view after host.set(params) for each params in turn. */
+export function pixelsAfter(page, id, changes) {
+  return page.evaluate(([pid, list]) => {
+    for (const params of list) window.fresnelLab.hosts[pid].set(params);
+    const { view } = window.fresnelLab.panels[pid];
+    view.drawNow();
+    const { gl } = view;
+    const out = new Uint8Array(gl.drawingBufferWidth * gl.drawingBufferHeight * 4);
+    gl.readPixels(0, 0, gl.drawingBufferWidth, gl.drawingBufferHeight, gl.RGBA, gl.UNSIGNED_BYTE, out);
+    return Array.from(out);
+  }, [id, changes]);
+}
+
+/** A page of its own in which EXT_color_buffer_float is missing; close its context when done. */
+export async function onePassPage(browser, viewport) {
+  const context = await browser.newContext({ viewport });
+  await context.addInitScript(() => {
+    const original = WebGL2RenderingContext.prototype.getExtension;
+    WebGL2RenderingContext.prototype.getExtension = function getExtension(name) {
+      return name === 'EXT_color_buffer_float' ? null : original.call(this, name);
+    };
+  });
+  return { page: await context.newPage(), close: () => context.close() };
+}
+
+/** How far apart two pictures are: the largest byte difference and the share of bytes that differ. */
+export function compare(a, b) {
+  let differing = 0;
+  let largest = 0;
+  for (let i = 0; i < a.length; i += 1) {
+    const d = Math.abs(a[i] - b[i]);
+    if (d > 0) differing += 1;
+    largest = Math.max(largest, d);
+  }
+  return { largest, share: differing / a.length, sameSize: a.length === b.length };
+}
+
+/** Frames drawn and cached-terms draws of panel `id`, to see which changes redraw the terms. */
+export function counts(page, id) {
+  return page.evaluate((pid) => ({
+    frames: window.fresnelLab.hosts[pid].frames, terms: window.fresnelLab.panels[pid].view.termsDrawn,
+  }), id);
+}
