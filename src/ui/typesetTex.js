@@ -1,8 +1,19 @@
 // KaTeX itself, in a chunk of its own (with its CSS): tex.js loads it once the panel's picture is up.
 import katex from 'katex';
 import 'katex/dist/katex.min.css';
+import { patchTree } from './patchTree.js';
 
-/** Typesets TeX into an element. Errors show as red source text, never throw. */
+/**
+ * Typesets TeX into an element. Errors show as red source text, never throw. A formula whose
+ * numbers changed but whose shape did not (the live formulas of the panels, with fixed decimals)
+ * is built aside and patched into the nodes already shown.
+ */
 export function typesetTex(element, tex, display) {
-  katex.render(tex, element, { displayMode: display, throwOnError: false, output: 'htmlAndMathml' });
+  const options = { displayMode: display, throwOnError: false, output: 'htmlAndMathml' };
+  if (element.firstElementChild?.classList.contains('katex') || element.firstElementChild?.classList.contains('katex-display')) {
+    const fresh = document.createElement(element.tagName);
+    katex.render(tex, fresh, options);
+    if (patchTree(element, fresh)) return;
+  }
+  katex.render(tex, element, options);
 }

@@ -1,6 +1,7 @@
 // For panels whose view keeps terms in a float target (createShaderView's `cache`): the picture
 // after some changes, read whole, in this page and in a page without float render targets, where
 // the same fragment does everything in one pass.
+import { expect, openLab } from './fixtures.js';
 
 /** Every pixel (RGBA bytes) of panel `id`'s view after host.set(params) for each params in turn. */
 export function pixelsAfter(page, id, changes) {
@@ -44,4 +45,28 @@ export function counts(page, id) {
   return page.evaluate((pid) => ({
     frames: window.fresnelLab.hosts[pid].frames, terms: window.fresnelLab.panels[pid].view.termsDrawn,
   }), id);
+}
+
+/**
+ * The split picture is the one-pass picture after `changes` (at most a rounding step apart), a
+ * change of a live uniform (`live`) draws a frame over the kept terms, and a change of the view
+ * (`view`) draws the terms again.
+ */
+export async function expectCachedTerms(page, browser, { id, url, changes, live, view }) {
+  await openLab(page, url);
+  const split = await pixelsAfter(page, id, changes);
+  const onePass = await onePassPage(browser, page.viewportSize());
+  await openLab(onePass.page, url);
+  const whole = await pixelsAfter(onePass.page, id, changes);
+  await onePass.close();
+  const { largest, share, sameSize } = compare(split, whole);
+  expect(sameSize).toBe(true);
+  expect(largest).toBeLessThanOrEqual(1); // float32 terms stored and read back exactly
+  expect(share).toBeLessThan(1e-3);
+  for (const [params, termsDrawn] of [[live, 0], [view, 1]]) {
+    const before = await counts(page, id);
+    await page.evaluate(([pid, p]) => window.fresnelLab.hosts[pid].set(p), [id, params]);
+    await expect.poll(async () => (await counts(page, id)).frames).toBeGreaterThan(before.frames);
+    expect((await counts(page, id)).terms).toBe(before.terms + termsDrawn);
+  }
 }

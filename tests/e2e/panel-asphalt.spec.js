@@ -1,5 +1,5 @@
 import { test, expect, openLab, expectIdle, expectOneFrame } from './fixtures.js';
-import { compare, counts, onePassPage, pixelsAfter } from './cachedTerms.js';
+import { expectCachedTerms } from './cachedTerms.js';
 
 const EMBED = './embed.html?panel=asphalt';
 const sum = (rgb) => rgb[0] + rgb[1] + rgb[2];
@@ -90,24 +90,7 @@ test('dispose frees the WebGL context and a remount works', async ({ page }) => 
 });
 
 test('n and the Fresnel switch redraw only F over cached terms, and the picture is the one-pass picture', async ({ page, browser }) => {
-  const changes = [{ nT: 1.33, fresnel: false }, { fresnel: true }];
-  await openLab(page, EMBED);
-  const split = await pixelsAfter(page, 'asphalt', changes);
-  const onePass = await onePassPage(browser, page.viewportSize());
-  await openLab(onePass.page, EMBED);
-  const whole = await pixelsAfter(onePass.page, 'asphalt', changes);
-  await onePass.close();
-  const { largest, share, sameSize } = compare(split, whole);
-  expect(sameSize).toBe(true);
-  expect(largest).toBeLessThanOrEqual(1); // float32 terms stored and read back exactly: at most a rounding step
-  expect(share).toBeLessThan(1e-3);
-  // A change of n draws a frame but not the terms; a change of the camera draws both.
-  const before = await counts(page, 'asphalt');
-  await page.evaluate(() => window.fresnelLab.hosts.asphalt.set({ nT: 1.6 }));
-  await expect.poll(async () => (await counts(page, 'asphalt')).frames).toBeGreaterThan(before.frames);
-  expect((await counts(page, 'asphalt')).terms).toBe(before.terms);
-  const afterN = await counts(page, 'asphalt');
-  await page.evaluate(() => window.fresnelLab.hosts.asphalt.set({ camEl: 12 }));
-  await expect.poll(async () => (await counts(page, 'asphalt')).frames).toBeGreaterThan(afterN.frames);
-  expect((await counts(page, 'asphalt')).terms).toBe(afterN.terms + 1);
+  await expectCachedTerms(page, browser, {
+    id: 'asphalt', url: EMBED, changes: [{ nT: 1.33, fresnel: false }, { fresnel: true }], live: { nT: 1.6 }, view: { camEl: 12 },
+  });
 });

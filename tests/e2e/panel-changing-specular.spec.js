@@ -1,4 +1,5 @@
 import { test, expect, openLab } from './fixtures.js';
+import { expectCachedTerms } from './cachedTerms.js';
 
 const EMBED = './embed.html?panel=changing-specular';
 const sum = (rgb) => rgb[0] + rgb[1] + rgb[2];
@@ -80,4 +81,40 @@ test('dispose frees the WebGL context and a remount works', async ({ page }) => 
   });
   expect(live).toEqual([1, 0, 1]);
   await expect(page.locator('.cspec-plot canvas')).toHaveCount(1);
+});
+
+test('n redraws k alone over the terms kept from the view, and the picture is the one-pass picture', async ({ page, browser }) => {
+  await expectCachedTerms(page, browser, {
+    id: 'changing-specular', url: `${EMBED}&lightEl=20`, changes: [{ nT: 1.7 }, { s: 20, nT: 1.33 }], live: { nT: 1.5 }, view: { lightEl: 35 },
+  });
+});
+
+test('a live formula keeps its nodes when only its numbers change, and reads as a fresh typeset would', async ({ page }) => {
+  await openLab(page, EMBED);
+  await page.waitForFunction(() => document.querySelector('.cspec-tex-fresnel .katex-html'));
+  const html = (p) => p.evaluate(() => document.querySelector('.cspec-tex-fresnel').innerHTML);
+  const kept = await page.evaluate(() => {
+    const before = document.querySelector('.cspec-tex-fresnel .katex-html');
+    window.fresnelLab.hosts['changing-specular'].set({ nT: 1.7 });
+    return before === document.querySelector('.cspec-tex-fresnel .katex-html');
+  });
+  expect(kept).toBe(true);
+  const phongF = await page.evaluate(() => window.fresnelLab.panels['changing-specular'].highlight.phongF.toFixed(4));
+  await expect(page.locator('.cspec-tex-fresnel annotation')).toContainText(`= \\mathbf{${phongF}}`);
+  // Another shape (s with one digit fewer) is typeset anew.
+  const patched = await html(page);
+  await page.evaluate(() => window.fresnelLab.hosts['changing-specular'].set({ s: 8 }));
+  const reshaped = await html(page);
+  expect(reshaped).not.toBe(patched);
+  // Both are what typesetting from scratch gives: a remount with the same values.
+  for (const [values, expected] of [[{ s: 60 }, patched], [{ s: 8 }, reshaped]]) {
+    await page.evaluate((v) => {
+      const host = window.fresnelLab.hosts['changing-specular'];
+      host.set(v);
+      host.unmount();
+      host.mount();
+    }, values);
+    await page.waitForFunction(() => document.querySelector('.cspec-tex-fresnel .katex-html'));
+    expect(await html(page)).toBe(expected);
+  }
 });

@@ -1,6 +1,6 @@
 import { test, expect, openLab, expectIdle, expectOneFrame } from './fixtures.js';
 import { fresnelExact } from '../../src/optics/fresnel.js';
-import { compare, counts, onePassPage, pixelsAfter } from './cachedTerms.js';
+import { expectCachedTerms } from './cachedTerms.js';
 
 const PANEL = 'reflect-refract';
 const DEG = Math.PI / 180;
@@ -90,24 +90,8 @@ test('a URL with glass and a view is restored; nothing draws while idle', async 
 });
 
 test('n, the depth and the layer redraw over the sky kept from the view, and the picture is the one-pass picture', async ({ page, browser }) => {
-  const url = `./embed.html?panel=${PANEL}&elevation=25`;
-  const changes = [{ nT: 1.5, depth: 2.5 }, { layer: 'refracted' }, { layer: 'both' }];
-  await openLab(page, url);
-  const split = await pixelsAfter(page, PANEL, changes);
-  const onePass = await onePassPage(browser, page.viewportSize());
-  await openLab(onePass.page, url);
-  const whole = await pixelsAfter(onePass.page, PANEL, changes);
-  await onePass.close();
-  const { largest, share, sameSize } = compare(split, whole);
-  expect(sameSize).toBe(true);
-  expect(largest).toBeLessThanOrEqual(1);
-  expect(share).toBeLessThan(1e-3);
-  const before = await counts(page, PANEL);
-  await page.evaluate((id) => window.fresnelLab.hosts[id].set({ nT: 1.4 }), PANEL);
-  await expect.poll(async () => (await counts(page, PANEL)).frames).toBeGreaterThan(before.frames);
-  expect((await counts(page, PANEL)).terms).toBe(before.terms);
-  const afterN = await counts(page, PANEL);
-  await page.evaluate((id) => window.fresnelLab.hosts[id].set({ elevation: 40 }), PANEL);
-  await expect.poll(async () => (await counts(page, PANEL)).frames).toBeGreaterThan(afterN.frames);
-  expect((await counts(page, PANEL)).terms).toBe(afterN.terms + 1);
+  await expectCachedTerms(page, browser, {
+    id: PANEL, url: `./embed.html?panel=${PANEL}&elevation=25`,
+    changes: [{ nT: 1.5, depth: 2.5 }, { layer: 'refracted' }, { layer: 'both' }], live: { nT: 1.4 }, view: { elevation: 40 },
+  });
 });

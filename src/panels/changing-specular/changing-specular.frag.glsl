@@ -3,6 +3,9 @@
 // (lecture, "Changing Specular" and "Reflection Math"). The light is directional, so F is the same
 // all over the floor: the right half is the left half scaled by F/R0, nothing else.
 // The JS twin of the numbers is src/optics/phong.js.
+// Only k depends on n: the other terms of a pixel (its diffuse light or sky, and its lobe) are
+// compiled with CACHE_PASS into a float target and with CACHED read back (createShaderView's
+// `cache`), so that moving n draws k alone.
 precision highp float;
 #include <fresnel>
 #include <environment>
@@ -30,35 +33,58 @@ vec3 floorAlbedo(vec2 p) {
   return mix(vec3(0.12), tile, grout);
 }
 
-vec3 shade(vec3 dir, vec3 camPos, bool withFresnel) {
+// (rgb: what does not scale with k, the diffuse floor or the sky; a: the lobe) of a pixel.
+vec4 viewTerms(vec3 dir, vec3 camPos) {
   vec3 L = normalize(uSunDir);
   if (dir.y >= 0.0) {
     float sun = smoothstep(0.9997, 0.9999, dot(dir, L));
-    return skyLight(dir) * 0.6 + sun * vec3(30.0);
+    return vec4(skyLight(dir) * 0.6 + sun * vec3(30.0), 0.0);
   }
   vec3 p = camPos + dir * (-camPos.y / dir.y);
   vec3 N = vec3(0.0, 1.0, 0.0);
-  vec3 V = -dir;
   vec3 R = reflect(-L, N);
-  float lobe = pow(max(dot(V, R), 0.0), uS);
+  float lobe = pow(max(dot(-dir, R), 0.0), uS);
   float cosTheta = max(dot(N, L), 0.0);
-  float k = withFresnel ? fresnelExact(cosTheta, 1.0, uN) : normalIncidence(1.0, uN);
   vec3 diffuse = floorAlbedo(p.xz) * (uLight * cosTheta / 3.14159265 + 0.4 * skyLight(N));
-  return diffuse + vec3(uLight * k * lobe);
+  return vec4(diffuse, lobe);
 }
 
-void main() {
-  // Two views of the same scene: x in 0..0.5 is Phong, 0.5..1 is Phong × F.
-  bool right = vUv.x >= 0.5;
+// The view ray of this pixel, in the left or the right view (x in 0..0.5 is Phong, 0.5..1 Phong × F).
+vec3 viewDir(out vec3 camPos) {
   vec2 ndc = vec2(fract(vUv.x * 2.0) * 2.0 - 1.0, vUv.y * 2.0 - 1.0);
   float aspect = 0.5 * uResolution.x / uResolution.y;
   vec3 forward = vec3(0.0, -sin(uViewEl), cos(uViewEl));
   vec3 up = vec3(0.0, cos(uViewEl), sin(uViewEl));
   vec3 side = vec3(-1.0, 0.0, 0.0);
-  vec3 dir = normalize(forward + ndc.x * uTanHalfFov * aspect * side + ndc.y * uTanHalfFov * up);
-  vec3 color = shade(dir, -forward * uCameraDist, right);
+  camPos = -forward * uCameraDist;
+  return normalize(forward + ndc.x * uTanHalfFov * aspect * side + ndc.y * uTanHalfFov * up);
+}
+
+#ifdef CACHE_PASS
+void main() {
+  vec3 camPos;
+  vec3 dir = viewDir(camPos);
+  fragColor = viewTerms(dir, camPos);
+}
+#else
+#ifdef CACHED
+uniform sampler2D uCache;
+#endif
+void main() {
+#ifdef CACHED
+  vec4 terms = texelFetch(uCache, ivec2(gl_FragCoord.xy), 0);
+#else
+  vec3 camPos;
+  vec3 dir = viewDir(camPos);
+  vec4 terms = viewTerms(dir, camPos);
+#endif
+  // The light is directional: θ, and so k, is the same at every point of a view.
+  float cosTheta = max(normalize(uSunDir).y, 0.0);
+  float k = vUv.x >= 0.5 ? fresnelExact(cosTheta, 1.0, uN) : normalIncidence(1.0, uN);
+  vec3 color = terms.rgb + vec3(uLight * k * terms.a);
   // A dividing line two pixels wide between the halves.
   float divide = step(abs(gl_FragCoord.x - 0.5 * uResolution.x), 1.0);
   vec3 display = 1.0 - exp(-uExposure * color);
   fragColor = vec4(mix(linearToSrgb(display), vec3(0.0), divide), 1.0);
 }
+#endif

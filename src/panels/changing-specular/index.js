@@ -29,6 +29,7 @@ export function mount(root, ctx) {
   const view = startWebGL(dom.stage, () => createShaderView(dom.canvas, {
     fragment,
     onFrame: ctx.frameDrawn,
+    cache: { live: ['uN'] }, // the index redraws only k (changing-specular.frag.glsl)
     uniforms: {
       uViewEl: { value: 0.5 }, uSunDir: { value: [0, 0.5, 0.87] }, uS: { value: 60 }, uN: { value: 1.5 },
       uTanHalfFov: { value: Math.tan((SCENE.fovY / 2) * DEG) }, uCameraDist: { value: SCENE.cameraDist },
