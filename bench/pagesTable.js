@@ -1,5 +1,6 @@
 // The page measurements of npm run bench as text: the lines it prints, and the README's table.
 const ms = ({ median, min, max }) => `${median.toFixed(0)} [${min.toFixed(0)}, ${max.toFixed(0)}]`;
+const ratio = ({ median, min, max }) => `${median.toFixed(2)} [${min.toFixed(2)}, ${max.toFixed(2)}]`;
 const kb = (bytes) => `${(bytes / 1024).toFixed(0)} KB`;
 
 export function pagesTable(pages) {
@@ -8,8 +9,10 @@ export function pagesTable(pages) {
     `Hero embed ${hero.width}×${hero.height} vs three.js peer, ms per update (runs of ${hero.updates} set → rendered), median [min, max] over ${hero.rounds} interleaved rounds:`,
     `  hero ${ms(hero.hero.msPerUpdate)}, peer ${ms(hero.peer.msPerUpdate)}, hero/peer ${hero.ratio.toFixed(2)} `
       + `(per round ${hero.ratioPerRound.map((r) => r.toFixed(2)).join(', ')})`,
-    `WebGL panels in a ${panels.width}×${panels.height} embed, ms per update, median [min, max] over 3 runs:`,
-    ...Object.entries(panels.panels).map(([id, p]) => `  ${id.padEnd(18)} ${ms(p.msPerUpdate)} (${p.key})`),
+    `WebGL panels in a ${panels.width}×${panels.height} embed, ms per update and its ratio to the hero's in the same round, `
+      + `median [min, max] over ${panels.runs ?? 3} interleaved rounds:`,
+    ...Object.entries(panels.panels).map(([id, p]) => `  ${id.padEnd(18)} ${ms(p.msPerUpdate)} (${p.key})`
+      + (p.toHero && id !== 'spheres' ? `  ×hero ${ratio(p.toHero)}` : '')),
     `Lecture page: first frame of the hero ${(loads.lecture.firstFrameMs ?? NaN).toFixed(0)} ms after navigation, `
       + `${kb(loads.lecture.jsGzipBeforeFirstFrame)} of gzipped JS before it, ${kb(loads.lecture.jsGzipBeforeReady)} before ready`,
     'Embeds: first frame (ms), gzipped JS until ready:',

@@ -1,5 +1,6 @@
 import { test, expect, openLab } from './fixtures.js';
 import { metals } from './metalsData.js';
+import { expectCachedTerms } from './cachedTerms.js';
 
 const embed = (query = '') => `./embed.html?panel=metals${query}`;
 const sum = (p) => p[0] + p[1] + p[2];
@@ -83,4 +84,10 @@ test('the URL sets the metal, the method and the dielectric index', async ({ pag
     return [before, window.fresnelLab.contexts.live];
   });
   expect(live[1]).toBe(live[0] - 1);
+});
+
+test('the dielectric\'s n redraws its F alone over the terms kept from the view, and the picture is the one-pass picture', async ({ page, browser }) => {
+  await expectCachedTerms(page, browser, {
+    id: 'metals', url: embed(), changes: [{ nT: 1.8 }, { fresnel: 'schlick', nT: 1.33 }], live: { nT: 1.6 }, view: { fresnel: 'exact' },
+  });
 });

@@ -15,20 +15,37 @@ uniform vec3 uF0;       // metal: F0 per channel, from the float64 reference
 uniform int uMethod;    // metal: 0 exact, 1 Schlick
 out vec4 fragColor;
 
-void main() {
+// The terms of a pixel that n does not touch: its linear colour when n plays no part (the
+// background, the metal), with a = −1; on the dielectric, the environment it mirrors, with
+// a = cos θ. Compiled with CACHE_PASS they go to a float target, with CACHED they are read back
+// (createShaderView's `cache`), so that moving n draws the dielectric's F alone.
+vec4 viewTerms() {
   StageHit hit = castStage();
-  if (!hit.found) {
-    fragColor = vec4(linearToSrgb(environment(hit.dir)), 1.0);
-    return;
-  }
+  if (!hit.found) return vec4(environment(hit.dir), -1.0);
   float c = clamp(dot(hit.normal, hit.view), 0.0, 1.0);
-  vec3 F;
-  if (hit.side == 0) {
-    F = vec3(fresnelExact(c, 1.0, uN));
-  } else if (uMethod == 0) {
-    F = fresnelConductorRGB(c, uMetalN, uMetalK);
-  } else {
-    F = vec3(schlickOn(c, uF0.r), schlickOn(c, uF0.g), schlickOn(c, uF0.b));
-  }
-  fragColor = vec4(linearToSrgb(F * environment(reflect(-hit.view, hit.normal))), 1.0);
+  vec3 mirrored = environment(reflect(-hit.view, hit.normal));
+  if (hit.side == 0) return vec4(mirrored, c);
+  vec3 F = uMethod == 0
+    ? fresnelConductorRGB(c, uMetalN, uMetalK)
+    : vec3(schlickOn(c, uF0.r), schlickOn(c, uF0.g), schlickOn(c, uF0.b));
+  return vec4(F * mirrored, -1.0);
 }
+
+#ifdef CACHE_PASS
+void main() {
+  fragColor = viewTerms();
+}
+#else
+#ifdef CACHED
+uniform sampler2D uCache;
+#endif
+void main() {
+#ifdef CACHED
+  vec4 terms = texelFetch(uCache, ivec2(gl_FragCoord.xy), 0);
+#else
+  vec4 terms = viewTerms();
+#endif
+  vec3 linear = terms.a < 0.0 ? terms.rgb : fresnelExact(terms.a, 1.0, uN) * terms.rgb;
+  fragColor = vec4(linearToSrgb(linear), 1.0);
+}
+#endif

@@ -28,29 +28,38 @@ float re(vec2 z, float phi) {
   return z.x * cos(phi) - z.y * sin(phi);
 }
 
-// Coverage of a segment a→b of half-width `w` pixels at p (px: world units per pixel).
-float segment(vec2 p, vec2 a, vec2 b, float w, float px) {
+// Distance from p to the segment a→b (world units).
+float segmentDistance(vec2 p, vec2 a, vec2 b) {
   vec2 ab = b - a;
   float h = clamp(dot(p - a, ab) / dot(ab, ab), 0.0, 1.0);
-  return clamp(w - length(p - a - h * ab) / px + 0.5, 0.0, 1.0);
+  return length(p - a - h * ab);
 }
 
-// A ray from `from` to `to` with an arrowhead at `to`.
-float arrow(vec2 p, vec2 from, vec2 to, float w, float px) {
+// Coverage of a line of half-width `w` pixels at distance d (px: world units per pixel).
+float coverage(float d, float w, float px) {
+  return clamp(w - d / px + 0.5, 0.0, 1.0);
+}
+
+// Distance from p to a ray from `from` to `to` with an arrowhead at `to`.
+float arrowDistance(vec2 p, vec2 from, vec2 to) {
   vec2 d = normalize(to - from);
   vec2 side = vec2(-d.y, d.x);
   float head = 0.32;
-  float a = segment(p, from, to, w, px);
-  a = max(a, segment(p, to, to - head * (d + 0.55 * side), w, px));
-  return max(a, segment(p, to, to - head * (d - 0.55 * side), w, px));
+  float a = segmentDistance(p, from, to);
+  a = min(a, segmentDistance(p, to, to - head * (d + 0.55 * side)));
+  return min(a, segmentDistance(p, to, to - head * (d - 0.55 * side)));
 }
 
-// The rays drawn: incident always, reflected when shown (always under total internal
-// reflection), transmitted unless there is none.
-float rayMask(vec2 p, float w, float px) {
-  float rays = arrow(p, -uRayLength * uDirI, vec2(0.0), w, px);
-  if (uShowReflected || uKappa > 0.0) rays = max(rays, arrow(p, vec2(0.0), uRayLength * uDirR, w, px));
-  if (uKappa == 0.0) rays = max(rays, arrow(p, vec2(0.0), uRayLength * uDirT, w, px));
+// Distance to the rays drawn: incident always, reflected when shown (always under total internal
+// reflection), transmitted unless there is none. Coverage falls with distance, so the coverage of
+// the nearest ray is the largest, and one distance serves the ray and its wider dark outline.
+float rayDistance(vec2 p, float px) {
+  // Every ray and arrowhead lies within uRayLength + head·|(1, 0.55)| < uRayLength + 0.4 of the
+  // origin: farther than the outline reaches (4.5 px) beyond that, nothing is covered.
+  if (length(p) - (uRayLength + 0.4) > 5.0 * px) return 1e9;
+  float rays = arrowDistance(p, -uRayLength * uDirI, vec2(0.0));
+  if (uShowReflected || uKappa > 0.0) rays = min(rays, arrowDistance(p, vec2(0.0), uRayLength * uDirR));
+  if (uKappa == 0.0) rays = min(rays, arrowDistance(p, vec2(0.0), uRayLength * uDirT));
   return rays;
 }
 
@@ -79,11 +88,12 @@ void main() {
   vec3 colour = mix(dark, crest, clamp(field, 0.0, 1.0)) + 0.35 * clamp(field - 1.0, 0.0, 1.0);
 
   // The interface, the normal (dashed) and the rays through the origin.
-  colour = mix(colour, vec3(0.8), segment(p, vec2(-1e3, 0.0), vec2(1e3, 0.0), 1.2, px));
+  colour = mix(colour, vec3(0.8), coverage(segmentDistance(p, vec2(-1e3, 0.0), vec2(1e3, 0.0)), 1.2, px));
   float dash = step(0.5, fract(p.y * 2.5));
-  colour = mix(colour, vec3(0.6), dash * segment(p, vec2(0.0, -uHalfHeight), vec2(0.0, uHalfHeight), 1.0, px));
-  float rays = rayMask(p, 2.0, px);
-  colour = mix(colour, vec3(0.0), 0.8 * (rayMask(p, 4.0, px) - rays));
+  colour = mix(colour, vec3(0.6), dash * coverage(segmentDistance(p, vec2(0.0, -uHalfHeight), vec2(0.0, uHalfHeight)), 1.0, px));
+  float near = rayDistance(p, px);
+  float rays = coverage(near, 2.0, px);
+  colour = mix(colour, vec3(0.0), 0.8 * (coverage(near, 4.0, px) - rays));
   colour = mix(colour, vec3(1.0), rays);
   fragColor = vec4(colour, 1.0);
 }

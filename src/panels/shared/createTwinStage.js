@@ -26,9 +26,10 @@ export function offsetAtAngle(thetaDeg, { distance, fovDeg } = STAGE_CAMERA) {
 /**
  * host: where the stage goes. fragment: GLSL source that includes <twinStage>
  * and <environment>. uniforms: its own uniforms. Returns null for `view` when WebGL2 is missing
- * (the stage then shows `fallback` in words).
+ * (the stage then shows `fallback` in words). cache: createShaderView's option, for a fragment that
+ * keeps its view terms.
  */
-export function createTwinStage(host, { fragment, uniforms, ariaLabel, fallback, onFrame }) {
+export function createTwinStage(host, { fragment, uniforms, ariaLabel, fallback, onFrame, cache = null }) {
   const stage = el('div', 'twin-stage');
   const canvas = el('canvas', 'twin-stage-canvas');
   canvas.setAttribute('role', 'img');
@@ -43,6 +44,7 @@ export function createTwinStage(host, { fragment, uniforms, ariaLabel, fallback,
   const view = startWebGL(stage, () => createShaderView(canvas, {
     fragment,
     onFrame,
+    cache,
     maxPixels: 700_000, // two analytic spheres: sharp enough on a projector, cheap in SwiftShader
     uniforms: {
       ...uniforms,
