@@ -1,6 +1,7 @@
 import { defineConfig } from 'vite';
 import { readdirSync, existsSync, readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
+import { viteSingleFile } from 'vite-plugin-singlefile';
 import { PANELS, SECTIONS_MARKER, manifestProblems, sectionHtml } from './src/panels/manifest.js';
 
 const root = import.meta.dirname;
@@ -37,21 +38,51 @@ function panelManifest() {
   };
 }
 
+/**
+ * For the single-file pages: every `?worker` import becomes `?worker&inline` (the worker's code
+ * travels in the page and starts from a blob: URL, since a page opened from disk may not load a
+ * worker file), and KaTeX's fonts keep only their WOFF2 files (which every browser that runs
+ * WebGL2 reads), so the page carries each font once.
+ */
+function offlineAssets() {
+  return {
+    name: 'fresnel-lab-offline-assets',
+    enforce: 'pre',
+    async resolveId(source, importer, options) {
+      if (!source.endsWith('?worker')) return null;
+      const resolved = await this.resolve(source.slice(0, -'?worker'.length), importer, { ...options, skipSelf: true });
+      return resolved && `${resolved.id}?worker&inline`;
+    },
+    transform(code, id) {
+      if (!/katex(\.min)?\.css$/.test(id)) return null;
+      return code.replace(/,\s*url\([^)]*\.woff\)\s*format\("woff"\)/g, '').replace(/,\s*url\([^)]*\.ttf\)\s*format\("truetype"\)/g, '');
+    },
+  };
+}
+
+// FRESNEL_LAB_SINGLE_FILE=index|embed builds that page alone into dist/offline as one HTML file
+// (scripts, styles, fonts and workers inlined by vite-plugin-singlefile), which works opened from
+// disk and in a sandboxed iframe; scripts/buildOffline.js runs both after the ordinary build.
+const singleFile = process.env.FRESNEL_LAB_SINGLE_FILE;
+
+const pages = {
+  index: resolve(root, 'index.html'),
+  embed: resolve(root, 'embed.html'),
+  // npm run bench also builds the three.js peer the hero is measured against (not shipped).
+  ...(process.env.FRESNEL_LAB_BENCH_PEER === '1' ? { peer: resolve(root, 'bench/peer.html') } : {}),
+};
+
 // Relative base: the built site works from any sub-path (a course page, a USB stick).
 export default defineConfig({
   base: './',
-  plugins: [panelManifest()],
+  plugins: singleFile ? [panelManifest(), offlineAssets(), viteSingleFile()] : [panelManifest()],
   build: {
+    ...(singleFile ? { outDir: 'dist/offline', emptyOutDir: false } : {}),
     target: 'es2022',
     // three.js's WebGLRenderer is most of the normal-map viewer's chunk; only that panel loads it.
     chunkSizeWarningLimit: 700,
     rollupOptions: {
-      input: {
-        index: resolve(root, 'index.html'),
-        embed: resolve(root, 'embed.html'),
-        // npm run bench also builds the three.js peer the hero is measured against (not shipped).
-        ...(process.env.FRESNEL_LAB_BENCH_PEER === '1' ? { peer: resolve(root, 'bench/peer.html') } : {}),
-      },
+      input: singleFile ? pages[singleFile] : pages,
     },
   },
   server: { host: '127.0.0.1' },

@@ -148,7 +148,7 @@ try {
   const tiny = size === 'tiny';
   log('hero embed against the three.js peer (message-driven updates)');
   const hero = await heroVsPeer(browser, base, tiny ? { width: 300, height: 120, rounds: 1, updates: 3, warmup: 1 } : {});
-  log('every WebGL panel, one update at a time');
+  log('every WebGL panel, in interleaved rounds with the hero');
   const panels = await panelUpdateCosts(browser, base, tiny ? { width: 320, height: 240, updates: 2, warmup: 1, runs: 1 } : {});
   log('first frames and downloads');
   const loads = { lecture: await pageLoad(browser, base, site, base, { id: 'spheres' }), embeds: {} };

@@ -4,6 +4,7 @@
 // channel off the page's thread, so the first panel's context costs what the later ones do. Where
 // workers or OffscreenCanvas are missing (or a page's CSP refuses the worker) nothing is lost but
 // the head start.
+import GpuWarmWorker from './gpuWarmWorker.js?worker';
 
 let warming = null;
 
@@ -20,7 +21,7 @@ export function warmGpu(ms = 1000) {
       resolve(ok);
     };
     try {
-      const worker = new Worker(new URL('./gpuWarmWorker.js', import.meta.url), { type: 'module' });
+      const worker = new GpuWarmWorker();
       worker.onmessage = (event) => done(event.data === true);
       worker.onerror = () => done(false);
     } catch {

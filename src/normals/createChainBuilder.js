@@ -4,11 +4,12 @@
 // the last one only. Without Worker support (or if a worker fails to start) the same pure code
 // runs on the calling thread, so the panel works everywhere.
 import { buildChainsFor, mergeBuilds, splitTechniques } from './buildChainsFor.js';
+import ChainWorker from './chainWorker.js?worker';
 
 function startWorkers(count) {
   if (typeof Worker === 'undefined') return null;
   try {
-    return Array.from({ length: count }, () => new Worker(new URL('./chainWorker.js', import.meta.url), { type: 'module' }));
+    return Array.from({ length: count }, () => new ChainWorker());
   } catch {
     return null;
   }

@@ -2,12 +2,13 @@
 // float64 arithmetic runs; where workers are unavailable, on the page as before. Resolves to
 // timeMethodsCpu's result plus `where` ('worker' or 'page').
 import { timeMethodsCpu } from '../../optics/timeMethodsCpu.js';
+import CpuWorker from './cpuWorker.js?worker';
 
 export function timeCpu({ signal, onProgress, ...config }) {
   let worker = null;
   try {
     worker = typeof Worker === 'undefined' ? null
-      : new Worker(new URL('./cpuWorker.js', import.meta.url), { type: 'module' });
+      : new CpuWorker();
   } catch {
     worker = null;
   }

@@ -1,0 +1,80 @@
+// The single-file pages (dist/offline, written by npm run build): the lecture opened from disk with
+// every panel, the embed opened from disk, and the embed in a sandboxed iframe (an opaque origin,
+// which fetches nothing in CORS mode without the server's consent).
+import { pathToFileURL } from 'node:url';
+import { resolve } from 'node:path';
+import { test, expect } from './fixtures.js';
+import { PANEL_IDS } from '../../src/panels/manifest.js';
+
+const offline = (file) => pathToFileURL(resolve(import.meta.dirname, '../../dist/offline', file)).href;
+
+/** Every URL the page asks for, to show that nothing comes from outside the file. */
+function requests(page) {
+  const urls = [];
+  page.on('request', (request) => urls.push(request.url()));
+  return urls;
+}
+const fromOutside = (urls) => urls.filter((u) => !/^(file|data|blob):/.test(u));
+
+test('the single-file lecture page opened from disk mounts and draws every panel', async ({ page }) => {
+  test.setTimeout(120_000);
+  const urls = requests(page);
+  await page.goto(offline('index.html'));
+  await page.evaluate(() => window.fresnelLab.ready);
+  for (const id of PANEL_IDS) {
+    await page.locator(`section[data-panel="${id}"]`).evaluate((s) => s.scrollIntoView({ block: 'center' }));
+    await expect.poll(() => page.evaluate((pid) => window.fresnelLab.hosts[pid].frames, id), { message: id, timeout: 30_000 })
+      .toBeGreaterThan(0);
+    await expect(page.locator(`section[data-panel="${id}"] .panel-description`)).toHaveText(/\d/);
+  }
+  // Formulas typeset with KaTeX's own fonts, and the normal-map chains built off the page's thread.
+  await expect(page.locator('section[data-panel="schlick"] .katex').first()).toBeVisible();
+  expect(await page.evaluate(() => document.fonts.check('20px KaTeX_Main'))).toBe(true);
+  await page.locator('section[data-panel="normal-mips"]').evaluate((s) => s.scrollIntoView({ block: 'center' }));
+  await expect(page.locator('section[data-panel="normal-mips"] .nm-summary')).toContainText(/built in \d+ ms \(\d worker/);
+  expect(fromOutside(urls)).toEqual([]);
+});
+
+test('the single-file embed opened from disk shows a panel, with its URL parameters', async ({ page }) => {
+  const urls = requests(page);
+  for (const [id, query] of [['schlick', '&nT=1.33'], ['spheres', '&nT=2'], ['normal-mips', '']]) {
+    await page.goto(`${offline('embed.html')}?panel=${id}${query}`);
+    await page.evaluate(() => window.fresnelLab.ready);
+    await expect.poll(() => page.evaluate((pid) => window.fresnelLab.hosts[pid].frames, id), { message: id }).toBeGreaterThan(0);
+    if (query) expect(await page.evaluate((pid) => window.fresnelLab.hosts[pid].values.nT, id)).toBe(Number(query.split('=')[1]));
+  }
+  expect(fromOutside(urls)).toEqual([]);
+});
+
+test('the single-file embed works in a sandboxed iframe on a plain static server and answers messages', async ({ page }) => {
+  await page.goto('./embed.html?panel=angle-ratio'); // a page of the server, to be the embedding page
+  await page.evaluate(() => window.fresnelLab.ready);
+  const answers = await page.evaluate(async () => {
+    document.body.innerHTML = '';
+    const frame = document.createElement('iframe');
+    frame.setAttribute('sandbox', 'allow-scripts');
+    frame.style.cssText = 'width:900px;height:600px;border:0';
+    const seen = [];
+    const next = (type) => new Promise((resolve) => {
+      const on = (event) => {
+        if (event.source !== frame.contentWindow || event.data?.type !== type) return;
+        removeEventListener('message', on);
+        seen.push(event.origin);
+        resolve(event.data);
+      };
+      addEventListener('message', on);
+    });
+    const ready = next('fresnel-lab:ready');
+    frame.src = 'offline/embed.html?panel=schlick';
+    document.body.append(frame);
+    await ready;
+    await next('fresnel-lab:rendered'); // the first frame, drawn after ready
+    const state = next('fresnel-lab:state');
+    const rendered = next('fresnel-lab:rendered'); // the plot redrawn with the new index
+    frame.contentWindow.postMessage({ type: 'fresnel-lab:set', params: { nT: 1.7 } }, '*');
+    return { state: await state, frame: (await rendered).frame, origins: seen };
+  });
+  expect(answers.state.params.nT).toBe(1.7);
+  expect(answers.frame).toBe(2);
+  expect(answers.origins).toEqual(['null', 'null', 'null', 'null']); // an opaque origin: the sandbox held
+});
