@@ -13,7 +13,7 @@ export default [
     rules: { 'no-unused-vars': ['error', { argsIgnorePattern: '^_' }] },
   },
   {
-    files: ['*.config.js', 'tests/**', 'bench/**', '.ci/**'],
+    files: ['*.config.js', 'tests/**', 'bench/**', 'scripts/**', '.ci/**'],
     languageOptions: { globals: { ...globals.node, ...globals.browser } },
   },
 ];
