@@ -1,10 +1,14 @@
-// embed.html?panel=ID&<params>: one panel alone, no page chrome, sized to its frame, driven by
-// its URL and by the message API (src/host/messageApi.js).
+// embed.html?panel=ID&<params>&<embed options>: one panel alone, no page chrome, sized to its
+// frame, driven by its URL and by the message API (src/host/messageApi.js). The embed options
+// (readEmbedOptions.js) set the theme, projector mode, reduced motion, locked or hidden controls
+// and the deck's origin.
 import './styles.css';
 import { PANEL_IDS, panelEntry } from './panels/manifest.js';
 import { loadPanel } from './panels/loadPanel.js';
 import { createPanelHost } from './host/createPanelHost.js';
 import { connectMessages } from './host/messageApi.js';
+import { readEmbedOptions } from './host/readEmbedOptions.js';
+import { describeProblem } from './host/params.js';
 import { applyTheme, loadTheme } from './ui/theme.js';
 import { setSubscripted } from './ui/subscripts.js';
 import { showNotice } from './host/showNotice.js';
@@ -17,7 +21,14 @@ const hosts = {};
 window.fresnelLab = {
   hosts, contexts: contextStats, panels: new Proxy({}, { get: (_t, key) => hosts[key]?.instance ?? null }), ready: null,
 };
-applyTheme({ ...loadTheme(), scheme: search.get('theme') === 'light' ? 'light' : loadTheme().scheme });
+const { options, problems } = readEmbedOptions(search);
+// What the reader's browser remembers, overridden by the embed's URL and then by messages; never
+// stored, since it is the deck's choice, not the reader's.
+const theme = { ...loadTheme() };
+if (options.theme) theme.scheme = options.theme;
+if (options.projector !== null) theme.projector = options.projector;
+applyTheme(theme, { remember: false });
+showNotice(root, 'Some embed options in the link were not usable:', problems.map(describeProblem));
 
 window.fresnelLab.ready = (async () => {
   const entry = id ? panelEntry(id) : undefined;
@@ -45,7 +56,30 @@ window.fresnelLab.ready = (async () => {
     onFrame: (frame) => messages?.rendered(frame),
   });
   hosts[id] = host;
-  messages = connectMessages(host);
+  if (options.reducedMotion !== null) host.setReducedMotion(options.reducedMotion);
+  const unknown = [...host.controls('lock', options.lock), ...host.controls('hide', options.hide)];
+  if (!options.controls) host.controls('hide', null);
+  showNotice(root, 'Some controls named in the link do not exist:', unknown.map((k) => `${k}: not a control of this panel.`));
+  // Paused (a deck's hidden slide): the view is disposed, which frees its WebGL context; the
+  // values stay with the host, so resuming shows exactly what was there.
+  let paused = false;
+  messages = connectMessages(host, {
+    origin: options.parentOrigin ?? '*',
+    page: {
+      theme: (scheme) => applyTheme(Object.assign(theme, { scheme }), { remember: false }),
+      projector: (on) => applyTheme(Object.assign(theme, { projector: on }), { remember: false }),
+      reducedMotion: (on) => host.setReducedMotion(on),
+      pause() {
+        paused = true;
+        host.unmount();
+      },
+      resume() {
+        if (!paused) return;
+        paused = false;
+        host.mount();
+      },
+    },
+  });
   host.mount();
   messages.ready();
   return host;

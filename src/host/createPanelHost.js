@@ -6,11 +6,12 @@
 // (copy link, copy embed code, PNG, CSV) and mounts and disposes the panel's view. Values outlive
 // the view, so a panel disposed to free its WebGL context comes back exactly as it was.
 import { warmGpu } from '../gl/warmGpu.js';
-import { applyParams, describeProblem } from './params.js';
+import { applyParams, defaults, describeProblem, resolveKey } from './params.js';
+import { createControlState } from './createControlState.js';
 import { bindGui, createPanelGui } from './bindGui.js';
 import { readUrlState, urlWriter } from './urlState.js';
 import { showNotice } from './showNotice.js';
-import { copyText, downloadText, downloadUrl, toCsv } from './exporters.js';
+import { copyText, downloadText, downloadUrl, offerForCopy, resizePng, toCsv } from './exporters.js';
 import { embedCode, embedUrl, lectureUrl } from './shareLinks.js';
 import { checkInstance } from './panelContract.js';
 import { el } from '../ui/el.js';
@@ -39,6 +40,7 @@ export function createPanelHost(container, panel, {
 } = {}) {
   const { schema } = panel;
   const { values, problems } = readUrlState(schema, prefix);
+  const start = { ...values }; // what the link asked for: `reset` returns here
   showNotice(noticeHost, 'Some values in the link were not usable:', problems.map(describeProblem));
   const writeUrl = urlWriter(schema, prefix);
   const view = readOnly(values, panel.id);
@@ -60,6 +62,9 @@ export function createPanelHost(container, panel, {
   toolbar.hidden = true;
   shell.append(content, side);
   container.append(shell, description);
+  const controlState = createControlState(schema, shell);
+  const prefersReducedMotion = window.matchMedia?.('(prefers-reduced-motion: reduce)').matches ?? false;
+  let reducedMotion = null; // set by the embed's URL or a message; null: the reader's preference
 
   const buttons = {
     link: el('button', '', 'Copy link'),
@@ -100,12 +105,16 @@ export function createPanelHost(container, panel, {
     status.textContent = text;
     setTimeout(() => { if (status.textContent === text) status.textContent = ''; }, 2500);
   };
-  buttons.link.addEventListener('click', async () => {
-    say((await copyText(lectureUrl(panel, values))) ? 'Link copied' : '');
-  });
-  buttons.embed.addEventListener('click', async () => {
-    say((await copyText(embedCode(panel, values))) ? 'Embed code copied' : '');
-  });
+  // Copied, or (the clipboard refused) offered selected for Ctrl+C.
+  const copy = async (button, text, done, label) => {
+    if (await copyText(text)) say(done);
+    else {
+      offerForCopy(button, text, label);
+      say('Press Ctrl+C to copy');
+    }
+  };
+  buttons.link.addEventListener('click', () => copy(buttons.link, lectureUrl(panel, values), 'Link copied', 'Link to this view'));
+  buttons.embed.addEventListener('click', () => copy(buttons.embed, embedCode(panel, values), 'Embed code copied', 'Embed code'));
   buttons.png.addEventListener('click', () => {
     const url = instance?.png?.();
     if (url) downloadUrl(`fresnel-lab-${panel.id}.png`, url);
@@ -162,7 +171,10 @@ export function createPanelHost(container, panel, {
    * 'page' (the page-wide material).
    */
   function set(update, { source = 'api' } = {}) {
-    const result = applyParams(schema, values, update);
+    // A locked control's value changes only when the deck changes it.
+    const allowed = source === 'api' ? update
+      : Object.fromEntries(Object.entries(update ?? {}).filter(([name]) => !controlState.isLocked(resolveKey(schema, name))));
+    const result = applyParams(schema, values, allowed);
     if (result.rejected.length) {
       rejectedNotice?.remove();
       rejectedNotice = showNotice(noticeHost, `Some values for the ${panel.title} panel were not usable:`,
@@ -219,6 +231,7 @@ export function createPanelHost(container, panel, {
     bind(folder, keys) {
       const made = bindGui(folder ?? gui, schema, draft, (key, value) => set({ [key]: value }, { source: 'user' }), keys);
       Object.assign(controllers, made);
+      controlState.bind(controllers);
       return made;
     },
     set: (update, options) => set(update, { source: 'user', ...options }),
@@ -229,7 +242,7 @@ export function createPanelHost(container, panel, {
     },
     frameDrawn,
     applyMaterial: (material) => applyMaterial(material),
-    reducedMotion: window.matchMedia?.('(prefers-reduced-motion: reduce)').matches ?? false,
+    get reducedMotion() { return reducedMotion ?? prefersReducedMotion; },
   };
 
   return {
@@ -275,5 +288,37 @@ export function createPanelHost(container, panel, {
       return () => listeners.delete(listener);
     },
     links: () => ({ lecture: lectureUrl(panel, values), embed: embedUrl(panel, values) }),
+    /** The keys the link set to something other than their default. */
+    urlKeys: Object.keys(schema).filter((key) => start[key] !== schema[key].default),
+    /** Back to the link's values ('start') or the schema's defaults ('defaults'), as a change made by the API. */
+    reset(to = 'start') {
+      return set(to === 'defaults' ? defaults(schema) : start, { source: 'api' });
+    },
+    /** lock, unlock, hide or show controls (names, or null for all); returns the unknown names. */
+    controls: (kind, names) => controlState.change(kind, names),
+    get locked() { return controlState.locked; },
+    get hiddenControls() { return controlState.hidden; },
+    /** Reduced motion asked for by the embed (true/false) or left to the reader (null): an animation stops. */
+    setReducedMotion(on) {
+      reducedMotion = on;
+      if (on && panel.animates && values[panel.animates]) set({ [panel.animates]: false }, { source: 'api' });
+    },
+    /**
+     * The picture as a PNG data URL (fitted into width × height when given; null for a panel
+     * without one), the plotted numbers as CSV text, and the values.
+     */
+    async snapshot({ width = null, height = null } = {}) {
+      const url = instance?.png?.() ?? null;
+      const table = instance?.csv?.() ?? null;
+      const png = url ? await resizePng(url, width, height) : null;
+      return {
+        png: png?.url ?? null,
+        width: png?.width ?? null,
+        height: png?.height ?? null,
+        csv: table ? toCsv(table.columns) : null,
+        csvFilename: table ? (table.filename ?? `fresnel-lab-${panel.id}.csv`) : null,
+        params: JSON.parse(JSON.stringify(values)),
+      };
+    },
   };
 }

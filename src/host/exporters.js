@@ -22,13 +22,60 @@ export function downloadText(filename, text, type = 'text/csv') {
   setTimeout(() => URL.revokeObjectURL(url), 1000);
 }
 
-/** Copies text; falls back to a prompt where the clipboard is not available (file://, old browsers). */
+/**
+ * A PNG data URL redrawn to fit inside width × height (either may be null: that side follows the
+ * aspect ratio; both null: the picture's own size). Resolves { url, width, height }; where the image
+ * cannot be decoded (a CSP refusing data: images) the picture as it is, its size unknown (null).
+ */
+export async function resizePng(url, width = null, height = null) {
+  const image = new Image();
+  image.src = url;
+  try {
+    await image.decode();
+  } catch {
+    return { url, width: null, height: null };
+  }
+  const scale = Math.min(width ? width / image.naturalWidth : Infinity, height ? height / image.naturalHeight : Infinity);
+  const fit = Number.isFinite(scale) ? scale : 1;
+  const canvas = document.createElement('canvas');
+  canvas.width = Math.max(1, Math.round(image.naturalWidth * fit));
+  canvas.height = Math.max(1, Math.round(image.naturalHeight * fit));
+  const context = canvas.getContext('2d');
+  context.imageSmoothingQuality = 'high';
+  context.drawImage(image, 0, 0, canvas.width, canvas.height);
+  return { url: canvas.toDataURL('image/png'), width: canvas.width, height: canvas.height };
+}
+
+/** Copies text to the clipboard; false where it is refused (file://, a frame without clipboard-write). */
 export async function copyText(text) {
   try {
     await navigator.clipboard.writeText(text);
     return true;
   } catch {
-    window.prompt('Copy this:', text);
     return false;
   }
+}
+
+/**
+ * Where the clipboard is refused: the text in a read-only field after `anchor`, selected and
+ * focused, so Ctrl+C (or a long press) copies it. It goes away when it loses focus or on Escape.
+ */
+export function offerForCopy(anchor, text, label) {
+  anchor.parentElement?.querySelector('.copy-fallback')?.remove();
+  const field = document.createElement('textarea');
+  field.className = 'copy-fallback';
+  field.readOnly = true;
+  field.rows = 3;
+  field.value = text;
+  field.setAttribute('aria-label', label);
+  const close = () => {
+    field.removeEventListener('blur', close); // removing a focused field blurs it
+    field.remove();
+  };
+  field.addEventListener('blur', close);
+  field.addEventListener('keydown', (event) => { if (event.key === 'Escape') { close(); anchor.focus(); } });
+  anchor.after(field);
+  field.focus();
+  field.select();
+  return field;
 }

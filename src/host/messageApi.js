@@ -1,65 +1,178 @@
-// The message API between a slide deck and an embedded panel (window.postMessage):
-//   deck → panel  {type:'fresnel-lab:set', params}   validated; rejected values answer fresnel-lab:error
-//   deck → panel  {type:'fresnel-lab:get'}           answers {type:'fresnel-lab:state', panel, params}
-//   panel → deck  {type:'fresnel-lab:state', …}       also after a change made in the panel (a control, a drag)
-//   panel → deck  {type:'fresnel-lab:ready', panel, params} once mounted
-//   panel → deck  {type:'fresnel-lab:rendered', panel, frame} after each frame drawn
+// The message API between a slide deck (or any page) and an embedded panel, version 1
+// (window.postMessage; the README has the table). Deck → panel:
+//   {type:'fresnel-lab:set', params}              validated; rejected values answer fresnel-lab:error
+//   {type:'fresnel-lab:get'}                      answers fresnel-lab:state
+//   {type:'fresnel-lab:reset', to?}               to 'start' (the embed URL's values, the default) or 'defaults'
+//   {type:'fresnel-lab:snapshot', width?, height?, id?}  answers fresnel-lab:snapshot {png, csv, params}
+//   {type:'fresnel-lab:lock' | 'unlock' | 'hide' | 'show', keys?}  controls; no keys: all of them
+//   {type:'fresnel-lab:theme', theme} · {type:'fresnel-lab:projector', on} · {type:'fresnel-lab:reducedMotion', on}
+//   {type:'fresnel-lab:pause'} · {type:'fresnel-lab:resume'}, and reveal.js's plain 'slide:stop' / 'slide:start'
+// Panel → deck: fresnel-lab:ready {apiVersion, panel, params}; fresnel-lab:changed {source, keys,
+// params} after every change (gathered for CHANGED_MS during a drag); fresnel-lab:state (as before
+// version 1, after get, set and changes not made by the API); fresnel-lab:rendered {frame};
+// fresnel-lab:error {message}; fresnel-lab:key {key} (keys no control used, for a deck's clicker).
 // Anything else is ignored. Nothing from a message is evaluated or inserted as HTML.
 
-/** The message as { kind, params } when it has one of the accepted shapes, else null. */
+export const API_VERSION = 1;
+
+/** How long changes are gathered into one `changed` message (a slider drag sends a few a second). */
+export const CHANGED_MS = 80;
+
+const CONTROL_KINDS = ['lock', 'unlock', 'hide', 'show'];
+const MAX_SNAPSHOT = 4096;
+
+const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
+
+/** keys: absent (all), or a list of up to 64 short strings; anything else is not a message. */
+function keyList(keys) {
+  if (keys === undefined || keys === null) return { ok: true, keys: null };
+  if (!Array.isArray(keys) || keys.length > 64 || !keys.every((k) => typeof k === 'string' && k.length <= 64)) return { ok: false };
+  return { ok: true, keys };
+}
+
+const size = (v) => (v === undefined ? null : Number.isInteger(v) && v >= 1 && v <= MAX_SNAPSHOT ? v : undefined);
+
+/** The message as { kind, … } when it has one of the accepted shapes, else null. */
 export function parseMessage(data) {
-  if (!data || typeof data !== 'object' || Array.isArray(data)) return null;
-  if (data.type === 'fresnel-lab:get') return { kind: 'get' };
-  if (data.type === 'fresnel-lab:set') {
-    const { params } = data;
-    if (!params || typeof params !== 'object' || Array.isArray(params)) return null;
-    return { kind: 'set', params };
+  if (data === 'slide:start') return { kind: 'resume' };
+  if (data === 'slide:stop') return { kind: 'pause' };
+  if (!isObject(data) || typeof data.type !== 'string' || !data.type.startsWith('fresnel-lab:')) return null;
+  const kind = data.type.slice('fresnel-lab:'.length);
+  switch (kind) {
+    case 'get':
+    case 'pause':
+    case 'resume':
+      return { kind };
+    case 'set':
+      return isObject(data.params) ? { kind, params: data.params } : null;
+    case 'reset':
+      if (data.to !== undefined && data.to !== 'start' && data.to !== 'defaults') return null;
+      return { kind, to: data.to ?? 'start' };
+    case 'snapshot': {
+      const width = size(data.width);
+      const height = size(data.height);
+      if (width === undefined || height === undefined) return null;
+      const id = typeof data.id === 'string' || typeof data.id === 'number' ? String(data.id).slice(0, 64) : null;
+      return { kind, width, height, id };
+    }
+    case 'theme':
+      return data.theme === 'light' || data.theme === 'dark' ? { kind, theme: data.theme } : null;
+    case 'projector':
+    case 'reducedMotion':
+      return typeof data.on === 'boolean' ? { kind, on: data.on } : null;
+    default: {
+      if (!CONTROL_KINDS.includes(kind)) return null;
+      const list = keyList(data.keys);
+      return list.ok ? { kind, keys: list.keys } : null;
+    }
   }
-  return null;
 }
 
 /** Plain copy of the values (no prototype, no functions) for posting. */
-function snapshot(values) {
+function plain(values) {
   return JSON.parse(JSON.stringify(values));
 }
 
-export function connectMessages(host, { parent = window.parent } = {}) {
-  // Replies go to whoever asked; announcements only to a real parent (not to ourselves).
-  const post = (target, message) => target?.postMessage(message, '*');
+/**
+ * Connects `host` to the messages of its parent page. origin: the deck's origin from
+ * `?parentOrigin=` (messages go only there and only its messages are heard), or '*'. page: what
+ * the embed page does for the page-wide messages: { theme(scheme), projector(on),
+ * reducedMotion(on), pause(), resume() }.
+ */
+export function connectMessages(host, { parent = window.parent, origin = '*', page = {} } = {}) {
+  const post = (target, message) => target?.postMessage(message, origin);
   const announce = (message) => { if (parent && parent !== window) post(parent, message); };
+  const state = () => ({ type: 'fresnel-lab:state', panel: host.id, params: plain(host.values) });
+
+  async function answer(message, reply) {
+    const say = (m) => post(reply, m);
+    const sayError = (text) => say({ type: 'fresnel-lab:error', panel: host.id, message: text });
+    switch (message.kind) {
+      case 'get':
+        say(state());
+        return;
+      case 'set': {
+        const { rejected } = host.set(message.params, { source: 'api' });
+        if (rejected.length) {
+          sayError(`Rejected ${rejected.map((r) => `${r.key}: ${String(r.raw).slice(0, 40)} ${r.reason}`).join('; ')}`);
+        }
+        say(state());
+        return;
+      }
+      case 'reset':
+        host.reset(message.to);
+        say(state());
+        return;
+      case 'snapshot': {
+        const shot = await host.snapshot({ width: message.width, height: message.height });
+        say({ type: 'fresnel-lab:snapshot', panel: host.id, id: message.id, ...shot });
+        return;
+      }
+      case 'lock':
+      case 'unlock':
+      case 'hide':
+      case 'show': {
+        const unknown = host.controls(message.kind, message.keys);
+        if (unknown.length) sayError(`No such control: ${unknown.map((k) => k.slice(0, 40)).join(', ')}`);
+        return;
+      }
+      default:
+        page[message.kind]?.(message.theme ?? message.on);
+    }
+  }
+
   const onMessage = (event) => {
+    if (origin !== '*' && event.origin !== origin) return;
     const message = parseMessage(event.data);
-    if (!message) return;
-    const reply = event.source ?? parent;
-    if (message.kind === 'get') {
-      post(reply, { type: 'fresnel-lab:state', panel: host.id, params: snapshot(host.values) });
-      return;
-    }
-    const { rejected } = host.set(message.params);
-    if (rejected.length) {
-      const text = rejected.map((r) => `${r.key}: ${String(r.raw).slice(0, 40)} ${r.reason}`).join('; ');
-      post(reply, { type: 'fresnel-lab:error', panel: host.id, message: `Rejected ${text}` });
-    }
-    post(reply, { type: 'fresnel-lab:state', panel: host.id, params: snapshot(host.values) });
+    if (message) answer(message, event.source ?? parent);
   };
   window.addEventListener('message', onMessage);
-  // Changes the deck did not ask for (a control, a drag, the page): the new state, at most once per
-  // animation frame, so a slider drag does not flood the deck.
-  let pending = 0;
-  const stopListening = host.onChange(({ source }) => {
-    if (source === 'api' || pending) return;
-    pending = requestAnimationFrame(() => {
-      pending = 0;
-      announce({ type: 'fresnel-lab:state', panel: host.id, params: snapshot(host.values) });
-    });
+
+  // Every change, gathered for CHANGED_MS per source (a timer, not an animation frame: a frame
+  // off screen or on a hidden slide gets none). Changes the deck did not ask for also send
+  // `state`, as before version 1.
+  const gathered = new Map();
+  let timer = 0;
+  const flush = () => {
+    timer = 0;
+    for (const [source, keys] of gathered) {
+      const params = plain(host.values);
+      announce({ type: 'fresnel-lab:changed', panel: host.id, source, keys: [...keys], params });
+      if (source !== 'api') announce({ type: 'fresnel-lab:state', panel: host.id, params });
+    }
+    gathered.clear();
+  };
+  const stopListening = host.onChange(({ keys, source }) => {
+    if (!gathered.has(source)) gathered.set(source, new Set());
+    keys.forEach((k) => gathered.get(source).add(k));
+    timer ||= setTimeout(flush, CHANGED_MS);
   });
+
+  // Clicker and arrow keys that nothing in the panel used go to the deck, so a presenter's
+  // Page Down still moves the slides after a click in the panel (hakimel/reveal.js#1619).
+  const FORWARDED = ['PageDown', 'PageUp', ' ', 'ArrowLeft', 'ArrowRight', 'ArrowUp', 'ArrowDown', 'Home', 'End'];
+  const onKey = (event) => {
+    if (event.defaultPrevented || !FORWARDED.includes(event.key) || event.ctrlKey || event.metaKey || event.altKey) return;
+    const target = /** @type {HTMLElement} */ (event.target);
+    // A key a panel's canvas or diagram uses is defaultPrevented; form fields use theirs unasked.
+    if (target?.closest?.('input, select, textarea, [contenteditable]')) return;
+    announce({ type: 'fresnel-lab:key', panel: host.id, key: event.key, shiftKey: event.shiftKey });
+  };
+  window.addEventListener('keydown', onKey);
+
   return {
-    ready: () => announce({ type: 'fresnel-lab:ready', panel: host.id, params: snapshot(host.values) }),
+    /** Mounted: ready, then (when the link set any values) what the link changed, as source 'url'. */
+    ready() {
+      const params = plain(host.values);
+      announce({ type: 'fresnel-lab:ready', apiVersion: API_VERSION, panel: host.id, params });
+      if (host.urlKeys?.length) announce({ type: 'fresnel-lab:changed', panel: host.id, source: 'url', keys: host.urlKeys, params });
+    },
     rendered: (frame) => announce({ type: 'fresnel-lab:rendered', panel: host.id, frame }),
     disconnect() {
       window.removeEventListener('message', onMessage);
+      window.removeEventListener('keydown', onKey);
       stopListening();
-      cancelAnimationFrame(pending);
+      clearTimeout(timer);
     },
   };
 }

@@ -24,5 +24,5 @@ export function embedUrl(panel, values) {
 export function embedCode(panel, values, { width = 960, height = 720 } = {}) {
   const escape = (s) => String(s).replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;');
   return `<iframe src="${escape(embedUrl(panel, values))}" width="${width}" height="${height}" `
-    + `style="border:0" loading="lazy" title="${escape(`Fresnel Lab: ${panel.title}`)}" allow="fullscreen"></iframe>`;
+    + `style="border:0" loading="lazy" title="${escape(`Fresnel Lab: ${panel.title}`)}" allow="fullscreen; clipboard-write"></iframe>`;
 }

@@ -12,12 +12,13 @@ export function loadTheme() {
   }
 }
 
-export function applyTheme(theme) {
+/** remember: false for a theme an embed was told to use, which is not the reader's choice. */
+export function applyTheme(theme, { remember = true } = {}) {
   const root = document.documentElement;
   root.dataset.theme = theme.scheme;
   root.classList.toggle('projector', theme.projector);
   try {
-    localStorage.setItem(KEY, JSON.stringify(theme));
+    if (remember) localStorage.setItem(KEY, JSON.stringify(theme));
   } catch {
     // Private mode or a blocked storage: the theme still applies for this visit.
   }

@@ -46,7 +46,10 @@ export function createSphereTrio(canvas, { onChange, onFrame } = {}) {
     });
   };
   const onPointerUp = () => { drag = null; };
+  // The wheel zooms once the reader has picked the view (clicked or tabbed to it) or holds Ctrl:
+  // a page or a notebook scrolled past the canvas keeps scrolling.
   const onWheel = (event) => {
+    if (document.activeElement !== canvas && !event.ctrlKey) return;
     event.preventDefault();
     setView({ distance: view.distance * Math.exp(event.deltaY * 0.001) });
   };

@@ -1,0 +1,53 @@
+// Which of a panel's controls a deck has locked (shown, not editable) or hidden: by the message
+// API (lock, unlock, hide, show) or the embed URL (&lock=nI,nT, &hide=…, &controls=0). The host
+// asks it before applying a change made in the panel, and applies it to the controllers of every
+// mount, so the state outlives a remount.
+import { resolveKey } from './params.js';
+
+/** shell: the panel's frame (its class no-controls hides the whole control column). */
+export function createControlState(schema, shell) {
+  const locked = new Set();
+  const hidden = new Set();
+  let controllers = {};
+
+  function apply() {
+    for (const [key, controller] of Object.entries(controllers)) {
+      controller.enable(!locked.has(key));
+      controller.show(!hidden.has(key));
+    }
+  }
+
+  return {
+    /**
+     * kind: lock, unlock, hide or show; names: keys or aliases, or null for every control (for
+     * hide and show, the whole control column). Returns the names that are not controls.
+     */
+    change(kind, names) {
+      if (names === null && (kind === 'hide' || kind === 'show')) {
+        shell.classList.toggle('no-controls', kind === 'hide');
+        if (kind === 'show') hidden.clear();
+        apply();
+        return [];
+      }
+      const unknown = [];
+      for (const name of names ?? Object.keys(schema)) {
+        const key = resolveKey(schema, name);
+        if (key === undefined) unknown.push(name);
+        else if (kind === 'lock') locked.add(key);
+        else if (kind === 'unlock') locked.delete(key);
+        else if (kind === 'hide') hidden.add(key);
+        else hidden.delete(key);
+      }
+      apply();
+      return unknown;
+    },
+    /** The controllers of this mount ({ key: lil-gui controller }), kept in step from now on. */
+    bind(made) {
+      controllers = made;
+      apply();
+    },
+    isLocked: (key) => locked.has(key),
+    get locked() { return [...locked]; },
+    get hidden() { return [...hidden]; },
+  };
+}
