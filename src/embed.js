@@ -30,6 +30,16 @@ if (options.projector !== null) theme.projector = options.projector;
 applyTheme(theme, { remember: false });
 showNotice(root, 'Some embed options in the link were not usable:', problems.map(describeProblem));
 
+// A deck may leave the slide before the panel's module is here (reveal.js posts 'slide:stop' to
+// the frames of the slide it leaves): remember it, and do not start drawing until 'slide:start'.
+let stoppedEarly = false;
+const early = (event) => {
+  if (options.parentOrigin && event.origin !== options.parentOrigin) return;
+  if (event.data === 'slide:stop') stoppedEarly = true;
+  else if (event.data === 'slide:start') stoppedEarly = false;
+};
+window.addEventListener('message', early);
+
 window.fresnelLab.ready = (async () => {
   const entry = id ? panelEntry(id) : undefined;
   if (!entry) {
@@ -80,7 +90,9 @@ window.fresnelLab.ready = (async () => {
       },
     },
   });
-  host.mount();
+  window.removeEventListener('message', early);
+  paused = stoppedEarly;
+  if (!paused) host.mount();
   messages.ready();
   return host;
 })();
