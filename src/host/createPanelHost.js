@@ -15,6 +15,7 @@ import { copyText, downloadText, downloadUrl, offerForCopy, resizePng, toCsv } f
 import { embedCode, embedUrl, lectureUrl } from './shareLinks.js';
 import { checkInstance } from './panelContract.js';
 import { el } from '../ui/el.js';
+import { cssVar } from '../ui/theme.js';
 
 let nextDescriptionId = 0;
 
@@ -70,6 +71,7 @@ export function createPanelHost(container, panel, {
     link: el('button', '', 'Copy link'),
     embed: el('button', '', 'Copy embed code'),
     png: el('button', '', 'Export PNG'),
+    poster: el('button', '', 'Export poster'),
     csv: el('button', '', 'Export CSV'),
   };
   for (const b of Object.values(buttons)) b.type = 'button';
@@ -119,10 +121,28 @@ export function createPanelHost(container, panel, {
     const url = instance?.png?.();
     if (url) downloadUrl(`fresnel-lab-${panel.id}.png`, url);
   });
+  buttons.poster.addEventListener('click', async () => {
+    const url = await poster();
+    if (url) downloadUrl(`fresnel-lab-${panel.id}-poster.png`, url);
+  });
   buttons.csv.addEventListener('click', () => {
     const table = instance?.csv?.();
     if (table) downloadText(table.filename ?? `fresnel-lab-${panel.id}.csv`, toCsv(table.columns));
   });
+
+  /** The slide-sized poster of this view (makePoster.js): its picture, or its largest canvas (a plot). */
+  async function poster() {
+    if (!instance) return null;
+    const canvases = [...content.querySelectorAll('canvas')].sort((a, b) => b.width * b.height - a.width * a.height);
+    const picture = instance.png?.() ?? canvases[0]?.toDataURL('image/png') ?? null;
+    const { makePoster } = await import('./makePoster.js');
+    return makePoster({
+      picture,
+      title: `Fresnel Lab: ${panel.title.replace(/_([it])\b/g, (_, c) => ({ i: 'ᵢ', t: 'ₜ' })[c])}`,
+      link: lectureUrl(panel, values),
+      colours: { background: cssVar('--bg', '#0d1117'), text: cssVar('--text', '#f0f3f6'), muted: cssVar('--muted', '#c2cad3') },
+    });
+  }
 
   function refreshDescription() {
     description.textContent = instance ? instance.describe() : '';
@@ -307,6 +327,7 @@ export function createPanelHost(container, panel, {
      * The picture as a PNG data URL (fitted into width × height when given; null for a panel
      * without one), the plotted numbers as CSV text, and the values.
      */
+    poster,
     async snapshot({ width = null, height = null } = {}) {
       const url = instance?.png?.() ?? null;
       const table = instance?.csv?.() ?? null;
