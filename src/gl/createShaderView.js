@@ -19,7 +19,8 @@ import { onDemand } from './onDemand.js';
  * reads them from `uniform sampler2D uCache` (texelFetch at gl_FragCoord) and finishes the pixel.
  * The terms are drawn again only when another uniform or the size changes, so a change of a live
  * uniform costs the finishing pass alone. Without float render targets (EXT_color_buffer_float) the
- * fragment is compiled with neither define and does everything in one pass.
+ * fragment is compiled with neither define and does everything in one pass. shaders/keptTerms.glsl
+ * holds the fragment's side of this.
  * @param {HTMLCanvasElement} canvas
  * @param {{ fragment: string, uniforms?: Record<string, { value: any }>, onFrame?: () => void, maxPixels?: number, cache?: { live: string[] } }} options
  */

@@ -138,26 +138,18 @@ vec3 viewDir() {
   return normalize(uForward + ndc.x * uTanHalfFov * aspect * uRight + ndc.y * uTanHalfFov * uUp);
 }
 
-// (A, K) of any pixel; the sky has no specular term.
-vec4 viewTerms(vec3 dir) {
+// (A, K) of this pixel; the sky has no specular term.
+vec4 viewTerms() {
+  vec3 dir = viewDir();
   return dir.y < 0.0 ? roadTerms(dir) : vec4(sky(dir), 0.0);
 }
 
-#ifdef CACHE_PASS
-void main() {
-  fragColor = viewTerms(viewDir());
-}
-#else
-#ifdef CACHED
-uniform sampler2D uCache;
-#endif
+#include <keptTerms>
+
+#ifndef CACHE_PASS
 void main() {
   vec3 dir = viewDir();
-#ifdef CACHED
-  vec4 terms = texelFetch(uCache, ivec2(gl_FragCoord.xy), 0);
-#else
-  vec4 terms = viewTerms(dir);
-#endif
+  vec4 terms = keptTerms();
   // F on the half-vector angle: the microfacets that send the sun to the eye face along H.
   vec3 H = normalize(normalize(uSunDir) - dir);
   float F = uFresnel > 0.5 ? fresnelExact(dot(normalize(uSunDir), H), 1.0, uN) : normalIncidence(1.0, uN);

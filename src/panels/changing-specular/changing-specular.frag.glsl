@@ -33,8 +33,8 @@ vec3 floorAlbedo(vec2 p) {
   return mix(vec3(0.12), tile, grout);
 }
 
-// (rgb: what does not scale with k, the diffuse floor or the sky; a: the lobe) of a pixel.
-vec4 viewTerms(vec3 dir, vec3 camPos) {
+// (rgb: what does not scale with k, the diffuse floor or the sky; a: the lobe) of a ray.
+vec4 termsOf(vec3 dir, vec3 camPos) {
   vec3 L = normalize(uSunDir);
   if (dir.y >= 0.0) {
     float sun = smoothstep(0.9997, 0.9999, dot(dir, L));
@@ -60,24 +60,17 @@ vec3 viewDir(out vec3 camPos) {
   return normalize(forward + ndc.x * uTanHalfFov * aspect * side + ndc.y * uTanHalfFov * up);
 }
 
-#ifdef CACHE_PASS
-void main() {
+vec4 viewTerms() {
   vec3 camPos;
   vec3 dir = viewDir(camPos);
-  fragColor = viewTerms(dir, camPos);
+  return termsOf(dir, camPos);
 }
-#else
-#ifdef CACHED
-uniform sampler2D uCache;
-#endif
+
+#include <keptTerms>
+
+#ifndef CACHE_PASS
 void main() {
-#ifdef CACHED
-  vec4 terms = texelFetch(uCache, ivec2(gl_FragCoord.xy), 0);
-#else
-  vec3 camPos;
-  vec3 dir = viewDir(camPos);
-  vec4 terms = viewTerms(dir, camPos);
-#endif
+  vec4 terms = keptTerms();
   // The light is directional: θ, and so k, is the same at every point of a view.
   float cosTheta = max(normalize(uSunDir).y, 0.0);
   float k = vUv.x >= 0.5 ? fresnelExact(cosTheta, 1.0, uN) : normalIncidence(1.0, uN);

@@ -31,20 +31,11 @@ vec4 viewTerms() {
   return vec4(F * mirrored, -1.0);
 }
 
-#ifdef CACHE_PASS
+#include <keptTerms>
+
+#ifndef CACHE_PASS
 void main() {
-  fragColor = viewTerms();
-}
-#else
-#ifdef CACHED
-uniform sampler2D uCache;
-#endif
-void main() {
-#ifdef CACHED
-  vec4 terms = texelFetch(uCache, ivec2(gl_FragCoord.xy), 0);
-#else
-  vec4 terms = viewTerms();
-#endif
+  vec4 terms = keptTerms();
   vec3 linear = terms.a < 0.0 ? terms.rgb : fresnelExact(terms.a, 1.0, uN) * terms.rgb;
   fragColor = vec4(linearToSrgb(linear), 1.0);
 }

@@ -73,22 +73,17 @@ vec3 skyOf(vec3 d) {
   return d.y >= 0.0 ? sky(d) : sky(reflect(d, vec3(0.0, 1.0, 0.0)));
 }
 
-#ifdef CACHE_PASS
-void main() {
-  fragColor = vec4(skyOf(viewDir()), 1.0);
+vec4 viewTerms() {
+  return vec4(skyOf(viewDir()), 1.0);
 }
-#else
-#ifdef CACHED
-uniform sampler2D uCache;
-#endif
+
+#include <keptTerms>
+
+#ifndef CACHE_PASS
 void main() {
   vec3 d = viewDir();
   vec3 eye = eyePosition();
-#ifdef CACHED
-  vec3 skySeen = texelFetch(uCache, ivec2(gl_FragCoord.xy), 0).rgb;
-#else
-  vec3 skySeen = skyOf(d);
-#endif
+  vec3 skySeen = keptTerms().rgb;
 
   vec3 colour;
   if (d.y >= 0.0) {
