@@ -9,11 +9,16 @@ export function createControlState(schema, shell) {
   const locked = new Set();
   const hidden = new Set();
   let controllers = {};
+  let tied = []; // controls that are not a schema key but change some (a preset, a swap button)
 
   function apply() {
     for (const [key, controller] of Object.entries(controllers)) {
       controller.enable(!locked.has(key));
       controller.show(!hidden.has(key));
+    }
+    for (const { controller, keys } of tied) {
+      controller.enable(!keys.some((k) => locked.has(k)));
+      controller.show(!keys.every((k) => hidden.has(k)));
     }
   }
 
@@ -41,10 +46,21 @@ export function createControlState(schema, shell) {
       apply();
       return unknown;
     },
+    /** A new mount: its controllers come next. */
+    clear() {
+      controllers = {};
+      tied = [];
+    },
     /** The controllers of this mount ({ key: lil-gui controller }), kept in step from now on. */
     bind(made) {
       controllers = made;
       apply();
+    },
+    /** A control that changes `keys`: locked when any of them is, hidden when all of them are. */
+    tie(controller, keys) {
+      tied.push({ controller, keys });
+      apply();
+      return controller;
     },
     isLocked: (key) => locked.has(key),
     get locked() { return [...locked]; },

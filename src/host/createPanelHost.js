@@ -191,10 +191,10 @@ export function createPanelHost(container, panel, {
    * 'page' (the page-wide material).
    */
   function set(update, { source = 'api' } = {}) {
-    // A locked control's value changes only when the deck changes it.
-    const allowed = source === 'api' ? update
-      : Object.fromEntries(Object.entries(update ?? {}).filter(([name]) => !controlState.isLocked(resolveKey(schema, name))));
-    const result = applyParams(schema, values, allowed);
+    // A locked control's value changes only when the deck changes it: a change made in the panel
+    // that touches one (a swap of n_i and n_t with n_t locked) is refused whole.
+    const touchesLocked = source !== 'api' && Object.keys(update ?? {}).some((name) => controlState.isLocked(resolveKey(schema, name)));
+    const result = applyParams(schema, values, touchesLocked ? {} : update);
     if (result.rejected.length) {
       rejectedNotice?.remove();
       rejectedNotice = showNotice(noticeHost, `Some values for the ${panel.title} panel were not usable:`,
@@ -227,6 +227,7 @@ export function createPanelHost(container, panel, {
     gui = createPanelGui(guiHost, `${panel.title}: controls`);
     toolbar.hidden = false;
     controllers = {};
+    controlState.clear();
     try {
       instance = checkInstance(panel.id, mountPanel(content, ctx));
     } catch (error) {
@@ -255,6 +256,7 @@ export function createPanelHost(container, panel, {
       return made;
     },
     set: (update, options) => set(update, { source: 'user', ...options }),
+    tie: (controller, keys) => controlState.tie(controller, keys),
     invalidate() {
       instance?.update([]);
       refreshDescription();

@@ -38,6 +38,8 @@
  * @property {() => void} invalidate  something other than the values changed (a result arrived): update([]) and describe() again
  * @property {import('lil-gui').default} gui  this mount's lil-gui root
  * @property {(folder: import('lil-gui').default | null, keys: string[]) => Record<string, object>} bind
+ * @property {(controller: any, keys: string[]) => any} tie  a control of the panel's own that changes `keys`
+ *   (a preset, a button): a deck's lock or hide of those keys applies to it too; returns the controller
  *   controllers for these schema keys in a folder (or the root)
  * @property {() => void} frameDrawn  call after each WebGL frame (frame counters, `rendered` messages)
  * @property {(material: { id?: string, name?: string, n: number }) => void} applyMaterial  to every panel of the page

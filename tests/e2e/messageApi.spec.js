@@ -65,6 +65,11 @@ test('controls lock, unlock, hide and show, from the link and by message', async
   // A locked value changes only when the deck changes it.
   await inFrame(api, () => window.fresnelLab.hosts.spheres.set({ nT: 2 }, { source: 'user' }));
   expect((await hero(api)).nT).toBe(1.5);
+  // So do the panel's own controls that change it, and a swap that would change it is refused whole.
+  await expect(control('Sphere material')).toHaveClass(/lil-disabled/);
+  await expect(control('Swap n_i')).toHaveClass(/lil-disabled/);
+  await inFrame(api, () => window.fresnelLab.hosts.spheres.set({ nI: 1.5, nT: 1 }, { source: 'user' }));
+  expect(await hero(api)).toMatchObject({ nI: 1, nT: 1.5 });
   await api.send({ type: 'fresnel-lab:set', params: { nT: 2 } });
   await expect.poll(async () => (await hero(api)).nT).toBe(2);
   await api.send({ type: 'fresnel-lab:unlock', keys: ['nT'] });

@@ -127,8 +127,8 @@ export function mount(root, ctx) {
   const gui = ctx.gui;
   ctx.bind(gui, ['theta', 'nI', 'nT']);
   addSwap(ctx, gui);
-  gui.add({ tir: () => ctx.set({ nI: 1.5, nT: 1, theta: 50 }) }, 'tir').name('Glass → air at 50° (TIR)');
-  gui.add({ cancel: () => ctx.set({ nT: values.nI, theta: 90 }) }, 'cancel').name('n_t = n_i at 90° (cancellation)');
+  ctx.tie(gui.add({ tir: () => ctx.set({ nI: 1.5, nT: 1, theta: 50 }) }, 'tir').name('Glass → air at 50° (TIR)'), ['nI', 'nT', 'theta']);
+  ctx.tie(gui.add({ cancel: () => ctx.set({ nT: values.nI, theta: 90 }) }, 'cancel').name('n_t = n_i at 90° (cancellation)'), ['nT', 'theta']);
 
   let curvesKey = '';
   let curves = null;

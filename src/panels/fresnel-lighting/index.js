@@ -103,8 +103,8 @@ export function mount(root, ctx) {
 
   const coat = ctx.gui.addFolder('Coat and comparison');
   ctx.bind(coat, ['nT', 'method', 'weight']);
-  coat.add({ match: () => ctx.set({ weight: Number(normalIncidence(1, values.nT).toFixed(3)) }) }, 'match')
-    .name('Set w = F(0°) (centres match)');
+  ctx.tie(coat.add({ match: () => ctx.set({ weight: Number(normalIncidence(1, values.nT).toFixed(3)) }) }, 'match')
+    .name('Set w = F(0°) (centres match)'), ['weight']);
   ctx.bind(ctx.gui.addFolder('Colours and light'), ['kd', 'ks', 'lightAz', 'lightEl']);
 
   let curves = null;

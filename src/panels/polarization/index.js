@@ -75,8 +75,8 @@ export function mount(root, ctx) {
 
   const folder = ctx.gui.addFolder('Interface and readout');
   ctx.bind(folder, ['nI', 'nT', 'theta']);
-  folder.add({ go: () => ctx.set({ theta: Math.round((brewsterAngle(values.nI, values.nT) / DEG) * 100) / 100 }) }, 'go')
-    .name('Read at the Brewster angle');
+  ctx.tie(folder.add({ go: () => ctx.set({ theta: Math.round((brewsterAngle(values.nI, values.nT) / DEG) * 100) / 100 }) }, 'go')
+    .name('Read at the Brewster angle'), ['theta']);
   addSwap(ctx, folder);
 
   let curves = null;

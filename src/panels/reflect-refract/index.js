@@ -60,8 +60,8 @@ export function mount(root, ctx) {
   const presetState = { material: presets.idFor(values.nT) };
   ctx.bind(ctx.gui.addFolder('View'), ['elevation']);
   const surface = ctx.gui.addFolder('Surface');
-  const preset = surface.add(presetState, 'material', presets.options).name('Material')
-    .onChange((pid) => pid !== 'custom' && ctx.set({ nT: presets.index(pid) }));
+  const preset = ctx.tie(surface.add(presetState, 'material', presets.options).name('Material')
+    .onChange((pid) => pid !== 'custom' && ctx.set({ nT: presets.index(pid) })), ['nT']);
   ctx.bind(surface, ['nT', 'depth']);
   ctx.bind(ctx.gui.addFolder('Picture'), ['layer']);
 

@@ -36,5 +36,5 @@ export function transmittedIndex({ what, nT = 1.5, step = 0.001, aliases }) {
  * @param {import('lil-gui').default} folder
  */
 export function addSwap(ctx, folder, name = 'Swap n_i ↔ n_t') {
-  return folder.add({ swap: () => ctx.set({ nI: ctx.values.nT, nT: ctx.values.nI }) }, 'swap').name(name);
+  return ctx.tie(folder.add({ swap: () => ctx.set({ nI: ctx.values.nT, nT: ctx.values.nI }) }, 'swap').name(name), ['nI', 'nT']);
 }

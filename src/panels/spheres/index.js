@@ -35,10 +35,10 @@ export function mount(root, ctx) {
   const presets = indexPresets();
   const presetState = { matI: presets.idFor(values.nI), matT: presets.idFor(values.nT) };
   const optics = ctx.gui.addFolder('Indices of refraction');
-  const presetI = optics.add(presetState, 'matI', presets.options).name('Incident side')
-    .onChange((pid) => pid !== 'custom' && ctx.set({ nI: presets.index(pid) }));
-  const presetT = optics.add(presetState, 'matT', presets.options).name('Sphere material')
-    .onChange((pid) => pid !== 'custom' && ctx.set({ nT: presets.index(pid) }));
+  const presetI = ctx.tie(optics.add(presetState, 'matI', presets.options).name('Incident side')
+    .onChange((pid) => pid !== 'custom' && ctx.set({ nI: presets.index(pid) })), ['nI']);
+  const presetT = ctx.tie(optics.add(presetState, 'matT', presets.options).name('Sphere material')
+    .onChange((pid) => pid !== 'custom' && ctx.set({ nT: presets.index(pid) })), ['nT']);
   ctx.bind(optics, ['nI', 'nT']);
   addSwap(ctx, optics, 'Swap n_i ↔ n_t (look out of the glass)');
   ctx.bind(ctx.gui.addFolder('Look'), ['kd', 'ks', 'lightAz', 'lightEl', 'env', 'errScale']);
