@@ -3,10 +3,12 @@
 // which fetches nothing in CORS mode without the server's consent).
 import { pathToFileURL } from 'node:url';
 import { resolve } from 'node:path';
+import { test as plain } from '@playwright/test';
 import { test, expect } from './fixtures.js';
 import { PANEL_IDS } from '../../src/panels/manifest.js';
 
 const offline = (file) => pathToFileURL(resolve(import.meta.dirname, '../../dist/offline', file)).href;
+const built = (file) => pathToFileURL(resolve(import.meta.dirname, '../../dist', file)).href;
 
 /** Every URL the page asks for, to show that nothing comes from outside the file. */
 function requests(page) {
@@ -77,4 +79,17 @@ test('the single-file embed works in a sandboxed iframe on a plain static server
   expect(answers.state.params.nT).toBe(1.7);
   expect(answers.frame).toBe(2);
   expect(answers.origins).toEqual(['null', 'null', 'null', 'null']); // an opaque origin: the sandbox held
+});
+
+// Without the fixture: the browser logs its refusals of the module scripts as errors, which is the point.
+plain('the ordinary build opened from disk says which page to open instead', async ({ page }) => {
+  await page.goto(built('index.html'));
+  await expect(page.locator('.needs-server')).toBeVisible();
+  await expect(page.locator('.needs-server')).toContainText('offline/index.html');
+  await page.goto(`${built('embed.html')}?panel=schlick`);
+  await expect(page.locator('.needs-server')).toContainText('offline/embed.html');
+  // Served, and in the single-file pages, the line never shows.
+  await page.goto(offline('index.html'));
+  await page.evaluate(() => window.fresnelLab.ready);
+  await expect(page.locator('.needs-server')).toBeHidden();
 });
