@@ -6,7 +6,7 @@ import './styles.css';
 import { PANEL_IDS, panelEntry } from './panels/manifest.js';
 import { loadPanel } from './panels/loadPanel.js';
 import { createPanelHost } from './host/createPanelHost.js';
-import { connectMessages } from './host/messageApi.js';
+import { connectMessages, parseMessage } from './host/messageApi.js';
 import { readEmbedOptions } from './host/readEmbedOptions.js';
 import { describeProblem } from './host/params.js';
 import { applyTheme, loadTheme } from './ui/theme.js';
@@ -31,12 +31,14 @@ applyTheme(theme, { remember: false });
 showNotice(root, 'Some embed options in the link were not usable:', problems.map(describeProblem));
 
 // A deck may leave the slide before the panel's module is here (reveal.js posts 'slide:stop' to
-// the frames of the slide it leaves): remember it, and do not start drawing until 'slide:start'.
+// the frames of the slide it leaves): remember it, and do not start drawing until it resumes.
 let stoppedEarly = false;
 const early = (event) => {
-  if (options.parentOrigin && event.origin !== options.parentOrigin) return;
-  if (event.data === 'slide:stop') stoppedEarly = true;
-  else if (event.data === 'slide:start') stoppedEarly = false;
+  const { parentOrigin } = options;
+  if (parentOrigin === 'none' || (parentOrigin && event.origin !== parentOrigin)) return;
+  const kind = parseMessage(event.data)?.kind;
+  if (kind === 'pause') stoppedEarly = true;
+  else if (kind === 'resume') stoppedEarly = false;
 };
 window.addEventListener('message', early);
 
@@ -70,29 +72,39 @@ window.fresnelLab.ready = (async () => {
   const unknown = [...host.controls('lock', options.lock), ...host.controls('hide', options.hide)];
   if (!options.controls) host.controls('hide', null);
   showNotice(root, 'Some controls named in the link do not exist:', unknown.map((k) => `${k}: not a control of this panel.`));
-  // Paused (a deck's hidden slide): the view is disposed, which frees its WebGL context; the
-  // values stay with the host, so resuming shows exactly what was there.
-  let paused = false;
+  // The view is shown while the deck has not paused it and the frame is on screen. Paused (a
+  // deck's hidden slide) or off screen for a second (a slide reveal.js preloaded ahead, a page
+  // scrolled past), it is disposed, which frees its WebGL context; the values stay with the host,
+  // so it comes back exactly as it was.
+  let paused = stoppedEarly;
+  let onScreen = true;
+  const show = () => {
+    const wanted = !paused && onScreen;
+    if (wanted && !host.mounted) host.mount();
+    else if (!wanted && host.mounted) host.unmount();
+  };
+  let leaving = 0;
+  if (typeof IntersectionObserver === 'function') new IntersectionObserver((entries) => {
+    clearTimeout(leaving);
+    if (entries.at(-1).isIntersecting) {
+      onScreen = true;
+      show();
+    } else {
+      leaving = setTimeout(() => { onScreen = false; show(); }, 1000);
+    }
+  }).observe(document.documentElement);
   messages = connectMessages(host, {
     origin: options.parentOrigin ?? '*',
     page: {
       theme: (scheme) => applyTheme(Object.assign(theme, { scheme }), { remember: false }),
       projector: (on) => applyTheme(Object.assign(theme, { projector: on }), { remember: false }),
       reducedMotion: (on) => host.setReducedMotion(on),
-      pause() {
-        paused = true;
-        host.unmount();
-      },
-      resume() {
-        if (!paused) return;
-        paused = false;
-        host.mount();
-      },
+      pause() { paused = true; show(); },
+      resume() { paused = false; show(); },
     },
   });
   window.removeEventListener('message', early);
-  paused = stoppedEarly;
-  if (!paused) host.mount();
+  show();
   messages.ready();
   return host;
 })();

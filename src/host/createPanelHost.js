@@ -194,7 +194,7 @@ export function createPanelHost(container, panel, {
     // A locked control's value changes only when the deck changes it: a change made in the panel
     // that touches one (a swap of n_i and n_t with n_t locked) is refused whole.
     const touchesLocked = source !== 'api' && Object.keys(update ?? {}).some((name) => controlState.isLocked(resolveKey(schema, name)));
-    const result = applyParams(schema, values, touchesLocked ? {} : update);
+    const result = { ...applyParams(schema, values, touchesLocked ? {} : update), refused: touchesLocked };
     if (result.rejected.length) {
       rejectedNotice?.remove();
       rejectedNotice = showNotice(noticeHost, `Some values for the ${panel.title} panel were not usable:`,
@@ -264,7 +264,8 @@ export function createPanelHost(container, panel, {
     },
     frameDrawn,
     applyMaterial: (material) => applyMaterial(material),
-    get reducedMotion() { return reducedMotion ?? prefersReducedMotion; },
+    // The reader's own preference always holds; an embed may ask for less motion, never for more.
+    get reducedMotion() { return prefersReducedMotion || reducedMotion === true; },
   };
 
   return {
@@ -301,6 +302,7 @@ export function createPanelHost(container, panel, {
       gui = null;
       toolbar.hidden = true;
       controllers = {};
+      controlState.clear();
       content.replaceChildren();
     },
     set,
@@ -314,7 +316,9 @@ export function createPanelHost(container, panel, {
     urlKeys: Object.keys(schema).filter((key) => start[key] !== schema[key].default),
     /** Back to the link's values ('start') or the schema's defaults ('defaults'), as a change made by the API. */
     reset(to = 'start') {
-      return set(to === 'defaults' ? defaults(schema) : start, { source: 'api' });
+      const target = { ...(to === 'defaults' ? defaults(schema) : start) };
+      if (ctx.reducedMotion && panel.animates) target[panel.animates] = false; // still, as it was started
+      return set(target, { source: 'api' });
     },
     /** lock, unlock, hide or show controls (names, or null for all); returns the unknown names. */
     controls: (kind, names) => controlState.change(kind, names),

@@ -22,16 +22,23 @@ export function downloadText(filename, text, type = 'text/csv') {
   setTimeout(() => URL.revokeObjectURL(url), 1000);
 }
 
+/** An image decoded from a URL (rejects where it cannot be decoded). */
+export async function decodeImage(url) {
+  const image = new Image();
+  image.src = url;
+  await image.decode();
+  return image;
+}
+
 /**
  * A PNG data URL redrawn to fit inside width × height (either may be null: that side follows the
  * aspect ratio; both null: the picture's own size). Resolves { url, width, height }; where the image
  * cannot be decoded (a CSP refusing data: images) the picture as it is, its size unknown (null).
  */
 export async function resizePng(url, width = null, height = null) {
-  const image = new Image();
-  image.src = url;
+  let image;
   try {
-    await image.decode();
+    image = await decodeImage(url);
   } catch {
     return { url, width: null, height: null };
   }

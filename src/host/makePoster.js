@@ -1,7 +1,9 @@
 // "Export poster": for hosts that cannot embed a frame (Google Slides, a printed handout), the
 // panel's picture on a slide-sized PNG with its title, its link printed in full and a QR code of
 // the link, so a slide can link out to the live panel. The QR code comes from qrcode-generator,
-// loaded on the first export.
+// loaded on the first export. A copy opened from disk has a file:// link, which works on that
+// computer only: its poster says so and carries no code.
+import { decodeImage } from './exporters.js';
 
 export const POSTER = { width: 1920, height: 1080, margin: 64 };
 
@@ -36,12 +38,6 @@ export function wrapText(g, text, width) {
   return lines;
 }
 
-function loadImage(url) {
-  const image = new Image();
-  image.src = url;
-  return image.decode().then(() => image);
-}
-
 /**
  * picture: a PNG data URL of the panel (or null); title; link: the lecture URL of this view;
  * colours: { background, text, muted }. Resolves a PNG data URL of POSTER.width × POSTER.height.
@@ -59,13 +55,14 @@ export async function makePoster({ picture, title, link, colours }) {
   g.font = '700 64px system-ui, sans-serif';
   g.fillText(title, margin, margin, width - 2 * margin);
 
-  const matrix = await qrMatrix(link);
-  const qr = qrPlace(matrix.size);
+  const local = link.startsWith('file:');
+  const matrix = local ? null : await qrMatrix(link);
+  const qr = qrPlace(matrix?.size ?? 25);
   // The picture fills the space between the title and the link, keeping its aspect ratio.
   const top = margin + 96;
   const bottom = qr.y - 32;
   if (picture) {
-    const image = await loadImage(picture);
+    const image = await decodeImage(picture);
     const scale = Math.min((width - 2 * margin) / image.naturalWidth, (bottom - top) / image.naturalHeight);
     const w = image.naturalWidth * scale;
     const h = image.naturalHeight * scale;
@@ -74,19 +71,21 @@ export async function makePoster({ picture, title, link, colours }) {
   }
 
   // The QR code, dark modules on white with its quiet zone (readable on a dark slide too).
-  g.fillStyle = '#ffffff';
-  g.fillRect(qr.x, qr.y, qr.side, qr.side);
-  g.fillStyle = '#000000';
-  for (let row = 0; row < matrix.size; row += 1) {
-    for (let col = 0; col < matrix.size; col += 1) {
-      if (matrix.isDark(row, col)) g.fillRect(qr.x + (col + 4) * qr.module, qr.y + (row + 4) * qr.module, qr.module, qr.module);
+  if (matrix) {
+    g.fillStyle = '#ffffff';
+    g.fillRect(qr.x, qr.y, qr.side, qr.side);
+    g.fillStyle = '#000000';
+    for (let row = 0; row < matrix.size; row += 1) {
+      for (let col = 0; col < matrix.size; col += 1) {
+        if (matrix.isDark(row, col)) g.fillRect(qr.x + (col + 4) * qr.module, qr.y + (row + 4) * qr.module, qr.module, qr.module);
+      }
     }
   }
 
-  // The link in full, wrapped at any character so nothing is cut, beside the QR code.
   g.fillStyle = colours.muted;
   g.font = '500 30px system-ui, sans-serif';
-  g.fillText('Explore it live: scan the code or open', margin, qr.y, qr.x - 2 * margin);
+  const lead = local ? 'Opened from disk: this link opens on this computer only' : 'Explore it live: scan the code or open';
+  g.fillText(lead, margin, qr.y, qr.x - 2 * margin);
   // The link in full beside the code, wrapped at any character; a long link takes a smaller type
   // rather than being cut (the code holds all of it either way).
   g.fillStyle = colours.text;

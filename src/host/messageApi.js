@@ -75,12 +75,13 @@ function plain(values) {
 
 /**
  * Connects `host` to the messages of its parent page. origin: the deck's origin from
- * `?parentOrigin=` (messages go only there and only its messages are heard), or '*'. page: what
+ * `?parentOrigin=` (messages go only there and only its messages are heard), 'none' (an unusable
+ * parentOrigin: nothing is posted and nothing heard), or '*'. page: what
  * the embed page does for the page-wide messages: { theme(scheme), projector(on),
  * reducedMotion(on), pause(), resume() }.
  */
 export function connectMessages(host, { parent = window.parent, origin = '*', page = {} } = {}) {
-  const post = (target, message) => target?.postMessage(message, origin);
+  const post = (target, message) => { if (origin !== 'none') target?.postMessage(message, origin); };
   const announce = (message) => { if (parent && parent !== window) post(parent, message); };
   const state = () => ({ type: 'fresnel-lab:state', panel: host.id, params: plain(host.values) });
 
@@ -122,7 +123,7 @@ export function connectMessages(host, { parent = window.parent, origin = '*', pa
   }
 
   const onMessage = (event) => {
-    if (origin !== '*' && event.origin !== origin) return;
+    if (origin === 'none' || (origin !== '*' && event.origin !== origin)) return;
     const message = parseMessage(event.data);
     if (message) answer(message, event.source ?? parent);
   };
@@ -154,8 +155,10 @@ export function connectMessages(host, { parent = window.parent, origin = '*', pa
   const onKey = (event) => {
     if (event.defaultPrevented || !FORWARDED.includes(event.key) || event.ctrlKey || event.metaKey || event.altKey) return;
     const target = /** @type {HTMLElement} */ (event.target);
-    // A key a panel's canvas or diagram uses is defaultPrevented; form fields use theirs unasked.
+    // A key a panel's canvas or diagram uses is defaultPrevented; form fields use theirs unasked,
+    // and Space presses a focused button.
     if (target?.closest?.('input, select, textarea, [contenteditable]')) return;
+    if (event.key === ' ' && target?.closest?.('button, [role="button"], summary, a[href]')) return;
     announce({ type: 'fresnel-lab:key', panel: host.id, key: event.key, shiftKey: event.shiftKey });
   };
   window.addEventListener('keydown', onKey);

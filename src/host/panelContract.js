@@ -31,19 +31,20 @@
  * @typedef {object} PanelContext
  * @property {any} values  the current values, read-only (writing one throws): the host owns them
  * @property {(update: Record<string, any>, options?: { source?: ChangeSource }) =>
- *   { applied: object, rejected: object[], changed: string[] }} set
+ *   { applied: object, rejected: object[], changed: string[], refused: boolean }} set
  *   change values: validated, then controls, URL, picture and messages follow (update(keys) runs).
+ *   refused: the change touched a control a deck has locked, and nothing of it was applied.
  *   Called inside update, the host runs update again with those keys once this one returns;
  *   called during mount (before mount returns), it sets the values and the link only.
  * @property {() => void} invalidate  something other than the values changed (a result arrived): update([]) and describe() again
  * @property {import('lil-gui').default} gui  this mount's lil-gui root
  * @property {(folder: import('lil-gui').default | null, keys: string[]) => Record<string, object>} bind
+ *   controllers for these schema keys in a folder (or the root)
  * @property {(controller: any, keys: string[]) => any} tie  a control of the panel's own that changes `keys`
  *   (a preset, a button): a deck's lock or hide of those keys applies to it too; returns the controller
- *   controllers for these schema keys in a folder (or the root)
  * @property {() => void} frameDrawn  call after each WebGL frame (frame counters, `rendered` messages)
  * @property {(material: { id?: string, name?: string, n: number }) => void} applyMaterial  to every panel of the page
- * @property {boolean} reducedMotion  the reader asked for reduced motion
+ * @property {boolean} reducedMotion  the reader (or the embed's link or deck) asked for reduced motion
  */
 
 /**

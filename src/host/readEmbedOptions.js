@@ -2,7 +2,9 @@
 //   theme=light|dark, projector=1|0, reducedMotion=1|0   override what the browser remembers
 //   lock=nI,nT  hide=nI,nT  controls=0                    controls shown but fixed, hidden, or none
 //   parentOrigin=https://deck.example                     the only origin messages go to and come from
-// A value that cannot be used is named in `problems` and left out.
+// A value that cannot be used is named in `problems` and left out, but for parentOrigin: an
+// author who asked for a restriction gets one, so an unusable origin leaves the panel deaf and
+// mute to every page (`parentOrigin: 'none'`) rather than open to all.
 
 /** These names belong to the embed page, so no panel's schema may use them. */
 export const EMBED_KEYS = ['panel', 'theme', 'projector', 'reducedMotion', 'lock', 'hide', 'controls', 'parentOrigin'];
@@ -10,12 +12,16 @@ export const EMBED_KEYS = ['panel', 'theme', 'projector', 'reducedMotion', 'lock
 const flag = (raw) => (raw === '1' || raw === 'true' ? true : raw === '0' || raw === 'false' ? false : undefined);
 const list = (raw) => raw.split(',').map((k) => k.trim()).filter(Boolean).slice(0, 64);
 
-/** An http(s) origin as written (`https://host[:port]`), or null. */
+/**
+ * The origin of an http(s) URL that names nothing but its origin (`https://Deck.example:443/`
+ * gives `https://deck.example`), or null: a path, a query, a user name or another scheme is not
+ * an origin.
+ */
 export function parseOrigin(raw) {
   try {
     const url = new URL(raw);
-    const origin = raw.replace(/\/$/, '');
-    return /^https?:$/.test(url.protocol) && url.origin === origin ? origin : null;
+    const bare = url.pathname === '/' && !url.search && !url.hash && !url.username && !url.password && !raw.includes('?') && !raw.includes('#');
+    return /^https?:$/.test(url.protocol) && bare ? url.origin : null;
   } catch {
     return null;
   }
@@ -39,8 +45,10 @@ export function readEmbedOptions(search) {
   }
   for (const key of ['lock', 'hide']) if (search.has(key)) options[key] = list(search.get(key));
   if (search.has('parentOrigin')) {
-    options.parentOrigin = parseOrigin(search.get('parentOrigin'));
-    if (!options.parentOrigin) bad('parentOrigin', search.get('parentOrigin'), 'is not an origin like https://deck.example');
+    options.parentOrigin = parseOrigin(search.get('parentOrigin')) ?? 'none';
+    if (options.parentOrigin === 'none') {
+      bad('parentOrigin', search.get('parentOrigin'), 'is not an origin like https://deck.example, so no page may drive this panel');
+    }
   }
   return { options, problems };
 }

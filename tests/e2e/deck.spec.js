@@ -34,6 +34,9 @@ test('stepping through the deck and back loads, pauses and resumes each panel, w
 
   await goTo(page, 1); // the hero, preloaded: it draws while its slide is shown
   await expect.poll(() => mounted(page, 'spheres')).toBe(true);
+  // metals, preloaded two slides ahead and off screen, gives its view and context back.
+  await expect.poll(() => frameOf(page, 'metals')?.evaluate(() => Boolean(window.fresnelLab?.hosts.metals)).catch(() => false) ?? false).toBe(true);
+  await expect.poll(() => mounted(page, 'metals')).toBe(false);
   await frameOf(page, 'spheres').evaluate(() => window.fresnelLab.hosts.spheres.set({ viewAz: 55, nT: 1.9 }));
   const heroPicture = () => frameOf(page, 'spheres').evaluate(() => window.fresnelLab.panels.spheres.png());
   await expect.poll(() => frameOf(page, 'spheres').evaluate(() => window.fresnelLab.hosts.spheres.frames)).toBeGreaterThan(1);

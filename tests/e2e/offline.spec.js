@@ -77,7 +77,7 @@ test('the single-file embed works in a sandboxed iframe on a plain static server
     return { state: await state, frame: (await rendered).frame, origins: seen };
   });
   expect(answers.state.params.nT).toBe(1.7);
-  expect(answers.frame).toBe(2);
+  expect(answers.frame).toBeGreaterThan(1);
   expect(answers.origins).toEqual(['null', 'null', 'null', 'null']); // an opaque origin: the sandbox held
 });
 

@@ -46,15 +46,17 @@ describe('embed options in the URL', () => {
       });
     expect(read('panel=spheres').options).toEqual({ theme: null, projector: null, reducedMotion: null, lock: [], hide: [], controls: true, parentOrigin: null });
   });
-  it('names what it cannot use and leaves it out', () => {
+  it('names what it cannot use and leaves it out; an unusable parentOrigin lets no page in', () => {
     const { options, problems } = read('theme=blue&projector=yes&parentOrigin=javascript:alert(1)');
-    expect(options).toMatchObject({ theme: null, projector: null, parentOrigin: null });
+    expect(options).toMatchObject({ theme: null, projector: null, parentOrigin: 'none' });
     expect(problems.map((p) => p.key)).toEqual(['theme', 'projector', 'parentOrigin']);
   });
-  it('takes only http(s) origins written as origins', () => {
+  it('takes http(s) origins in any spelling of an origin, and nothing else', () => {
     expect(parseOrigin('https://a.example')).toBe('https://a.example');
+    expect(parseOrigin('https://A.Example:443/')).toBe('https://a.example');
     expect(parseOrigin('http://127.0.0.1:5173')).toBe('http://127.0.0.1:5173');
-    for (const raw of ['https://a.example/deck', 'file:///x', 'null', '*', 'a.example', 'https://user@a.example']) expect(parseOrigin(raw)).toBeNull();
+    for (const raw of ['https://a.example/deck', 'https://a.example/?x', 'https://a.example#top', 'file:///x', 'null', '*', 'a.example',
+      'https://user@a.example']) expect(parseOrigin(raw), raw).toBeNull();
   });
   it('no panel uses a name the embed page reads for itself', async () => {
     const { PANELS } = await import('../../src/panels/manifest.js');

@@ -66,10 +66,9 @@ export function mount(root, ctx) {
 
   function update(keys = []) {
     const link = linkUpdate(keys);
-    if (link) {
-      ctx.set(link); // the host runs update again with the followed key: that draws, not this one
-      return;
-    }
+    // The host runs update again with the followed key: that draws, not this one. Where a deck
+    // has locked the other elevation the link cannot hold, and this one draws what there is.
+    if (link && !ctx.set(link).refused) return;
     if (curvesN !== values.nT) {
       curvesN = values.nT;
       curves = peakHighlightCurves(1, values.nT);

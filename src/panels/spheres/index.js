@@ -44,12 +44,16 @@ export function mount(root, ctx) {
   ctx.bind(ctx.gui.addFolder('Look'), ['kd', 'ks', 'lightAz', 'lightEl', 'env', 'errScale']);
   ctx.bind(ctx.gui.addFolder('Camera (or drag / arrow keys on the spheres)').close(), VIEW_KEYS);
 
+  // Only the view keys that moved, so a deck's lock of one (say the distance) leaves the others
+  // free; a refused change puts the camera back where the values say.
   function onViewChange(view) {
-    ctx.set({
+    const next = {
       viewAz: Math.round(view.azimuth * 10) / 10,
       viewEl: Math.round(view.elevation * 10) / 10,
       viewDist: Math.round(view.distance * 100) / 100,
-    });
+    };
+    const moved = Object.fromEntries(Object.entries(next).filter(([key, value]) => value !== values[key]));
+    if (ctx.set(moved).refused) trio.setView({ azimuth: values.viewAz, elevation: values.viewEl, distance: values.viewDist }, { silent: true });
   }
 
   let curvesKey = '';
