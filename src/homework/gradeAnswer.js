@@ -1,0 +1,46 @@
+// Checking one answer, always by recomputing: the question's parameters from the seed, its expected
+// value or true option from the optics core, then the student's answer against them. Nothing a
+// handed-in file says about being right is read.
+import { seededRandom } from './seededRandom.js';
+import { parseAnswer } from './parseAnswer.js';
+
+/** The parameters of `question` for a seed (the same seed, the same numbers). */
+export function questionParams(question, seed) {
+  return question.params(seededRandom(`${seed}:${question.id}`));
+}
+
+/** The option of a choice question that holds for these parameters (exactly one must). */
+export function trueOption(question, params) {
+  const holding = question.options(params).filter((option) => option.holds(params));
+  if (holding.length !== 1) throw new Error(`${question.id}: ${holding.length} options hold for ${JSON.stringify(params)}`);
+  return holding[0];
+}
+
+/**
+ * Grades `answer` (typed text, a number, or an option id) to `question` with `params`. Returns
+ * { answered, correct, expected, value?, tolerance?, unit?, explanation }; an answer that cannot
+ * be read is answered: false with the reason as its explanation.
+ */
+export function gradeAnswer(question, params, answer) {
+  if (question.kind === 'choice') {
+    const right = trueOption(question, params);
+    const chosen = question.options(params).find((option) => option.id === answer);
+    if (!chosen) return { answered: false, correct: false, expected: right.id, explanation: 'No option was chosen.' };
+    return { answered: true, correct: chosen.id === right.id, expected: right.id, explanation: chosen.why(params) };
+  }
+  const expected = question.expected(params);
+  const read = typeof answer === 'number' ? { ok: Number.isFinite(answer), value: answer, reason: 'That is not a number.' }
+    : parseAnswer(answer, question.unit);
+  const base = { expected, tolerance: question.tolerance, unit: question.unit };
+  if (!read.ok) return { ...base, answered: false, correct: false, explanation: read.reason };
+  const off = Math.abs(read.value - expected);
+  // A tiny allowance for the binary form of the typed decimal: 0.0415 is not exactly 0.0415.
+  const correct = off <= question.tolerance * (1 + 1e-9);
+  return {
+    ...base,
+    answered: true,
+    correct,
+    value: read.value,
+    explanation: correct ? 'Within the tolerance.' : `Off by ${off.toPrecision(2)}; the tolerance is ${question.tolerance}.`,
+  };
+}

@@ -1,0 +1,151 @@
+import { describe, expect, it } from 'vitest';
+import { hashSeed, newSeed, seededRandom } from '../../src/homework/seededRandom.js';
+import { parseAnswer } from '../../src/homework/parseAnswer.js';
+import { QUESTIONS, questionById } from '../../src/homework/questions.js';
+import { gradeAnswer, questionParams, trueOption } from '../../src/homework/gradeAnswer.js';
+import { gradeHandIn, readSheet } from '../../src/homework/readSheet.js';
+import { PANEL_IDS } from '../../src/panels/manifest.js';
+import { brewsterAngle, criticalAngle, fresnelExact, normalIncidence } from '../../src/optics/fresnel.js';
+
+const SEEDS = ['alice', 'bob', 'x7k2m9qp', '42', 'élève'];
+
+describe('seeded randomness', () => {
+  it('the same seed gives the same numbers, another seed others', () => {
+    const run = (seed) => Array.from({ length: 8 }, seededRandom(seed).next);
+    expect(run('alice')).toEqual(run('alice'));
+    expect(run('alice')).not.toEqual(run('bob'));
+    for (const x of run('alice')) expect(x >= 0 && x < 1).toBe(true);
+    expect(hashSeed('a')).not.toBe(hashSeed('b'));
+  });
+  it('picks spread over a list, and new seeds differ', () => {
+    const rng = seededRandom('spread');
+    const counts = [0, 0, 0, 0];
+    for (let i = 0; i < 4000; i += 1) counts[rng.pick([0, 1, 2, 3])] += 1;
+    for (const c of counts) expect(c).toBeGreaterThan(850);
+    expect(newSeed()).toMatch(/^[a-z2-9]{8}$/);
+    expect(newSeed()).not.toBe(newSeed());
+  });
+});
+
+describe('typed answers', () => {
+  it('reads numbers with a point or a comma, degrees and percentages', () => {
+    expect(parseAnswer('0.042')).toEqual({ ok: true, value: 0.042 });
+    expect(parseAnswer(' 0,042 ')).toEqual({ ok: true, value: 0.042 });
+    expect(parseAnswer('56.3°', 'deg')).toEqual({ ok: true, value: 56.3 });
+    expect(parseAnswer('56.3 degrees', 'deg')).toEqual({ ok: true, value: 56.3 });
+    expect(parseAnswer('4.2 %', 'fraction').value).toBeCloseTo(0.042, 15);
+    expect(parseAnswer('−0.5').value).toBe(-0.5);
+  });
+  it('refuses what is not a number or carries the wrong unit, with a reason', () => {
+    for (const [text, unit] of [['', null], ['abc', null], ['4 %', 'deg'], ['56 rad', 'deg'], ['0.04°', 'fraction'], ['1.2.3', null]]) {
+      const read = parseAnswer(text, unit);
+      expect(read.ok, text).toBe(false);
+      expect(read.reason.length).toBeGreaterThan(5);
+    }
+  });
+});
+
+describe('the questions', () => {
+  it('cover every central concept, each on a panel of the lecture', () => {
+    for (const q of QUESTIONS) expect(PANEL_IDS, q.id).toContain(q.panel);
+    const panels = new Set(QUESTIONS.map((q) => q.panel));
+    for (const id of ['exact-fresnel', 'schlick', 'angle-ratio', 'polarization', 'r0-derivation', 'metals', 'normal-mips']) expect(panels).toContain(id);
+    for (const kind of ['numeric', 'predict', 'choice']) expect(QUESTIONS.some((q) => q.kind === kind), kind).toBe(true);
+    expect(new Set(QUESTIONS.map((q) => q.id)).size).toBe(QUESTIONS.length);
+  });
+  it('every choice question has exactly one true option for every seed, and every option explains itself', () => {
+    for (const q of QUESTIONS.filter((x) => x.kind === 'choice')) {
+      for (const seed of SEEDS) {
+        const p = questionParams(q, seed);
+        const options = q.options(p);
+        expect(options.filter((o) => o.holds(p)), `${q.id} ${seed}`).toHaveLength(1);
+        for (const o of options) expect(o.why(p).length).toBeGreaterThan(20);
+        expect(q.prompt(p)).not.toContain('undefined');
+      }
+    }
+  });
+  it('numeric answers are the optics core\'s values', () => {
+    const at = (id, seed) => { const q = questionById(id); const p = questionParams(q, seed); return { p, value: q.expected(p) }; };
+    const r = at('exact-r', 'alice');
+    expect(r.value).toBe(fresnelExact(Math.cos((r.p.theta * Math.PI) / 180), 1, r.p.nT));
+    const b = at('brewster-exact', 'bob');
+    expect(b.value).toBeCloseTo((brewsterAngle(b.p.nI, b.p.nT) * 180) / Math.PI, 12);
+    const c = at('critical-angle', 'x7k2m9qp');
+    expect(c.value).toBeCloseTo((criticalAngle(c.p.nI, 1) * 180) / Math.PI, 12);
+    const r0 = at('r0-value', '42');
+    expect(r0.value).toBe(normalIncidence(1, r0.p.nT));
+    // A case worked by hand: glass (1.5) from air, head-on, is 0.04.
+    expect(questionById('r0-value').expected({ nT: 1.5 })).toBeCloseTo(0.04, 15);
+    for (const q of QUESTIONS.filter((x) => x.kind !== 'choice')) {
+      for (const seed of SEEDS) {
+        const p = questionParams(q, seed);
+        expect(Number.isFinite(q.expected(p)), q.id).toBe(true);
+        expect(q.prompt(p)).not.toMatch(/undefined|NaN/);
+      }
+    }
+  });
+  it('each question\'s start state for its panel is valid there', async () => {
+    const { applyParams, defaults } = await import('../../src/host/params.js');
+    for (const q of QUESTIONS) {
+      const { schema } = await import(`../../src/panels/${q.panel}/schema.js`);
+      for (const seed of SEEDS) {
+        const { rejected } = applyParams(schema, defaults(schema), q.state(questionParams(q, seed)));
+        expect(rejected, `${q.id} ${seed}`).toEqual([]);
+      }
+    }
+  });
+  it('two students usually get different numbers; one seed always the same', () => {
+    const q = questionById('exact-r');
+    expect(questionParams(q, 'alice')).toEqual(questionParams(q, 'alice'));
+    const distinct = new Set(Array.from({ length: 20 }, (_, i) => JSON.stringify(questionParams(q, `student-${i}`))));
+    expect(distinct.size).toBeGreaterThan(10);
+  });
+});
+
+describe('grading', () => {
+  it('right within the stated tolerance, wrong outside it, unreadable said so', () => {
+    const q = questionById('exact-r');
+    const p = { theta: 70, nT: 1.33 };
+    const exact = fresnelExact(Math.cos((70 * Math.PI) / 180), 1, 1.33);
+    expect(gradeAnswer(q, p, exact.toFixed(3)).correct).toBe(true);
+    expect(gradeAnswer(q, p, (exact + 0.002).toFixed(3)).correct).toBe(false);
+    expect(gradeAnswer(q, p, `${(exact * 100).toFixed(2)} %`).correct).toBe(true);
+    expect(gradeAnswer(q, p, 'about a tenth')).toMatchObject({ answered: false, correct: false });
+    const choice = questionById('metal-grazing');
+    const cp = questionParams(choice, 'alice');
+    expect(gradeAnswer(choice, cp, trueOption(choice, cp).id).correct).toBe(true);
+    const wrong = gradeAnswer(choice, cp, 'keeps-colour');
+    expect(wrong.correct).toBe(false);
+    expect(wrong.explanation).toMatch(/^No:/);
+  });
+});
+
+describe('sheets and handed-in files', () => {
+  const sheet = { version: 1, title: 'Fresnel, week 3', items: [{ question: 'exact-r' }, { question: 'brewster-exact' }, { question: 'metal-grazing' }] };
+  it('a good sheet reads; malformed ones are refused with reasons', () => {
+    expect(readSheet(sheet)).toMatchObject({ ok: true, sheet: { reveal: 'after-answer' } });
+    for (const bad of [null, [], 'sheet', { ...sheet, version: 2 }, { ...sheet, title: '' }, { ...sheet, items: [] },
+      { ...sheet, items: [{ question: 'nope' }] }, { ...sheet, items: Array(41).fill({ question: 'exact-r' }) }, { ...sheet, reveal: 'never' }]) {
+      const read = readSheet(bad);
+      expect(read.ok).toBe(false);
+      expect(read.problems.length).toBeGreaterThan(0);
+    }
+  });
+  it('a handed-in file is graded by recomputation: a forged "correct" changes nothing', () => {
+    const seed = 'x7k2m9qp';
+    const answers = sheet.items.map(({ question }) => {
+      const q = questionById(question);
+      const p = questionParams(q, seed);
+      return q.kind === 'choice' ? trueOption(q, p).id : q.expected(p).toFixed(4);
+    });
+    expect(gradeHandIn({ version: 1, sheet, seed, answers })).toMatchObject({ ok: true, score: 3, total: 3 });
+    const forged = { version: 1, sheet, seed, answers: ['0.9', { value: '12', correct: true }, 'dark'], score: 3, correct: [true, true, true] };
+    const graded = gradeHandIn(forged);
+    expect(graded).toMatchObject({ ok: true, score: 0, total: 3 });
+    // Another seed means other numbers: the same answers no longer fit.
+    expect(gradeHandIn({ version: 1, sheet, seed: 'someone-else', answers }).score).toBeLessThan(3);
+    for (const bad of [null, { sheet, seed, answers: [] }, { sheet, seed: '', answers }, { sheet: { title: 'x' }, seed, answers }]) {
+      expect(gradeHandIn(bad).ok).toBe(false);
+    }
+  });
+});
