@@ -344,7 +344,7 @@ export function createPanelHost(container, panel, {
         height: png?.height ?? null,
         csv: table ? toCsv(table.columns) : null,
         csvFilename: table ? (table.filename ?? `fresnel-lab-${panel.id}.csv`) : null,
-        params: JSON.parse(JSON.stringify(values)),
+        params: { ...values },
       };
     },
   };

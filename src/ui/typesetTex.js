@@ -13,7 +13,8 @@ export function typesetTex(element, tex, display) {
   if (element.firstElementChild?.classList.contains('katex') || element.firstElementChild?.classList.contains('katex-display')) {
     const fresh = document.createElement(element.tagName);
     katex.render(tex, fresh, options);
-    if (patchTree(element, fresh)) return;
+    if (!patchTree(element, fresh)) element.replaceChildren(...fresh.childNodes); // another shape: the new nodes as built
+    return;
   }
   katex.render(tex, element, options);
 }
