@@ -46,10 +46,13 @@ describe('typed answers', () => {
 });
 
 describe('the questions', () => {
-  it('cover every central concept, each on a panel of the lecture', () => {
+  it('cover every panel of the lecture, the central concepts two or three times', () => {
     for (const q of QUESTIONS) expect(PANEL_IDS, q.id).toContain(q.panel);
-    const panels = new Set(QUESTIONS.map((q) => q.panel));
-    for (const id of ['exact-fresnel', 'schlick', 'angle-ratio', 'polarization', 'r0-derivation', 'metals', 'normal-mips']) expect(panels).toContain(id);
+    const count = (panel) => QUESTIONS.filter((q) => q.panel === panel).length;
+    for (const id of PANEL_IDS) expect(count(id), id).toBeGreaterThan(0);
+    for (const id of ['exact-fresnel', 'schlick', 'polarization', 'metals', 'normal-mips']) expect(count(id), id).toBeGreaterThanOrEqual(2);
+    // The critical angle and R(0°) are asked on two panels each.
+    for (const id of ['critical-angle', 'critical-predict', 'r0-value', 'r0-materials']) expect(questionById(id), id).toBeDefined();
     for (const kind of ['numeric', 'predict', 'choice']) expect(QUESTIONS.some((q) => q.kind === kind), kind).toBe(true);
     expect(new Set(QUESTIONS.map((q) => q.id)).size).toBe(QUESTIONS.length);
   });
@@ -83,6 +86,31 @@ describe('the questions', () => {
         expect(q.prompt(p)).not.toMatch(/undefined|NaN/);
       }
     }
+  });
+  it('a predicted angle is checked against the angle its curve marks', () => {
+    const DEG = Math.PI / 180;
+    for (const q of QUESTIONS.filter((x) => x.kind === 'predict')) {
+      for (const seed of SEEDS) {
+        const p = questionParams(q, seed);
+        const truth = q.expected(p);
+        const { f, level } = q.curve(p);
+        expect(truth > 0 && truth < 90, q.id).toBe(true);
+        if (level !== undefined) expect(f(truth), q.id).toBeCloseTo(level, 9);
+        // Nothing on a 0.01° grid lies higher than a refined maximum.
+        if (q.id === 'schlick-worst') for (let t = 0; t <= 90; t += 0.01) expect(f(t)).toBeLessThanOrEqual(f(truth) + 1e-15);
+      }
+    }
+    const at = (id, p) => questionById(id).expected(p);
+    expect(at('brewster-predict', { nT: 1.5 })).toBeCloseTo(56.3099, 4);
+    expect(questionById('brewster-predict').curve({ nT: 1.5 }).f(at('brewster-predict', { nT: 1.5 }))).toBeLessThan(1e-20);
+    expect(at('critical-predict', { nI: 1.5 })).toBeCloseTo(41.8103, 4);
+    // Equal shares of sky and floor on water happen far out towards grazing (R(80°) is 0.35, R(85°) 0.58).
+    const half = at('split-half', { nT: 1.333 });
+    expect(half > 80 && half < 85).toBe(true);
+    expect(fresnelExact(Math.cos(half * DEG), 1, 1.333)).toBeCloseTo(0.5, 12);
+    expect(at('snell-angle', { theta: 30, nT: 1.5 })).toBeCloseTo(Math.asin(0.5 / 1.5) / DEG, 12);
+    // Toksvig: |N_a| = 0.95, s = 64 gives s/(1 + s(1 − L)/L) = 64/(1 + 64·0.05/0.95).
+    expect(at('toksvig-exponent', { L: 0.95, s: 64 })).toBeCloseTo(64 / (1 + (64 * 0.05) / 0.95), 12);
   });
   it('each question\'s start state for its panel is valid there', async () => {
     const { applyParams, defaults } = await import('../../src/host/params.js');
