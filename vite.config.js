@@ -68,6 +68,7 @@ const singleFile = process.env.FRESNEL_LAB_SINGLE_FILE;
 const pages = {
   index: resolve(root, 'index.html'),
   embed: resolve(root, 'embed.html'),
+  homework: resolve(root, 'homework.html'),
   // An example reveal.js deck with embedded panels (examples/deck.html), shipped with the site.
   deck: resolve(root, 'examples/deck.html'),
   // npm run bench also builds the three.js peer the hero is measured against (not shipped).

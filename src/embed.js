@@ -106,5 +106,12 @@ window.fresnelLab.ready = (async () => {
   window.removeEventListener('message', early);
   show();
   messages.ready();
+  // The content's height, whenever it changes (a panel mounting, projector mode, a notice), so a
+  // host page can size the frame to fit: the homework sheet does, and so can an LMS page.
+  let lastHeight = 0;
+  if (typeof ResizeObserver === 'function') new ResizeObserver(() => {
+    const height = Math.ceil(document.body.scrollHeight);
+    if (height !== lastHeight) messages.size((lastHeight = height));
+  }).observe(document.body);
   return host;
 })();

@@ -6,7 +6,25 @@ import { gradeAnswer, questionParams } from './gradeAnswer.js';
 
 export const SHEET_VERSION = 1;
 const MAX_ITEMS = 40;
+const MAX_STATE_KEYS = 24;
 const text = (v, max) => typeof v === 'string' && v.length > 0 && v.length <= max;
+const plainObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
+
+/**
+ * An item's start state: panel values the question does not set (a view, a roughness). Only its
+ * shape is checked here; the panel checks each value against its schema and says so on screen.
+ */
+function stateProblems(state, where) {
+  if (state === undefined) return [];
+  if (!plainObject(state)) return [`${where}: state must be an object of panel values.`];
+  const entries = Object.entries(state);
+  if (entries.length > MAX_STATE_KEYS) return [`${where}: state holds more than ${MAX_STATE_KEYS} values.`];
+  return entries.flatMap(([key, value]) => {
+    if (!/^[A-Za-z][A-Za-z0-9]{0,31}$/.test(key)) return [`${where}: “${key.slice(0, 32)}” is not a panel value's name.`];
+    const fits = (typeof value === 'number' && Number.isFinite(value)) || typeof value === 'boolean' || text(value, 64);
+    return fits ? [] : [`${where}: ${key} must be a number, true or false, or a short text.`];
+  });
+}
 
 /** { ok: true, sheet } with the sheet's items normalised, or { ok: false, problems: [text] }. */
 export function readSheet(data) {
@@ -19,8 +37,10 @@ export function readSheet(data) {
   } else {
     data.items.forEach((item, i) => {
       if (!questionById(item?.question)) problems.push(`item ${i + 1}: there is no question “${String(item?.question).slice(0, 40)}”.`);
+      else problems.push(...stateProblems(item.state, `item ${i + 1}`));
     });
   }
+  if (data.seed !== undefined && !text(data.seed, 64)) problems.push('seed, where given, must be a text of 1 to 64 characters.');
   if (data.reveal !== undefined && !['after-answer', 'lecturer'].includes(data.reveal)) problems.push('reveal must be after-answer or lecturer.');
   if (problems.length) return { ok: false, problems };
   return {
@@ -29,13 +49,14 @@ export function readSheet(data) {
       version: SHEET_VERSION,
       title: data.title,
       reveal: data.reveal ?? 'after-answer',
-      items: data.items.map((item) => ({ question: item.question })),
+      ...(data.seed === undefined ? {} : { seed: data.seed }),
+      items: data.items.map((item) => ({ question: item.question, ...(item.state ? { state: { ...item.state } } : {}) })),
     },
   };
 }
 
 /**
- * Grades a handed-in file { version, sheet, seed, answers: [answer per item], time } against the
+ * Grades a handed-in file { version, sheet, seed, name, answers: [answer per item], time } against the
  * sheet it names: { ok: true, score, total, results } or { ok: false, problems }. Any "correct" or
  * score the file carries is ignored.
  */
@@ -43,6 +64,7 @@ export function gradeHandIn(data) {
   if (!data || typeof data !== 'object' || Array.isArray(data)) return { ok: false, problems: ['A handed-in file is a JSON object.'] };
   const read = readSheet(data.sheet);
   const problems = read.ok ? [] : read.problems.map((p) => `sheet: ${p}`);
+  if (data.version !== SHEET_VERSION) problems.push(`version must be ${SHEET_VERSION}.`);
   if (!text(data.seed, 64)) problems.push('seed must be a text of 1 to 64 characters.');
   if (!Array.isArray(data.answers) || (read.ok && data.answers.length !== read.sheet.items.length)) problems.push('answers must hold one entry per question.');
   if (problems.length) return { ok: false, problems };
@@ -53,5 +75,7 @@ export function gradeHandIn(data) {
     const answer = typeof raw === 'string' || typeof raw === 'number' ? raw : raw?.value;
     return { question: question.id, params, ...gradeAnswer(question, params, typeof answer === 'string' ? answer.slice(0, 80) : answer) };
   });
-  return { ok: true, title: read.sheet.title, seed: data.seed, score: results.filter((r) => r.correct).length, total: results.length, results };
+  const name = text(data.name, 100) ? data.name : '';
+  const time = text(data.time, 40) && !Number.isNaN(Date.parse(data.time)) ? data.time : null;
+  return { ok: true, title: read.sheet.title, sheet: read.sheet, seed: data.seed, name, time, score: results.filter((r) => r.correct).length, total: results.length, results };
 }

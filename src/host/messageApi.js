@@ -10,7 +10,8 @@
 // Panel → deck: fresnel-lab:ready {apiVersion, panel, params}; fresnel-lab:changed {source, keys,
 // params} after every change (gathered for CHANGED_MS during a drag); fresnel-lab:state (as before
 // version 1, after get, set and changes not made by the API); fresnel-lab:rendered {frame};
-// fresnel-lab:error {message}; fresnel-lab:key {key} (keys no control used, for a deck's clicker).
+// fresnel-lab:error {message}; fresnel-lab:key {key} (keys no control used, for a deck's clicker);
+// fresnel-lab:size {height} (the page's content height in CSS pixels, so a host can fit the frame).
 // Anything else is ignored. Nothing from a message is evaluated or inserted as HTML.
 
 export const API_VERSION = 1;
@@ -171,6 +172,7 @@ export function connectMessages(host, { parent = window.parent, origin = '*', pa
       if (host.urlKeys?.length) announce({ type: 'fresnel-lab:changed', panel: host.id, source: 'url', keys: host.urlKeys, params });
     },
     rendered: (frame) => announce({ type: 'fresnel-lab:rendered', panel: host.id, frame }),
+    size: (height) => announce({ type: 'fresnel-lab:size', panel: host.id, height }),
     disconnect() {
       window.removeEventListener('message', onMessage);
       window.removeEventListener('keydown', onKey);

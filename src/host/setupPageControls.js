@@ -3,7 +3,7 @@
 import { applyTheme, loadTheme } from '../ui/theme.js';
 import { dielectrics } from '../optics/materials.js';
 
-export function setupPageControls(bar, { onMaterial }) {
+export function setupPageControls(bar, { onMaterial = null } = {}) {
   const theme = loadTheme();
   applyTheme(theme);
 
@@ -39,6 +39,8 @@ export function setupPageControls(bar, { onMaterial }) {
   };
   hide.addEventListener('click', toggleControls);
 
-  bar.append(label('Theme ', scheme), label('Projector ', projector), label('Material in every panel ', material), hide);
+  // A page without panels of its own (the homework page, whose panels sit in frames) has no
+  // material or controls to set.
+  bar.append(label('Theme ', scheme), label('Projector ', projector), ...(onMaterial ? [label('Material in every panel ', material), hide] : []));
   return { toggleControls, material };
 }

@@ -1,0 +1,125 @@
+// The lecturer's composer: a title, how answers are revealed, an optional seed shared by the
+// class, and the questions, grouped by panel in lecture order, each with an optional start state
+// (a link copied from the panel). The sheet is read back by readSheet as it is built, so what is
+// offered as a link or a file is exactly what a student's page will accept.
+import { el } from '../../ui/el.js';
+import { setSubscripted } from '../../ui/subscripts.js';
+import { PANELS } from '../../panels/manifest.js';
+import { copyText, downloadText } from '../../host/exporters.js';
+import { QUESTIONS } from '../questions.js';
+import { questionParams } from '../gradeAnswer.js';
+import { readSheet } from '../readSheet.js';
+import { readStartState } from '../readStartState.js';
+import { sheetToCode } from '../sheetCodes.js';
+import { KIND_NAMES } from './formatAnswer.js';
+
+const field = (labelText, control, className = 'hw-field') => {
+  const label = el('label', className);
+  label.append(el('span', null, labelText), control);
+  return label;
+};
+
+/** The page's address for a sheet: homework.html?sheet=CODE. */
+export function sheetUrl(sheet) {
+  const url = new URL('./homework.html', window.location.href);
+  url.search = '';
+  url.searchParams.set('sheet', sheetToCode(sheet));
+  return url.toString();
+}
+
+export function buildComposer(root) {
+  const section = el('section', 'hw-composer');
+  section.setAttribute('aria-labelledby', 'composer-title');
+  const heading = el('h2', null, 'Compose a sheet');
+  heading.id = 'composer-title';
+  const title = el('input');
+  title.type = 'text';
+  title.value = 'Fresnel reflection: homework';
+  title.maxLength = 200;
+  const reveal = el('select');
+  reveal.add(new Option('after each answer (homework)', 'after-answer'));
+  reveal.add(new Option('when the lecturer reveals them (in class)', 'lecturer'));
+  const seed = el('input');
+  seed.type = 'text';
+  seed.maxLength = 64;
+  seed.placeholder = 'empty: each student gets their own numbers';
+  section.append(heading, field('Title', title), field('Answers are shown', reveal), field('One seed for the whole class (optional)', seed));
+
+  const picks = [];
+  for (const panel of PANELS) {
+    const questions = QUESTIONS.filter((q) => q.panel === panel.id);
+    if (!questions.length) continue;
+    const group = el('fieldset', 'hw-pick-group');
+    const legend = el('legend');
+    setSubscripted(legend, panel.title);
+    group.append(legend);
+    for (const question of questions) {
+      const row = el('div', 'hw-pick');
+      const box = el('input');
+      box.type = 'checkbox';
+      box.id = `pick-${question.id}`;
+      const label = el('label');
+      label.htmlFor = box.id;
+      const text = el('span');
+      setSubscripted(text, question.prompt(questionParams(question, 'example')));
+      label.append(el('span', 'hw-kind', KIND_NAMES[question.kind]), ' ', text);
+      const state = el('input');
+      state.type = 'text';
+      state.placeholder = 'a link copied from the panel, or key=value&…';
+      const stateLabel = field('Start state (optional)', state, 'hw-field hw-pick-state');
+      stateLabel.hidden = true;
+      box.addEventListener('change', () => { stateLabel.hidden = !box.checked; update(); });
+      state.addEventListener('input', () => update());
+      row.append(box, label, stateLabel);
+      group.append(row);
+      picks.push({ question, box, state });
+    }
+    section.append(group);
+  }
+
+  const out = el('div', 'hw-composer-out');
+  const problems = el('div', 'hw-problems');
+  problems.setAttribute('role', 'status');
+  const link = el('input');
+  link.type = 'text';
+  link.readOnly = true;
+  const copy = el('button', null, 'Copy the link');
+  copy.type = 'button';
+  const save = el('button', null, 'Save the sheet as a file');
+  save.type = 'button';
+  const open = el('a', 'hw-open', 'Open the sheet');
+  out.append(problems, field('Link for students', link), copy, save, open);
+  section.append(out);
+  root.append(section);
+
+  let current = null;
+  function update() {
+    const itemProblems = [];
+    const items = picks.filter((p) => p.box.checked).map(({ question, state }) => {
+      const read = readStartState(state.value, question.panel);
+      if (!read.ok) itemProblems.push(`${question.id}: ${read.problem}`);
+      return Object.keys(read.state ?? {}).length ? { question: question.id, state: read.state } : { question: question.id };
+    });
+    const draft = { version: 1, title: title.value.trim(), reveal: reveal.value, items, ...(seed.value.trim() ? { seed: seed.value.trim() } : {}) };
+    const read = readSheet(draft);
+    const all = items.length ? [...itemProblems, ...(read.ok ? [] : read.problems)] : ['Pick at least one question.'];
+    current = all.length ? null : read.sheet;
+    problems.replaceChildren(...all.map((p) => el('p', 'hw-problem', p)));
+    link.value = current ? sheetUrl(current) : '';
+    for (const control of [copy, save]) control.disabled = !current;
+    if (current) open.href = link.value;
+    else open.removeAttribute('href');
+    open.setAttribute('aria-disabled', String(!current));
+  }
+  for (const control of [title, seed]) control.addEventListener('input', update);
+  reveal.addEventListener('change', update);
+  copy.addEventListener('click', async () => {
+    link.select();
+    problems.replaceChildren(el('p', null, (await copyText(link.value)) ? 'The link is copied.' : 'Copying was refused here: the link is selected, press Ctrl+C (⌘C).'));
+  });
+  save.addEventListener('click', () => {
+    if (current) downloadText('fresnel-lab-sheet.json', `${JSON.stringify(current, null, 2)}\n`, 'application/json');
+  });
+  update();
+  return { pick: (id) => picks.find((p) => p.question.id === id)?.box, update };
+}

@@ -1,0 +1,123 @@
+// The figure a prediction is made on: θ from 0° to 90° across, with a marker the student drags or
+// moves with the keys (a slider to assistive technology). Before the truth is shown it holds only
+// the axis, so it gives nothing away; shown, it draws the question's curve, the true angle and the
+// prediction beside it, both labelled, and the marker stays where it was committed. SVG, so it is
+// sharp on a projector and needs no WebGL.
+import { el } from '../../ui/el.js';
+
+const NS = 'http://www.w3.org/2000/svg';
+const W = 640;
+const H = 240;
+const PAD = { left: 48, right: 16, top: 20, bottom: 40 };
+const x = (t) => PAD.left + ((W - PAD.left - PAD.right) * t) / 90;
+const svg = (tag, attrs = {}) => {
+  const node = document.createElementNS(NS, tag);
+  for (const [k, v] of Object.entries(attrs)) node.setAttribute(k, String(v));
+  return node;
+};
+
+/**
+ * label: the accessible name of the slider (the question). onChange(value) while it moves.
+ * Returns { element, value(), setValue(v), lock(), showTruth({ curve, truth }), focus() }.
+ */
+export function createPredictFigure({ label, initial = 45, onChange = () => {} }) {
+  const element = el('figure', 'predict-figure');
+  const picture = svg('svg', { viewBox: `0 0 ${W} ${H}`, class: 'predict-svg', 'aria-hidden': 'false' });
+  const axis = svg('g', { class: 'predict-axis', 'aria-hidden': 'true' });
+  const baseline = H - PAD.bottom;
+  axis.append(svg('line', { x1: x(0), x2: x(90), y1: baseline, y2: baseline }));
+  for (let t = 0; t <= 90; t += 15) {
+    axis.append(svg('line', { x1: x(t), x2: x(t), y1: baseline, y2: baseline + 6 }));
+    const tick = svg('text', { x: x(t), y: baseline + 22, 'text-anchor': 'middle' });
+    tick.textContent = `${t}°`;
+    axis.append(tick);
+  }
+  const title = svg('text', { x: x(90), y: baseline + 36, 'text-anchor': 'end', class: 'predict-axis-title' });
+  title.textContent = 'θ from the normal';
+  axis.append(title);
+  const truthLayer = svg('g', { class: 'predict-truth', 'aria-hidden': 'true' });
+  const marker = svg('g', { class: 'predict-marker', tabindex: 0, role: 'slider' });
+  const markerLine = svg('line', { y1: PAD.top, y2: baseline });
+  const knob = svg('circle', { r: 11, cy: baseline });
+  const markerText = svg('text', { y: baseline - 18, 'text-anchor': 'middle' }); // low: the truth is labelled at the top
+  marker.append(markerLine, knob, markerText);
+  marker.setAttribute('aria-label', label);
+  marker.setAttribute('aria-valuemin', '0');
+  marker.setAttribute('aria-valuemax', '90');
+  picture.append(axis, truthLayer, marker);
+  const caption = el('figcaption', 'predict-caption', 'Drag the marker, or focus it and use ←/→ (Shift: 0.1°, Page Up/Down: 10°), then commit.');
+  element.append(picture, caption);
+
+  let value = initial;
+  let locked = false;
+  const draw = () => {
+    const px = x(value);
+    for (const line of [markerLine]) { line.setAttribute('x1', px); line.setAttribute('x2', px); }
+    knob.setAttribute('cx', px);
+    markerText.setAttribute('x', Math.min(Math.max(px, PAD.left + 40), W - PAD.right - 40));
+    markerText.textContent = `${locked ? 'yours: ' : ''}${value.toFixed(1)}°`;
+    marker.setAttribute('aria-valuenow', value.toFixed(1));
+    marker.setAttribute('aria-valuetext', `${value.toFixed(1)} degrees`);
+  };
+  const setValue = (v, notify = true) => {
+    if (locked || !Number.isFinite(v)) return;
+    value = Math.round(Math.min(90, Math.max(0, v)) * 10) / 10;
+    draw();
+    if (notify) onChange(value);
+  };
+  marker.addEventListener('keydown', (event) => {
+    const step = event.shiftKey ? 0.1 : 1;
+    const moves = { ArrowRight: step, ArrowUp: step, ArrowLeft: -step, ArrowDown: -step, PageUp: 10, PageDown: -10 };
+    if (event.key in moves) setValue(value + moves[event.key]);
+    else if (event.key === 'Home') setValue(0);
+    else if (event.key === 'End') setValue(90);
+    else return;
+    event.preventDefault();
+  });
+  const fromPointer = (event) => {
+    const box = picture.getBoundingClientRect();
+    const scale = W / box.width;
+    setValue((((event.clientX - box.left) * scale - PAD.left) / (W - PAD.left - PAD.right)) * 90);
+  };
+  picture.addEventListener('pointerdown', (event) => {
+    if (locked) return;
+    picture.setPointerCapture?.(event.pointerId);
+    fromPointer(event);
+    marker.focus();
+  });
+  picture.addEventListener('pointermove', (event) => { if (!locked && picture.hasPointerCapture?.(event.pointerId)) fromPointer(event); });
+  draw();
+
+  return {
+    element,
+    value: () => value,
+    setValue: (v) => setValue(v, false),
+    focus: () => marker.focus(),
+    lock() {
+      locked = true;
+      marker.setAttribute('aria-disabled', 'true');
+      element.classList.add('locked');
+      caption.textContent = 'Your prediction is committed.';
+      draw();
+    },
+    /** curve: { label, f(θ°), level? }; truth: the true angle in degrees. */
+    showTruth({ curve, truth }) {
+      truthLayer.replaceChildren();
+      const samples = Array.from({ length: 361 }, (_, i) => i / 4);
+      const ys = samples.map(curve.f);
+      const top = Math.max(curve.level ?? 0, ...ys) || 1;
+      const y = (v) => baseline - ((baseline - PAD.top - 14) * v) / top;
+      const path = samples.map((t, i) => `${i ? 'L' : 'M'}${x(t).toFixed(1)},${y(ys[i]).toFixed(1)}`).join('');
+      truthLayer.append(svg('path', { d: path, class: 'predict-curve' }));
+      if (curve.level !== undefined) truthLayer.append(svg('line', { x1: x(0), x2: x(90), y1: y(curve.level), y2: y(curve.level), class: 'predict-level' }));
+      truthLayer.append(svg('line', { x1: x(truth), x2: x(truth), y1: PAD.top, y2: baseline, class: 'predict-true' }));
+      const name = svg('text', { x: x(truth) + (truth > 60 ? -6 : 6), y: PAD.top + 12, 'text-anchor': truth > 60 ? 'end' : 'start', class: 'predict-true-label' });
+      name.textContent = `true: ${truth.toFixed(2)}°`;
+      const curveName = svg('text', { x: PAD.left + 6, y: PAD.top + 30, class: 'predict-curve-label' });
+      curveName.textContent = `${curve.label}${curve.level !== undefined ? ` (line: ${curve.level})` : ''}`;
+      truthLayer.append(name, curveName);
+      element.classList.add('revealed');
+      caption.textContent = `${curve.label} against θ; the true angle is ${truth.toFixed(2)}°, yours ${value.toFixed(1)}°.`;
+    },
+  };
+}

@@ -1,0 +1,20 @@
+// How answers and computed values are printed: the decimals a question asks for (its tolerance is
+// half a unit in that place: "to 3 decimals" is ±0.0005) and one more, so a shown value is never
+// rounder than the check it is held to.
+
+/** Decimals for a value checked at this tolerance (angles: at least two). */
+export function decimalsFor(question) {
+  const digits = Math.max(1, Math.ceil(-Math.log10(2 * question.tolerance) - 1e-9) + 1);
+  return question.unit === 'deg' ? Math.max(2, digits) : digits;
+}
+
+export function formatValue(question, value) {
+  const text = value.toFixed(decimalsFor(question)).replace('-', '−');
+  return question.unit === 'deg' ? `${text}°` : text;
+}
+
+export function formatTolerance(question) {
+  return question.unit === 'deg' ? `${question.tolerance}°` : String(question.tolerance);
+}
+
+export const KIND_NAMES = Object.freeze({ numeric: 'Number', predict: 'Predict, then see', choice: 'Choice' });

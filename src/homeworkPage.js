@@ -1,0 +1,64 @@
+// homework.html: with ?sheet=CODE, the sheet a student works on (showSheet); without one, the
+// lecturer's page: open a sheet file, compose a sheet, check handed-in files. A sheet that cannot
+// be read is refused with its reasons, and the lecturer's page is shown under them.
+import './styles.css';
+import './homework/page/homework.css';
+import { setupPageControls } from './host/setupPageControls.js';
+import { showNotice } from './host/showNotice.js';
+import { el } from './ui/el.js';
+import { readSheet } from './homework/readSheet.js';
+import { sheetFromCode } from './homework/sheetCodes.js';
+import { showSheet } from './homework/page/showSheet.js';
+import { buildComposer, sheetUrl } from './homework/page/buildComposer.js';
+import { buildChecker } from './homework/page/buildChecker.js';
+
+setupPageControls(document.querySelector('.page-controls'), {});
+const root = document.getElementById('homework');
+const search = new URLSearchParams(window.location.search);
+window.fresnelLab = { homework: null };
+
+function lecturerPage() {
+  const intro = el('section', 'hw-intro');
+  intro.append(el('h1', null, 'Homework on the lecture’s panels'),
+    el('p', null, 'Compose a sheet of questions; students open its link, predict and answer on the panels themselves, and hand in a file or a code. Every answer is computed by the lab’s own optics, and checked again here from the seed: no server is involved.'));
+  const openLabel = el('label', 'hw-field');
+  const file = el('input');
+  file.type = 'file';
+  file.accept = '.json,application/json';
+  openLabel.append(el('span', null, 'Open a sheet file'), file);
+  const openStatus = el('div');
+  intro.append(openLabel, openStatus);
+  file.addEventListener('change', async () => {
+    const chosen = file.files[0];
+    if (!chosen) return;
+    let data;
+    try {
+      data = chosen.size > 1_000_000 ? null : JSON.parse(await chosen.text());
+    } catch {
+      data = null;
+    }
+    const read = data === null ? { ok: false, problems: ['This file is not a sheet’s JSON.'] } : readSheet(data);
+    openStatus.replaceChildren();
+    if (read.ok) window.location.assign(sheetUrl(read.sheet));
+    else showNotice(openStatus, `${chosen.name} is not a usable sheet:`, read.problems, { kind: 'error' });
+  });
+  root.append(intro);
+  const composer = buildComposer(root);
+  const checker = buildChecker(root);
+  window.fresnelLab.homework = { composer, checker };
+}
+
+const code = search.get('sheet');
+if (code === null) {
+  lecturerPage();
+} else {
+  const decoded = sheetFromCode(code);
+  const read = decoded.ok ? readSheet(decoded.data) : decoded;
+  if (read.ok) {
+    const seed = search.get('seed')?.trim().slice(0, 64) || null;
+    window.fresnelLab.homework = showSheet(root, { sheet: read.sheet, code, urlSeed: seed });
+  } else {
+    lecturerPage();
+    showNotice(root, 'This sheet link cannot be used:', [...read.problems, 'Ask for the link again, or compose a sheet below.'], { kind: 'error' });
+  }
+}

@@ -1,0 +1,197 @@
+// The homework page: a lecturer composes a sheet, a student predicts and answers on the panels,
+// hands in a file and a code, and the lecturer checks them; lecture mode judges nothing until the
+// lecturer reveals; bad sheets and codes are refused in words; and all of it works from the keys.
+// The expected answers here are worked out independently of the page (Brewster's tan θ = n_t/n_i,
+// the s/p Fresnel equations), from the numbers each student's page prints.
+import { readFileSync, writeFileSync } from 'node:fs';
+import { test, expect } from './fixtures.js';
+
+const DEG = Math.PI / 180;
+const sheetLink = (sheet) => `homework.html?sheet=${Buffer.from(JSON.stringify(sheet)).toString('base64url')}`;
+const SHEET = { version: 1, title: 'Week 3', items: [{ question: 'brewster-predict' }, { question: 'exact-r' }, { question: 'metal-grazing' }] };
+
+/** Unpolarised R from the s and p amplitudes (Hecht, Optics §4.6), written apart from the lab's code. */
+function reflectance(thetaDeg, n1, n2) {
+  const ci = Math.cos(thetaDeg * DEG);
+  const ct = Math.sqrt(1 - ((n1 / n2) * Math.sin(thetaDeg * DEG)) ** 2);
+  const rs = (n1 * ci - n2 * ct) / (n1 * ci + n2 * ct);
+  const rp = (n2 * ci - n1 * ct) / (n2 * ci + n1 * ct);
+  return (rs * rs + rp * rp) / 2;
+}
+const numberAfter = (text, label) => Number(new RegExp(`${label}\\s*=\\s*(\\d+(?:\\.\\d+)?)`).exec(text)[1]);
+const card = (page, n) => page.locator(`#question-${n}`);
+
+/** Presses Tab until the focused element matches `selector` (at most `limit` presses). */
+async function tabTo(page, selector, limit = 400) {
+  for (let i = 0; i < limit; i += 1) {
+    if (await page.evaluate((s) => document.activeElement?.matches(s) ?? false, selector)) return;
+    await page.keyboard.press('Tab');
+  }
+  throw new Error(`Tab never reached ${selector}`);
+}
+
+test('a student predicts, answers right and wrong, hands in, and the file is checked by recomputation', async ({ page }) => {
+  test.setTimeout(180_000);
+  await page.goto('homework.html');
+  await page.getByLabel('Title').fill('Week 3');
+  for (const id of ['brewster-predict', 'exact-r', 'metal-grazing']) await page.locator(`#pick-${id}`).check();
+  const link = await page.getByLabel('Link for students').inputValue();
+  expect(link).toMatch(/homework\.html\?sheet=/);
+  await page.goto(link);
+
+  const seed = await page.locator('.hw-seed').textContent();
+  expect(seed).toMatch(/^[a-z2-9]{8}$/);
+  // 1. Predict: no panel (which would show the answer) until the prediction is committed.
+  const nT = numberAfter(await card(page, 1).locator('.hw-prompt').textContent(), 'n_?t');
+  const brewster = Math.atan(nT) / DEG;
+  await expect(card(page, 1).locator('iframe')).toHaveCount(0);
+  await expect(card(page, 1).locator('.predict-true')).toHaveCount(0);
+  const marker = card(page, 1).getByRole('slider');
+  await marker.focus();
+  await page.keyboard.press('Home');
+  for (let i = 0; i < Math.round(brewster); i += 1) await page.keyboard.press('ArrowRight');
+  await expect(marker).toHaveAttribute('aria-valuenow', Math.round(brewster).toFixed(1));
+  await card(page, 1).getByRole('button', { name: 'Commit prediction' }).click();
+  await expect(card(page, 1).locator('.hw-result')).toHaveText(new RegExp(`^Right\\. The computed answer is ${brewster.toFixed(2)}°`));
+  await expect(card(page, 1).locator('.predict-true')).toHaveCount(1);
+  await expect(card(page, 1).locator('.predict-marker text')).toHaveText(`yours: ${Math.round(brewster).toFixed(1)}°`);
+  await expect(card(page, 1).locator('iframe')).toHaveAttribute('src', new RegExp(`panel=polarization&nI=1&nT=${nT}`));
+
+  // 2. Numeric: wrong first (told how far off, to try again), then right, typed as a percentage.
+  const prompt = await card(page, 2).locator('.hw-prompt').textContent();
+  const R = reflectance(numberAfter(prompt, 'θ'), 1, numberAfter(prompt, 'n_?t'));
+  const field = card(page, 2).getByRole('textbox');
+  await field.fill((R + 0.01).toFixed(3));
+  await field.press('Enter');
+  await expect(card(page, 2).locator('.hw-result')).toHaveText(/^Off by 0\.0(09|10)\d*; the tolerance is 0\.0005\. Try again\.$/);
+  await field.fill(`${(R * 100).toFixed(2)} %`);
+  await card(page, 2).getByRole('button', { name: 'Check' }).click();
+  await expect(card(page, 2).locator('.hw-result')).toHaveText(new RegExp(`^Right\\. The computed answer is ${R.toFixed(4)}`));
+
+  // 3. Choice: the misconception, with the panel's explanation under it.
+  await card(page, 3).getByRole('radio', { name: /keeps its colour/ }).check();
+  await card(page, 3).getByRole('button', { name: 'Check' }).click();
+  await expect(card(page, 3).locator('.hw-result')).toHaveText(/^Not this one/);
+  await expect(card(page, 3).locator('.hw-chosen .hw-why')).toHaveText(/^No: head-on the channels are/);
+
+  // Kept in the browser: a reload brings every answer back.
+  await page.reload();
+  await expect(page.locator('.hw-seed')).toHaveText(seed);
+  await expect(card(page, 2).getByRole('textbox')).toHaveValue(`${(R * 100).toFixed(2)} %`);
+  await expect(card(page, 1).locator('.predict-true')).toHaveCount(1);
+  await expect(card(page, 3).getByRole('radio', { name: /keeps its colour/ })).toBeChecked();
+
+  // Hand in: a file and the same as a code.
+  await page.getByLabel(/Your name/).fill('Ada');
+  const downloading = page.waitForEvent('download');
+  await page.getByRole('button', { name: /^Hand in/ }).click();
+  const download = await downloading;
+  expect(download.suggestedFilename()).toBe(`fresnel-lab-week-3-${seed}.json`);
+  const file = JSON.parse(readFileSync(await download.path(), 'utf8'));
+  expect(file).toMatchObject({ kind: 'fresnel-lab-hand-in', version: 1, seed, name: 'Ada', sheet: { title: 'Week 3' } });
+  expect(file.answers).toEqual([Math.round(brewster), `${(R * 100).toFixed(2)} %`, 'keeps-colour']);
+  await expect(page.locator('.hw-hand-in-status')).toHaveText(/^Handed in at .*: saved as fresnel-lab-week-3-/);
+  const code = await page.getByLabel(/Hand-in code/).inputValue();
+  expect(code).toMatch(/^FLH1\.[A-Za-z0-9_-]+$/);
+
+  // The lecturer checks the file and the code: 2 of 3, recomputed. A file that says it scored 3,
+  // with every answer marked correct, still gets 2.
+  await page.goto('homework.html');
+  const forged = test.info().outputPath('forged.json');
+  writeFileSync(forged, JSON.stringify({ ...file, score: 3, total: 3, answers: file.answers.map((a) => ({ value: a, correct: true })) }));
+  await page.getByLabel('Or choose handed-in files').setInputFiles([await download.path(), forged]);
+  await expect(page.locator('.hw-score')).toHaveCount(2);
+  for (const score of await page.locator('.hw-score').all()) await expect(score).toHaveText(new RegExp(`^Week 3: Ada, seed ${seed}, handed in .*Score 2 of 3, recomputed\\.$`));
+  await page.getByLabel(/Paste a hand-in code/).fill(code);
+  await page.getByRole('button', { name: 'Check the code' }).click();
+  await expect(page.locator('.hw-score')).toHaveText(/Score 2 of 3, recomputed/);
+  const rows = page.locator('.hw-report-table tbody tr');
+  await expect(rows.nth(0).locator('td').last()).toHaveText(/^right: /);
+  await expect(rows.nth(2).locator('td').last()).toHaveText(/^wrong: No:/);
+  await expect(rows.nth(2).locator('td').nth(3)).toHaveText(/Nearly white/);
+});
+
+test('lecture mode judges nothing until the lecturer reveals, one question or all', async ({ page }) => {
+  test.setTimeout(120_000);
+  await page.goto(`${sheetLink({ ...SHEET, reveal: 'lecturer', seed: 'class' })}`);
+  await expect(page.locator('.hw-meta')).toContainText('the same for everyone');
+  await expect(page.getByLabel(/Lecture mode/)).toBeChecked();
+  await card(page, 1).getByRole('button', { name: 'Commit prediction' }).click();
+  await expect(card(page, 1).locator('.hw-result')).toHaveText(/^Answer saved\. The answer is shown when the lecturer reveals it\.$/);
+  await expect(card(page, 1).locator('.predict-true')).toHaveCount(0);
+  await expect(card(page, 1).locator('iframe')).toHaveCount(0);
+  await card(page, 2).getByRole('textbox').fill('0.5');
+  await card(page, 2).getByRole('textbox').press('Enter');
+  await expect(card(page, 2).locator('.hw-result')).toHaveText(/^Answer saved/);
+
+  await card(page, 1).getByRole('button', { name: 'Reveal the answer' }).click();
+  await expect(card(page, 1).locator('.predict-true')).toHaveCount(1);
+  await expect(card(page, 1).locator('.hw-result')).toHaveText(/computed answer is \d+\.\d\d°/);
+  await expect(card(page, 1).locator('iframe')).toHaveCount(1);
+  await expect(card(page, 2).locator('.hw-result')).toHaveText(/^Answer saved/); // the others still wait
+  await page.getByRole('button', { name: 'Reveal every answer' }).click();
+  await expect(card(page, 2).locator('.hw-result')).toHaveText(/^Not within the tolerance: yours 0\.5000\. The computed answer is 0\.\d{4} \(checked within 0\.0005\)\.$/);
+  await expect(card(page, 3).locator('.hw-result')).toHaveText(/^The answer: “Nearly white/);
+  await expect(card(page, 3).locator('.hw-true')).toHaveCount(1);
+  await expect(card(page, 3).locator('.hw-why')).toHaveText([/^No:/, /^Right:/, /^No:/]);
+});
+
+test('bad sheets, links and codes are refused with their reasons, and the page still works', async ({ page }) => {
+  await page.goto('homework.html?sheet=not-a-sheet!');
+  await expect(page.getByRole('alert')).toContainText('This sheet link cannot be used');
+  await expect(page.getByRole('alert')).toContainText('damaged');
+  await expect(page.getByRole('heading', { name: 'Compose a sheet' })).toBeVisible();
+  await page.goto(sheetLink({ version: 1, title: 'x', items: [{ question: 'no-such-question' }, { question: 'exact-r', state: { 'bad key': 1 } }] }));
+  await expect(page.getByRole('alert')).toContainText('item 1: there is no question “no-such-question”');
+  await expect(page.getByRole('alert')).toContainText('item 2: “bad key” is not a panel value');
+  for (const [text, reason] of [['FLH1.@@@', 'damaged'], ['hello', 'neither a handed-in file'], ['{"kind": 1', 'not readable JSON'],
+    [`FLH1.${Buffer.from(JSON.stringify({ version: 1, sheet: SHEET, seed: 'a', answers: [] })).toString('base64url')}`, 'one entry per question']]) {
+    await page.getByLabel(/Paste a hand-in code/).fill(text);
+    await page.getByRole('button', { name: 'Check the code' }).click();
+    await expect(page.locator('.hw-report [role="alert"]'), text).toContainText(reason);
+  }
+  // The composer offers nothing until the sheet is one a student's page accepts.
+  await expect(page.getByText('Pick at least one question.')).toBeVisible();
+  await expect(page.getByRole('button', { name: 'Copy the link' })).toBeDisabled();
+  await page.locator('#pick-exact-r').check();
+  const state = page.locator('.hw-pick', { has: page.locator('#pick-exact-r') }).getByRole('textbox', { name: 'Start state (optional)' });
+  await state.fill('embed.html?panel=schlick&theta=10');
+  await expect(page.getByText('exact-r: This link is for the schlick panel, not exact-fresnel.')).toBeVisible();
+  await state.fill('embed.html?panel=exact-fresnel&theta=10&theme=light');
+  const link = await page.getByLabel('Link for students').inputValue();
+  await page.goto(link);
+  await expect(card(page, 1).locator('iframe')).toHaveAttribute('src', /panel=exact-fresnel&theta=10&nI=1&nT=/);
+});
+
+test('keyboard only: compose, predict, answer and check', async ({ page }) => {
+  test.setTimeout(180_000);
+  await page.goto('homework.html');
+  await page.getByLabel('Title').focus();
+  await tabTo(page, '#pick-critical-predict');
+  await page.keyboard.press('Space');
+  await tabTo(page, '#pick-schlick-inside');
+  await page.keyboard.press('Space');
+  const link = await page.getByLabel('Link for students').inputValue();
+  await page.goto(`${link}&seed=keys`);
+  const nI = numberAfter(await card(page, 1).locator('.hw-prompt').textContent(), 'n_?i');
+  const critical = Math.asin(1 / nI) / DEG;
+  await tabTo(page, '[role="slider"]');
+  await page.keyboard.press('End');
+  for (let i = 0; i < 9; i += 1) await page.keyboard.press('PageDown'); // 90° − 90° = 0°
+  for (let i = 0; i < Math.floor(critical); i += 1) await page.keyboard.press('ArrowUp');
+  await page.keyboard.down('Shift');
+  for (let i = 0; i < Math.round((critical % 1) * 10); i += 1) await page.keyboard.press('ArrowRight');
+  await page.keyboard.up('Shift');
+  await expect(page.getByRole('slider')).toHaveAttribute('aria-valuetext', `${(Math.round(critical * 10) / 10).toFixed(1)} degrees`);
+  await page.keyboard.press('Tab');
+  await page.keyboard.press('Enter');
+  await expect(card(page, 1).locator('.hw-result')).toHaveText(/^Right\./);
+  // The choice: arrows move within the options, Space checks the answer with the focused button.
+  await tabTo(page, '#question-2 input[type="radio"]');
+  await page.keyboard.press('ArrowDown');
+  await expect(card(page, 2).getByRole('radio', { name: /misses total internal reflection/ })).toBeChecked();
+  await page.keyboard.press('Tab');
+  await page.keyboard.press('Space');
+  await expect(card(page, 2).locator('.hw-result')).toHaveText('Right.');
+  await expect(card(page, 2).locator('.hw-why')).toHaveText([/^No:/, /^Right:/]);
+});
