@@ -1,5 +1,5 @@
-// homework.html: with ?sheet=CODE, the sheet a student works on (showSheet); without one, the
-// lecturer's page: open a sheet file, compose a sheet, check handed-in files. A sheet that cannot
+// homework.html: with ?sheet=CODE (or a sheet written into the page, in a SCORM package), the sheet
+// a student works on (showSheet); without one, the lecturer's page: open a sheet file, compose a sheet, check handed-in files. A sheet that cannot
 // be read is refused with its reasons, and the lecturer's page is shown under them.
 import './styles.css';
 import './homework/page/homework.css';
@@ -11,6 +11,7 @@ import { sheetFromCode } from './homework/sheetCodes.js';
 import { showSheet } from './homework/page/showSheet.js';
 import { buildComposer, sheetUrl } from './homework/page/buildComposer.js';
 import { buildChecker } from './homework/page/buildChecker.js';
+import { connectScorm } from './homework/page/connectScorm.js';
 
 setupPageControls(document.querySelector('.page-controls'), {});
 const root = document.getElementById('homework');
@@ -48,7 +49,9 @@ function lecturerPage() {
   window.fresnelLab.homework = { composer, checker };
 }
 
-const code = search.get('sheet');
+// A SCORM package carries its sheet in the page (buildScormPackage.js); a link carries it in ?sheet=.
+const carried = document.getElementById('fresnel-lab-sheet');
+const code = search.get('sheet') ?? carried?.textContent.trim() ?? null;
 if (code === null) {
   lecturerPage();
 } else {
@@ -56,7 +59,8 @@ if (code === null) {
   const read = decoded.ok ? readSheet(decoded.data) : decoded;
   if (read.ok) {
     const seed = search.get('seed')?.trim().slice(0, 64) || null;
-    window.fresnelLab.homework = showSheet(root, { sheet: read.sheet, code, urlSeed: seed });
+    const scorm = carried?.dataset.scorm === '1' ? connectScorm() : null;
+    window.fresnelLab.homework = showSheet(root, { sheet: read.sheet, code, urlSeed: seed, scorm });
   } else {
     lecturerPage();
     showNotice(root, 'This sheet link cannot be used:', [...read.problems, 'Ask for the link again, or compose a sheet below.'], { kind: 'error' });

@@ -16,10 +16,14 @@ export function downloadUrl(filename, url) {
   link.remove();
 }
 
-export function downloadText(filename, text, type = 'text/csv') {
-  const url = URL.createObjectURL(new Blob([text], { type }));
+export function downloadBlob(filename, blob) {
+  const url = URL.createObjectURL(blob);
   downloadUrl(filename, url);
   setTimeout(() => URL.revokeObjectURL(url), 1000);
+}
+
+export function downloadText(filename, text, type = 'text/csv') {
+  downloadBlob(filename, new Blob([text], { type }));
 }
 
 /** An image decoded from a URL (rejects where it cannot be decoded). */

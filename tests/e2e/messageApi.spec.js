@@ -118,6 +118,18 @@ test('theme, projector mode and reduced motion come from the link and from messa
   await expect(bad.frame.locator('.notice')).toContainText('controls=maybe');
 });
 
+test('size tells the deck the content height, again when it changes', async ({ page, baseURL }) => {
+  const api = await embedInDeck(page, baseURL, 'panel=schlick', { height: 300 });
+  // The newest size against the page's height now (the page may still be settling: formulas, plot).
+  const newest = async () => ({ told: (await api.all('fresnel-lab:size')).at(-1)?.height, now: await inFrame(api, () => document.body.scrollHeight) });
+  await expect.poll(async () => { const { told, now } = await newest(); return told === now; }).toBe(true);
+  const first = (await api.all('fresnel-lab:size')).at(-1);
+  expect(first).toMatchObject({ type: 'fresnel-lab:size', panel: 'schlick' });
+  expect(first.height).toBeGreaterThan(300); // taller than its frame: the deck can fit the frame to it
+  await api.send({ type: 'fresnel-lab:projector', on: true }); // larger type: a taller page
+  await expect.poll(async () => { const { told, now } = await newest(); return told === now && told > first.height; }).toBe(true);
+});
+
 test('pause (and reveal.js\'s slide:stop) frees the WebGL context; resume restores the same picture', async ({ page, baseURL }) => {
   const api = await embedInDeck(page, baseURL, 'panel=spheres&viewAz=40&nT=1.8');
   await api.waitFor('fresnel-lab:rendered');

@@ -81,6 +81,23 @@ test('the single-file embed works in a sandboxed iframe on a plain static server
   expect(answers.origins).toEqual(['null', 'null', 'null', 'null']); // an opaque origin: the sandbox held
 });
 
+test('the single-file homework page opened from disk runs a sheet, its panels in frames of the offline embed', async ({ page }) => {
+  const urls = requests(page);
+  const sheet = { version: 1, title: 'From disk', items: [{ question: 'critical-predict' }, { question: 'r0-value' }] };
+  await page.goto(`${offline('homework.html')}?sheet=${Buffer.from(JSON.stringify(sheet)).toString('base64url')}&seed=disk`);
+  await page.locator('#question-1').getByRole('button', { name: 'Commit prediction' }).click();
+  await expect(page.locator('#question-1 .predict-true')).toHaveCount(1);
+  // Each frame grows to fit once its panel is up (the embed's size message, which comes after ready).
+  for (const n of [1, 2]) {
+    const frame = page.locator(`#question-${n} iframe`);
+    await frame.scrollIntoViewIfNeeded();
+    await expect(frame).toHaveAttribute('src', /^file:.*\/offline\/embed\.html\?panel=/);
+    await expect.poll(() => frame.evaluate((f) => f.style.height), { message: `frame ${n}` }).toMatch(/^\d+px$/);
+  }
+  await expect(page.frameLocator('#question-2 iframe').locator('.embed-title')).toHaveText(/R\(0°\)/);
+  expect(fromOutside(urls)).toEqual([]);
+});
+
 // Without the fixture: the browser logs its refusals of the module scripts as errors, which is the point.
 plain('the ordinary build opened from disk says which page to open instead', async ({ page }) => {
   await page.goto(built('index.html'));
@@ -88,6 +105,8 @@ plain('the ordinary build opened from disk says which page to open instead', asy
   await expect(page.locator('.needs-server')).toContainText('offline/index.html');
   await page.goto(`${built('embed.html')}?panel=schlick`);
   await expect(page.locator('.needs-server')).toContainText('offline/embed.html');
+  await page.goto(built('homework.html'));
+  await expect(page.locator('.needs-server')).toContainText('offline/homework.html');
   // Served, and in the single-file pages, the line never shows.
   await page.goto(offline('index.html'));
   await page.evaluate(() => window.fresnelLab.ready);

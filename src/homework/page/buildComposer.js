@@ -5,13 +5,14 @@
 import { el } from '../../ui/el.js';
 import { setSubscripted } from '../../ui/subscripts.js';
 import { PANELS } from '../../panels/manifest.js';
-import { copyText, downloadText } from '../../host/exporters.js';
+import { copyText, downloadBlob, downloadText } from '../../host/exporters.js';
 import { QUESTIONS } from '../questions.js';
 import { questionParams } from '../gradeAnswer.js';
 import { readSheet } from '../readSheet.js';
 import { readStartState } from '../readStartState.js';
 import { sheetToCode } from '../sheetCodes.js';
-import { KIND_NAMES } from './formatAnswer.js';
+import { KIND_NAMES, fileSlug } from './formatAnswer.js';
+import { buildScormPackage } from './buildScormPackage.js';
 
 const field = (labelText, control, className = 'hw-field') => {
   const label = el('label', className);
@@ -88,7 +89,9 @@ export function buildComposer(root) {
   const save = el('button', null, 'Save the sheet as a file');
   save.type = 'button';
   const open = el('a', 'hw-open', 'Open the sheet');
-  out.append(problems, field('Link for students', link), copy, save, open);
+  const scorm = el('button', null, 'Save for an LMS (SCORM 1.2 zip)');
+  scorm.type = 'button';
+  out.append(problems, field('Link for students', link), copy, save, scorm, open);
   section.append(out);
   root.append(section);
 
@@ -106,7 +109,7 @@ export function buildComposer(root) {
     current = all.length ? null : read.sheet;
     problems.replaceChildren(...all.map((p) => el('p', 'hw-problem', p)));
     link.value = current ? sheetUrl(current) : '';
-    for (const control of [copy, save]) control.disabled = !current;
+    for (const control of [copy, save, scorm]) control.disabled = !current;
     if (current) open.href = link.value;
     else open.removeAttribute('href');
     open.setAttribute('aria-disabled', String(!current));
@@ -119,6 +122,21 @@ export function buildComposer(root) {
   });
   save.addEventListener('click', () => {
     if (current) downloadText('fresnel-lab-sheet.json', `${JSON.stringify(current, null, 2)}\n`, 'application/json');
+  });
+  scorm.addEventListener('click', async () => {
+    if (!current) return;
+    const sheet = current;
+    scorm.disabled = true;
+    problems.replaceChildren(el('p', null, 'Making the package…'));
+    try {
+      const blob = await buildScormPackage(sheet);
+      downloadBlob(`fresnel-lab-${fileSlug(sheet.title)}-scorm12.zip`, blob);
+      problems.replaceChildren(el('p', null, `The package is saved (${Math.round(blob.size / 1024)} kB): import it into the LMS as a SCORM package; the score of each hand-in goes to its gradebook.`));
+    } catch (error) {
+      problems.replaceChildren(el('p', 'hw-problem', error.message));
+    } finally {
+      scorm.disabled = !current;
+    }
   });
   update();
   return { pick: (id) => picks.find((p) => p.question.id === id)?.box, update };

@@ -18,3 +18,6 @@ export function formatTolerance(question) {
 }
 
 export const KIND_NAMES = Object.freeze({ numeric: 'Number', predict: 'Predict, then see', choice: 'Choice' });
+
+/** A piece of a file name: lower-case letters, digits and dashes (accents dropped). */
+export const fileSlug = (text) => String(text).toLowerCase().normalize('NFKD').replace(/[^a-z0-9]+/g, '-').replace(/^-|-$/g, '').slice(0, 40) || 'sheet';

@@ -8,10 +8,11 @@ import { questionById } from '../questions.js';
 import { questionParams } from '../gradeAnswer.js';
 import { newSeed } from '../seededRandom.js';
 import { handInToCode, makeHandIn } from '../sheetCodes.js';
+import { gradeHandIn } from '../readSheet.js';
 import { openAnswerStore } from './answerStore.js';
 import { buildQuestionCard } from './buildQuestionCard.js';
+import { fileSlug } from './formatAnswer.js';
 
-const slug = (text) => text.toLowerCase().normalize('NFKD').replace(/[^a-z0-9]+/g, '-').replace(/^-|-$/g, '').slice(0, 40) || 'sheet';
 
 function button(text, className) {
   const b = el('button', className, text);
@@ -19,19 +20,33 @@ function button(text, className) {
   return b;
 }
 
-/** sheet: read by readSheet; code: its link code (the storage key); urlSeed: ?seed= or null. */
-export function showSheet(root, { sheet, code, urlSeed }) {
+/**
+ * sheet: read by readSheet; code: its link code (the storage key); urlSeed: ?seed= or null;
+ * scorm: the LMS connection (connectScorm.js) or null.
+ */
+export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
   document.title = `${sheet.title}: Fresnel Lab homework`;
   const store = openAnswerStore(code, sheet.items.length, newSeed);
   const { work } = store;
-  const seed = sheet.seed ?? urlSeed ?? work.seed;
-  if (!sheet.seed && !urlSeed) store.save();
+  const lmsSeed = scorm?.learner.id ? `lms-${scorm.learner.id}`.slice(0, 64) : null;
+  const seed = sheet.seed ?? urlSeed ?? lmsSeed ?? work.seed;
+  if (scorm) {
+    // The LMS's copy of the answers wins: it follows the learner from one computer to another.
+    const resumed = scorm.resume?.answers;
+    if (Array.isArray(resumed) && resumed.length === work.answers.length) {
+      resumed.forEach((a, i) => { work.answers[i] = typeof a === 'string' || typeof a === 'number' ? a : null; });
+    }
+    if (!work.name && scorm.learner.name) work.name = scorm.learner.name.slice(0, 100);
+  }
+  store.save();
+  const keep = () => { store.save(); scorm?.save({ answers: work.answers }); };
 
   const head = el('header', 'hw-sheet-head');
   const title = el('h1', null, sheet.title);
   const seedLine = el('p', 'hw-meta');
-  seedLine.append('Your numbers come from the seed ', el('code', 'hw-seed', seed),
-    sheet.seed ? ' (the same for everyone on this sheet).' : urlSeed ? ' given in the link.' : ': the same seed gives the same numbers again, and your hand-in carries it.');
+  const seedSource = sheet.seed ? ' (the same for everyone on this sheet).' : urlSeed ? ' given in the link.'
+    : lmsSeed ? ', from your course account: the same numbers wherever you open it.' : ': the same seed gives the same numbers again, and your hand-in carries it.';
+  seedLine.append('Your numbers come from the seed ', el('code', 'hw-seed', seed), seedSource);
   const nameLabel = el('label', 'hw-field hw-name');
   const name = el('input');
   name.type = 'text';
@@ -47,7 +62,8 @@ export function showSheet(root, { sheet, code, urlSeed }) {
   lectureLabel.append(lectureBox, ' Lecture mode: answers stay hidden until revealed');
   const revealAll = button('Reveal every answer', 'hw-reveal-all');
   head.append(title, seedLine, nameLabel, lectureLabel, revealAll);
-  if (!store.kept()) {
+  if (scorm) head.append(el('p', 'hw-meta', 'This sheet is part of your course: handing in sends your score to its gradebook.'));
+  if (!store.kept() && !scorm) {
     head.append(el('p', 'notice notice-warning', 'This browser does not let the page keep your answers: hand in before you close it.'));
   }
   root.append(head);
@@ -62,7 +78,7 @@ export function showSheet(root, { sheet, code, urlSeed }) {
       params: questionParams(question, seed),
       saved: work.answers[i],
       lecture,
-      onAnswer: (answer) => { work.answers[i] = answer; store.save(); },
+      onAnswer: (answer) => { work.answers[i] = answer; keep(); },
     });
     const reveal = button('Reveal the answer', 'hw-reveal');
     reveal.addEventListener('click', () => { card.reveal(); reveal.disabled = true; });
@@ -98,13 +114,19 @@ export function showSheet(root, { sheet, code, urlSeed }) {
 
   send.addEventListener('click', () => {
     const record = makeHandIn({ sheet, seed, name: work.name.trim(), answers: cards.map(({ card }) => card.answer()) });
-    const filename = `fresnel-lab-${slug(sheet.title)}-${slug(seed)}.json`;
+    const filename = `fresnel-lab-${fileSlug(sheet.title)}-${fileSlug(seed)}.json`;
     downloadText(filename, `${JSON.stringify(record, null, 2)}\n`, 'application/json');
     codeField.value = handInToCode(record);
     codeLabel.hidden = false;
     copy.hidden = false;
     const open = record.answers.filter((a) => a === null).length;
-    status.textContent = `Handed in at ${new Date(record.time).toLocaleTimeString()}: saved as ${filename}.${open ? ` ${open} of ${record.answers.length} questions have no answer.` : ''}`;
+    let sent = '';
+    if (scorm) {
+      const graded = gradeHandIn(record); // the same recomputation the lecturer's check does
+      scorm.report(graded.score, graded.total);
+      sent = ` Your score, ${graded.score} of ${graded.total}, went to the course's gradebook.`;
+    }
+    status.textContent = `Handed in at ${new Date(record.time).toLocaleTimeString()}: saved as ${filename}.${open ? ` ${open} of ${record.answers.length} questions have no answer.` : ''}${sent}`;
   });
   copy.addEventListener('click', async () => {
     codeField.select();
