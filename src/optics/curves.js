@@ -3,6 +3,7 @@ import {
   brewsterAngle, criticalAngle, fresnelExact, fresnelPolarized, fresnelSchlick,
 } from './fresnel.js';
 import { cosDeg, DEG } from './angles.js';
+import { refinedMax } from './refinedMax.js';
 
 
 /** θ in degrees from 0 to 90 in `count` steps, with the critical and Brewster angles inserted
@@ -37,11 +38,12 @@ export function reflectanceCurves(nI, nT, count = 361) {
   return { theta, exact, schlick, s, p, error };
 }
 
-/** Largest |exact − Schlick| over the sampled curve and the angle (degrees) where it occurs. */
-export function maxError({ theta, error }) {
-  let at = 0;
-  for (let i = 1; i < error.length; i += 1) if (error[i] > error[at]) at = i;
-  return { value: error[at], theta: theta[at] };
+/**
+ * Largest |exact − Schlick| for nI → nT and the angle (degrees) where it occurs: the sampled
+ * curve's largest, refined between its neighbours (refinedMax.js).
+ */
+export function maxError({ theta, error }, nI, nT) {
+  return refinedMax(theta, error, (t) => Math.abs(fresnelExact(cosDeg(t), nI, nT) - fresnelSchlick(cosDeg(t), nI, nT)));
 }
 
 /** A round number at or above x on the 1-2-5 ladder, for a legend's top value. */

@@ -4,6 +4,7 @@
 // (rising from F0 to 1 monotonically) cannot show. Every value comes from fresnel.js.
 import { conductorNormalIncidence, fresnelConductor, fresnelSchlick } from './fresnel.js';
 import { cosDeg } from './angles.js';
+import { refinedMax } from './refinedMax.js';
 
 export const CHANNELS = Object.freeze(['red', 'green', 'blue']);
 
@@ -49,23 +50,21 @@ export function metalCurves(metal, count = 361) {
 }
 
 /**
- * Per channel: F0, the largest |exact − Schlick| and its angle, and the lowest exact value with
- * its angle; `dip` is how far that lowest value lies below F0 (0 when the curve never drops).
+ * Per channel of `metal` (the one the curves are of): F0, the largest |exact − Schlick| and its
+ * angle, and the lowest exact value with its angle, each refined off the grid (refinedMax.js);
+ * `dip` is how far that lowest value lies below F0 (0 when the curve never drops).
  */
-export function metalCurveStats({ theta, f0, exact, error }) {
+export function metalCurveStats({ theta, f0, exact, error }, metal) {
   return CHANNELS.map((name, ch) => {
-    let worst = 0;
-    let lowest = 0;
-    for (let i = 1; i < theta.length; i += 1) {
-      if (error[ch][i] > error[ch][worst]) worst = i;
-      if (exact[ch][i] < exact[ch][lowest]) lowest = i;
-    }
+    const F = (t) => fresnelConductor(cosDeg(t), metal.n[ch], metal.k[ch]);
+    const worst = refinedMax(theta, error[ch], (t) => Math.abs(F(t) - schlickForF0(cosDeg(t), f0[ch])));
+    const low = refinedMax(theta, exact[ch].map((v) => -v), (t) => -F(t));
     return {
       channel: name,
       f0: f0[ch],
-      maxError: { value: error[ch][worst], theta: theta[worst] },
-      minimum: { value: exact[ch][lowest], theta: theta[lowest] },
-      dip: Math.max(0, f0[ch] - exact[ch][lowest]),
+      maxError: worst,
+      minimum: { value: -low.value, theta: low.theta },
+      dip: Math.max(0, f0[ch] - -low.value),
     };
   });
 }

@@ -3,6 +3,7 @@
 import { criticalAngle, fresnelExact, fresnelSchlick, fresnelSchlickTIR } from './fresnel.js';
 import { sampleAngles } from './curves.js';
 import { cosDeg, DEG } from './angles.js';
+import { refinedMax } from './refinedMax.js';
 
 
 /**
@@ -22,8 +23,12 @@ export function comparisonAngles(nI, nT, count = 721) {
   return [...new Set(angles)].sort((a, b) => a - b);
 }
 
-/** Largest value of `errors` and the angle (degrees) where it occurs (the first, on a tie). */
-export function maxAbsError(theta, errors) {
+/**
+ * Largest value of `errors` and the angle (degrees) where it occurs (the first, on a tie),
+ * refined with `f`, the error as a function of θ in degrees, where given (refinedMax.js).
+ */
+export function maxAbsError(theta, errors, f = null) {
+  if (f) return refinedMax(theta, errors, f);
   let at = 0;
   for (let i = 1; i < errors.length; i += 1) if (errors[i] > errors[at]) at = i;
   return { value: errors[at], theta: theta[at] };
@@ -56,7 +61,7 @@ export function schlickComparison(nI, nT, count = 721) {
   return {
     theta, exact, schlick, schlickT, error, errorT,
     critical: critical === null ? null : critical / DEG,
-    worst: maxAbsError(theta, error),
-    worstT: maxAbsError(theta, errorT),
+    worst: maxAbsError(theta, error, (t) => Math.abs(fresnelExact(cosDeg(t), nI, nT) - fresnelSchlick(cosDeg(t), nI, nT))),
+    worstT: maxAbsError(theta, errorT, (t) => Math.abs(fresnelExact(cosDeg(t), nI, nT) - fresnelSchlickTIR(cosDeg(t), nI, nT))),
   };
 }

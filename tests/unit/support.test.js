@@ -2,6 +2,8 @@ import { describe, expect, it } from 'vitest';
 import { readFileSync, readdirSync } from 'node:fs';
 import { resolveIncludes } from '../../src/gl/resolveIncludes.js';
 import { maxError, niceCeil, reflectanceCurves, sampleAngles } from '../../src/optics/curves.js';
+import { goldenMax } from '../../src/optics/refinedMax.js';
+import { fresnelExact, fresnelSchlick } from '../../src/optics/fresnel.js';
 import { dielectrics, dielectricById, metals, metalById, metalF0, dielectricSummary } from '../../src/optics/materials.js';
 import { colormap, COLORMAP_STOPS } from '../../src/ui/colormap.js';
 import { toCsv } from '../../src/host/exporters.js';
@@ -45,10 +47,25 @@ describe('curves for the plot', () => {
     const curves = reflectanceCurves(1, 1.5);
     expect(curves.exact[0]).toBeCloseTo(0.04, 15);
     expect(curves.exact.at(-1)).toBe(1);
-    const worst = maxError(curves);
+    const worst = maxError(curves, 1, 1.5);
     expect(worst.value).toBeCloseTo(0.0357, 3);
     expect(worst.theta).toBeGreaterThan(84);
-    expect(maxError(reflectanceCurves(1.5, 1)).value).toBeGreaterThan(0.95); // Schlick misses TIR
+    expect(maxError(reflectanceCurves(1.5, 1), 1.5, 1).value).toBeGreaterThan(0.95); // Schlick misses TIR
+  });
+  it('refine the worst error off the grid, so both digits after the point hold', () => {
+    // n_t = 1.75: the 0.25° grid's best sample is 85.50°; the maximum is at 85.4592° (a 1e-4° scan).
+    const curves = reflectanceCurves(1, 1.75);
+    let at = 0;
+    curves.error.forEach((e, i) => { if (e > curves.error[at]) at = i; });
+    expect(curves.theta[at]).toBe(85.5);
+    const worst = maxError(curves, 1, 1.75);
+    expect(worst.theta.toFixed(2)).toBe('85.46');
+    const f = (t) => Math.abs(fresnelExact(Math.cos((t * Math.PI) / 180), 1, 1.75) - fresnelSchlick(Math.cos((t * Math.PI) / 180), 1, 1.75));
+    for (let t = 84; t <= 87; t += 1e-3) expect(f(t)).toBeLessThanOrEqual(worst.value + 1e-16);
+    // Glass to air: Schlick's worst is at the critical angle, a kink, which is found exactly.
+    const tir = maxError(reflectanceCurves(1.5, 1), 1.5, 1);
+    expect(tir.theta).toBeCloseTo((Math.asin(1 / 1.5) * 180) / Math.PI, 6);
+    expect(goldenMax((t) => -((t - 0.3) ** 2), 0, 1)).toBeCloseTo(0.3, 9);
   });
   it('round a legend top up on the 1-2-5 ladder', () => {
     expect(niceCeil(0.0357)).toBeCloseTo(0.05, 15);

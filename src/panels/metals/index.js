@@ -69,7 +69,7 @@ export function mount(root, ctx) {
     if (curvesFor !== metal.id) {
       curvesFor = metal.id;
       curves = metalCurves(metal);
-      stats = metalCurveStats(curves);
+      stats = metalCurveStats(curves, metal);
       plot.setData([curves.theta, ...curves.exact, ...curves.schlick]);
       // Where each channel's exact curve is lowest, when that is visibly below F0.
       plot.setMarks(stats.filter((s) => s.dip > 0.002).map((s) => ({

@@ -67,7 +67,7 @@ export function mount(root, ctx) {
     if (key !== curvesKey) {
       curvesKey = key;
       curves = reflectanceCurves(nI, nT);
-      worst = maxError(curves);
+      worst = maxError(curves, nI, nT);
       const critical = criticalAngle(nI, nT);
       const brewster = brewsterAngle(nI, nT) / DEG;
       plot.setCurves(curves, { brewster, critical: critical === null ? null : critical / DEG });
