@@ -12,6 +12,7 @@ import { ANGLES, INDICES, deg, fixed } from './questionParts.js';
 
 /** A hair above 1, as interpolated normals give; it survives rounding to float32 (1 + 2⁻²³). */
 const COS_ABOVE_ONE = 1.0000001;
+const codesText = (codes) => (codes < 0.005 ? 'less than 0.01 codes' : `${fixed(codes, 2)} codes`);
 
 export const FRESNEL_QUESTIONS = [
   {
@@ -187,17 +188,19 @@ export const FRESNEL_QUESTIONS = [
     prompt: () => 'Light from air onto plastic, paint or skin (n from 1.3 to 1.7), at display white on an 8-bit sRGB screen: can anyone see that Schlick’s pow(1 − c, 5) is not the exact R (is any pixel off by more than half a display code)?',
     options: () => {
       const worst = () => methodError(sceneById('plastic'), methodById('schlick-pow'));
-      const where = () => `${fixed(worst().maxCodes, 1)} codes at worst, at θ = ${fixed(deg(worst().thetaAtMax), 1)}°`;
+      // The worst is over every index of the scene on a 0.05° grid: near a smooth maximum that is
+      // good to far better than the one decimal shown (the error is flat there).
+      const where = () => `${fixed(worst().maxCodes, 1)} codes at worst, near grazing (${fixed(deg(worst().thetaAtMax), 0)}°)`;
       return [
         {
           id: 'invisible', text: () => 'No: engines ship Schlick, so its error must be invisible.',
           holds: () => worst().maxCodes <= 0.5,
-          why: () => `No: it is off by ${where()}, near grazing. Engines accept that (a few per cent of the range); it is a judgement, not invisibility.`,
+          why: () => `No: it is off by ${where()}. Engines accept that (a few per cent of the range); it is a judgement, not invisibility.`,
         },
         {
           id: 'visible', text: () => 'Yes: near grazing its error shows, by several codes at worst.',
           holds: () => worst().maxCodes > 0.5,
-          why: () => `Right: ${where()}. The exact c/g form stays under half a code; the panel weighs that against what each method costs on this device.`,
+          why: () => `Right: ${where()}. The exact c/g form is off by ${codesText(methodError(sceneById('plastic'), methodById('exact-cg')).maxCodes)} at worst; the panel weighs that against what each method costs on this device.`,
         },
       ];
     },
