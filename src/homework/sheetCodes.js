@@ -16,10 +16,16 @@ function toBase64Url(text) {
   return btoa(binary).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
 }
 
+class Damaged extends Error {}
+
 function fromBase64Url(code) {
-  if (!/^[A-Za-z0-9_-]*$/.test(code)) throw new Error('it holds characters a code never has');
-  const binary = atob(code.replace(/-/g, '+').replace(/_/g, '/'));
-  return new TextDecoder('utf-8', { fatal: true }).decode(Uint8Array.from(binary, (c) => c.charCodeAt(0)));
+  if (!/^[A-Za-z0-9_-]*$/.test(code)) throw new Damaged('it holds characters a code never has');
+  try {
+    const binary = atob(code.replace(/-/g, '+').replace(/_/g, '/'));
+    return new TextDecoder('utf-8', { fatal: true }).decode(Uint8Array.from(binary, (c) => c.charCodeAt(0)));
+  } catch {
+    throw new Damaged('it does not decode to text');
+  }
 }
 
 function parseJson(text, what) {
@@ -37,7 +43,8 @@ function decode(code, what) {
   try {
     return parseJson(fromBase64Url(text), what);
   } catch (error) {
-    return { ok: false, problems: [`This ${what} is damaged: ${error.message ?? 'it cannot be decoded'} (was it cut short when copied?).`] };
+    if (!(error instanceof Damaged)) throw error;
+    return { ok: false, problems: [`This ${what} is damaged: ${error.message} (was it cut short when copied?).`] };
   }
 }
 
