@@ -12,6 +12,7 @@ import { showSheet } from './homework/page/showSheet.js';
 import { buildComposer, sheetUrl } from './homework/page/buildComposer.js';
 import { buildChecker } from './homework/page/buildChecker.js';
 import { connectScorm } from './homework/page/connectScorm.js';
+import { readTextFile } from './homework/page/formParts.js';
 
 setupPageControls(document.querySelector('.page-controls'), {});
 const root = document.getElementById('homework');
@@ -32,13 +33,15 @@ function lecturerPage() {
   file.addEventListener('change', async () => {
     const chosen = file.files[0];
     if (!chosen) return;
-    let data;
-    try {
-      data = chosen.size > 1_000_000 ? null : JSON.parse(await chosen.text());
-    } catch {
-      data = null;
+    const picked = await readTextFile(chosen);
+    let read = picked;
+    if (picked.ok) {
+      try {
+        read = readSheet(JSON.parse(picked.text));
+      } catch {
+        read = { ok: false, problems: ['This file is not a sheet’s JSON.'] };
+      }
     }
-    const read = data === null ? { ok: false, problems: ['This file is not a sheet’s JSON.'] } : readSheet(data);
     openStatus.replaceChildren();
     if (read.ok) window.location.assign(sheetUrl(read.sheet));
     else showNotice(openStatus, `${chosen.name} is not a usable sheet:`, read.problems, { kind: 'error' });
@@ -49,17 +52,20 @@ function lecturerPage() {
   window.fresnelLab.homework = { composer, checker };
 }
 
-// A SCORM package carries its sheet in the page (buildScormPackage.js); a link carries it in ?sheet=.
+// A SCORM package carries its sheet in the page (buildScormPackage.js), and then that sheet and
+// the learner's seed are the only ones: a ?sheet= or ?seed= added to its address is not read (the
+// LMS would be sent the score of another sheet). Elsewhere a link carries the sheet in ?sheet=.
 const carried = document.getElementById('fresnel-lab-sheet');
-const code = search.get('sheet') ?? carried?.textContent.trim() ?? null;
+const inPackage = carried?.dataset.scorm === '1';
+const code = inPackage ? carried.textContent.trim() : search.get('sheet');
 if (code === null) {
   lecturerPage();
 } else {
   const decoded = sheetFromCode(code);
   const read = decoded.ok ? readSheet(decoded.data) : decoded;
   if (read.ok) {
-    const seed = search.get('seed')?.trim().slice(0, 64) || null;
-    const scorm = carried?.dataset.scorm === '1' ? connectScorm() : null;
+    const seed = inPackage ? null : search.get('seed')?.trim().slice(0, 64) || null;
+    const scorm = inPackage ? connectScorm() : null;
     window.fresnelLab.homework = showSheet(root, { sheet: read.sheet, code, urlSeed: seed, scorm });
   } else {
     lecturerPage();

@@ -2,16 +2,42 @@
 // and the Brewster angle, the exact formula, Schlick's approximation, Fresnel in lighting, metals,
 // and where the methods fail or cost. Every expected answer comes from the optics core; see
 // questions.js for the kinds.
-import { cosDeg } from '../optics/angles.js';
+import { cosDeg, toDegrees as deg } from '../optics/angles.js';
+import { schlickErrorAt } from '../optics/curves.js';
+import { displayCodes } from '../optics/advisor.js';
+import { goldenMax } from '../optics/refinedMax.js';
 import { brewsterAngle, criticalAngle, fresnelConductor, fresnelExact, fresnelPolarized, fresnelSchlick, normalIncidence } from '../optics/fresnel.js';
 import { dielectricById, metalById, metals } from '../optics/materials.js';
 import { methodError } from '../optics/advisor.js';
 import { methodById } from '../optics/methods.js';
 import { sceneById } from '../optics/scenes.js';
-import { ANGLES, INDICES, deg, fixed } from './questionParts.js';
+import { ANGLES, INDICES, fixed } from './questionParts.js';
 
 /** A hair above 1, as interpolated normals give; it survives rounding to float32 (1 + 2⁻²³). */
 const COS_ABOVE_ONE = 1.0000001;
+/**
+ * Schlick's (pow form) largest display error over the plastic scene, in 8-bit codes: the best of a
+ * 0.05° grid over each of the scene's indices, refined around it (refinedMax.js). Computed once.
+ */
+let worstCodes = null;
+function schlickWorstCodes() {
+  if (worstCodes) return worstCodes;
+  const scene = sceneById('plastic');
+  const method = methodById('schlick-pow');
+  const codesAt = (t, nI, nT) => displayCodes(method.evaluate(scene.precision, cosDeg(t), nI, nT), fresnelExact(cosDeg(t), nI, nT));
+  let best = { codes: -1, theta: 0, nI: 1, nT: 1 };
+  for (const [nI, nT] of scene.cases) {
+    for (let i = 0; i <= 1800; i += 1) {
+      const codes = codesAt(i / 20, nI, nT);
+      if (codes > best.codes) best = { codes, theta: i / 20, nI, nT };
+    }
+  }
+  const { nI, nT } = best;
+  const theta = goldenMax((t) => codesAt(t, nI, nT), Math.max(0, best.theta - 0.05), Math.min(90, best.theta + 0.05));
+  const refined = codesAt(theta, nI, nT);
+  worstCodes = refined > best.codes ? { codes: refined, theta, nI, nT } : best;
+  return worstCodes;
+}
 const codesText = (codes) => (codes < 0.005 ? 'less than 0.01 codes' : `${fixed(codes, 2)} codes`);
 
 export const FRESNEL_QUESTIONS = [
@@ -23,7 +49,7 @@ export const FRESNEL_QUESTIONS = [
       {
         id: 'all-004', text: () => 'Yes: every dielectric reflects 4 % head-on.',
         holds: () => ['water', 'glass', 'diamond'].every((id) => Math.abs(normalIncidence(1, dielectricById(id).n) - 0.04) < 0.005),
-        why: () => `No: 0.04 is glass's value (n ≈ 1.5). Water gives ${fixed(normalIncidence(1, dielectricById('water').n), 3)}, diamond ${fixed(normalIncidence(1, dielectricById('diamond').n), 3)}.`,
+        why: () => `No: 0.04 belongs to n = 1.5 (R(0°) = ${fixed(normalIncidence(1, 1.5), 3)}). Water gives ${fixed(normalIncidence(1, dielectricById('water').n), 3)}, diamond ${fixed(normalIncidence(1, dielectricById('diamond').n), 3)}.`,
       },
       {
         id: 'depends-on-n', text: () => 'No: it is ((n_t − n_i)/(n_t + n_i))², so it grows with the index.',
@@ -54,7 +80,7 @@ export const FRESNEL_QUESTIONS = [
     params: (rng) => ({ nT: rng.pick(INDICES) }),
     prompt: (p) => `From air into n_t = ${p.nT}: predict the angle at which R_p = 0 (within 2°), then look.`,
     expected: (p) => deg(brewsterAngle(1, p.nT)),
-    curve: (p) => ({ label: 'R_p', f: (t) => fresnelPolarized(cosDeg(t), 1, p.nT).p }),
+    curve: (p) => ({ label: 'Rₚ', f: (t) => fresnelPolarized(cosDeg(t), 1, p.nT).p }),
     state: (p) => ({ nI: 1, nT: p.nT }),
   },
   {
@@ -87,7 +113,7 @@ export const FRESNEL_QUESTIONS = [
         {
           id: 'zero', text: () => '0: nothing tells the two sides apart, so nothing is reflected.',
           holds: (p) => r(p) === 0,
-          why: (p) => `Right: R = 0 at every angle, grazing included (from air into ${p.n} it would be ${fromAir(p)}). Code that forms g² as 1 + c² − m² can lose this to rounding for nearly equal indices; (1 − m)(1 + m) + c² keeps it.`,
+          why: (p) => `Right: R = 0 at every angle, grazing included: with nothing to tell the two sides apart there is no reflection (from air into ${p.n} it would be ${fromAir(p)}).`,
         },
         {
           id: 'half', text: () => 'About 0.5: at grazing the light splits evenly.',
@@ -102,7 +128,7 @@ export const FRESNEL_QUESTIONS = [
     id: 'schlick-error', panel: 'schlick', kind: 'numeric', unit: 'fraction', tolerance: 0.0005,
     params: (rng) => ({ theta: rng.pick([60, 70, 75, 80, 85]), nT: rng.pick([1.33, 1.5, 2.0]) }),
     prompt: (p) => `From air into n_t = ${p.nT} at θ = ${p.theta}°: how far is Schlick's approximation from the exact R (|exact − Schlick|)? To 3 decimals.`,
-    expected: (p) => Math.abs(fresnelExact(cosDeg(p.theta), 1, p.nT) - fresnelSchlick(cosDeg(p.theta), 1, p.nT)),
+    expected: (p) => schlickErrorAt(p.theta, 1, p.nT),
     state: (p) => ({ nI: 1, nT: p.nT }),
   },
   {
@@ -168,8 +194,12 @@ export const FRESNEL_QUESTIONS = [
         },
         {
           id: 'dark', text: () => 'Dark: metals reflect less at grazing, as the diffuse light falls off.',
-          holds: (p) => Math.max(...channels(p, 89)) < Math.max(...channels(p, 0)),
-          why: (p) => `No: every channel grows, to ${channels(p, 89).map((x) => fixed(x, 2)).join(', ')} at 89°.`,
+          holds: (p) => channels(p, 89).every((x, i) => x < channels(p, 0)[i]),
+          why: (p) => {
+            const [head, grazing] = [channels(p, 0), channels(p, 89)];
+            const grows = grazing.every((x, i) => x > head[i]);
+            return `No: ${grows ? 'every channel grows' : 'the channels go'} from ${head.map((x) => fixed(x, 2)).join(', ')} head-on to ${grazing.map((x) => fixed(x, 2)).join(', ')} at 89°.`;
+          },
         },
       ];
     },
@@ -187,19 +217,19 @@ export const FRESNEL_QUESTIONS = [
     params: () => ({}),
     prompt: () => 'Light from air onto plastic, paint or skin (n from 1.3 to 1.7), at display white on an 8-bit sRGB screen: can anyone see that Schlick’s pow(1 − c, 5) is not the exact R (is any pixel off by more than half a display code)?',
     options: () => {
-      const worst = () => methodError(sceneById('plastic'), methodById('schlick-pow'));
-      // The worst is over every index of the scene on a 0.05° grid: near a smooth maximum that is
-      // good to far better than the one decimal shown (the error is flat there).
-      const where = () => `${fixed(worst().maxCodes, 1)} codes at worst, near grazing (${fixed(deg(worst().thetaAtMax), 0)}°)`;
+      const where = () => {
+        const { codes, theta, nT } = schlickWorstCodes();
+        return `${fixed(codes, 1)} codes (${fixed((100 * codes) / 255, 1)} % of the range) at worst, near θ = ${fixed(theta, 0)}° for n = ${fixed(nT, 2)}`;
+      };
       return [
         {
           id: 'invisible', text: () => 'No: engines ship Schlick, so its error must be invisible.',
-          holds: () => worst().maxCodes <= 0.5,
-          why: () => `No: it is off by ${where()}. Engines accept that (a few per cent of the range); it is a judgement, not invisibility.`,
+          holds: () => schlickWorstCodes().codes <= 0.5,
+          why: () => `No: it is off by ${where()}. Engines accept an error of that size; it is a judgement, not invisibility.`,
         },
         {
-          id: 'visible', text: () => 'Yes: near grazing its error shows, by several codes at worst.',
-          holds: () => worst().maxCodes > 0.5,
+          id: 'visible', text: () => 'Yes: near grazing its error shows, by more than two codes at worst.',
+          holds: () => schlickWorstCodes().codes > 2,
           why: () => `Right: ${where()}. The exact c/g form is off by ${codesText(methodError(sceneById('plastic'), methodById('exact-cg')).maxCodes)} at worst; the panel weighs that against what each method costs on this device.`,
         },
       ];

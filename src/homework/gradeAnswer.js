@@ -3,6 +3,9 @@
 // handed-in file says about being right is read.
 import { seededRandom } from './seededRandom.js';
 import { parseAnswer } from './parseAnswer.js';
+import { formatTolerance, formatValue } from './formatAnswer.js';
+
+const MAX_TYPED = 80;
 
 /** The parameters of `question` for a seed (the same seed, the same numbers). */
 export function questionParams(question, seed) {
@@ -15,6 +18,19 @@ export function trueOption(question, params) {
   if (holding.length !== 1) throw new Error(`${question.id}: ${holding.length} options hold for ${JSON.stringify(params)}`);
   return holding[0];
 }
+
+/**
+ * An answer read back from storage, an LMS or a handed-in file, as the kind of question takes it,
+ * or null: a prediction is an angle from 0° to 90°, a choice one of its options, a typed answer a
+ * short text. Anything else (a number for a choice, text for a prediction) is no answer.
+ */
+export function readAnswer(question, params, raw) {
+  if (question.kind === 'predict') return typeof raw === 'number' && raw >= 0 && raw <= 90 ? raw : null;
+  if (question.kind === 'choice') return typeof raw === 'string' && question.options(params).some((o) => o.id === raw) ? raw : null;
+  return typeof raw === 'string' && raw.trim() !== '' ? raw.slice(0, MAX_TYPED) : null;
+}
+
+export { MAX_TYPED };
 
 /**
  * Grades `answer` (typed text, a number, or an option id) to `question` with `params`. Returns
@@ -41,6 +57,6 @@ export function gradeAnswer(question, params, answer) {
     answered: true,
     correct,
     value: read.value,
-    explanation: correct ? 'Within the tolerance.' : `Off by ${off.toPrecision(2)}; the tolerance is ${question.tolerance}.`,
+    explanation: correct ? 'Within the tolerance.' : `Off by ${formatValue(question, off)}; the tolerance is ${formatTolerance(question)}.`,
   };
 }

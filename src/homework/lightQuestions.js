@@ -2,16 +2,17 @@
 // Phong against Fresnel, reflection against refraction, waves at an interface, the angle ratio and
 // the hero's exact-against-Schlick view. Every expected answer comes from the optics core; see
 // questions.js for the kinds.
-import { DEG, cosDeg } from '../optics/angles.js';
-import { criticalAngle, fresnelExact, fresnelSchlick } from '../optics/fresnel.js';
+import { DEG, cosDeg, toDegrees as deg } from '../optics/angles.js';
+import { criticalAngle, fresnelExact } from '../optics/fresnel.js';
+import { schlickErrorAt } from '../optics/curves.js';
 import { phongHighlights } from '../optics/phong.js';
 import { transmittedAngle } from '../optics/waves.js';
 import { toksvigExponent, toksvigFactor } from '../normals/lobeFormulas.js';
-import { INDICES, deg, fixed } from './questionParts.js';
+import { INDICES, fixed } from './questionParts.js';
 import { angleOfMax, angleWhere } from './solveAngle.js';
 
 const reflectance = (nI, nT) => (t) => fresnelExact(cosDeg(t), nI, nT);
-const schlickGap = (nT) => (t) => Math.abs(fresnelExact(cosDeg(t), 1, nT) - fresnelSchlick(cosDeg(t), 1, nT));
+const schlickGap = (nT) => (t) => schlickErrorAt(t, 1, nT);
 const percent = (x) => `${Math.round(x * 100)} %`;
 
 export const LIGHT_QUESTIONS = [
@@ -77,7 +78,7 @@ export const LIGHT_QUESTIONS = [
         },
       ];
     },
-    state: (p) => ({ nT: p.nT, s: p.s, lightEl: 5, linked: true }),
+    state: (p) => ({ nT: p.nT, s: p.s, lightEl: 90, linked: true }),
   },
   {
     id: 'split-half', panel: 'reflect-refract', kind: 'numeric', unit: 'deg', tolerance: 0.5,

@@ -15,5 +15,8 @@ export const QUESTIONS = Object.freeze([...LIGHT_QUESTIONS, ...FRESNEL_QUESTIONS
 
 const byId = new Map(QUESTIONS.map((q) => [q.id, q]));
 
+/** What each kind is called on the page. */
+export const KIND_NAMES = Object.freeze({ numeric: 'Number', predict: 'Predict, then see', choice: 'Choice' });
+
 /** The question with this id, or undefined. */
 export const questionById = (id) => byId.get(id);

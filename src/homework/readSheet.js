@@ -1,8 +1,7 @@
-// A homework sheet (what a lecturer composes) and a handed-in file (what a student exports), read
-// from untrusted JSON: every field is checked, anything unexpected is refused with a reason, and a
-// handed-in file is graded only by recomputing each answer from its seed (gradeAnswer.js).
+// A homework sheet (what a lecturer composes), read from untrusted JSON: every field is checked
+// and anything unexpected is refused with a reason. Handed-in files: gradeHandIn.js.
 import { questionById } from './questions.js';
-import { gradeAnswer, questionParams } from './gradeAnswer.js';
+import { EMBED_KEYS } from '../host/readEmbedOptions.js';
 
 export const SHEET_VERSION = 1;
 const MAX_ITEMS = 40;
@@ -21,6 +20,8 @@ function stateProblems(state, where) {
   if (entries.length > MAX_STATE_KEYS) return [`${where}: state holds more than ${MAX_STATE_KEYS} values.`];
   return entries.flatMap(([key, value]) => {
     if (!/^[A-Za-z][A-Za-z0-9]{0,31}$/.test(key)) return [`${where}: “${key.slice(0, 32)}” is not a panel value's name.`];
+    // The frame's own options (which panel, locks, the deck's origin) are the sheet page's to set.
+    if (EMBED_KEYS.includes(key)) return [`${where}: ${key} is not a panel value (it is an option of the embed page).`];
     const fits = (typeof value === 'number' && Number.isFinite(value)) || typeof value === 'boolean' || text(value, 64);
     return fits ? [] : [`${where}: ${key} must be a number, true or false, or a short text.`];
   });
@@ -53,29 +54,4 @@ export function readSheet(data) {
       items: data.items.map((item) => ({ question: item.question, ...(item.state ? { state: { ...item.state } } : {}) })),
     },
   };
-}
-
-/**
- * Grades a handed-in file { version, sheet, seed, name, answers: [answer per item], time } against the
- * sheet it names: { ok: true, score, total, results } or { ok: false, problems }. Any "correct" or
- * score the file carries is ignored.
- */
-export function gradeHandIn(data) {
-  if (!data || typeof data !== 'object' || Array.isArray(data)) return { ok: false, problems: ['A handed-in file is a JSON object.'] };
-  const read = readSheet(data.sheet);
-  const problems = read.ok ? [] : read.problems.map((p) => `sheet: ${p}`);
-  if (data.version !== SHEET_VERSION) problems.push(`version must be ${SHEET_VERSION}.`);
-  if (!text(data.seed, 64)) problems.push('seed must be a text of 1 to 64 characters.');
-  if (!Array.isArray(data.answers) || (read.ok && data.answers.length !== read.sheet.items.length)) problems.push('answers must hold one entry per question.');
-  if (problems.length) return { ok: false, problems };
-  const results = read.sheet.items.map((item, i) => {
-    const question = questionById(item.question);
-    const params = questionParams(question, data.seed);
-    const raw = data.answers[i];
-    const answer = typeof raw === 'string' || typeof raw === 'number' ? raw : raw?.value;
-    return { question: question.id, params, ...gradeAnswer(question, params, typeof answer === 'string' ? answer.slice(0, 80) : answer) };
-  });
-  const name = text(data.name, 100) ? data.name : '';
-  const time = text(data.time, 40) && !Number.isNaN(Date.parse(data.time)) ? data.time : null;
-  return { ok: true, title: read.sheet.title, sheet: read.sheet, seed: data.seed, name, time, score: results.filter((r) => r.correct).length, total: results.length, results };
 }

@@ -2,7 +2,7 @@
 // (an embed link, or a lecture link whose keys carry the panel's prefix). Only the panel's values
 // are kept: embed options (theme, lock, …) are the sheet page's business, not the item's.
 import { EMBED_KEYS } from '../host/readEmbedOptions.js';
-import { lecturePrefix } from '../panels/manifest.js';
+import { lecturePrefix, panelEntry } from '../panels/manifest.js';
 
 const typed = (raw) => (raw === 'true' ? true : raw === 'false' ? false : raw.trim() !== '' && Number.isFinite(Number(raw)) ? Number(raw) : raw);
 
@@ -19,7 +19,10 @@ export function readStartState(text, panelId) {
   }
   const prefix = lecturePrefix(panelId);
   const fromLecture = !search.has('panel') && prefix && [...search.keys()].some((k) => k.startsWith(prefix));
-  if (search.has('panel') && search.get('panel') !== panelId) return { ok: false, problem: `This link is for the ${search.get('panel')} panel, not ${panelId}.` };
+  if (search.has('panel') && search.get('panel') !== panelId) {
+    const other = panelEntry(search.get('panel'))?.title ?? 'another page';
+    return { ok: false, problem: `This link is for “${other}”, not “${panelEntry(panelId).title}”.` };
+  }
   const state = {};
   for (const [key, value] of search) {
     if (fromLecture) {

@@ -18,7 +18,9 @@ function toBase64Url(text) {
 
 class Damaged extends Error {}
 
-function fromBase64Url(code) {
+function fromBase64Url(text) {
+  // Mail and chat programs wrap long codes; some tools add base64 padding. Both are harmless.
+  const code = text.replace(/\s+/g, '').replace(/=+$/, '');
   if (!/^[A-Za-z0-9_-]*$/.test(code)) throw new Damaged('it holds characters a code never has');
   try {
     const binary = atob(code.replace(/-/g, '+').replace(/_/g, '/'));
@@ -54,9 +56,12 @@ export const sheetToCode = (sheet) => toBase64Url(JSON.stringify(sheet));
 /** { ok: true, data } (still to be read by readSheet) or { ok: false, problems }. */
 export const sheetFromCode = (code) => decode(code, 'sheet link');
 
-/** A handed-in file's content: what the student answered, for which sheet and seed, and when. */
-export function makeHandIn({ sheet, seed, name = '', answers, time = new Date().toISOString() }) {
-  return { kind: HAND_IN_KIND, version: SHEET_VERSION, sheet, seed, name, answers, time };
+/**
+ * A handed-in file's content: what the student answered, for which sheet and seed, how many
+ * tries each answer took (shown to the lecturer, not graded), and when.
+ */
+export function makeHandIn({ sheet, seed, name = '', answers, attempts = answers.map(() => 0), time = new Date().toISOString() }) {
+  return { kind: HAND_IN_KIND, version: SHEET_VERSION, sheet, seed, name, answers, attempts, time };
 }
 
 export const handInToCode = (handIn) => HAND_IN_PREFIX + toBase64Url(JSON.stringify(handIn));

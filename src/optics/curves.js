@@ -38,12 +38,18 @@ export function reflectanceCurves(nI, nT, count = 361) {
   return { theta, exact, schlick, s, p, error };
 }
 
+/** |exact − Schlick (on cos θi)| at θ in degrees, for nI → nT. */
+export function schlickErrorAt(thetaDeg, nI, nT) {
+  const c = cosDeg(thetaDeg);
+  return Math.abs(fresnelExact(c, nI, nT) - fresnelSchlick(c, nI, nT));
+}
+
 /**
  * Largest |exact − Schlick| for nI → nT and the angle (degrees) where it occurs: the sampled
  * curve's largest, refined between its neighbours (refinedMax.js).
  */
 export function maxError({ theta, error }, nI, nT) {
-  return refinedMax(theta, error, (t) => Math.abs(fresnelExact(cosDeg(t), nI, nT) - fresnelSchlick(cosDeg(t), nI, nT)));
+  return refinedMax(theta, error, (t) => schlickErrorAt(t, nI, nT));
 }
 
 /** A round number at or above x on the 1-2-5 ladder, for a legend's top value. */

@@ -1,7 +1,7 @@
 // Exact Fresnel against Schlick's approximation on cos θi and on cos θt, sampled over θ for a
 // plot, a CSV and the largest error. Pure float64 math from fresnel.js, no DOM.
 import { criticalAngle, fresnelExact, fresnelSchlick, fresnelSchlickTIR } from './fresnel.js';
-import { sampleAngles } from './curves.js';
+import { sampleAngles, schlickErrorAt } from './curves.js';
 import { cosDeg, DEG } from './angles.js';
 import { refinedMax } from './refinedMax.js';
 
@@ -23,16 +23,6 @@ export function comparisonAngles(nI, nT, count = 721) {
   return [...new Set(angles)].sort((a, b) => a - b);
 }
 
-/**
- * Largest value of `errors` and the angle (degrees) where it occurs (the first, on a tie),
- * refined with `f`, the error as a function of θ in degrees, where given (refinedMax.js).
- */
-export function maxAbsError(theta, errors, f = null) {
-  if (f) return refinedMax(theta, errors, f);
-  let at = 0;
-  for (let i = 1; i < errors.length; i += 1) if (errors[i] > errors[at]) at = i;
-  return { value: errors[at], theta: theta[at] };
-}
 
 /**
  * Curves for nI → nT: theta (degrees), exact, schlick (on cos θi, as on the slide), schlickT
@@ -61,7 +51,7 @@ export function schlickComparison(nI, nT, count = 721) {
   return {
     theta, exact, schlick, schlickT, error, errorT,
     critical: critical === null ? null : critical / DEG,
-    worst: maxAbsError(theta, error, (t) => Math.abs(fresnelExact(cosDeg(t), nI, nT) - fresnelSchlick(cosDeg(t), nI, nT))),
-    worstT: maxAbsError(theta, errorT, (t) => Math.abs(fresnelExact(cosDeg(t), nI, nT) - fresnelSchlickTIR(cosDeg(t), nI, nT))),
+    worst: refinedMax(theta, error, (t) => schlickErrorAt(t, nI, nT)),
+    worstT: refinedMax(theta, errorT, (t) => Math.abs(fresnelExact(cosDeg(t), nI, nT) - fresnelSchlickTIR(cosDeg(t), nI, nT))),
   };
 }

@@ -19,3 +19,6 @@ export function sci(value, digits = 6) {
 export function angle(deg, digits = 2) {
   return `${fixed(deg, digits)}°`;
 }
+
+/** A piece of a file name: lower-case letters, digits and dashes (accents dropped). */
+export const fileSlug = (text) => String(text).toLowerCase().normalize('NFKD').replace(/[^a-z0-9]+/g, '-').replace(/^-|-$/g, '').slice(0, 40) || 'sheet';

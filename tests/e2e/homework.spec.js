@@ -46,6 +46,10 @@ test('a student predicts, answers right and wrong, hands in, and the file is che
   const brewster = Math.atan(nT) / DEG;
   await expect(card(page, 1).locator('iframe')).toHaveCount(0);
   await expect(card(page, 1).locator('.predict-true')).toHaveCount(0);
+  // No panel anywhere on the sheet yet: the polarization or exact-formula panel could give it away.
+  await expect(card(page, 2).locator('.hw-panel-waiting')).toBeVisible();
+  await expect(page.locator('iframe')).toHaveCount(0);
+  await expect(card(page, 1).getByRole('button', { name: 'Commit prediction' })).toBeDisabled(); // the marker's start is no prediction
   const marker = card(page, 1).getByRole('slider');
   await marker.focus();
   await page.keyboard.press('Home');
@@ -55,7 +59,9 @@ test('a student predicts, answers right and wrong, hands in, and the file is che
   await expect(card(page, 1).locator('.hw-result')).toHaveText(new RegExp(`^Right\\. The computed answer is ${brewster.toFixed(2)}°`));
   await expect(card(page, 1).locator('.predict-true')).toHaveCount(1);
   await expect(card(page, 1).locator('.predict-marker text')).toHaveText(`yours: ${Math.round(brewster).toFixed(1)}°`);
-  await expect(card(page, 1).locator('iframe')).toHaveAttribute('src', new RegExp(`panel=polarization&nI=1&nT=${nT}`));
+  await expect(card(page, 1).locator('iframe')).toHaveAttribute('src', new RegExp(`nI=1&nT=${nT}&panel=polarization`));
+  await expect(page.locator('iframe')).toHaveCount(3);
+  await expect(card(page, 1).locator('.hw-result')).toBeFocused(); // the keyboard is left at the result, not on <body>
 
   // 2. Numeric: wrong first (told how far off, to try again), then right, typed as a percentage.
   const prompt = await card(page, 2).locator('.hw-prompt').textContent();
@@ -88,7 +94,7 @@ test('a student predicts, answers right and wrong, hands in, and the file is che
   const download = await downloading;
   expect(download.suggestedFilename()).toBe(`fresnel-lab-week-3-${seed}.json`);
   const file = JSON.parse(readFileSync(await download.path(), 'utf8'));
-  expect(file).toMatchObject({ kind: 'fresnel-lab-hand-in', version: 1, seed, name: 'Ada', sheet: { title: 'Week 3' } });
+  expect(file).toMatchObject({ kind: 'fresnel-lab-hand-in', version: 1, seed, name: 'Ada', sheet: { title: 'Week 3' }, attempts: [1, 2, 1] });
   expect(file.answers).toEqual([Math.round(brewster), `${(R * 100).toFixed(2)} %`, 'keeps-colour']);
   await expect(page.locator('.hw-hand-in-status')).toHaveText(/^Handed in at .*: saved as fresnel-lab-week-3-/);
   const code = await page.getByLabel(/Hand-in code/).inputValue();
@@ -97,17 +103,22 @@ test('a student predicts, answers right and wrong, hands in, and the file is che
   // The lecturer checks the file and the code: 2 of 3, recomputed. A file that says it scored 3,
   // with every answer marked correct, still gets 2.
   await page.goto('homework.html');
+  await page.getByLabel('The sheet you set').fill(link);
   const forged = test.info().outputPath('forged.json');
   writeFileSync(forged, JSON.stringify({ ...file, score: 3, total: 3, answers: file.answers.map((a) => ({ value: a, correct: true })) }));
-  await page.getByLabel('Or choose handed-in files').setInputFiles([await download.path(), forged]);
+  const edited = test.info().outputPath('edited.json'); // the hard question dropped from the sheet
+  writeFileSync(edited, JSON.stringify({ ...file, sheet: { ...file.sheet, items: file.sheet.items.slice(0, 2) }, answers: file.answers.slice(0, 2) }));
+  await page.getByLabel('Or choose handed-in files').setInputFiles([await download.path(), forged, edited]);
   await expect(page.locator('.hw-score')).toHaveCount(2);
   for (const score of await page.locator('.hw-score').all()) await expect(score).toHaveText(new RegExp(`^Week 3: Ada, seed ${seed}, handed in .*Score 2 of 3, recomputed\\.$`));
+  await expect(page.locator('.hw-report').nth(2).getByRole('alert')).toContainText('it answers another sheet');
   await page.getByLabel(/Paste a hand-in code/).fill(code);
   await page.getByRole('button', { name: 'Check the code' }).click();
   await expect(page.locator('.hw-score')).toHaveText(/Score 2 of 3, recomputed/);
   const rows = page.locator('.hw-report-table tbody tr');
-  await expect(rows.nth(0).locator('td').last()).toHaveText(/^right: /);
-  await expect(rows.nth(2).locator('td').last()).toHaveText(/^wrong: No:/);
+  await expect(rows.nth(0).locator('td').nth(4)).toHaveText(/^right: /);
+  await expect(rows.nth(1).locator('td').nth(5)).toHaveText('2'); // tries
+  await expect(rows.nth(2).locator('td').nth(4)).toHaveText(/^wrong: No:/);
   await expect(rows.nth(2).locator('td').nth(3)).toHaveText(/Nearly white/);
 });
 
@@ -116,6 +127,7 @@ test('lecture mode judges nothing until the lecturer reveals, one question or al
   await page.goto(`${sheetLink({ ...SHEET, reveal: 'lecturer', seed: 'class' })}`);
   await expect(page.locator('.hw-meta')).toContainText('the same for everyone');
   await expect(page.getByLabel(/Lecture mode/)).toBeChecked();
+  await card(page, 1).getByRole('slider').press('ArrowRight');
   await card(page, 1).getByRole('button', { name: 'Commit prediction' }).click();
   await expect(card(page, 1).locator('.hw-result')).toHaveText(/^Answer saved\. The answer is shown when the lecturer reveals it\.$/);
   await expect(card(page, 1).locator('.predict-true')).toHaveCount(0);
@@ -129,11 +141,32 @@ test('lecture mode judges nothing until the lecturer reveals, one question or al
   await expect(card(page, 1).locator('.hw-result')).toHaveText(/computed answer is \d+\.\d\d°/);
   await expect(card(page, 1).locator('iframe')).toHaveCount(1);
   await expect(card(page, 2).locator('.hw-result')).toHaveText(/^Answer saved/); // the others still wait
+  await expect(card(page, 1).getByRole('slider')).toHaveAttribute('aria-disabled', 'true');
   await page.getByRole('button', { name: 'Reveal every answer' }).click();
+  await expect(card(page, 2).getByRole('textbox')).toBeDisabled(); // revealed: no more answers
   await expect(card(page, 2).locator('.hw-result')).toHaveText(/^Not within the tolerance: yours 0\.5000\. The computed answer is 0\.\d{4} \(checked within 0\.0005\)\.$/);
   await expect(card(page, 3).locator('.hw-result')).toHaveText(/^The answer: “Nearly white/);
   await expect(card(page, 3).locator('.hw-true')).toHaveCount(1);
   await expect(card(page, 3).locator('.hw-why')).toHaveText([/^No:/, /^Right:/, /^No:/]);
+});
+
+test('a prediction revealed before it is committed shows no "yours"; lecture mode switched on hides what was judged', async ({ page }) => {
+  await page.goto(`${sheetLink({ ...SHEET, reveal: 'lecturer' })}&seed=late`);
+  await card(page, 1).getByRole('button', { name: 'Reveal the answer' }).click();
+  await expect(card(page, 1).locator('.hw-result')).toHaveText(/^No prediction was committed\. The computed answer is \d+\.\d\d°/);
+  await expect(card(page, 1).locator('.predict-marker')).toBeHidden();
+  await expect(card(page, 1).locator('.predict-caption')).toHaveText(/^Rₚ against θ; the true angle is \d+\.\d\d°\.$/);
+  await expect(card(page, 1).getByRole('button', { name: 'Commit prediction' })).toBeDisabled();
+  // Lecture mode off, then an answer judged at once; on again, and the judgement is hidden.
+  await page.getByLabel(/Lecture mode/).uncheck();
+  await expect(card(page, 1).locator('.predict-true')).toHaveCount(1); // what was revealed stays revealed
+  await card(page, 3).getByRole('radio', { name: /keeps its colour/ }).check();
+  await card(page, 3).getByRole('button', { name: 'Check' }).click();
+  await expect(card(page, 3).locator('.hw-chosen .hw-why')).toHaveText(/^No:/);
+  await page.getByLabel(/Lecture mode/).check();
+  await expect(card(page, 3).locator('.hw-result')).toHaveText(/^Answer saved/);
+  await expect(card(page, 3).locator('.hw-why:not(:empty)')).toHaveCount(0);
+  await expect(card(page, 3).locator('.hw-chosen')).toHaveCount(0);
 });
 
 test('bad sheets, links and codes are refused with their reasons, and the page still works', async ({ page }) => {
@@ -144,6 +177,8 @@ test('bad sheets, links and codes are refused with their reasons, and the page s
   await page.goto(sheetLink({ version: 1, title: 'x', items: [{ question: 'no-such-question' }, { question: 'exact-r', state: { 'bad key': 1 } }] }));
   await expect(page.getByRole('alert')).toContainText('item 1: there is no question “no-such-question”');
   await expect(page.getByRole('alert')).toContainText('item 2: “bad key” is not a panel value');
+  await page.goto(sheetLink({ version: 1, title: 'x', items: [{ question: 'exact-r', state: { panel: 'schlick' } }] }));
+  await expect(page.getByRole('alert')).toContainText('item 1: panel is not a panel value (it is an option of the embed page)');
   for (const [text, reason] of [['FLH1.@@@', 'damaged'], ['hello', 'neither a handed-in file'], ['{"kind": 1', 'not readable JSON'],
     [`FLH1.${Buffer.from(JSON.stringify({ version: 1, sheet: SHEET, seed: 'a', answers: [] })).toString('base64url')}`, 'one entry per question']]) {
     await page.getByLabel(/Paste a hand-in code/).fill(text);
@@ -156,11 +191,11 @@ test('bad sheets, links and codes are refused with their reasons, and the page s
   await page.locator('#pick-exact-r').check();
   const state = page.locator('.hw-pick', { has: page.locator('#pick-exact-r') }).getByRole('textbox', { name: 'Start state (optional)' });
   await state.fill('embed.html?panel=schlick&theta=10');
-  await expect(page.getByText('exact-r: This link is for the schlick panel, not exact-fresnel.')).toBeVisible();
+  await expect(page.getByText('Question 1 (Reflection math: the exact formula): This link is for “Schlick\'s approximation”, not “Reflection math: the exact formula”.')).toBeVisible();
   await state.fill('embed.html?panel=exact-fresnel&theta=10&theme=light');
   const link = await page.getByLabel('Link for students').inputValue();
   await page.goto(link);
-  await expect(card(page, 1).locator('iframe')).toHaveAttribute('src', /panel=exact-fresnel&theta=10&nI=1&nT=/);
+  await expect(card(page, 1).locator('iframe')).toHaveAttribute('src', /theta=10&nI=1&nT=[\d.]+&panel=exact-fresnel$/);
 });
 
 test('keyboard only: compose, predict, answer and check', async ({ page }) => {

@@ -120,6 +120,7 @@ test('theme, projector mode and reduced motion come from the link and from messa
 
 test('size tells the deck the content height, again when it changes', async ({ page, baseURL }) => {
   const api = await embedInDeck(page, baseURL, 'panel=schlick', { height: 300 });
+  await api.waitFor('fresnel-lab:rendered');
   // The newest size against the page's height now (the page may still be settling: formulas, plot).
   const newest = async () => ({ told: (await api.all('fresnel-lab:size')).at(-1)?.height, now: await inFrame(api, () => document.body.scrollHeight) });
   await expect.poll(async () => { const { told, now } = await newest(); return told === now; }).toBe(true);

@@ -82,19 +82,21 @@ test('the single-file embed works in a sandboxed iframe on a plain static server
 });
 
 test('the single-file homework page opened from disk runs a sheet, its panels in frames of the offline embed', async ({ page }) => {
+  test.setTimeout(120_000); // two frames each parse the 1.6 MB embed page
   const urls = requests(page);
   const sheet = { version: 1, title: 'From disk', items: [{ question: 'critical-predict' }, { question: 'r0-value' }] };
   await page.goto(`${offline('homework.html')}?sheet=${Buffer.from(JSON.stringify(sheet)).toString('base64url')}&seed=disk`);
+  await page.locator('#question-1').getByRole('slider').press('ArrowRight');
   await page.locator('#question-1').getByRole('button', { name: 'Commit prediction' }).click();
   await expect(page.locator('#question-1 .predict-true')).toHaveCount(1);
   // Each frame grows to fit once its panel is up (the embed's size message, which comes after ready).
   for (const n of [1, 2]) {
     const frame = page.locator(`#question-${n} iframe`);
     await frame.scrollIntoViewIfNeeded();
-    await expect(frame).toHaveAttribute('src', /^file:.*\/offline\/embed\.html\?panel=/);
-    await expect.poll(() => frame.evaluate((f) => f.style.height), { message: `frame ${n}` }).toMatch(/^\d+px$/);
+    await expect(frame).toHaveAttribute('src', /^file:.*\/offline\/embed\.html\?.*panel=/);
+    await expect.poll(() => frame.evaluate((f) => f.style.height), { message: `frame ${n}`, timeout: 60_000 }).toMatch(/^\d+px$/);
   }
-  await expect(page.frameLocator('#question-2 iframe').locator('.embed-title')).toHaveText(/R\(0°\)/);
+  await expect(page.frameLocator('#question-2 iframe').locator('.embed-title')).toHaveText(/R\(0°\)/, { timeout: 60_000 });
   expect(fromOutside(urls)).toEqual([]);
 });
 

@@ -5,6 +5,7 @@
 import { readFileSync } from 'node:fs';
 import { strFromU8, unzipSync } from 'fflate';
 import { test, expect } from './fixtures.js';
+import { hashSeed } from '../../src/homework/seededRandom.js';
 
 const LMS = `<!doctype html><html><head><meta charset="utf-8"><title>LMS</title><script>
   const data = { 'cmi.core.student_id': 's123', 'cmi.core.student_name': 'Lovelace, Ada', 'cmi.core.lesson_status': 'not attempted',
@@ -45,21 +46,27 @@ test('a sheet saved for an LMS reports the recomputed score through the SCORM 1.
   });
   await page.goto('lms/player.html');
   const sco = page.frameLocator('#sco');
-  await expect(sco.locator('.hw-seed')).toHaveText('lms-s123');
+  const seed = `lms-${hashSeed('s123').toString(36)}`; // the learner's id, hashed
+  await expect(sco.locator('.hw-seed')).toHaveText(seed);
+  await expect(sco.getByLabel(/Lecture mode/)).toBeHidden(); // in a course, no switch that reveals answers
   await expect(sco.getByLabel(/Your name/)).toHaveValue('Lovelace, Ada');
   await expect(sco.getByText('handing in sends your score to its gradebook')).toBeVisible();
   await sco.locator('#question-2').getByRole('radio', { name: /Nearly white/ }).check();
   await sco.locator('#question-2').getByRole('button', { name: 'Check' }).click();
   await expect(sco.locator('#question-2 .hw-result')).toHaveText('Right.');
   const suspend = await page.evaluate(() => window.lmsData['cmi.suspend_data']);
-  expect(JSON.parse(suspend)).toEqual({ answers: [null, 'towards-white'] });
+  expect(JSON.parse(suspend)).toEqual({ seed, answers: [null, 'towards-white'] });
   await sco.getByRole('button', { name: /^Hand in/ }).click();
   await expect(sco.locator('.hw-hand-in-status')).toContainText('Your score, 1 of 2, went to the course\'s gradebook.');
   const data = await page.evaluate(() => window.lmsData);
   expect(data).toMatchObject({ 'cmi.core.score.raw': '50', 'cmi.core.score.min': '0', 'cmi.core.score.max': '100', 'cmi.core.lesson_status': 'completed' });
-  const calls = await page.evaluate(() => window.calls.map((c) => c[0]));
-  expect(calls[0]).toBe('LMSInitialize');
-  expect(calls.at(-1)).toBe('LMSCommit');
+  expect((await page.evaluate(() => window.calls.map((c) => c[0])))[0]).toBe('LMSInitialize');
+  // Leaving the page ends the session: its time, no suspend (it was handed in), LMSFinish last.
+  await page.evaluate(() => document.getElementById('sco').remove());
+  await expect.poll(() => page.evaluate(() => window.calls.at(-1)?.[0])).toBe('LMSFinish');
+  const after = await page.evaluate(() => window.lmsData);
+  expect(after['cmi.core.session_time']).toMatch(/^\d{4}:\d\d:\d\d\.\d\d$/);
+  expect(after['cmi.core.exit']).toBe('');
 
   // Another computer: the answers come back from the LMS, not from this browser's storage.
   await page.evaluate(() => localStorage.clear());

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { comparisonAngles, maxAbsError, schlickComparison } from '../../src/optics/schlickComparison.js';
+import { comparisonAngles, schlickComparison } from '../../src/optics/schlickComparison.js';
+import { refinedMax } from '../../src/optics/refinedMax.js';
 import { fresnelExact, fresnelSchlick, fresnelSchlickTIR } from '../../src/optics/fresnel.js';
 
 const DEG = Math.PI / 180;
@@ -47,7 +48,10 @@ describe('schlickComparison', () => {
     expect(out.filter((t) => t > 41 && t < 41.82).length).toBeGreaterThan(8); // an even grid alone: 1
     expect(comparisonAngles(1, 1.5, 91).length).toBe(92); // the grid plus Brewster
   });
-  it('maxAbsError picks the first largest', () => {
-    expect(maxAbsError([0, 1, 2, 3], [0.1, 0.5, 0.5, 0.2])).toEqual({ value: 0.5, theta: 1 });
+  it('a grid maximum is refined, and stands where refining finds nothing larger', () => {
+    expect(refinedMax([0, 1, 2, 3], [0.1, 0.5, 0.5, 0.2], () => 0)).toEqual({ value: 0.5, theta: 1 });
+    const peak = refinedMax([0, 1, 2, 3], [0, 0.9, 0.8, 0], (t) => 1 - (t - 1.3) ** 2);
+    expect(peak.theta).toBeCloseTo(1.3, 6); // a smooth maximum is flat: its place is good to about √ε
+    expect(peak.value).toBeCloseTo(1, 12);
   });
 });

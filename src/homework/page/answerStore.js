@@ -5,7 +5,11 @@ import { hashSeed } from '../seededRandom.js';
 
 const PREFIX = 'fresnel-lab:homework:';
 
-/** { seed, name, answers } for this sheet code, and save(); `kept` false where storage is refused. */
+/**
+ * { work: { seed, name, answeredWith, answers, attempts }, save(), kept(), forSeed(seed) } for
+ * this sheet code; `kept` false where storage is refused. forSeed(seed) drops answers made under
+ * another seed (another link's ?seed=, a class seed added since): they answer other numbers.
+ */
 export function openAnswerStore(sheetCode, count, makeSeed) {
   const key = `${PREFIX}${hashSeed(sheetCode).toString(36)}`;
   let storage = null;
@@ -21,14 +25,13 @@ export function openAnswerStore(sheetCode, count, makeSeed) {
   } catch {
     saved = null; // damaged by hand: start again rather than fail
   }
-  const answers = Array.from({ length: count }, (_, i) => {
-    const a = Array.isArray(saved?.answers) ? saved.answers[i] : null;
-    return typeof a === 'string' || typeof a === 'number' ? a : null;
-  });
+  const list = (name) => Array.from({ length: count }, (_, i) => (Array.isArray(saved?.[name]) ? saved[name][i] ?? null : null));
   const work = {
-    seed: typeof saved?.seed === 'string' && saved.seed ? saved.seed : makeSeed(),
+    seed: typeof saved?.seed === 'string' && saved.seed ? saved.seed.slice(0, 64) : makeSeed(), // this browser's own
     name: typeof saved?.name === 'string' ? saved.name.slice(0, 100) : '',
-    answers,
+    answeredWith: typeof saved?.answeredWith === 'string' ? saved.answeredWith : null, // the seed the answers are for
+    answers: list('answers'), // as stored: each is read for its question's kind by the sheet (readAnswer)
+    attempts: list('attempts').map((n) => (Number.isInteger(n) && n >= 0 ? n : 0)),
   };
   let kept = storage !== null;
   const save = () => {
@@ -39,6 +42,13 @@ export function openAnswerStore(sheetCode, count, makeSeed) {
       kept = false; // full or refused now: the page keeps working
     }
   };
-  save();
-  return { work, save, kept: () => kept, clear: () => { try { storage?.removeItem(key); } catch { /* refused */ } } };
+  const forSeed = (seed) => {
+    if (work.answeredWith !== seed) {
+      work.answers.fill(null);
+      work.attempts.fill(0);
+      work.answeredWith = seed;
+    }
+    save();
+  };
+  return { work, save, kept: () => kept, forSeed };
 }

@@ -4,21 +4,16 @@
 // offered as a link or a file is exactly what a student's page will accept.
 import { el } from '../../ui/el.js';
 import { setSubscripted } from '../../ui/subscripts.js';
-import { PANELS } from '../../panels/manifest.js';
+import { PANELS, panelEntry } from '../../panels/manifest.js';
 import { copyText, downloadBlob, downloadText } from '../../host/exporters.js';
-import { QUESTIONS } from '../questions.js';
+import { fileSlug } from '../../ui/format.js';
+import { KIND_NAMES, QUESTIONS } from '../questions.js';
 import { questionParams } from '../gradeAnswer.js';
 import { readSheet } from '../readSheet.js';
 import { readStartState } from '../readStartState.js';
 import { sheetToCode } from '../sheetCodes.js';
-import { KIND_NAMES, fileSlug } from './formatAnswer.js';
 import { buildScormPackage } from './buildScormPackage.js';
-
-const field = (labelText, control, className = 'hw-field') => {
-  const label = el('label', className);
-  label.append(el('span', null, labelText), control);
-  return label;
-};
+import { button, field } from './formParts.js';
 
 /** The page's address for a sheet: homework.html?sheet=CODE. */
 export function sheetUrl(sheet) {
@@ -69,11 +64,14 @@ export function buildComposer(root) {
       state.placeholder = 'a link copied from the panel, or key=value&…';
       const stateLabel = field('Start state (optional)', state, 'hw-field hw-pick-state');
       stateLabel.hidden = true;
+      const note = el('span', 'hw-pick-note');
+      note.setAttribute('aria-live', 'polite');
+      stateLabel.append(note);
       box.addEventListener('change', () => { stateLabel.hidden = !box.checked; update(); });
       state.addEventListener('input', () => update());
       row.append(box, label, stateLabel);
       group.append(row);
-      picks.push({ question, box, state });
+      picks.push({ question, box, state, note });
     }
     section.append(group);
   }
@@ -84,13 +82,10 @@ export function buildComposer(root) {
   const link = el('input');
   link.type = 'text';
   link.readOnly = true;
-  const copy = el('button', null, 'Copy the link');
-  copy.type = 'button';
-  const save = el('button', null, 'Save the sheet as a file');
-  save.type = 'button';
+  const copy = button('Copy the link');
+  const save = button('Save the sheet as a file');
   const open = el('a', 'hw-open', 'Open the sheet');
-  const scorm = el('button', null, 'Save for an LMS (SCORM 1.2 zip)');
-  scorm.type = 'button';
+  const scorm = button('Save for an LMS (SCORM 1.2 zip)');
   out.append(problems, field('Link for students', link), copy, save, scorm, open);
   section.append(out);
   root.append(section);
@@ -98,9 +93,13 @@ export function buildComposer(root) {
   let current = null;
   function update() {
     const itemProblems = [];
-    const items = picks.filter((p) => p.box.checked).map(({ question, state }) => {
+    const items = picks.filter((p) => p.box.checked).map(({ question, state, note }, i) => {
       const read = readStartState(state.value, question.panel);
-      if (!read.ok) itemProblems.push(`${question.id}: ${read.problem}`);
+      if (!read.ok) itemProblems.push(`Question ${i + 1} (${panelEntry(question.panel).title}): ${read.problem}`);
+      // The question's own values win over a start state (its numbers depend on them): say which.
+      const own = Object.keys(question.state(questionParams(question, 'example')));
+      const overridden = Object.keys(read.state ?? {}).filter((k) => own.includes(k));
+      note.textContent = overridden.length ? `Set by the question itself, so not taken from here: ${overridden.join(', ')}.` : '';
       return Object.keys(read.state ?? {}).length ? { question: question.id, state: read.state } : { question: question.id };
     });
     const draft = { version: 1, title: title.value.trim(), reveal: reveal.value, items, ...(seed.value.trim() ? { seed: seed.value.trim() } : {}) };

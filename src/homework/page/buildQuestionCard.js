@@ -2,42 +2,41 @@
 // prediction marker, options), the result once it may be shown, and the panel itself, started
 // from the question's state. A prediction is committed before the panel appears, so the panel
 // cannot give it away; the prediction stays drawn next to the truth. In lecture mode nothing is
-// judged on screen until the lecturer reveals the question.
+// judged on screen until the lecturer reveals the question; revealed, it takes no more answers.
 import { el } from '../../ui/el.js';
 import { setSubscripted } from '../../ui/subscripts.js';
 import { panelEntry } from '../../panels/manifest.js';
-import { gradeAnswer, trueOption } from '../gradeAnswer.js';
+import { EMBED_KEYS } from '../../host/readEmbedOptions.js';
+import { KIND_NAMES } from '../questions.js';
+import { MAX_TYPED, gradeAnswer, trueOption } from '../gradeAnswer.js';
+import { formatTolerance, formatValue } from '../formatAnswer.js';
 import { createPredictFigure } from './createPredictFigure.js';
-import { KIND_NAMES, formatTolerance, formatValue } from './formatAnswer.js';
+import { button, field } from './formParts.js';
 
 const UNIT_HINTS = { deg: 'in degrees, e.g. 41.8 or 41.8°', fraction: 'a fraction, e.g. 0.042 or 4.2 %' };
 
-/** The panel, in a frame of the embed page started from `state` (values the panel checks itself). */
+/** The panel in a frame of the embed page, started from `state` (values the panel checks itself). */
 function panelFrame(panelId, state) {
   const url = new URL('./embed.html', window.location.href);
+  for (const [key, value] of Object.entries(state)) if (!EMBED_KEYS.includes(key)) url.searchParams.set(key, String(value));
   url.searchParams.set('panel', panelId);
-  for (const [key, value] of Object.entries(state)) url.searchParams.set(key, String(value));
   const frame = el('iframe', 'hw-frame');
   frame.src = url.toString();
   frame.loading = 'lazy';
   frame.title = `Fresnel Lab: ${panelEntry(panelId).title}`;
   frame.allow = 'fullscreen; clipboard-write';
-  // The embed says how tall its content is (message API `size`): the frame fits it, no inner scroll.
-  window.addEventListener('message', (event) => {
-    if (event.source !== frame.contentWindow || event.data?.type !== 'fresnel-lab:size') return;
-    const height = Number(event.data.height);
-    if (Number.isFinite(height)) frame.style.height = `${Math.min(3000, Math.max(160, Math.ceil(height) + 2))}px`;
-  });
   return frame;
 }
 
 /**
  * number: 1-based position; item: { question, state? } of the sheet; question and params: the
- * question and its seeded parameters; saved: the stored answer or null; lecture(): whether lecture
- * mode is on; onAnswer(answer): the answer changed (to be stored).
- * Returns { element, answer(), reveal(), refresh() }.
+ * question and its seeded parameters; saved: the stored answer (read by readAnswer) or null, and
+ * attempts; lecture(): whether lecture mode is on; panelsAllowed(): false while a prediction on
+ * the sheet is still open (any panel could give it away); onAnswer(answer): store it;
+ * onFrame(frame): a panel's frame was made. Returns { element, answer(), attempts(), revealed(),
+ * reveal(), refresh() }.
  */
-export function buildQuestionCard({ number, item, question, params, saved, lecture, onAnswer }) {
+export function buildQuestionCard({ number, item, question, params, saved, attempts: savedAttempts = 0, lecture, panelsAllowed, onAnswer, onFrame }) {
   const entry = panelEntry(question.panel);
   const element = el('article', `hw-item hw-${question.kind}`);
   element.id = `question-${number}`;
@@ -55,44 +54,58 @@ export function buildQuestionCard({ number, item, question, params, saved, lectu
   const result = el('div', 'hw-result');
   result.setAttribute('role', 'status');
   result.setAttribute('aria-live', 'polite');
+  result.tabIndex = -1; // focus lands here after an answer, so the keyboard is not left on <body>
   const panelBox = el('div', 'hw-panel');
   element.append(heading, prompt, answerBox, result, panelBox);
 
   let answer = saved;
+  let attempts = answer === null ? 0 : Math.max(1, savedAttempts);
   let revealed = false; // by the lecturer, in lecture mode
   const state = { ...(item.state ?? {}), ...question.state(params) }; // the question's own values win
-  const showPanel = () => { if (!panelBox.firstChild) panelBox.append(panelFrame(question.panel, state)); };
-  const judged = () => (lecture() ? revealed : answer !== null);
+  const judged = () => revealed || (!lecture() && answer !== null);
+  const record = (value) => {
+    answer = value;
+    attempts += 1;
+    onAnswer(answer);
+    render();
+    result.focus();
+  };
 
   let figure = null;
   let input = null;
   const options = [];
-  const commit = el('button', 'hw-commit');
-  commit.type = 'button';
+  const commit = button('', 'hw-commit');
+  const controls = [commit];
 
   if (question.kind === 'numeric') {
-    const label = el('label', 'hw-field');
-    label.append(el('span', null, `Your answer (${UNIT_HINTS[question.unit] ?? 'a number'})`));
     input = el('input');
     input.type = 'text';
     input.inputMode = 'decimal';
     input.autocomplete = 'off';
+    input.maxLength = MAX_TYPED;
     input.setAttribute('aria-describedby', prompt.id);
     input.value = answer ?? '';
-    label.append(input);
     commit.textContent = 'Check';
-    const submit = () => { answer = input.value; onAnswer(answer); render(); };
+    const submit = () => record(input.value.trim() || null);
     commit.addEventListener('click', submit);
     input.addEventListener('keydown', (event) => { if (event.key === 'Enter') submit(); });
-    answerBox.append(label, commit);
+    answerBox.append(field(`Your answer (${UNIT_HINTS[question.unit] ?? 'a number'})`, input), commit);
+    controls.push(input);
   } else if (question.kind === 'predict') {
-    figure = createPredictFigure({ label: `Your prediction for question ${number}, θ in degrees` });
+    let moved = answer !== null;
+    figure = createPredictFigure({
+      label: `Your prediction for question ${number}, θ in degrees`,
+      describedBy: prompt.id,
+      onChange: () => { moved = true; commit.disabled = false; },
+    });
     if (answer !== null) figure.setValue(answer);
     commit.textContent = 'Commit prediction';
-    commit.addEventListener('click', () => { answer = figure.value(); onAnswer(answer); render(); });
+    commit.disabled = !moved; // a prediction is a choice: the marker's start is not one
+    commit.addEventListener('click', () => record(figure.value()));
     answerBox.append(figure.element, commit);
   } else {
     const group = el('fieldset', 'hw-options');
+    group.setAttribute('aria-describedby', prompt.id);
     group.append(el('legend', 'sr-only', `Options for question ${number}`));
     for (const option of question.options(params)) {
       const label = el('label', 'hw-option');
@@ -107,57 +120,73 @@ export function buildQuestionCard({ number, item, question, params, saved, lectu
       label.append(radio, text, why);
       group.append(label);
       options.push({ option, radio, label, why });
+      controls.push(radio);
     }
     commit.textContent = 'Check';
     commit.addEventListener('click', () => {
       const chosen = options.find((o) => o.radio.checked);
-      if (!chosen) { result.textContent = 'Choose an option first.'; return; }
-      answer = chosen.option.id;
-      onAnswer(answer);
-      render();
+      if (!chosen) say('waiting', 'Choose an option first.');
+      else record(chosen.option.id);
     });
     answerBox.append(group, commit);
   }
 
-  const say = (kind, text) => {
-    result.className = `hw-result hw-${kind}`;
-    result.textContent = text;
-  };
+  function say(kind, text) {
+    const className = `hw-result hw-${kind}`;
+    if (result.className !== className) result.className = className;
+    if (result.textContent !== text) result.textContent = text; // unchanged text is not announced again
+  }
+
+  function showPanel() {
+    if (panelBox.querySelector('iframe')) return;
+    if (!panelsAllowed()) {
+      if (!panelBox.firstChild) panelBox.append(el('p', 'hw-panel-waiting', 'The panel appears once every prediction on this sheet is committed: it could give one away.'));
+      return;
+    }
+    const frame = panelFrame(question.panel, state);
+    panelBox.replaceChildren(frame);
+    onFrame(frame);
+  }
+
+  function renderChoice(graded) {
+    const right = trueOption(question, params);
+    const all = judged() && (revealed || graded?.correct);
+    for (const o of options) {
+      o.label.classList.toggle('hw-chosen', judged() && o.option.id === answer);
+      o.label.classList.toggle('hw-true', all && o.option.id === right.id);
+      setSubscripted(o.why, judged() && (all || o.option.id === answer) ? o.option.why(params) : '');
+    }
+    if (!judged()) return;
+    if (!graded) say('shown', `The answer: “${right.text(params)}”`);
+    else if (graded.correct) say('right', 'Right.');
+    else say('wrong', revealed ? 'Not this one: see why under each option.' : 'Not this one: see why under your choice, and try another.');
+  }
 
   function render() {
     const graded = answer === null ? null : gradeAnswer(question, params, answer);
     if (question.kind === 'predict') {
       if (answer !== null) { figure.setValue(answer); figure.lock(); commit.disabled = true; }
       if (judged()) {
-        figure.lock();
+        if (answer === null) figure.lock({ committed: false });
         commit.disabled = true;
         figure.showTruth({ curve: question.curve(params), truth: question.expected(params) });
-        showPanel();
+      } else {
+        figure.hideTruth();
       }
-    } else {
-      showPanel();
     }
+    if (question.kind !== 'predict' || judged()) showPanel(); // a prediction's panel waits for its truth
+    if (revealed) for (const control of controls) control.disabled = true; // the truth is out: no more answers
+    if (question.kind === 'choice') renderChoice(graded);
     if (!judged()) {
       say('waiting', answer === null ? '' : 'Answer saved. The answer is shown when the lecturer reveals it.');
       return;
     }
-    if (question.kind === 'choice') {
-      const right = trueOption(question, params);
-      const all = revealed || graded?.correct;
-      for (const o of options) {
-        o.label.classList.toggle('hw-chosen', o.option.id === answer);
-        o.label.classList.toggle('hw-true', all && o.option.id === right.id);
-        setSubscripted(o.why, all || o.option.id === answer ? o.option.why(params) : '');
-      }
-      if (!graded) say('shown', `The answer: “${right.text(params)}”`);
-      else say(graded.correct ? 'right' : 'wrong', graded.correct ? 'Right.' : 'Not this one: see why under your choice, and try another.');
-      return;
-    }
+    if (question.kind === 'choice') return;
     const expected = question.expected(params);
     const truth = `The computed answer is ${formatValue(question, expected)} (checked within ${formatTolerance(question)}).`;
-    if (!graded) { say('shown', truth); return; }
-    if (!graded.answered) { say('wrong', graded.explanation); return; }
-    if (graded.correct) say('right', `Right. ${truth}`);
+    if (!graded) say('shown', question.kind === 'predict' ? `No prediction was committed. ${truth}` : truth);
+    else if (!graded.answered) say('wrong', graded.explanation);
+    else if (graded.correct) say('right', `Right. ${truth}`);
     else if (question.kind === 'predict' || revealed) say('wrong', `${question.kind === 'predict' ? 'Off' : 'Not within the tolerance'}: yours ${formatValue(question, graded.value)}. ${truth}`);
     else say('wrong', `${graded.explanation} Try again.`);
   }
@@ -166,8 +195,9 @@ export function buildQuestionCard({ number, item, question, params, saved, lectu
   return {
     element,
     answer: () => answer,
+    attempts: () => attempts,
+    revealed: () => revealed,
     reveal() { revealed = true; render(); },
     refresh: render,
-    focus: () => (figure ? figure.focus() : input ? input.focus() : options[0]?.radio.focus()),
   };
 }

@@ -1,18 +1,19 @@
 // Inside an LMS: the SCORM 1.2 run-time API (ADL, "SCORM Version 1.2 Run-Time Environment", 2001,
 // §3.2), the object `API` an LMS puts on a window above the page. Found, the sheet takes the
-// learner's id as its seed and their name, keeps answers in cmi.suspend_data (so they follow the
+// learner's id for its seed and their name, keeps answers in cmi.suspend_data (so they follow the
 // learner to another computer), and at hand-in reports the recomputed score to the gradebook.
-// Without an LMS nothing here runs and the page is the ordinary homework page.
+// Without an LMS, or with one whose API fails, nothing here runs and the page is the ordinary
+// homework page.
 
-const SUSPEND_LIMIT = 4096; // cmi.suspend_data holds at most 4096 characters in SCORM 1.2
+const SUSPEND_LIMIT = 4096; // cmi.suspend_data holds at most 4096 characters in SCORM 1.2 (RTE §3.4.2)
 
-/** The nearest `API` on a parent window (or the opener's), as the run-time's discovery does. */
+/** The nearest `API` on a window above (or the opener's), as the run-time's discovery does. */
 function findApi(start) {
   for (let win = start, hops = 0; win && hops < 12; hops += 1) {
     try {
       if (win.API && typeof win.API.LMSInitialize === 'function') return win.API;
     } catch {
-      return null; // a parent of another origin: no API can be reached through it
+      break; // a window of another origin: nothing above it can be reached; try the opener
     }
     if (win.parent === win) break;
     win = win.parent;
@@ -24,42 +25,79 @@ function findApi(start) {
   }
 }
 
-/** { learner: { id, name }, resume, save(work), report(score, total) }, or null without an LMS. */
+/** cmi.core.session_time: HHHH:MM:SS.SS (RTE §3.4.2, CMITimespan). */
+function timespan(ms) {
+  const s = Math.max(0, ms) / 1000;
+  const pad = (n, w) => String(Math.floor(n)).padStart(w, '0');
+  return `${pad(s / 3600, 4)}:${pad((s % 3600) / 60, 2)}:${(s % 60).toFixed(2).padStart(5, '0')}`;
+}
+
+/**
+ * { learner: { id, name }, resume, save(work) → bool, report(score, total) → bool }, or null
+ * without an LMS. Every call into the LMS is guarded: an LMS that throws or refuses makes a call
+ * return false, never breaks the page.
+ */
 export function connectScorm(win = window) {
   const api = findApi(win);
-  if (!api || String(api.LMSInitialize('')) !== 'true') return null;
-  const get = (key) => String(api.LMSGetValue(key) ?? '');
-  const set = (key, value) => api.LMSSetValue(key, String(value));
+  if (!api) return null;
+  const call = (name, ...args) => {
+    try {
+      return String(api[name](...args));
+    } catch {
+      return 'false';
+    }
+  };
+  const get = (key) => {
+    try {
+      return String(api.LMSGetValue(key) ?? '');
+    } catch {
+      return '';
+    }
+  };
+  const set = (key, value) => call('LMSSetValue', key, String(value)) === 'true';
+  const commit = () => call('LMSCommit', '') === 'true';
+  let started = 0;
+  let completed = false;
+  const begin = () => {
+    if (call('LMSInitialize', '') !== 'true') return false;
+    started = Date.now();
+    if (['not attempted', ''].includes(get('cmi.core.lesson_status'))) set('cmi.core.lesson_status', 'incomplete');
+    commit();
+    return true;
+  };
+  if (!begin()) return null;
   let resume;
   try {
     resume = JSON.parse(get('cmi.suspend_data') || 'null');
   } catch {
     resume = null;
   }
-  if (['not attempted', ''].includes(get('cmi.core.lesson_status'))) set('cmi.core.lesson_status', 'incomplete');
-  api.LMSCommit('');
-  let finished = false;
+  let open = true;
   win.addEventListener('pagehide', () => {
-    if (finished) return;
-    finished = true;
-    api.LMSCommit('');
-    api.LMSFinish('');
+    if (!open) return;
+    open = false;
+    set('cmi.core.session_time', timespan(Date.now() - started));
+    // Not yet handed in: "suspend", so the LMS resumes this attempt and keeps its suspend_data.
+    set('cmi.core.exit', completed ? '' : 'suspend');
+    commit();
+    call('LMSFinish', '');
   });
+  // Restored from the back-forward cache after LMSFinish: a new session.
+  win.addEventListener('pageshow', (event) => { if (event.persisted && !open) open = begin(); });
   return {
     learner: { id: get('cmi.core.student_id'), name: get('cmi.core.student_name') },
     resume,
     save(work) {
       const data = JSON.stringify(work);
-      if (data.length <= SUSPEND_LIMIT) set('cmi.suspend_data', data);
-      api.LMSCommit('');
+      return data.length <= SUSPEND_LIMIT && set('cmi.suspend_data', data) && commit();
     },
     /** The score as a percentage (cmi.core.score.raw, 0–100) and the lesson completed. */
     report(score, total) {
-      set('cmi.core.score.min', 0);
-      set('cmi.core.score.max', 100);
-      set('cmi.core.score.raw', total ? Math.round((100 * score) / total) : 0);
-      set('cmi.core.lesson_status', 'completed');
-      api.LMSCommit('');
+      const ok = set('cmi.core.score.min', 0) && set('cmi.core.score.max', 100)
+        && set('cmi.core.score.raw', total ? Math.round((100 * score) / total) : 0)
+        && set('cmi.core.lesson_status', 'completed') && commit();
+      completed ||= ok;
+      return ok;
     },
   };
 }

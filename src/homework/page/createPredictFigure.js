@@ -17,10 +17,11 @@ const svg = (tag, attrs = {}) => {
 };
 
 /**
- * label: the accessible name of the slider (the question). onChange(value) while it moves.
- * Returns { element, value(), setValue(v), lock(), showTruth({ curve, truth }), focus() }.
+ * label: the accessible name of the slider; describedBy: the id of the question's text.
+ * onChange(value) while it moves. Returns { element, value(), setValue(v), lock({ committed }),
+ * showTruth({ curve, truth }), hideTruth(), focus() }.
  */
-export function createPredictFigure({ label, initial = 45, onChange = () => {} }) {
+export function createPredictFigure({ label, describedBy = null, initial = 45, onChange = () => {} }) {
   const element = el('figure', 'predict-figure');
   const picture = svg('svg', { viewBox: `0 0 ${W} ${H}`, class: 'predict-svg', 'aria-hidden': 'false' });
   const axis = svg('g', { class: 'predict-axis', 'aria-hidden': 'true' });
@@ -42,6 +43,7 @@ export function createPredictFigure({ label, initial = 45, onChange = () => {} }
   const markerText = svg('text', { y: baseline - 18, 'text-anchor': 'middle' }); // low: the truth is labelled at the top
   marker.append(markerLine, knob, markerText);
   marker.setAttribute('aria-label', label);
+  if (describedBy) marker.setAttribute('aria-describedby', describedBy);
   marker.setAttribute('aria-valuemin', '0');
   marker.setAttribute('aria-valuemax', '90');
   picture.append(axis, truthLayer, marker);
@@ -50,12 +52,14 @@ export function createPredictFigure({ label, initial = 45, onChange = () => {} }
 
   let value = initial;
   let locked = false;
+  let committed = false;
   const draw = () => {
     const px = x(value);
     for (const line of [markerLine]) { line.setAttribute('x1', px); line.setAttribute('x2', px); }
     knob.setAttribute('cx', px);
     markerText.setAttribute('x', Math.min(Math.max(px, PAD.left + 40), W - PAD.right - 40));
-    markerText.textContent = `${locked ? 'yours: ' : ''}${value.toFixed(1)}°`;
+    markerText.textContent = `${committed ? 'yours: ' : ''}${value.toFixed(1)}°`;
+    marker.style.display = locked && !committed ? 'none' : ''; // revealed with nothing committed: no marker
     marker.setAttribute('aria-valuenow', value.toFixed(1));
     marker.setAttribute('aria-valuetext', `${value.toFixed(1)} degrees`);
   };
@@ -93,12 +97,21 @@ export function createPredictFigure({ label, initial = 45, onChange = () => {} }
     value: () => value,
     setValue: (v) => setValue(v, false),
     focus: () => marker.focus(),
-    lock() {
+    /** committed: whether the marker holds the student's prediction (else the truth came first). */
+    lock({ committed: made = true } = {}) {
       locked = true;
+      committed = made;
       marker.setAttribute('aria-disabled', 'true');
+      if (!made) marker.setAttribute('tabindex', '-1');
       element.classList.add('locked');
-      caption.textContent = 'Your prediction is committed.';
+      caption.textContent = made ? 'Your prediction is committed.' : 'The answer was shown before a prediction was committed.';
       draw();
+    },
+    /** Back to the axis alone (lecture mode switched on again): the prediction stays. */
+    hideTruth() {
+      truthLayer.replaceChildren();
+      element.classList.remove('revealed');
+      if (locked) caption.textContent = committed ? 'Your prediction is committed.' : caption.textContent;
     },
     /** curve: { label, f(θ°), level? }; truth: the true angle in degrees. */
     showTruth({ curve, truth }) {
@@ -117,7 +130,7 @@ export function createPredictFigure({ label, initial = 45, onChange = () => {} }
       curveName.textContent = `${curve.label}${curve.level !== undefined ? ` (line: ${curve.level})` : ''}`;
       truthLayer.append(name, curveName);
       element.classList.add('revealed');
-      caption.textContent = `${curve.label} against θ; the true angle is ${truth.toFixed(2)}°, yours ${value.toFixed(1)}°.`;
+      caption.textContent = `${curve.label} against θ; the true angle is ${truth.toFixed(2)}°${committed ? `, yours ${value.toFixed(1)}°` : ''}.`;
     },
   };
 }

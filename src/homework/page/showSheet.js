@@ -3,21 +3,24 @@
 // Lecture mode (the sheet's choice, or the switch) judges nothing on screen until the lecturer
 // reveals a question: the "predict, then show" of a live class.
 import { el } from '../../ui/el.js';
+import { fileSlug } from '../../ui/format.js';
 import { copyText, downloadText } from '../../host/exporters.js';
 import { questionById } from '../questions.js';
-import { questionParams } from '../gradeAnswer.js';
-import { newSeed } from '../seededRandom.js';
+import { questionParams, readAnswer } from '../gradeAnswer.js';
+import { gradeHandIn } from '../gradeHandIn.js';
+import { hashSeed, newSeed } from '../seededRandom.js';
 import { handInToCode, makeHandIn } from '../sheetCodes.js';
-import { gradeHandIn } from '../readSheet.js';
 import { openAnswerStore } from './answerStore.js';
 import { buildQuestionCard } from './buildQuestionCard.js';
-import { fileSlug } from './formatAnswer.js';
+import { button, field } from './formParts.js';
 
-
-function button(text, className) {
-  const b = el('button', className, text);
-  b.type = 'button';
-  return b;
+/** The seed in use and where it comes from (the sheet, the link, the LMS account, this browser). */
+function chooseSeed(sheet, urlSeed, scorm, ownSeed) {
+  if (sheet.seed) return { seed: sheet.seed, source: ' (the same for everyone on this sheet).' };
+  if (urlSeed) return { seed: urlSeed, source: ', given in the link.' };
+  // Hashed, so two long account ids that share a beginning still get different numbers.
+  if (scorm?.learner.id) return { seed: `lms-${hashSeed(scorm.learner.id).toString(36)}`, source: ', from your course account: the same numbers wherever you open it.' };
+  return { seed: ownSeed, source: ': the same seed gives the same numbers again, and your hand-in carries it.' };
 }
 
 /**
@@ -28,70 +31,99 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
   document.title = `${sheet.title}: Fresnel Lab homework`;
   const store = openAnswerStore(code, sheet.items.length, newSeed);
   const { work } = store;
-  const lmsSeed = scorm?.learner.id ? `lms-${scorm.learner.id}`.slice(0, 64) : null;
-  const seed = sheet.seed ?? urlSeed ?? lmsSeed ?? work.seed;
+  const { seed, source } = chooseSeed(sheet, urlSeed, scorm, work.seed);
+  store.forSeed(seed);
+  const questions = sheet.items.map((item) => questionById(item.question));
+  const params = questions.map((q) => questionParams(q, seed));
   if (scorm) {
     // The LMS's copy of the answers wins: it follows the learner from one computer to another.
-    const resumed = scorm.resume?.answers;
-    if (Array.isArray(resumed) && resumed.length === work.answers.length) {
-      resumed.forEach((a, i) => { work.answers[i] = typeof a === 'string' || typeof a === 'number' ? a : null; });
+    const resumed = scorm.resume;
+    if (resumed?.seed === seed && Array.isArray(resumed.answers) && resumed.answers.length === work.answers.length) {
+      resumed.answers.forEach((a, i) => { work.answers[i] = a; });
     }
     if (!work.name && scorm.learner.name) work.name = scorm.learner.name.slice(0, 100);
   }
-  store.save();
-  const keep = () => { store.save(); scorm?.save({ answers: work.answers }); };
+  const answers = work.answers.map((raw, i) => readAnswer(questions[i], params[i], raw));
 
   const head = el('header', 'hw-sheet-head');
-  const title = el('h1', null, sheet.title);
   const seedLine = el('p', 'hw-meta');
-  const seedSource = sheet.seed ? ' (the same for everyone on this sheet).' : urlSeed ? ' given in the link.'
-    : lmsSeed ? ', from your course account: the same numbers wherever you open it.' : ': the same seed gives the same numbers again, and your hand-in carries it.';
-  seedLine.append('Your numbers come from the seed ', el('code', 'hw-seed', seed), seedSource);
-  const nameLabel = el('label', 'hw-field hw-name');
+  seedLine.append('Your numbers come from the seed ', el('code', 'hw-seed', seed), source);
   const name = el('input');
   name.type = 'text';
   name.maxLength = 100;
   name.autocomplete = 'name';
   name.value = work.name;
   name.addEventListener('input', () => { work.name = name.value; store.save(); });
-  nameLabel.append(el('span', null, 'Your name (goes into the hand-in)'), name);
   const lectureLabel = el('label', 'hw-switch');
   const lectureBox = el('input');
   lectureBox.type = 'checkbox';
   lectureBox.checked = sheet.reveal === 'lecturer';
   lectureLabel.append(lectureBox, ' Lecture mode: answers stay hidden until revealed');
+  // In a course's LMS the score counts: the switch (and its reveal) is there only for a sheet set for class.
+  lectureLabel.hidden = Boolean(scorm) && sheet.reveal !== 'lecturer';
   const revealAll = button('Reveal every answer', 'hw-reveal-all');
-  head.append(title, seedLine, nameLabel, lectureLabel, revealAll);
+  head.append(el('h1', null, sheet.title), seedLine, field('Your name (goes into the hand-in)', name, 'hw-field hw-name'), lectureLabel, revealAll);
   if (scorm) head.append(el('p', 'hw-meta', 'This sheet is part of your course: handing in sends your score to its gradebook.'));
-  if (!store.kept() && !scorm) {
-    head.append(el('p', 'notice notice-warning', 'This browser does not let the page keep your answers: hand in before you close it.'));
-  }
+  else if (!store.kept()) head.append(el('p', 'notice notice-warning', 'This browser does not let the page keep your answers: hand in before you close it.'));
   root.append(head);
 
+  const keep = () => {
+    store.save();
+    if (scorm && !scorm.save({ seed, answers: work.answers })) {
+      status.textContent = 'The course could not keep these answers (too many, or it refused): hand in before you leave.';
+    }
+  };
   const lecture = () => lectureBox.checked;
-  const cards = sheet.items.map((item, i) => {
-    const question = questionById(item.question);
+  const frames = new Map(); // a panel frame's window → the frame, to fit each to the size it reports
+  let cards = [];
+  const panelsAllowed = () => cards.every(({ card }, i) => questions[i].kind !== 'predict' || card.revealed() || (card.answer() !== null && !lecture()));
+  const refreshAll = () => { for (const { card } of cards) card.refresh(); };
+  cards = sheet.items.map((item, i) => {
     const card = buildQuestionCard({
       number: i + 1,
       item,
-      question,
-      params: questionParams(question, seed),
-      saved: work.answers[i],
+      question: questions[i],
+      params: params[i],
+      saved: answers[i],
+      attempts: work.attempts[i],
       lecture,
-      onAnswer: (answer) => { work.answers[i] = answer; keep(); },
+      panelsAllowed: () => cards.length === sheet.items.length && panelsAllowed(),
+      onAnswer: (answer) => {
+        work.answers[i] = answer;
+        work.attempts[i] = card.attempts();
+        keep();
+        if (questions[i].kind === 'predict') queueMicrotask(refreshAll); // a panel held back may now show
+      },
+      onFrame: (frame) => frames.set(frame.contentWindow, frame),
     });
     const reveal = button('Reveal the answer', 'hw-reveal');
-    reveal.addEventListener('click', () => { card.reveal(); reveal.disabled = true; });
+    reveal.addEventListener('click', () => { card.reveal(); reveal.disabled = true; refreshAll(); });
     card.element.append(reveal);
     root.append(card.element);
     return { card, reveal };
   });
+  window.addEventListener('message', (event) => {
+    const frame = frames.get(event.source);
+    if (!frame || event.data?.type !== 'fresnel-lab:size') return;
+    const height = Number(event.data.height);
+    if (Number.isFinite(height)) frame.style.height = `${Math.min(3000, Math.max(160, Math.ceil(height) + 2))}px`;
+  });
+  // The page's theme and projector mode reach the panels already open in their frames.
+  window.addEventListener('fresnel-lab:theme', ({ detail }) => {
+    for (const frame of frames.values()) {
+      frame.contentWindow?.postMessage({ type: 'fresnel-lab:theme', theme: detail.scheme }, '*');
+      frame.contentWindow?.postMessage({ type: 'fresnel-lab:projector', on: detail.projector }, '*');
+    }
+  });
   const applyLecture = () => {
     root.classList.toggle('hw-lecture-mode', lecture());
-    for (const { card } of cards) card.refresh();
+    refreshAll();
   };
   lectureBox.addEventListener('change', applyLecture);
-  revealAll.addEventListener('click', () => { for (const { card, reveal } of cards) { card.reveal(); reveal.disabled = true; } });
+  revealAll.addEventListener('click', () => {
+    for (const { card, reveal } of cards) { card.reveal(); reveal.disabled = true; }
+    refreshAll();
+  });
   applyLecture();
 
   const handIn = el('section', 'hw-hand-in');
@@ -101,11 +133,10 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
   const send = button('Hand in: save the file and show the code', 'hw-send');
   const status = el('p', 'hw-hand-in-status');
   status.setAttribute('role', 'status');
-  const codeLabel = el('label', 'hw-field hw-code');
   const codeField = el('textarea');
   codeField.readOnly = true;
   codeField.rows = 4;
-  codeLabel.append(el('span', null, 'Hand-in code (the same as the file; paste it where the lecturer asks)'), codeField);
+  const codeLabel = field('Hand-in code (the same as the file; paste it where the lecturer asks)', codeField, 'hw-field hw-code');
   codeLabel.hidden = true;
   const copy = button('Copy the code', 'hw-copy');
   copy.hidden = true;
@@ -113,7 +144,9 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
   root.append(handIn);
 
   send.addEventListener('click', () => {
-    const record = makeHandIn({ sheet, seed, name: work.name.trim(), answers: cards.map(({ card }) => card.answer()) });
+    const record = makeHandIn({
+      sheet, seed, name: work.name.trim(), answers: cards.map(({ card }) => card.answer()), attempts: cards.map(({ card }) => card.attempts()),
+    });
     const filename = `fresnel-lab-${fileSlug(sheet.title)}-${fileSlug(seed)}.json`;
     downloadText(filename, `${JSON.stringify(record, null, 2)}\n`, 'application/json');
     codeField.value = handInToCode(record);
@@ -123,8 +156,9 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
     let sent = '';
     if (scorm) {
       const graded = gradeHandIn(record); // the same recomputation the lecturer's check does
-      scorm.report(graded.score, graded.total);
-      sent = ` Your score, ${graded.score} of ${graded.total}, went to the course's gradebook.`;
+      if (!graded.ok) sent = ` It could not be graded for the course: ${graded.problems.join(' ')}`;
+      else if (scorm.report(graded.score, graded.total)) sent = ` Your score, ${graded.score} of ${graded.total}, went to the course's gradebook.`;
+      else sent = ' The course did not take the score: hand in the file or the code instead.';
     }
     status.textContent = `Handed in at ${new Date(record.time).toLocaleTimeString()}: saved as ${filename}.${open ? ` ${open} of ${record.answers.length} questions have no answer.` : ''}${sent}`;
   });

@@ -16,8 +16,3 @@ export function formatValue(question, value) {
 export function formatTolerance(question) {
   return question.unit === 'deg' ? `${question.tolerance}°` : String(question.tolerance);
 }
-
-export const KIND_NAMES = Object.freeze({ numeric: 'Number', predict: 'Predict, then see', choice: 'Choice' });
-
-/** A piece of a file name: lower-case letters, digits and dashes (accents dropped). */
-export const fileSlug = (text) => String(text).toLowerCase().normalize('NFKD').replace(/[^a-z0-9]+/g, '-').replace(/^-|-$/g, '').slice(0, 40) || 'sheet';

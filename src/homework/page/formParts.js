@@ -1,0 +1,28 @@
+// The homework page's form pieces: a plain button, a labelled field, and a JSON file read with a
+// size limit. Text only (textContent), never markup.
+import { el } from '../../ui/el.js';
+
+export function button(text, className) {
+  const b = el('button', className, text);
+  b.type = 'button';
+  return b;
+}
+
+/** A label whose visible text names the control (its accessible name). */
+export function field(labelText, control, className = 'hw-field') {
+  const label = el('label', className);
+  label.append(el('span', null, labelText), control);
+  return label;
+}
+
+const MAX_FILE_BYTES = 1_000_000; // a sheet or a handed-in file is a few kilobytes
+
+/** { ok: true, text } or { ok: false, problems }, for a file the user picked. */
+export async function readTextFile(file) {
+  if (file.size > MAX_FILE_BYTES) return { ok: false, problems: [`${file.name} is ${file.size} bytes: a sheet or a handed-in file is a few kilobytes.`] };
+  try {
+    return { ok: true, text: await file.text() };
+  } catch {
+    return { ok: false, problems: [`${file.name} could not be read.`] };
+  }
+}
