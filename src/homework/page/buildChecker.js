@@ -11,7 +11,7 @@ import { gradeHandIn } from '../gradeHandIn.js';
 import { readSheet } from '../readSheet.js';
 import { handInFromText, sheetFromCode } from '../sheetCodes.js';
 import { formatValue } from '../formatAnswer.js';
-import { button, field, readTextFile } from './formParts.js';
+import { button, field, readTextFile, titledSection } from './formParts.js';
 
 function answerText(question, result, params) {
   if (result.answer === null) return '—';
@@ -101,10 +101,7 @@ function report(label, text, expected, read = handInFromText(text)) {
 }
 
 export function buildChecker(root) {
-  const section = el('section', 'hw-checker');
-  section.setAttribute('aria-labelledby', 'checker-title');
-  const heading = el('h2', null, 'Check a handed-in file');
-  heading.id = 'checker-title';
+  const { section, heading } = titledSection('hw-checker', 'checker-title', 'Check a handed-in file');
   const sheet = el('input');
   sheet.type = 'text';
   sheet.placeholder = 'the sheet’s link (or its JSON): hand-ins for any other sheet are refused';

@@ -13,7 +13,7 @@ import { readSheet } from '../readSheet.js';
 import { readStartState } from '../readStartState.js';
 import { sheetToCode } from '../sheetCodes.js';
 import { buildScormPackage } from './buildScormPackage.js';
-import { button, field } from './formParts.js';
+import { button, field, titledSection } from './formParts.js';
 
 /** The page's address for a sheet: homework.html?sheet=CODE. */
 export function sheetUrl(sheet) {
@@ -24,10 +24,7 @@ export function sheetUrl(sheet) {
 }
 
 export function buildComposer(root) {
-  const section = el('section', 'hw-composer');
-  section.setAttribute('aria-labelledby', 'composer-title');
-  const heading = el('h2', null, 'Compose a sheet');
-  heading.id = 'composer-title';
+  const { section, heading } = titledSection('hw-composer', 'composer-title', 'Compose a sheet');
   const title = el('input');
   title.type = 'text';
   title.value = 'Fresnel reflection: homework';

@@ -8,6 +8,15 @@ export function button(text, className) {
   return b;
 }
 
+/** A section named by its heading: { section, heading }. */
+export function titledSection(className, id, title) {
+  const section = el('section', className);
+  section.setAttribute('aria-labelledby', id);
+  const heading = el('h2', null, title);
+  heading.id = id;
+  return { section, heading };
+}
+
 /** A label whose visible text names the control (its accessible name). */
 export function field(labelText, control, className = 'hw-field') {
   const label = el('label', className);

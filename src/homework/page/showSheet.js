@@ -12,7 +12,7 @@ import { hashSeed, newSeed } from '../seededRandom.js';
 import { handInToCode, makeHandIn } from '../sheetCodes.js';
 import { openAnswerStore } from './answerStore.js';
 import { buildQuestionCard } from './buildQuestionCard.js';
-import { button, field } from './formParts.js';
+import { button, field, titledSection } from './formParts.js';
 
 /** The seed in use and where it comes from (the sheet, the link, the LMS account, this browser). */
 function chooseSeed(sheet, urlSeed, scorm, ownSeed) {
@@ -126,10 +126,7 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
   });
   applyLecture();
 
-  const handIn = el('section', 'hw-hand-in');
-  handIn.setAttribute('aria-labelledby', 'hand-in-title');
-  const handInTitle = el('h2', null, 'Hand in');
-  handInTitle.id = 'hand-in-title';
+  const { section: handIn, heading: handInTitle } = titledSection('hw-hand-in', 'hand-in-title', 'Hand in');
   const send = button('Hand in: save the file and show the code', 'hw-send');
   const status = el('p', 'hw-hand-in-status');
   status.setAttribute('role', 'status');
