@@ -8,7 +8,7 @@ import { el } from '../../ui/el.js';
 const NS = 'http://www.w3.org/2000/svg';
 const W = 640;
 const H = 240;
-const PAD = { left: 48, right: 16, top: 20, bottom: 40 };
+const PAD = { left: 48, right: 24, top: 20, bottom: 52 };
 const x = (t) => PAD.left + ((W - PAD.left - PAD.right) * t) / 90;
 const svg = (tag, attrs = {}) => {
   const node = document.createElementNS(NS, tag);
@@ -33,7 +33,7 @@ export function createPredictFigure({ label, describedBy = null, initial = 45, o
     tick.textContent = `${t}°`;
     axis.append(tick);
   }
-  const title = svg('text', { x: x(90), y: baseline + 36, 'text-anchor': 'end', class: 'predict-axis-title' });
+  const title = svg('text', { x: x(90), y: baseline + 46, 'text-anchor': 'end', class: 'predict-axis-title' });
   title.textContent = 'θ from the normal';
   axis.append(title);
   const truthLayer = svg('g', { class: 'predict-truth', 'aria-hidden': 'true' });
