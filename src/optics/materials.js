@@ -1,6 +1,6 @@
 // Material presets built from materials.json (refractiveindex.info, CC0; cite Polyanskiy,
 // Scientific Data 11, 94 (2024)). Each entry keeps its source so the UI can show it.
-import data from './materials.json';
+import data from './materials.json' with { type: 'json' };
 import { conductorNormalIncidence, criticalAngle, normalIncidence } from './fresnel.js';
 
 export const MATERIALS_ABOUT = data.about;

@@ -1,0 +1,82 @@
+// Grading read-back values against the float64 core: per criterion, every case it selects must be
+// finite, inside [0, 1] (to 1e-6, a float32 rounding) and, unless the criterion asks only for
+// sanity, within its tolerance of the target; the reason names the worst case. Pure: the values
+// come from the GPU (evaluateSource in src/gl/evaluateMethodsGpu.js), the cases from gradingCases.js.
+import { caseText } from './gradingCases.js';
+import { criterion } from './exercises.js';
+
+const SLACK = 1e-6;
+const num = (x) => (Number.isFinite(x) ? (Math.abs(x) >= 1e-3 || x === 0 ? x.toFixed(4) : x.toExponential(1)) : String(x));
+
+/** The values of case i: one number (dielectric) or three (conductor channels). */
+const channelsOf = (values, i, width) => (width === 1 ? [values[i]] : Array.from(values.subarray(i * 3, i * 3 + 3)));
+const targetsOf = (c, target) => (Array.isArray(c.exact) ? c.exact : [target === 'schlick' ? c.schlick : c.exact]);
+const CHANNEL = ['red', 'green', 'blue'];
+
+/**
+ * crit: a criterion (exercises.js); cases; values: Float32Array, 1 per case (dielectric) or 3
+ * (conductor). Returns { id, label, precision, pass, checked, failed, worst, reason }.
+ */
+export function gradeCriterion(crit, cases, values) {
+  const width = values.length === cases.length ? 1 : 3;
+  let checked = 0;
+  let failed = 0;
+  let worst = null; // the failure to name (NaN first, then outside [0, 1], then the largest error), or the largest error
+  const rank = { notFinite: 3, outOfRange: 2, aboveTolerance: 1, fine: 0 };
+  cases.forEach((c, i) => {
+    if (!crit.select(c)) return;
+    const got = channelsOf(values, i, width);
+    const want = targetsOf(c, crit.target);
+    got.forEach((v, ch) => {
+      checked += 1;
+      const error = Math.abs(v - want[ch]);
+      const kind = !Number.isFinite(v) ? 'notFinite' : v < -SLACK || v > 1 + SLACK ? 'outOfRange'
+        : crit.target !== 'sane' && !(error <= crit.tolerance) ? 'aboveTolerance' : 'fine';
+      if (kind !== 'fine') failed += 1;
+      const score = [rank[kind], Number.isFinite(error) ? error : Infinity];
+      if (!worst || score[0] > worst.score[0] || (score[0] === worst.score[0] && score[1] > worst.score[1])) {
+        worst = { score, kind, case: c, channel: width === 3 ? CHANNEL[ch] : null, value: v, reference: want[ch], error };
+      }
+    });
+  });
+  const where = worst ? `${caseText(worst.case)}${worst.channel ? ` (${worst.channel})` : ''}` : '';
+  const what = crit.target === 'schlick' ? 'Schlick’s formula' : 'the exact R';
+  let reason;
+  if (!checked) reason = 'No case to check.';
+  else if (!failed) reason = crit.target === 'sane' ? `All ${checked} values finite and in [0, 1].` : `All ${checked} values within ${crit.tolerance} of ${what}; the largest difference ${num(worst.error)}, at ${where}.`;
+  else if (worst.kind === 'notFinite') reason = `${num(worst.value)} at ${where} (${failed} of ${checked} fail).`;
+  else if (worst.kind === 'outOfRange') reason = `${num(worst.value)}, outside [0, 1], at ${where} (${failed} of ${checked} fail).`;
+  else reason = `${num(worst.value)} where ${what} is ${num(worst.reference)} (off by ${num(worst.error)}, more than ${crit.tolerance}) at ${where}; ${failed} of ${checked} fail.`;
+  return { id: crit.id, label: crit.label, precision: crit.precision, pass: checked > 0 && failed === 0, checked, failed, worst, reason };
+}
+
+/** Every criterion of an exercise: valuesFor(precision) gives the read-back for that precision. */
+export function gradeExercise(exercise, cases, valuesFor) {
+  return exercise.criteria.map((id) => gradeCriterion(criterion(id), cases, valuesFor(criterion(id).precision)));
+}
+
+/**
+ * Error against the exact R over every case with cos θ in [0, 1] (highp): { max, mean, worst }
+ * (NaN counts as an infinite error, so the mean says so too).
+ */
+export function errorSummary(cases, values, target = 'exact') {
+  const width = values.length === cases.length ? 1 : 3;
+  let max = -1;
+  let sum = 0;
+  let count = 0;
+  let worst = null;
+  cases.forEach((c, i) => {
+    if (c.tag === 'outside') return;
+    const want = targetsOf(c, target);
+    channelsOf(values, i, width).forEach((v, ch) => {
+      const error = Number.isFinite(v) ? Math.abs(v - want[ch]) : Infinity;
+      sum += error;
+      count += 1;
+      if (error > max) {
+        max = error;
+        worst = { case: c, channel: width === 3 ? CHANNEL[ch] : null, value: v, reference: want[ch] };
+      }
+    });
+  });
+  return { max, mean: sum / count, worst, where: worst ? `${caseText(worst.case)}${worst.channel ? ` (${worst.channel})` : ''}` : '' };
+}

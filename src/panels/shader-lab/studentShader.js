@@ -1,0 +1,79 @@
+// The student's GLSL in a shader the page builds: never evaluated as JavaScript, only compiled by
+// the GPU driver into a read-back program. Before that, code that could hang or break the page is
+// refused in words: loops (a loop that never ends stalls the GPU until the browser resets it, and a
+// Fresnel function needs none), preprocessor lines that would change the wrapper (#version,
+// #extension, #line, #pragma), and sizes far past any Fresnel function. `#line 1` before the
+// student's code makes the driver's error lines the student's own (GLSL ES 3.00 §3.4); the wrapper
+// after it starts at line WRAPPER_LINE, so its errors are told apart.
+
+export const MAX_CODE = 6000;
+export const WRAPPER_LINE = 10000;
+
+/** Problems that refuse the code before it reaches the GPU: [{ line, message }] (empty: fine). */
+export function checkStudentCode(code) {
+  const problems = [];
+  if (typeof code !== 'string' || !code.trim()) return [{ line: null, message: 'There is no code to compile.' }];
+  if (code.length > MAX_CODE) problems.push({ line: null, message: `The code is ${code.length} characters long; a Fresnel function needs far fewer (at most ${MAX_CODE} here).` });
+  // Comments go first (a word in a comment is no loop); their newlines stay, so lines still count.
+  const bare = code.replace(/\/\*[\s\S]*?\*\//g, (c) => c.replace(/[^\n]/g, ' ')).replace(/\/\/[^\n]*/g, '');
+  bare.split('\n').forEach((text, i) => {
+    const line = i + 1;
+    if (/\b(for|while|do)\b/.test(text)) problems.push({ line, message: 'Loops are refused here: a Fresnel function needs none, and a loop that never ends would stall the graphics card.' });
+    const directive = /^\s*#\s*(\w+)/.exec(text)?.[1];
+    if (directive && !['define', 'undef', 'if', 'ifdef', 'ifndef', 'else', 'elif', 'endif'].includes(directive)) {
+      problems.push({ line, message: `#${directive} is refused here: the page writes the shader's version, extensions and line numbers.` });
+    }
+  });
+  return problems;
+}
+
+/**
+ * The read-back fragment shader around the student's code: precision as asked (the student's
+ * function inherits it), inputs read from float textures at full float32, the result written to
+ * an RGBA32F target. kind: 'dielectric' calls fresnel(cos, nI, nT); 'conductor' calls
+ * fresnelConductor(cos, n, k) with n from the inputs' yzw and k from the extra texture.
+ */
+export function studentFragment(code, { kind = 'dielectric', precision = 'highp' } = {}) {
+  const call = kind === 'conductor'
+    ? 'vec4(fresnelConductor(a.x, a.yzw, texelFetch(uExtra, p, 0).xyz), 1.0)'
+    : 'vec4(fresnel(a.x, a.y, a.z), 0.0, 0.0, 1.0)';
+  return `#version 300 es
+precision ${precision === 'mediump' ? 'mediump' : 'highp'} float;
+precision highp int;
+precision highp sampler2D;
+uniform sampler2D uInputs;
+uniform sampler2D uExtra;
+out highp vec4 outColor;
+#line 1
+${code}
+#line ${WRAPPER_LINE}
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  highp vec4 a = texelFetch(uInputs, p, 0);
+  outColor = ${call};
+}
+`;
+}
+
+/**
+ * The driver's log as [{ line (the student's, or null for the wrapper's or none), message }].
+ * Drivers write "ERROR: 0:12: 'x' : undeclared identifier" (ANGLE, Mesa) or "0(12) : error …"
+ * (some others); an error in the wrapper means the function is missing or has another signature.
+ */
+export function readCompileLog(log, signature) {
+  const entries = [];
+  for (const raw of String(log ?? '').split('\n')) {
+    const text = raw.trim();
+    if (!text || /^(WARNING|INFO)/i.test(text)) continue;
+    const m = /^(?:ERROR:\s*)?\d+[:(](\d+)\)?\s*:\s*(?:error\s*[^:]*:\s*)?(.*)$/i.exec(text);
+    if (!m) {
+      if (!/compilation errors?/i.test(text)) entries.push({ line: null, message: text.replace(/^ERROR:\s*/i, '') });
+      continue;
+    }
+    const line = Number(m[1]);
+    const message = m[2].trim();
+    if (line >= WRAPPER_LINE) entries.push({ line: null, message: `Define ${signature}: the page calls it (${message}).` });
+    else entries.push({ line, message });
+  }
+  return entries;
+}

@@ -1,0 +1,96 @@
+import { describe, expect, it } from 'vitest';
+import { caseInputs, conductorCases, dielectricCases } from '../../src/panels/shader-lab/gradingCases.js';
+import { EXERCISES, criterion, exerciseMetal } from '../../src/panels/shader-lab/exercises.js';
+import { errorSummary, gradeCriterion } from '../../src/panels/shader-lab/gradeExercise.js';
+import { WRAPPER_LINE, checkStudentCode, readCompileLog, studentFragment } from '../../src/panels/shader-lab/studentShader.js';
+import { criticalAngle, fresnelConductor, fresnelExact } from '../../src/optics/fresnel.js';
+import { methodById } from '../../src/optics/methods.js';
+
+const cases = dielectricCases();
+
+describe('the grading grid', () => {
+  it('holds total internal reflection, the critical angle ± tiny steps, grazing, cos θ outside [0, 1] and matched indices', () => {
+    const count = (pred) => cases.filter(pred).length;
+    expect(count((c) => c.family === 'fromInside' && c.exact === 1)).toBeGreaterThan(100);
+    expect(count((c) => c.tag === 'critical')).toBe(4 * 8);
+    const glass = cases.filter((c) => c.tag === 'critical' && c.nI === 1.5 && c.nT === 1);
+    const thetaC = (criticalAngle(1.5, 1) * 180) / Math.PI;
+    expect(glass.map((c) => Math.abs(c.thetaDeg - thetaC)).sort((a, b) => a - b)[0]).toBeCloseTo(1e-5, 12);
+    expect(count((c) => c.cos === 0)).toBe(12); // θ = 90° exactly, every pair
+    expect(count((c) => c.cos > 1)).toBeGreaterThan(0);
+    expect(count((c) => c.cos < 0)).toBeGreaterThan(0);
+    expect(cases.filter((c) => c.family === 'matched').every((c) => c.exact === 0)).toBe(true);
+  });
+  it('rounds inputs to float32 and takes the reference at those inputs, cos θ clamped', () => {
+    for (const c of cases) {
+      expect(Math.fround(c.cos)).toBe(c.cos);
+      expect(c.exact).toBe(fresnelExact(Math.min(1, Math.max(0, c.cos)), c.nI, c.nT));
+    }
+    const gold = conductorCases(exerciseMetal(EXERCISES.find((e) => e.id === 'gold')));
+    expect(gold[0].exact[0]).toBe(fresnelConductor(1, Math.fround(0.156), Math.fround(3.602)));
+    const { inputs, extra } = caseInputs(gold);
+    expect(inputs.length).toBe(gold.length * 4);
+    expect(Array.from(extra.subarray(0, 3))).toEqual(gold[0].k);
+  });
+});
+
+describe('criteria', () => {
+  const exactValues = Float32Array.from(cases, (c) => c.exact);
+  it('the core itself passes every dielectric criterion; each criterion checks some cases', () => {
+    for (const exercise of EXERCISES.filter((e) => e.kind === 'dielectric')) {
+      for (const id of exercise.criteria) {
+        const crit = criterion(id);
+        const values = crit.target === 'schlick' ? Float32Array.from(cases, (c) => c.schlick) : exactValues;
+        const graded = gradeCriterion(crit, cases, values);
+        expect(graded.checked, id).toBeGreaterThan(0);
+        expect(graded.pass, `${id}: ${graded.reason}`).toBe(true);
+      }
+    }
+  });
+  it('known-wrong functions fail the criterion that names their fault, with the case in the reason', () => {
+    const emulate = (methodId) => Float32Array.from(cases, (c) => methodById(methodId).evaluate('fp32', c.cos, c.nI, c.nT));
+    // The lecture's order 1 + c² − m²: matched indices near grazing come out 1 instead of 0.
+    const literal = gradeCriterion(criterion('matched'), cases, emulate('exact-cg-literal'));
+    expect(literal.pass).toBe(false);
+    expect(literal.reason).toMatch(/^1\.0000 where the exact R is 0\.0000 .* at θ = (89\.99|90\.00)/);
+    // Schlick on cos θi has no total internal reflection.
+    const schlick = gradeCriterion(criterion('tir'), cases, emulate('schlick-pow'));
+    expect(schlick.pass).toBe(false);
+    expect(schlick.reason).toMatch(/where the exact R is 1\.0000/);
+    // pow(1 − c, 5) without a clamp: NaN for cos θ above 1 (pow of a negative base, GLSL ES §8.2).
+    const unclamped = gradeCriterion(criterion('schlickClamped'), cases, emulate('schlick-pow'));
+    expect(unclamped.pass).toBe(false);
+    expect(unclamped.reason).toMatch(/^NaN at cos θ = 1\.0000001/);
+  });
+  it('sums up the error with the worst case named, NaN counted as infinite', () => {
+    const values = Float32Array.from(cases, (c) => c.exact);
+    values[5] = NaN;
+    const summary = errorSummary(cases, values);
+    expect(summary.max).toBe(Infinity);
+    expect(summary.where).toMatch(/^θ = /);
+    expect(errorSummary(cases, cases.map((c) => c.exact)).max).toBe(0);
+  });
+});
+
+describe('the student\'s code in the page\'s shader', () => {
+  it('is refused with a line when it loops or changes the wrapper, and not for words in comments', () => {
+    expect(checkStudentCode('float fresnel(float c, float a, float b) {\n  for (int i = 0; i < 9; i++) {}\n  return 0.0;\n}')).toEqual([{ line: 2, message: expect.stringMatching(/^Loops are refused/) }]);
+    expect(checkStudentCode('#version 100\nfloat x;')[0]).toMatchObject({ line: 1, message: expect.stringMatching(/#version is refused/) });
+    expect(checkStudentCode('// do not loop: for, while\n/* while\n */ float f() { return 1.0; }')).toEqual([]);
+    expect(checkStudentCode('x'.repeat(7000))[0].message).toMatch(/7000 characters/);
+    expect(checkStudentCode('  ')).toHaveLength(1);
+  });
+  it('sits after #line 1, so the driver names the student\'s lines; the wrapper\'s lines are told apart', () => {
+    const source = studentFragment('float fresnel(float c, float a, float b) { return c; }', { precision: 'mediump' });
+    expect(source).toMatch(/^#version 300 es\nprecision mediump float;/);
+    expect(source).toContain(`#line 1\nfloat fresnel`);
+    expect(source).toContain(`#line ${WRAPPER_LINE}\nvoid main()`);
+    const log = "ERROR: 0:3: 'g' : undeclared identifier\nERROR: 0:3: '=' : dimension mismatch\nERROR: 0:10003: 'fresnel' : no matching overloaded function found\nERROR: 3 compilation errors.  No code generated.\n";
+    expect(readCompileLog(log, 'float fresnel(float cosTheta, float nI, float nT)')).toEqual([
+      { line: 3, message: "'g' : undeclared identifier" },
+      { line: 3, message: "'=' : dimension mismatch" },
+      { line: null, message: "Define float fresnel(float cosTheta, float nI, float nT): the page calls it ('fresnel' : no matching overloaded function found)." },
+    ]);
+    expect(readCompileLog('0(7) : error C0000: syntax error, unexpected identifier', 'f')).toEqual([{ line: 7, message: 'syntax error, unexpected identifier' }]);
+  });
+});
