@@ -12,9 +12,10 @@ import { cellAt, classifyGrid, criticalAngleDeg, gridInputs } from '../../optics
 import { methodById } from '../../optics/methods.js';
 import { contextFor } from '../../optics/rounding.js';
 import { classify, classifyValue, CLASS_NAMES } from '../../optics/stabilityMap.js';
-import { buildStabilityDom, CLASS_LABELS } from './buildStabilityDom.js';
-import { drawMap } from './drawMap.js';
-import { composePng } from './composePng.js';
+import { buildStabilityDom } from './buildStabilityDom.js';
+import { CLASS_LABELS } from '../shared/createMapFigure.js';
+import { drawMap } from '../shared/drawMap.js';
+import { composePng } from '../shared/composePng.js';
 import './styles.css';
 import { schema } from './schema.js';
 

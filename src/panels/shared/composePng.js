@@ -2,7 +2,7 @@
 // and counts, so the file makes sense away from the page.
 import { cssVar } from '../../ui/theme.js';
 import { CLASS_NAMES } from '../../optics/stabilityMap.js';
-import { CLASS_LABELS } from './buildStabilityDom.js';
+import { CLASS_LABELS } from './createMapFigure.js';
 import { CLASS_COLORS } from './drawMap.js';
 
 /** parts: [{ canvas, title, map }]; heading: the method. Returns a PNG data URL. */

@@ -1,0 +1,64 @@
+// The code editor: CodeMirror 6 with GLSL highlighting (the C-like "shader" mode of
+// @codemirror/legacy-modes), line numbers, undo, bracket matching, and compile errors marked at
+// their lines (@codemirror/lint). Tab is left to moving focus, as the WAI-ARIA guidance on code
+// editors and CodeMirror's own default have it (Escape, then Tab, leaves it too); Ctrl+Enter
+// (⌘Enter) grades. Its colours and size come from the page's theme, so it reads on a projector.
+import { EditorState, Compartment } from '@codemirror/state';
+import { EditorView, keymap, lineNumbers, highlightActiveLine, drawSelection } from '@codemirror/view';
+import { defaultKeymap, history, historyKeymap } from '@codemirror/commands';
+import { StreamLanguage, bracketMatching, defaultHighlightStyle, indentOnInput, syntaxHighlighting } from '@codemirror/language';
+import { shader } from '@codemirror/legacy-modes/mode/clike';
+import { lintGutter, setDiagnostics } from '@codemirror/lint';
+
+/**
+ * parent: where the editor goes; doc: its text; label: its accessible name; onChange(text) after
+ * each edit; onRun() on Ctrl+Enter. Returns { view, text(), setText(text), setErrors([{ line,
+ * message }]), setReadOnly(on), focus(), destroy() }.
+ */
+export function createCodeEditor(parent, { doc, label, onChange, onRun }) {
+  const readOnly = new Compartment();
+  const view = new EditorView({
+    parent,
+    state: EditorState.create({
+      doc,
+      extensions: [
+        lineNumbers(),
+        history(),
+        drawSelection(),
+        highlightActiveLine(),
+        bracketMatching(),
+        indentOnInput(),
+        StreamLanguage.define(shader),
+        syntaxHighlighting(defaultHighlightStyle, { fallback: true }),
+        lintGutter(),
+        keymap.of([{ key: 'Mod-Enter', run: () => { onRun(); return true; } }, ...defaultKeymap, ...historyKeymap]),
+        EditorView.contentAttributes.of({ 'aria-label': label }),
+        EditorView.updateListener.of((update) => { if (update.docChanged) onChange(update.state.doc.toString()); }),
+        readOnly.of(EditorState.readOnly.of(false)),
+      ],
+    }),
+  });
+  return {
+    view,
+    text: () => view.state.doc.toString(),
+    /** Replaces the text (a new exercise, a reference answer, a value from the link or a message). */
+    setText(text) {
+      if (text === view.state.doc.toString()) return;
+      view.dispatch({ changes: { from: 0, to: view.state.doc.length, insert: text } });
+    },
+    /** Marks each error at its line (1-based, of this text); an error without a line marks line 1. */
+    setErrors(errors) {
+      const { doc: current } = view.state;
+      const diagnostics = errors.map(({ line, message }) => {
+        const at = current.line(Math.min(Math.max(1, line ?? 1), current.lines));
+        return { from: at.from, to: at.to, severity: 'error', message };
+      });
+      view.dispatch(setDiagnostics(view.state, diagnostics));
+    },
+    setReadOnly(on) {
+      view.dispatch({ effects: readOnly.reconfigure(EditorState.readOnly.of(on)) });
+    },
+    focus: () => view.focus(),
+    destroy: () => view.destroy(),
+  };
+}

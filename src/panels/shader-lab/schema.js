@@ -1,0 +1,13 @@
+// Parameters of the `shader-lab` panel: controls, URL keys and messages all use them. Pure data
+// (no DOM), loaded with the page so the panel's link and state work before its module arrives.
+import { EXERCISES } from './exercises.js';
+import { MAX_CODE } from './studentShader.js';
+import { decodeCode, encodeCode } from './codeCodec.js';
+
+export const schema = {
+  exercise: { type: 'enum', default: 'schlick', options: Object.fromEntries(EXERCISES.map((e) => [e.id, e.title])), label: 'Exercise' },
+  // Empty: the exercise's starting code. The editor shows the code; the link keeps it compact.
+  code: { type: 'text', default: '', maxLength: MAX_CODE, encode: encodeCode, decode: decodeCode, label: 'GLSL code' },
+  precision: { type: 'enum', default: 'highp', options: { highp: 'highp', mediump: 'mediump' }, label: 'Map precision' },
+  homework: { type: 'boolean', default: false, label: 'Homework mode (no reference answers)' },
+};
