@@ -14,6 +14,14 @@ import { f82Coefficients, methodById } from '../optics/methods.js';
 
 export class GpuFloatUnavailable extends Error {}
 
+/** A shader did not compile or link; `log` holds the driver's own words. */
+export class ShaderCompileFailed extends Error {
+  constructor(message, log) {
+    super(message);
+    this.log = log;
+  }
+}
+
 /** A full-screen triangle from gl_VertexID: no buffers, works with any vertex array bound. */
 export const FULLSCREEN_VERTEX = `#version 300 es
 void main() {
@@ -74,7 +82,7 @@ export function compileProgram(gl, vertexSource, fragmentSource) {
     if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS) && !gl.isContextLost()) {
       const log = gl.getShaderInfoLog(shader);
       gl.deleteShader(shader);
-      throw new Error(`shader compile failed: ${log}`);
+      throw new ShaderCompileFailed(`shader compile failed: ${log}`, log ?? '');
     }
     return shader;
   });
@@ -85,7 +93,7 @@ export function compileProgram(gl, vertexSource, fragmentSource) {
   if (!gl.getProgramParameter(program, gl.LINK_STATUS) && !gl.isContextLost()) {
     const log = gl.getProgramInfoLog(program);
     gl.deleteProgram(program);
-    throw new Error(`program link failed: ${log}`);
+    throw new ShaderCompileFailed(`program link failed: ${log}`, log ?? '');
   }
   return program;
 }
@@ -184,7 +192,7 @@ export function createMethodsGpu(gl) {
     return programs.get(key);
   }
 
-  function run(entry, inputs, extra, count) {
+  function run(entry, inputs, extra, count, channels = 1) {
     if (disposed) throw new Error('the GPU method evaluator was disposed');
     if (gl.isContextLost()) throw new Error('the WebGL context was lost');
     const width = Math.min(count, MAX_WIDTH);
@@ -216,8 +224,8 @@ export function createMethodsGpu(gl) {
       const out = new Float32Array(width * height * 4);
       gl.readPixels(0, 0, width, height, gl.RGBA, gl.FLOAT, out);
       gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, null, 0);
-      const result = new Float32Array(count);
-      for (let i = 0; i < count; i += 1) result[i] = out[i * 4];
+      const result = new Float32Array(count * channels);
+      for (let i = 0; i < count; i += 1) for (let ch = 0; ch < channels; ch += 1) result[i * channels + ch] = out[i * 4 + ch];
       return result;
     } finally {
       restore();
@@ -241,6 +249,28 @@ export function createMethodsGpu(gl) {
       const count = inputs.length / 4;
       const entry = programFor(`${methodId}|${precision}`, methodFragmentSource(methodId, precision));
       return run(entry, inputs, extraFor(methodId, inputs, extra, count), count);
+    },
+    /**
+     * A fragment shader of the caller's (the shader lab's wrapper around a student's function,
+     * reading uInputs and uExtra as methodFragmentSource's do) evaluated per sample: `channels`
+     * floats per sample (1: red, 3: rgb). Compiled once per key (the caller keeps only its newest:
+     * forget); a failure throws ShaderCompileFailed with the driver's log.
+     */
+    evaluateSource({ key, source, inputs, extra = null, channels = 1 }) {
+      if (!(inputs instanceof Float32Array) || inputs.length === 0 || inputs.length % 4 !== 0) {
+        throw new RangeError('inputs must be a non-empty Float32Array of 4 floats per sample');
+      }
+      const count = inputs.length / 4;
+      return run(programFor(`source|${key}`, source), inputs, extra ?? new Float32Array(count * 4), count, channels);
+    },
+    /** Frees the programs evaluateSource compiled under keys that start with `prefix`. */
+    forget(prefix) {
+      for (const [key, entry] of programs) {
+        if (key.startsWith(`source|${prefix}`)) {
+          gl.deleteProgram(entry.program);
+          programs.delete(key);
+        }
+      }
     },
     /**
      * What mediump and highp really are, by rendering: { highpBits, mediumpBits (significand bits

@@ -237,6 +237,32 @@ export const FRESNEL_QUESTIONS = [
     state: () => ({ scene: 'plastic' }),
   },
   {
+    id: 'lecture-order', panel: 'shader-lab', kind: 'choice',
+    params: (rng) => ({ n: rng.pick([1.33, 1.5]), theta: rng.pick([89.99, 89.999]) }),
+    prompt: (p) => `Both sides have n = ${p.n}. In float32 (highp), the lecture's code computes g = sqrt(1.0 + c*c - m*m) at θ = ${p.theta}°. What R comes out?`,
+    options: () => {
+      const literal = (p) => methodById('exact-cg-literal').evaluate('fp32', cosDeg(p.theta), p.n, p.n);
+      return [
+        {
+          id: 'zero', text: () => '0, as it must be with no interface.',
+          holds: (p) => literal(p) === 0,
+          why: (p) => `No: it gives ${fixed(literal(p), 4)}. With c² below half a float32 step of 1, 1.0 + c*c rounds to 1.0, so g² = 0 and R = 1; (1 − m)(1 + m) + c² keeps c².`,
+        },
+        {
+          id: 'one', text: () => '1: 1.0 + c*c rounds to 1.0, so g = 0 and the formula says everything is reflected.',
+          holds: (p) => Math.abs(literal(p) - 1) < 1e-6,
+          why: (p) => `Right: ${fixed(literal(p), 4)}, where the exact R is 0. The grader's matched-indices criterion catches exactly this.`,
+        },
+        {
+          id: 'nan', text: () => 'NaN: the square root of a negative number.',
+          holds: (p) => Number.isNaN(literal(p)),
+          why: (p) => `No: 1 + c² − m² is c² ≥ 0 in exact arithmetic and rounds to 0, not below; R comes out ${fixed(literal(p), 4)}.`,
+        },
+      ];
+    },
+    state: () => ({ exercise: 'exact' }),
+  },
+  {
     id: 'pow-above-one', panel: 'stability', kind: 'choice',
     params: (rng) => ({ nT: rng.pick([1.33, 1.5]) }),
     prompt: (p) => `Interpolated normals can give cos θ = ${COS_ABOVE_ONE}, a hair above 1. In a highp shader, what does Schlick's R0 + (1 − R0)·pow(1 − cos θ, 5) give there (from air into n_t = ${p.nT})?`,

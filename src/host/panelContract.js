@@ -8,7 +8,7 @@
  * One parameter. The schema is the single source of truth for the panel's controls, its URL keys
  * and its messages; a value that breaks it is reported and replaced by the default.
  * @typedef {object} ParamSpec
- * @property {'number'|'enum'|'color'|'boolean'} type
+ * @property {'number'|'enum'|'color'|'boolean'|'text'} type
  * @property {number|string|boolean} default
  * @property {string} label        the control's visible label (and its accessible name)
  * @property {number} [min]
@@ -16,6 +16,9 @@
  * @property {number} [step]       also sets how many decimals the URL keeps
  * @property {string[]|Record<string, string>} [options]  enum values, or { value: label }
  * @property {string[]} [aliases]  older keys that still read, so links made before a rename work
+ * @property {number} [maxLength]  texts: the longest accepted
+ * @property {(text: string) => string} [encode]  texts: the compact form the link writes
+ * @property {(raw: string) => string | null} [decode]  texts: the link's form (or plain text) back, null if unreadable
  */
 
 /** @typedef {Record<string, ParamSpec>} Schema */

@@ -3,8 +3,10 @@
 // its messages. Pure functions; a bad value never throws, it is reported and replaced by the default
 // (in the manner of PhET's query-parameter tables).
 //
-// Spec fields: type ('number' | 'enum' | 'color' | 'boolean'), default, label, and
+// Spec fields: type ('number' | 'enum' | 'color' | 'boolean' | 'text'), default, label, and
 // for numbers min, max, step; for enums options (an array of values, or { value: label });
+// for texts maxLength and optionally encode/decode, a compact form for the link (decode also
+// takes the plain text, which messages send; it returns null for a form it cannot read);
 // optionally aliases: older keys that still read (links and decks made before a rename keep working).
 
 const HEX = /^#?([0-9a-f]{6})$/i;
@@ -53,6 +55,13 @@ export function parseValue(spec, raw) {
       if (raw === false || raw === 'false' || raw === '0') return { ok: true, value: false };
       return { ok: false, reason: 'is not true or false' };
     }
+    case 'text': {
+      if (typeof raw !== 'string') return { ok: false, reason: 'is not a text' };
+      const text = spec.decode ? spec.decode(raw) : raw;
+      if (typeof text !== 'string') return { ok: false, reason: 'cannot be read (was the link cut short?)' };
+      if (text.length > spec.maxLength) return { ok: false, reason: `is longer than ${spec.maxLength} characters` };
+      return { ok: true, value: text };
+    }
     default:
       return { ok: false, reason: `has an unknown type ${spec.type}` };
   }
@@ -67,6 +76,8 @@ export function formatValue(spec, value) {
     }
     case 'color':
       return value.replace('#', '');
+    case 'text':
+      return spec.encode ? spec.encode(value) : value;
     default:
       return String(value);
   }

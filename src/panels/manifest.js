@@ -181,6 +181,17 @@ export const PANELS = Object.freeze([
     webgl: true,
     material: null,
   },
+  {
+    id: 'shader-lab',
+    title: 'Write the Fresnel function',
+    lede: `Write it in GLSL, as the lecture's code does: this GPU compiles it and evaluates it over total internal
+        reflection, the critical angle to a hundred-thousandth of a degree, grazing, cos θ a hair outside [0, 1] and
+        matched indices, in highp and in mediump, and every value is checked against the float64 optics core.
+        Each exercise states its criteria first.`,
+    cite: 'Lecture: “Fresnel Reflection in Lighting” (the shader code); beyond the slides.',
+    webgl: true,
+    material: null,
+  },
 ]);
 
 /** Panel ids in lecture order. */

@@ -29,7 +29,7 @@ describe('the panel manifest', () => {
     expect(PANEL_IDS).toEqual([
       'spheres', 'normal-mips', 'asphalt', 'changing-specular', 'reflect-refract', 'refraction-waves',
       'angle-ratio', 'refractive-index', 'polarization', 'exact-fresnel', 'schlick', 'r0-derivation',
-      'fresnel-lighting', 'metals', 'speed-accuracy', 'stability',
+      'fresnel-lighting', 'metals', 'speed-accuracy', 'stability', 'shader-lab',
     ]);
   });
   it('the README lists the same ids in the same order', () => {

@@ -1,0 +1,65 @@
+// The DOM of the shader lab: the exercise and its criteria (stated before any code is graded),
+// the editor, the buttons, what the compiler or the page refused, the result of each criterion,
+// the error summary, and the student's stability map beside the reference answer's.
+import { el } from '../../ui/el.js';
+import { createMapFigure } from '../shared/createMapFigure.js';
+
+export function buildShaderLabDom(host) {
+  const root = el('div', 'sl-panel st-panel');
+  const task = el('div', 'sl-task');
+  const title = el('h3', 'sl-title');
+  const signature = el('p', 'sl-signature');
+  const criteria = el('ol', 'sl-criteria');
+  criteria.setAttribute('aria-label', 'Criteria');
+  task.append(title, signature, criteria);
+  const editor = el('div', 'sl-editor');
+  const actions = el('div', 'sl-actions');
+  const button = (text) => {
+    const b = el('button', null, text);
+    b.type = 'button';
+    actions.append(b);
+    return b;
+  };
+  const grade = button('Grade (Ctrl+Enter)');
+  const restart = button('Start over');
+  const reference = button('Show a reference answer');
+  const errors = el('ul', 'sl-errors');
+  errors.setAttribute('role', 'alert');
+  const summary = el('p', 'sl-summary');
+  summary.setAttribute('aria-live', 'polite');
+  const note = el('p', 'sl-note');
+  const maps = el('div', 'st-maps');
+  const student = createMapFigure('student');
+  const referenceMap = createMapFigure('reference');
+  maps.append(student.figure, referenceMap.figure);
+  root.append(task, editor, actions, errors, summary, note, maps);
+  host.append(root);
+
+  return {
+    root,
+    editor,
+    grade,
+    restart,
+    reference,
+    maps,
+    student,
+    referenceMap,
+    setTask(exercise, rows) {
+      title.textContent = exercise.title;
+      signature.replaceChildren('Write ', el('code', null, exercise.signature), '. It is compiled into a shader on this GPU and checked against the float64 optics core:');
+      criteria.replaceChildren(...rows.map(({ label, precision, result }) => {
+        const item = el('li', `sl-criterion${result ? (result.pass ? ' sl-pass' : ' sl-fail') : ''}`);
+        const state = result ? (result.pass ? 'passed' : 'failed') : 'not graded';
+        item.append(el('span', 'sl-state', state), ' ', el('span', null, `${label}${precision === 'mediump' ? ' (mediump)' : ''}`));
+        if (result) item.append(el('span', 'sl-reason', result.reason));
+        return item;
+      }));
+    },
+    setErrors(list) {
+      errors.replaceChildren(...list.map(({ line, message }) => el('li', null, line ? `Line ${line}: ${message}` : message)));
+      errors.hidden = list.length === 0;
+    },
+    setSummary(text) { if (summary.textContent !== text) summary.textContent = text; },
+    setNote(text) { note.textContent = text; note.hidden = !text; },
+  };
+}

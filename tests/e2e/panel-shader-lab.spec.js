@@ -1,0 +1,66 @@
+// The shader lab as a student uses it: reference answers pass every criterion through the panel,
+// a compile error is marked at the student's line, a loop is refused before the GPU sees it, the
+// code round-trips through the link, typing in the editor grades, and homework mode hides the
+// reference answers.
+import { test, expect, openLab } from './fixtures.js';
+import { EXERCISE_IDS } from '../../src/panels/shader-lab/exercises.js';
+import { encodeCode } from '../../src/panels/shader-lab/codeCodec.js';
+
+const embed = (query = '') => `./embed.html?panel=shader-lab${query}`;
+const lab = (page, fn, arg) => page.evaluate(fn, arg);
+const states = (page) => page.locator('.sl-criterion .sl-state');
+
+test('every exercise\'s reference answer passes every criterion in the panel', async ({ page }) => {
+  test.setTimeout(120_000);
+  await openLab(page, embed());
+  for (const id of EXERCISE_IDS) {
+    await lab(page, (ex) => window.fresnelLab.hosts['shader-lab'].set({ exercise: ex }), id);
+    await page.getByRole('button', { name: 'Show a reference answer' }).click();
+    await expect.poll(async () => [...new Set(await states(page).allTextContents())], { message: id }).toEqual(['passed']);
+    await expect(page.locator('.sl-summary')).toHaveText(/^(\d+) of \1 criteria pass\./);
+  }
+  // The conductor has no (θ, n_i/n_t) map; the dielectric exercises do, beside the reference's.
+  await expect(page.locator('.st-maps')).toBeHidden();
+  await lab(page, () => window.fresnelLab.hosts['shader-lab'].set({ exercise: 'exact' }));
+  await expect(page.locator('.st-maps')).toBeVisible();
+});
+
+test('a compile error is marked at the student\'s line; a loop is refused before the GPU sees it', async ({ page }) => {
+  await openLab(page, embed('&exercise=exact'));
+  const broken = 'float fresnel(float cosTheta, float nI, float nT) {\n  float m = nI / nT;\n  float g = sqrt(1.0 - m * m + c * c);\n  return g;\n}';
+  await lab(page, (code) => window.fresnelLab.hosts['shader-lab'].set({ code }), broken);
+  await expect(page.locator('.sl-errors li').first()).toHaveText(/^Line 3: 'c'.*undeclared identifier/);
+  await expect(page.locator('.cm-lintRange-error')).toHaveText('  float g = sqrt(1.0 - m * m + c * c);');
+  await expect(states(page)).toHaveText(['not graded', 'not graded']);
+  await expect(page.locator('.panel-description')).toContainText('not graded; line 3:');
+  await lab(page, () => window.fresnelLab.hosts['shader-lab'].set({ code: 'float fresnel(float c, float a, float b) {\n  while (true) {}\n  return 0.0;\n}' }));
+  await expect(page.locator('.sl-errors li').first()).toHaveText(/^Line 2: Loops are refused here/);
+});
+
+test('the code round-trips through the link, compact, and typing in the editor grades', async ({ page }) => {
+  const code = 'float fresnel(float cosTheta, float nI, float nT) {\n  return 1.0; // everything reflects\n}';
+  await openLab(page, `./?shader-lab.exercise=tir&shader-lab.code=${encodeURIComponent(encodeCode(code))}#shader-lab`);
+  await page.locator('section[data-panel="shader-lab"]').scrollIntoViewIfNeeded();
+  await expect.poll(() => lab(page, () => window.fresnelLab.panels['shader-lab']?.editor.text())).toBe(code);
+  // R = 1 is right past the critical angle only.
+  await expect(states(page)).toHaveText(['failed', 'passed', 'failed', 'passed']);
+  // Typed: the edit is graded, and the link follows with the code in its compact form.
+  const content = page.locator('section[data-panel="shader-lab"] .cm-content');
+  await content.click();
+  await page.keyboard.press('Control+End');
+  await page.keyboard.type('\n// a note');
+  await expect.poll(() => lab(page, () => window.fresnelLab.hosts['shader-lab'].values.code)).toBe(`${code}\n// a note`);
+  await expect.poll(() => new URL(page.url()).searchParams.get('shader-lab.code')).toBe(encodeCode(`${code}\n// a note`));
+  expect(encodeCode(code).length).toBeLessThan(encodeURIComponent(code).length);
+  await page.goto(page.url());
+  await page.evaluate(() => window.fresnelLab.ready);
+  await page.locator('section[data-panel="shader-lab"]').scrollIntoViewIfNeeded();
+  await expect.poll(() => lab(page, () => window.fresnelLab.panels['shader-lab']?.editor.text())).toBe(`${code}\n// a note`);
+});
+
+test('homework mode hides the reference answers', async ({ page }) => {
+  await openLab(page, embed('&homework=true'));
+  await expect(page.getByRole('button', { name: 'Show a reference answer' })).toBeHidden();
+  await expect(page.getByRole('button', { name: 'Start over' })).toBeVisible();
+  await expect(page.getByRole('textbox', { name: 'GLSL code of the Fresnel function' })).toBeVisible();
+});
