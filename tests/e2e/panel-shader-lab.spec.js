@@ -18,6 +18,7 @@ test('every exercise\'s reference answer passes every criterion in the panel', a
     await page.getByRole('button', { name: 'Show a reference answer' }).click();
     await expect.poll(async () => [...new Set(await states(page).allTextContents())], { message: id }).toEqual(['passed']);
     await expect(page.locator('.sl-summary')).toHaveText(/^(\d+) of \1 criteria pass\./);
+    await expect(page.locator('.sl-spheres canvas')).toBeVisible();
   }
   // The conductor has no (θ, n_i/n_t) map; the dielectric exercises do, beside the reference's.
   await expect(page.locator('.st-maps')).toBeHidden();
@@ -44,6 +45,13 @@ test('the code round-trips through the link, compact, and typing in the editor g
   await expect.poll(() => lab(page, () => window.fresnelLab.panels['shader-lab']?.editor.text())).toBe(code);
   // R = 1 is right past the critical angle only.
   await expect(states(page)).toHaveText(['failed', 'passed', 'failed', 'passed']);
+  // Its sphere is a pure mirror: the centre of the left sphere is not the exact one's colour.
+  const centres = () => lab(page, () => {
+    const c = document.querySelector('section[data-panel="shader-lab"] .sl-spheres canvas');
+    const g = c.getContext('2d');
+    return [0.25, 0.75].map((x) => [...g.getImageData(Math.round(c.width * x), Math.round(c.height / 2), 1, 1).data]);
+  });
+  await expect.poll(async () => { const [left, right] = await centres(); return left[3] === 255 && Math.abs(left[0] - right[0]) + Math.abs(left[1] - right[1]) > 30; }).toBe(true);
   // Typed: the edit is graded, and the link follows with the code in its compact form.
   const content = page.locator('section[data-panel="shader-lab"] .cm-content');
   await content.click();
@@ -56,6 +64,21 @@ test('the code round-trips through the link, compact, and typing in the editor g
   await page.evaluate(() => window.fresnelLab.ready);
   await page.locator('section[data-panel="shader-lab"]').scrollIntoViewIfNeeded();
   await expect.poll(() => lab(page, () => window.fresnelLab.panels['shader-lab']?.editor.text())).toBe(`${code}\n// a note`);
+});
+
+test('a lost graphics context is said, and grading comes back with it; the code is kept in the browser', async ({ page }) => {
+  await openLab(page, embed('&exercise=safe'));
+  await page.getByRole('button', { name: 'Show a reference answer' }).click();
+  await expect(states(page)).toHaveText(['passed', 'passed']);
+  await lab(page, () => { window.lose = window.fresnelLab.panels['shader-lab'].gl.getExtension('WEBGL_lose_context'); window.lose.loseContext(); });
+  await expect(page.locator('.sl-summary')).toHaveText('The graphics context was lost; grading resumes when it is back.');
+  await lab(page, () => window.lose.restoreContext());
+  await expect(states(page)).toHaveText(['passed', 'passed']);
+  await expect(page.locator('.sl-summary')).toHaveText(/^2 of 2 criteria pass\./);
+  // The same exercise opened again without code in the link: this browser's copy.
+  await openLab(page, embed('&exercise=safe'));
+  await expect.poll(() => lab(page, () => window.fresnelLab.hosts['shader-lab'].values.code)).toContain('total internal reflection');
+  await expect(states(page)).toHaveText(['passed', 'passed']);
 });
 
 test('homework mode hides the reference answers', async ({ page }) => {

@@ -3,6 +3,7 @@
 // the error summary, and the student's stability map beside the reference answer's.
 import { el } from '../../ui/el.js';
 import { createMapFigure } from '../shared/createMapFigure.js';
+import '../shared/twinStage.css';
 
 export function buildShaderLabDom(host) {
   const root = el('div', 'sl-panel st-panel');
@@ -28,11 +29,18 @@ export function buildShaderLabDom(host) {
   const summary = el('p', 'sl-summary');
   summary.setAttribute('aria-live', 'polite');
   const note = el('p', 'sl-note');
+  const spheres = el('div', 'twin-stage sl-spheres');
+  const spheresCanvas = el('canvas', 'twin-stage-canvas');
+  spheresCanvas.setAttribute('role', 'img');
+  const labels = el('div', 'twin-stage-labels');
+  labels.append(el('span', null, 'Your function'), el('span', null, 'The exact function'));
+  const spheresMessage = el('p', 'sl-spheres-message');
+  spheres.append(spheresCanvas, labels, spheresMessage);
   const maps = el('div', 'st-maps');
   const student = createMapFigure('student');
   const referenceMap = createMapFigure('reference');
   maps.append(student.figure, referenceMap.figure);
-  root.append(task, editor, actions, errors, summary, note, maps);
+  root.append(task, editor, actions, errors, summary, note, spheres, maps);
   host.append(root);
 
   return {
@@ -42,6 +50,14 @@ export function buildShaderLabDom(host) {
     restart,
     reference,
     maps,
+    spheres,
+    spheresCanvas,
+    /** A sentence in place of the spheres (the code does not compile, no WebGL), or '' to show them. */
+    setSpheresMessage(text) {
+      spheresMessage.textContent = text;
+      spheresMessage.hidden = !text;
+      spheresCanvas.hidden = labels.hidden = Boolean(text);
+    },
     student,
     referenceMap,
     setTask(exercise, rows) {

@@ -2,7 +2,8 @@
 // @codemirror/legacy-modes), line numbers, undo, bracket matching, and compile errors marked at
 // their lines (@codemirror/lint). Tab is left to moving focus, as the WAI-ARIA guidance on code
 // editors and CodeMirror's own default have it (Escape, then Tab, leaves it too); Ctrl+Enter
-// (⌘Enter) grades. Its colours and size come from the page's theme, so it reads on a projector.
+// (⌘Enter) grades. Its colours and size come from the page's theme, and long lines wrap, so it
+// reads on a projector.
 import { EditorState, Compartment } from '@codemirror/state';
 import { EditorView, keymap, lineNumbers, highlightActiveLine, drawSelection } from '@codemirror/view';
 import { defaultKeymap, history, historyKeymap } from '@codemirror/commands';
@@ -31,6 +32,7 @@ export function createCodeEditor(parent, { doc, label, onChange, onRun }) {
         StreamLanguage.define(shader),
         syntaxHighlighting(defaultHighlightStyle, { fallback: true }),
         lintGutter(),
+        EditorView.lineWrapping, // long lines wrap: nothing is cut off on a projector
         keymap.of([{ key: 'Mod-Enter', run: () => { onRun(); return true; } }, ...defaultKeymap, ...historyKeymap]),
         EditorView.contentAttributes.of({ 'aria-label': label }),
         EditorView.updateListener.of((update) => { if (update.docChanged) onChange(update.state.doc.toString()); }),

@@ -6,7 +6,7 @@ import { caseText } from './gradingCases.js';
 import { criterion } from './exercises.js';
 
 const SLACK = 1e-6;
-const num = (x) => (Number.isFinite(x) ? (Math.abs(x) >= 1e-3 || x === 0 ? x.toFixed(4) : x.toExponential(1)) : String(x));
+const num = (x) => (!Number.isFinite(x) ? String(x) : x === 0 ? '0' : Math.abs(x) >= 1e-3 ? x.toFixed(4) : x.toExponential(1));
 
 /** The values of case i: one number (dielectric) or three (conductor channels). */
 const channelsOf = (values, i, width) => (width === 1 ? [values[i]] : Array.from(values.subarray(i * 3, i * 3 + 3)));

@@ -19,6 +19,8 @@ import { caseInputs, caseText, conductorCases, dielectricCases } from './grading
 import { criterion, exerciseById, exerciseMetal } from './exercises.js';
 import { errorSummary, gradeExercise } from './gradeExercise.js';
 import { checkStudentCode, readCompileLog, studentFragment } from './studentShader.js';
+import { createSpherePainter } from './paintSpheres.js';
+import { ShaderError } from '../../gl/createProgram.js';
 import './styles.css';
 import { schema } from './schema.js';
 
@@ -58,12 +60,14 @@ export function mount(root, ctx) {
   const canvas = document.createElement('canvas');
   let context = null;
   let gpu = null;
+  let painter = null;
   let gpuProblem = '';
   let lost = false;
   const startGpu = () => {
     try {
       context = createContext(canvas);
       gpu = methodsGpu(context.gl);
+      painter = createSpherePainter(context.gl);
       gpuProblem = '';
     } catch (error) {
       if (!(error instanceof WebGL2Unavailable || error instanceof GpuFloatUnavailable)) throw error;
@@ -76,6 +80,8 @@ export function mount(root, ctx) {
     lost = false;
     if (context) disposeMethodsGpu(context.gl);
     gpu = context ? methodsGpu(context.gl) : null;
+    painter = context ? createSpherePainter(context.gl) : null; // the old programs went with the context
+    sourceKey = '';
     ctx.invalidate();
   };
   canvas.addEventListener('webglcontextlost', onLost);
@@ -128,6 +134,7 @@ export function mount(root, ctx) {
     const text = code();
     const refused = checkStudentCode(text);
     state = { results: [], summary: null, errors: refused, values: {}, maps: { student: null, reference: null } };
+    spheresProblem = 'No spheres until the code compiles and runs.';
     if (refused.length || !gpu || lost) return;
     const key = `student-${hashSeed(`${ex.id}\n${text}`).toString(36)}`;
     if (key !== sourceKey) gpu.forget('student-'); // only the newest code's programs are kept
@@ -155,6 +162,22 @@ export function mount(root, ctx) {
     }
     state.results = gradeExercise(ex, cases, (p) => state.values[p]);
     state.summary = errorSummary(cases, state.values.highp);
+    paint();
+  }
+
+  let spheresProblem = 'No spheres until the code compiles and runs.';
+  function paint() {
+    if (!painter || state.errors.length || !state.summary) return;
+    const ex = exercise();
+    try {
+      painter.paint(dom.spheresCanvas, `${sourceKey}|${ex.id}`, code(), ex, exerciseMetal(ex));
+      spheresProblem = '';
+    } catch (error) {
+      if (!(error instanceof ShaderError)) throw error;
+      // It compiled alone but not beside the page's lighting code: a name of the student's is taken.
+      spheresProblem = 'The spheres could not be drawn: a name in your code is one the page’s lighting code uses (environment, skyLight, castStage, linearToSrgb…).';
+    }
+    ctx.frameDrawn();
   }
 
   function show() {
@@ -173,6 +196,10 @@ export function mount(root, ctx) {
     dom.setNote(ex.criteria.some((id) => criterion(id).precision === 'mediump') && probe?.mediumpIsFullPrecision
       ? 'This GPU runs mediump at full float32 precision, so the mediump criteria cannot fail here; on a phone with half precision they can.' : '');
     dom.maps.hidden = ex.kind !== 'dielectric';
+    dom.setSpheresMessage(state.summary && !spheresProblem ? '' : spheresProblem || 'No spheres until the code compiles and runs.');
+    dom.spheresCanvas.setAttribute('aria-label', ex.kind === 'conductor'
+      ? 'Two gold spheres reflecting the sky: left with your function, right with the exact conductor Fresnel.'
+      : 'Two red spheres under a clear coat of n = 1.5: left with your function, right with the exact Fresnel reflectance.');
     for (const side of ['student', 'reference']) {
       const figure = side === 'student' ? dom.student : dom.referenceMap;
       const map = state.maps[side];
@@ -201,6 +228,12 @@ export function mount(root, ctx) {
   }
   const redraw = () => show();
   window.addEventListener('fresnel-lab:theme', redraw);
+  let resizing = 0;
+  const resizeObserver = new ResizeObserver(() => {
+    cancelAnimationFrame(resizing);
+    resizing = requestAnimationFrame(() => { if (dom.spheresCanvas.width !== Math.round(dom.spheresCanvas.getBoundingClientRect().width * Math.min(2, window.devicePixelRatio || 1))) paint(); });
+  });
+  resizeObserver.observe(dom.spheres);
   update();
   started = true;
 
@@ -209,6 +242,8 @@ export function mount(root, ctx) {
     get errors() { return state.errors; },
     get maps() { return state.maps; },
     editor,
+    /** The grading context (for tests that lose and restore it), or null. */
+    get gl() { return context?.gl ?? null; },
     update,
     describe() {
       const ex = exercise();
@@ -245,6 +280,9 @@ export function mount(root, ctx) {
     },
     dispose() {
       clearTimeout(typing);
+      cancelAnimationFrame(resizing);
+      resizeObserver.disconnect();
+      painter?.dispose();
       window.removeEventListener('fresnel-lab:theme', redraw);
       canvas.removeEventListener('webglcontextlost', onLost);
       canvas.removeEventListener('webglcontextrestored', onRestored);
