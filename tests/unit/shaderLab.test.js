@@ -85,7 +85,7 @@ describe('the student\'s code in the page\'s shader', () => {
     expect(source).toMatch(/^#version 300 es\nprecision mediump float;/);
     expect(source).toContain(`#line 1\nfloat fresnel`);
     expect(source).toContain(`#line ${WRAPPER_LINE}\nvoid main()`);
-    const log = "ERROR: 0:3: 'g' : undeclared identifier\nERROR: 0:3: '=' : dimension mismatch\nERROR: 0:10003: 'fresnel' : no matching overloaded function found\nERROR: 3 compilation errors.  No code generated.\n";
+    const log = "ERROR: 0:3: 'g' : undeclared identifier\nERROR: 0:3: '=' : dimension mismatch\nERROR: 0:10003: 'fresnel' : no matching overloaded function found\nERROR: 3 compilation errors.  No code generated.\n\n\u0000";
     expect(readCompileLog(log, 'float fresnel(float cosTheta, float nI, float nT)')).toEqual([
       { line: 3, message: "'g' : undeclared identifier" },
       { line: 3, message: "'=' : dimension mismatch" },

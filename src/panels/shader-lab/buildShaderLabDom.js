@@ -57,6 +57,7 @@ export function buildShaderLabDom(host) {
       spheresMessage.textContent = text;
       spheresMessage.hidden = !text;
       spheresCanvas.hidden = labels.hidden = Boolean(text);
+      spheres.classList.toggle('sl-no-spheres', Boolean(text));
     },
     student,
     referenceMap,

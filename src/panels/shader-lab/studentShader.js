@@ -63,7 +63,8 @@ void main() {
 export function readCompileLog(log, signature) {
   const entries = [];
   for (const raw of String(log ?? '').split('\n')) {
-    const text = raw.trim();
+    // eslint-disable-next-line no-control-regex
+    const text = raw.replace(/[\u0000-\u001f\u007f]/g, '').trim(); // drivers end the log with a NUL
     if (!text || /^(WARNING|INFO)/i.test(text)) continue;
     const m = /^(?:ERROR:\s*)?\d+[:(](\d+)\)?\s*:\s*(?:error\s*[^:]*:\s*)?(.*)$/i.exec(text);
     if (!m) {
