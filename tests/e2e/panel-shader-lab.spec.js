@@ -33,6 +33,7 @@ test('a compile error is marked at the student\'s line; a loop is refused before
   await expect(page.locator('.sl-errors li').first()).toHaveText(/^Line 3: 'c'.*undeclared identifier/);
   await expect(page.locator('.cm-lintRange-error')).toHaveText('  float g = sqrt(1.0 - m * m + c * c);');
   await expect(states(page)).toHaveText(['not graded', 'not graded']);
+  for (const text of await page.locator('.sl-errors li').allTextContents()) expect(text).toMatch(/^Line \d+: \S/); // no empty lines from the log
   await expect(page.locator('.panel-description')).toContainText('not graded; line 3:');
   await lab(page, () => window.fresnelLab.hosts['shader-lab'].set({ code: 'float fresnel(float c, float a, float b) {\n  while (true) {}\n  return 0.0;\n}' }));
   await expect(page.locator('.sl-errors li').first()).toHaveText(/^Line 2: Loops are refused here/);
