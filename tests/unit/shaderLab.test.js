@@ -78,6 +78,7 @@ describe('the student\'s code in the page\'s shader', () => {
     expect(checkStudentCode('#version 100\nfloat x;')[0]).toMatchObject({ line: 1, message: expect.stringMatching(/#version is refused/) });
     expect(checkStudentCode('// do not loop: for, while\n/* while\n */ float f() { return 1.0; }')).toEqual([]);
     expect(checkStudentCode('x'.repeat(7000))[0].message).toMatch(/7000 characters/);
+    expect(checkStudentCode('#define F(a, b) a##b\nfloat f() { F(fo, r) (;;) {} return 1.0; }')[0]).toMatchObject({ line: 1, message: expect.stringMatching(/token pasting/) });
     expect(checkStudentCode('  ')).toHaveLength(1);
   });
   it('sits after #line 1, so the driver names the student\'s lines; the wrapper\'s lines are told apart', () => {

@@ -19,6 +19,8 @@ export function checkStudentCode(code) {
   bare.split('\n').forEach((text, i) => {
     const line = i + 1;
     if (/\b(for|while|do)\b/.test(text)) problems.push({ line, message: 'Loops are refused here: a Fresnel function needs none, and a loop that never ends would stall the graphics card.' });
+    // Token pasting could spell a loop the word check cannot see (F(fo, r) with a##b).
+    if (text.includes('##')) problems.push({ line, message: '## (token pasting) is refused here: it could build a loop out of pieces.' });
     const directive = /^\s*#\s*(\w+)/.exec(text)?.[1];
     if (directive && !['define', 'undef', 'if', 'ifdef', 'ifndef', 'else', 'elif', 'endif'].includes(directive)) {
       problems.push({ line, message: `#${directive} is refused here: the page writes the shader's version, extensions and line numbers.` });
