@@ -293,7 +293,8 @@ export function createPanelHost(container, panel, {
     unmount() {
       wanted = false;
       if (!instance) return;
-      container.style.minHeight = `${container.offsetHeight}px`; // no layout jump while it is away
+      // No layout jump while it is away; rounded down, so the place is never taller than the panel was.
+      container.style.minHeight = `${Math.floor(container.getBoundingClientRect().height)}px`;
       cancelAnimationFrame(domFrame);
       domFrame = 0;
       instance.dispose();
