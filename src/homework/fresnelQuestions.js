@@ -260,7 +260,7 @@ export const FRESNEL_QUESTIONS = [
         },
       ];
     },
-    state: () => ({ exercise: 'exact' }),
+    state: () => ({ exercise: 'exact', homework: true }), // no reference answer: it would tell
   },
   {
     id: 'pow-above-one', panel: 'stability', kind: 'choice',

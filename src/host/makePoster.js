@@ -56,7 +56,8 @@ export async function makePoster({ picture, title, link, colours }) {
   g.fillText(title, margin, margin, width - 2 * margin);
 
   const local = link.startsWith('file:');
-  const matrix = local ? null : await qrMatrix(link);
+  // A QR code holds at most 2,331 bytes at level M: a longer link (a shader lab's code) gets none.
+  const matrix = local ? null : await qrMatrix(link).catch(() => null);
   const qr = qrPlace(matrix?.size ?? 25);
   // The picture fills the space between the title and the link, keeping its aspect ratio.
   const top = margin + 96;
@@ -84,7 +85,7 @@ export async function makePoster({ picture, title, link, colours }) {
 
   g.fillStyle = colours.muted;
   g.font = '500 30px system-ui, sans-serif';
-  const lead = local ? 'Opened from disk: this link opens on this computer only' : 'Explore it live: scan the code or open';
+  const lead = local ? 'Opened from disk: this link opens on this computer only' : matrix ? 'Explore it live: scan the code or open' : 'Explore it live: open';
   g.fillText(lead, margin, qr.y, qr.x - 2 * margin);
   // The link in full beside the code, wrapped at any character; a long link takes a smaller type
   // rather than being cut (the code holds all of it either way).

@@ -109,7 +109,7 @@ export function readParams(schema, search, prefix = '') {
     const raw = search.get(name);
     const result = parseValue(spec, raw);
     if (result.ok) values[key] = result.value;
-    else problems.push({ key: name, raw, reason: result.reason, fallback: formatValue(spec, spec.default) });
+    else problems.push({ key: name, raw, reason: result.reason, fallback: spec.type === 'text' ? spec.defaultText ?? 'an empty text' : formatValue(spec, spec.default) });
   }
   return { values, problems };
 }

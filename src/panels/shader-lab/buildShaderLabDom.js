@@ -21,11 +21,11 @@ export function buildShaderLabDom(host) {
     actions.append(b);
     return b;
   };
-  const grade = button('Grade (Ctrl+Enter)');
+  const grade = button('Grade (Ctrl+Enter, ⌘Enter)');
   const restart = button('Start over');
   const reference = button('Show a reference answer');
   const errors = el('ul', 'sl-errors');
-  errors.setAttribute('role', 'alert');
+  errors.setAttribute('aria-live', 'polite'); // said when it changes, not at every grade
   const summary = el('p', 'sl-summary');
   summary.setAttribute('aria-live', 'polite');
   const note = el('p', 'sl-note');
@@ -37,8 +37,8 @@ export function buildShaderLabDom(host) {
   const spheresMessage = el('p', 'sl-spheres-message');
   spheres.append(spheresCanvas, labels, spheresMessage);
   const maps = el('div', 'st-maps');
-  const student = createMapFigure('student');
-  const referenceMap = createMapFigure('reference');
+  const student = createMapFigure('student', { focusable: false }); // no probe here: not a tab stop
+  const referenceMap = createMapFigure('reference', { focusable: false });
   maps.append(student.figure, referenceMap.figure);
   root.append(task, editor, actions, errors, summary, note, spheres, maps);
   host.append(root);
@@ -73,7 +73,8 @@ export function buildShaderLabDom(host) {
       }));
     },
     setErrors(list) {
-      errors.replaceChildren(...list.map(({ line, message }) => el('li', null, line ? `Line ${line}: ${message}` : message)));
+      const texts = list.map(({ line, message }) => (line ? `Line ${line}: ${message}` : message));
+      if (texts.join('\n') !== [...errors.children].map((li) => li.textContent).join('\n')) errors.replaceChildren(...texts.map((t) => el('li', null, t)));
       errors.hidden = list.length === 0;
     },
     setSummary(text) { if (summary.textContent !== text) summary.textContent = text; },

@@ -4,7 +4,7 @@
 // editors and CodeMirror's own default have it (Escape, then Tab, leaves it too); Ctrl+Enter
 // (⌘Enter) grades. Its colours and size come from the page's theme, and long lines wrap, so it
 // reads on a projector.
-import { EditorState, Compartment } from '@codemirror/state';
+import { EditorState, Compartment, Transaction } from '@codemirror/state';
 import { EditorView, keymap, lineNumbers, highlightActiveLine, drawSelection } from '@codemirror/view';
 import { defaultKeymap, history, historyKeymap } from '@codemirror/commands';
 import { StreamLanguage, bracketMatching, defaultHighlightStyle, indentOnInput, syntaxHighlighting } from '@codemirror/language';
@@ -35,7 +35,10 @@ export function createCodeEditor(parent, { doc, label, onChange, onRun }) {
         EditorView.lineWrapping, // long lines wrap: nothing is cut off on a projector
         keymap.of([{ key: 'Mod-Enter', run: () => { onRun(); return true; } }, ...defaultKeymap, ...historyKeymap]),
         EditorView.contentAttributes.of({ 'aria-label': label }),
-        EditorView.updateListener.of((update) => { if (update.docChanged) onChange(update.state.doc.toString()); }),
+        // Only what the student typed: the page's own replacements (remote) are not a change of theirs.
+        EditorView.updateListener.of((update) => {
+          if (update.docChanged && !update.transactions.some((t) => t.annotation(Transaction.remote))) onChange(update.state.doc.toString());
+        }),
         readOnly.of(EditorState.readOnly.of(false)),
       ],
     }),
@@ -43,10 +46,16 @@ export function createCodeEditor(parent, { doc, label, onChange, onRun }) {
   return {
     view,
     text: () => view.state.doc.toString(),
-    /** Replaces the text (a new exercise, a reference answer, a value from the link or a message). */
-    setText(text) {
+    /**
+     * Replaces the text (a reference answer, a value from the link or a message). history: false
+     * for a new exercise, so undo cannot bring the last exercise's code into this one.
+     */
+    setText(text, { history = true } = {}) {
       if (text === view.state.doc.toString()) return;
-      view.dispatch({ changes: { from: 0, to: view.state.doc.length, insert: text } });
+      view.dispatch({
+        changes: { from: 0, to: view.state.doc.length, insert: text },
+        annotations: [Transaction.addToHistory.of(history), Transaction.remote.of(true)],
+      });
     },
     /** Marks each error at its line (1-based, of this text); an error without a line marks line 1. */
     setErrors(errors) {

@@ -17,7 +17,8 @@ const CRITERIA = {
   // Nearly matched indices are ill-conditioned at grazing (float32 keeps R to about 1e-4 there);
   // the lecture's order fails by 1, not by 1e-3.
   matched: { label: 'Matched indices: R = 0 at every angle, grazing included (θ = 90° too); nearly matched: within 0.001 of the exact R', precision: 'highp', target: 'exact', tolerance: 1e-3, select: (c) => (c.family === 'matched' || c.family === 'nearlyMatched') && inRange(c) },
-  tir: { label: 'From inside glass, water and diamond: R = 1 past the critical angle', precision: 'highp', target: 'exact', tolerance: 1e-6, select: (c) => c.family === 'fromInside' && inRange(c) && c.thetaDeg > c.critical },
+  // From 0.001° past θc: closer, g² is below float32's rounding of the index terms on some GPUs.
+  tir: { label: 'From inside glass, water and diamond: R = 1 past the critical angle (from 0.001° past it)', precision: 'highp', target: 'exact', tolerance: 1e-6, select: (c) => c.family === 'fromInside' && inRange(c) && c.thetaDeg - c.critical >= 1e-3 },
   fromInside: { label: 'From inside, below the critical angle (more than 1° from it): the exact R', precision: 'highp', target: 'exact', tolerance: 1e-4, select: (c) => c.family === 'fromInside' && inRange(c) && c.thetaDeg < c.critical && awayFromCritical(c) },
   nearCritical: { label: 'Within 1° of the critical angle, to ±0.00001°: finite and in [0, 1]', precision: 'highp', target: 'sane', select: (c) => c.critical !== null && inRange(c) && !awayFromCritical(c) },
   clamped: { label: 'cos θ a hair above 1 or below 0 gives the exact R at the clamped cos θ (no NaN, nothing above 1)', precision: 'highp', target: 'exact', tolerance: 1e-5, select: (c) => c.tag === 'outside' },
@@ -57,7 +58,24 @@ float fresnel(float cosTheta, float nI, float nT) {
   return clamp(0.5 * a * a * (1.0 + b * b), 0.0, 1.0);
 }`;
 
-const EXACT_MEDIUMP = EXACT.replace('// The exact unpolarised R', '// highp inside: the index terms cancel near the critical angle, and mediump has\n// only 11 bits for them. The exact unpolarised R').replace(/\n {2}float /g, '\n  highp float ');
+// highp inside: the index terms cancel near the critical angle, and mediump has only 11 bits for
+// them. The parameters arrive in mediump, so they are copied to highp first: an operation takes
+// the precision of its operands (GLSL ES 3.00 §4.5.2), not of the variable it is stored in.
+const EXACT_MEDIUMP = `float fresnel(float cosTheta, float nI, float nT) {
+  highp float hI = nI;
+  highp float hT = nT;
+  if (hI == hT) return 0.0;
+  highp float ci = clamp(cosTheta, 0.0, 1.0);
+  highp float m = hI / hT;
+  highp float c = m * ci;
+  highp float g2 = (1.0 - m) * (1.0 + m) + c * c;
+  if (g2 <= 0.0) return 1.0;
+  highp float g = sqrt(g2);
+  highp float a = (g - c) / (g + c);
+  highp float ms2 = m * m * (1.0 - ci) * (1.0 + ci);
+  highp float b = (c * g - ms2) / (c * g + ms2);
+  return clamp(0.5 * a * a * (1.0 + b * b), 0.0, 1.0);
+}`;
 
 const CONDUCTOR = `// Exact conductor R from air, complex index n + ik per channel (Born & Wolf §14.2;
 // pbrt's FrConductor): a² + b² = √((n² − k² − sin²θ)² + 4n²k²), ab = nk. Of a² and b², the one
@@ -99,4 +117,6 @@ export const EXERCISES = Object.freeze([
 export const EXERCISE_IDS = EXERCISES.map((e) => e.id);
 export const exerciseById = (id) => EXERCISES.find((e) => e.id === id);
 export const criterion = (id) => ({ id, ...CRITERIA[id] });
+/** The exact function for an exercise's kind: what the right-hand sphere is shaded with. */
+export const exactReference = (exercise) => (exercise.kind === 'conductor' ? CONDUCTOR : EXACT);
 export const exerciseMetal = (exercise) => (exercise.metal ? metalById(exercise.metal) : null);

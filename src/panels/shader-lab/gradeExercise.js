@@ -12,6 +12,8 @@ const num = (x) => (!Number.isFinite(x) ? String(x) : x === 0 ? '0' : Math.abs(x
 const channelsOf = (values, i, width) => (width === 1 ? [values[i]] : Array.from(values.subarray(i * 3, i * 3 + 3)));
 const targetsOf = (c, target) => (Array.isArray(c.exact) ? c.exact : [target === 'schlick' ? c.schlick : c.exact]);
 const CHANNEL = ['red', 'green', 'blue'];
+const outside = (c) => Math.abs(c.cos - Math.min(1, Math.max(0, c.cos)));
+const tieBefore = (a, b) => (outside(a) !== outside(b) ? outside(a) < outside(b) : a.cos > b.cos);
 
 /**
  * crit: a criterion (exercises.js); cases; values: Float32Array, 1 per case (dielectric) or 3
@@ -34,7 +36,11 @@ export function gradeCriterion(crit, cases, values) {
         : crit.target !== 'sane' && !(error <= crit.tolerance) ? 'aboveTolerance' : 'fine';
       if (kind !== 'fine') failed += 1;
       const score = [rank[kind], Number.isFinite(error) ? error : Infinity];
-      if (!worst || score[0] > worst.score[0] || (score[0] === worst.score[0] && score[1] > worst.score[1])) {
+      // Ties go to the most telling case: the smallest step outside [0, 1] (1.0000001 before
+      // 1.001), then the one nearer head-on (89.99° before 90°).
+      const better = !worst || score[0] > worst.score[0] || (score[0] === worst.score[0]
+        && (score[1] > worst.score[1] || (score[1] === worst.score[1] && tieBefore(c, worst.case))));
+      if (better) {
         worst = { score, kind, case: c, channel: width === 3 ? CHANNEL[ch] : null, value: v, reference: want[ch], error };
       }
     });

@@ -1,5 +1,5 @@
 // Two spheres shaded with Fresnel: on the left the student's function, on the right the exact one
-// (the exercise's reference answer, renamed so the two can sit in one shader), under the lab's sky
+// (the lab's exact answer, renamed so the two can sit in one shader), under the lab's sky
 // and sun, as in the fresnel-lighting and metals panels: a coated diffuse sphere
 // k = mix(kd, ks, F) for a dielectric (lecture, "Fresnel Reflection in Lighting"), the reflected
 // sky tinted by F for a conductor. Drawn by the grading context into its own canvas and copied to
@@ -10,22 +10,28 @@ import { directionFromAngles } from '../../gl/directionFromAngles.js';
 import { DEG } from '../../optics/angles.js';
 import { STAGE_CAMERA } from '../shared/createTwinStage.js';
 import { WRAPPER_LINE } from './studentShader.js';
+import { exactReference } from './exercises.js';
 
 const COAT_INDEX = 1.5;
 const KD = [0.55, 0.09, 0.05]; // linear RGB of the diffuse layer (a red paint)
 
-/** The fragment (without #version): the student's code after #line 1, the renamed reference after it. */
+const STUDENT = '// <the student’s code>';
+
+/**
+ * The fragment (without #version): the page's chunks resolved first, then the student's code
+ * spliced in after #line 1 (so nothing in it is read as an #include), the exact function after it.
+ */
 export function sphereFragment(code, exercise) {
   const conductor = exercise.kind === 'conductor';
   const name = conductor ? 'fresnelConductor' : 'fresnel';
-  const reference = exercise.reference.replace(new RegExp(`\\b${name}\\b`, 'g'), `lab_reference_${name}`);
+  const reference = exactReference(exercise).replace(new RegExp(`\\b${name}\\b`, 'g'), `lab_reference_${name}`);
   const shade = conductor
     ? `vec3 F = hit.side == 0 ? fresnelConductor(nv, uMetalN, uMetalK) : lab_reference_fresnelConductor(nv, uMetalN, uMetalK);
   vec3 k = F * environment(reflect(-V, N));`
     : `float F = hit.side == 0 ? fresnel(nv, 1.0, uN) : lab_reference_fresnel(nv, 1.0, uN);
   vec3 kd = uKd * (max(dot(N, normalize(uSunDir)), 0.0) + 0.3 * skyLight(N));
   vec3 k = mix(kd, environment(reflect(-V, N)), F);`;
-  return assembleShader(`precision highp float;
+  const page = assembleShader(`precision highp float;
 #include <environment>
 #include <color>
 #include <twinStage>
@@ -35,7 +41,7 @@ uniform vec3 uMetalN;
 uniform vec3 uMetalK;
 out vec4 fragColor;
 #line 1
-${code}
+${STUDENT}
 #line ${WRAPPER_LINE}
 ${reference}
 void main() {
@@ -50,6 +56,7 @@ void main() {
   ${shade}
   fragColor = vec4(linearToSrgb(k), 1.0);
 }`);
+  return page.replace(STUDENT, () => code);
 }
 
 /**
@@ -58,15 +65,18 @@ void main() {
  */
 export function createSpherePainter(gl) {
   let program = null;
-  let programKey = '';
+  let programKey = null;
   return {
-    paint(target, key, code, exercise, metal) {
+    /** Throws ShaderError when the code does not compile beside the page's lighting code (not retried until it changes). */
+    paint(target, code, exercise, metal) {
+      const key = `${exercise.kind}|${code}`;
       if (key !== programKey) {
         program?.dispose();
         program = null;
-        program = createProgram(gl, sphereFragment(code, exercise));
         programKey = key;
+        program = createProgram(gl, sphereFragment(code, exercise));
       }
+      if (!program) return;
       const box = target.getBoundingClientRect();
       const ratio = Math.min(2, window.devicePixelRatio || 1);
       const width = Math.max(2, Math.round((box.width || 640) * ratio));

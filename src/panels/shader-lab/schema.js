@@ -7,7 +7,8 @@ import { decodeCode, encodeCode } from './codeCodec.js';
 export const schema = {
   exercise: { type: 'enum', default: 'schlick', options: Object.fromEntries(EXERCISES.map((e) => [e.id, e.title])), label: 'Exercise' },
   // Empty: the exercise's starting code. The editor shows the code; the link keeps it compact.
-  code: { type: 'text', default: '', maxLength: MAX_CODE, encode: encodeCode, decode: decodeCode, label: 'GLSL code' },
+  // Twice the panel's own limit: longer code reaches the panel, which refuses it in its own words.
+  code: { type: 'text', default: '', maxLength: 2 * MAX_CODE, encode: encodeCode, decode: decodeCode, label: 'GLSL code', defaultText: 'the exercise’s starting code' },
   precision: { type: 'enum', default: 'highp', options: { highp: 'highp', mediump: 'mediump' }, label: 'Map precision' },
   homework: { type: 'boolean', default: false, label: 'Homework mode (no reference answers)' },
 };

@@ -1,8 +1,11 @@
 // The student's GLSL in a shader the page builds: never evaluated as JavaScript, only compiled by
 // the GPU driver into a read-back program. Before that, code that could hang or break the page is
 // refused in words: loops (a loop that never ends stalls the GPU until the browser resets it, and a
-// Fresnel function needs none), preprocessor lines that would change the wrapper (#version,
-// #extension, #line, #pragma), and sizes far past any Fresnel function. `#line 1` before the
+// Fresnel function needs none), every preprocessor line (#define could hide a loop or reach into
+// the page's code; #version, #line, #extension would change the wrapper), line continuations (a
+// backslash at a line's end joins it to the next, which could spell a loop in two pieces),
+// precision statements (the mediump exercise is about the precision the page sets), and sizes far
+// past any Fresnel function. `#line 1` before the
 // student's code makes the driver's error lines the student's own (GLSL ES 3.00 §3.4); the wrapper
 // after it starts at line WRAPPER_LINE, so its errors are told apart.
 
@@ -14,17 +17,17 @@ export function checkStudentCode(code) {
   const problems = [];
   if (typeof code !== 'string' || !code.trim()) return [{ line: null, message: 'There is no code to compile.' }];
   if (code.length > MAX_CODE) problems.push({ line: null, message: `The code is ${code.length} characters long; a Fresnel function needs far fewer (at most ${MAX_CODE} here).` });
-  // Comments go first (a word in a comment is no loop); their newlines stay, so lines still count.
-  const bare = code.replace(/\/\*[\s\S]*?\*\//g, (c) => c.replace(/[^\n]/g, ' ')).replace(/\/\/[^\n]*/g, '');
+  // Lines as the compiler counts them (\r\n, \r and \n all end one). Comments go in one pass from
+  // left to right, as the compiler reads them (a word in a comment is no loop); their newlines
+  // stay, so lines still count.
+  const lines = code.replace(/\r\n?/g, '\n');
+  const bare = lines.replace(/\/\/[^\n]*|\/\*[\s\S]*?\*\//g, (c) => c.replace(/[^\n]/g, ' '));
   bare.split('\n').forEach((text, i) => {
     const line = i + 1;
     if (/\b(for|while|do)\b/.test(text)) problems.push({ line, message: 'Loops are refused here: a Fresnel function needs none, and a loop that never ends would stall the graphics card.' });
-    // Token pasting could spell a loop the word check cannot see (F(fo, r) with a##b).
-    if (text.includes('##')) problems.push({ line, message: '## (token pasting) is refused here: it could build a loop out of pieces.' });
-    const directive = /^\s*#\s*(\w+)/.exec(text)?.[1];
-    if (directive && !['define', 'undef', 'if', 'ifdef', 'ifndef', 'else', 'elif', 'endif'].includes(directive)) {
-      problems.push({ line, message: `#${directive} is refused here: the page writes the shader's version, extensions and line numbers.` });
-    }
+    if (/\\\s*$/.test(text)) problems.push({ line, message: 'A backslash at the end of a line is refused here: it joins two lines, which could hide a loop.' });
+    if (/^\s*#/.test(text)) problems.push({ line, message: 'Preprocessor lines (#…) are refused here: the page writes the shader around your function, and a function needs none.' });
+    if (/\bprecision\b/.test(text)) problems.push({ line, message: 'Precision statements are refused here: the page sets the precision your function is graded in (a highp local inside it is fine).' });
   });
   return problems;
 }
@@ -59,8 +62,8 @@ void main() {
 
 /**
  * The driver's log as [{ line (the student's, or null for the wrapper's or none), message }].
- * Drivers write "ERROR: 0:12: 'x' : undeclared identifier" (ANGLE, Mesa) or "0(12) : error …"
- * (some others); an error in the wrapper means the function is missing or has another signature.
+ * Drivers write "ERROR: 0:12: 'x' : undeclared identifier" (ANGLE) or "0(12) : error …"
+ * (some others); an error past the student's code is a missing function, or an unclosed brace.
  */
 export function readCompileLog(log, signature) {
   const entries = [];
@@ -75,8 +78,10 @@ export function readCompileLog(log, signature) {
     }
     const line = Number(m[1]);
     const message = m[2].trim();
-    if (line >= WRAPPER_LINE) entries.push({ line: null, message: `Define ${signature}: the page calls it (${message}).` });
-    else entries.push({ line, message });
+    if (line < WRAPPER_LINE) entries.push({ line, message });
+    // Past the student's last line: an unclosed brace or a missing ; shows up in the page's code.
+    else if (/syntax error|unexpected|end of/i.test(message)) entries.push({ line: null, message: `After your last line: ${message} (a missing } or ;?).` });
+    else entries.push({ line: null, message: `Define ${signature}: the page calls it (${message}).` });
   }
   return entries;
 }

@@ -19,12 +19,12 @@ export function swatch(cls) {
 }
 
 /** One map with its title, canvas, message (in place of the map) and counts per class. */
-export function createMapFigure(side) {
+export function createMapFigure(side, { focusable = true } = {}) {
   const figure = el('figure', 'st-map');
   figure.dataset.side = side;
   const title = el('h3', 'st-map-title');
   const canvas = el('canvas', 'st-canvas');
-  canvas.tabIndex = 0;
+  canvas.tabIndex = focusable ? 0 : -1; // focusable where arrow keys move a probe over it
   canvas.setAttribute('role', 'img');
   const message = el('p', 'st-map-message');
   message.hidden = true;
