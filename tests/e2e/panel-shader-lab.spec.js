@@ -4,7 +4,10 @@
 // reference answers.
 import { test, expect, openLab } from './fixtures.js';
 import { EXERCISE_IDS } from '../../src/panels/shader-lab/exercises.js';
-import { encodeCode } from '../../src/panels/shader-lab/codeCodec.js';
+import { deflateSync } from 'fflate';
+import { encodeCode, useDeflate } from '../../src/panels/shader-lab/codeCodec.js';
+
+useDeflate((bytes) => deflateSync(bytes, { level: 9 })); // as the panel's module does
 
 const embed = (query = '') => `./embed.html?panel=shader-lab${query}`;
 const lab = (page, fn, arg) => page.evaluate(fn, arg);

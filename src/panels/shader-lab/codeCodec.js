@@ -1,26 +1,42 @@
-// The student's code in a link, compact: "*" + base64url (RFC 4648 §5) of its raw DEFLATE
-// (RFC 1951, by fflate), about half the length of the percent-encoded text ("*" is one of the few
-// characters a query string keeps as it is). Plain text (from a message, or a link written by
-// hand) reads as it is; GLSL cannot begin with "*".
-import { deflateSync, inflateSync, strFromU8, strToU8 } from 'fflate';
+// The student's code in a link, compact: "*", the UTF-8 length in base 36, ".", then base64url
+// (RFC 4648 §5) of its raw DEFLATE (RFC 1951), about half the length of the percent-encoded text
+// ("*" and "." are among the few characters a query string keeps as they are). Plain text (from a
+// message, or a link written by hand) reads as it is; GLSL cannot begin with "*".
+// Reading comes with every page (links are read before any panel loads), so it uses tiny-inflate,
+// about 1 KB, which needs the length up front; writing needs deflate, which fflate brings with the
+// panel's module (useDeflate). Until then a link keeps the code as plain text, which reads the same.
+import inflate from 'tiny-inflate';
+import { MAX_CODE } from './exerciseTitles.js';
 
-const MARK = '*';
-const MAX_COMPACT = 16_000; // far above any code the panel takes: refused before inflating, so a link cannot inflate to gigabytes
+const COMPACT = /^\*([0-9a-z]{1,6})\.([A-Za-z0-9_-]*)$/;
+const MAX_BYTES = 4 * MAX_CODE * 2; // UTF-8 of the longest code the schema takes, with room: larger is refused before inflating
 
-export function encodeCode(text) {
-  const bytes = deflateSync(strToU8(text), { level: 9 });
-  let binary = '';
-  for (const b of bytes) binary += String.fromCharCode(b);
-  return MARK + btoa(binary).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+let deflate = null;
+
+/** deflate(bytes) → raw DEFLATE bytes (fflate's deflateSync), given by the panel's module when it loads. */
+export function useDeflate(fn) {
+  deflate = fn;
 }
 
-/** The text back, or null for a compact form that does not decode (a link cut short). */
+export function encodeCode(text) {
+  if (!deflate || !text) return text;
+  const utf8 = new TextEncoder().encode(text);
+  let binary = '';
+  for (const b of deflate(utf8)) binary += String.fromCharCode(b);
+  return `*${utf8.length.toString(36)}.${btoa(binary).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '')}`;
+}
+
+/** The text back, or null for a compact form that does not decode (a link cut short or made up). */
 export function decodeCode(raw) {
-  if (!raw.startsWith(MARK)) return raw;
-  if (raw.length > MAX_COMPACT) return null;
+  if (!raw.startsWith('*')) return raw;
+  const match = COMPACT.exec(raw);
+  const length = match ? parseInt(match[1], 36) : NaN;
+  if (!(length > 0 && length <= MAX_BYTES)) return null;
   try {
-    const binary = atob(raw.slice(1).replace(/-/g, '+').replace(/_/g, '/'));
-    return strFromU8(inflateSync(Uint8Array.from(binary, (c) => c.charCodeAt(0))));
+    const binary = atob(match[2].replace(/-/g, '+').replace(/_/g, '/'));
+    const out = inflate(Uint8Array.from(binary, (c) => c.charCodeAt(0)), new Uint8Array(length));
+    if (out.length !== length) return null;
+    return new TextDecoder('utf-8', { fatal: true }).decode(out);
   } catch {
     return null;
   }

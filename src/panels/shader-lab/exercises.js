@@ -5,6 +5,7 @@
 // critical angle, where R is ill-conditioned and float32 cannot follow it, only sanity is asked
 // (finite, in [0, 1]), except past it, where R = 1 is exact.
 import { metalById } from '../../optics/materials.js';
+import { EXERCISE_TITLES } from './exerciseTitles.js';
 
 const awayFromCritical = (c) => c.critical === null || Math.abs(c.thetaDeg - c.critical) >= 1;
 const inRange = (c) => c.tag !== 'outside';
@@ -103,13 +104,13 @@ const START = `${DIELECTRIC_SIGNATURE} {
 }`;
 
 export const EXERCISES = Object.freeze([
-  { id: 'schlick', title: 'Write Schlick’s approximation', kind: 'dielectric', criteria: ['schlickFromAir', 'schlickClamped'], reference: SCHLICK, start: START },
-  { id: 'exact', title: 'Write the exact c/g form', kind: 'dielectric', criteria: ['exactFromAir', 'matched'], reference: EXACT, start: START },
-  { id: 'tir', title: 'Make it correct under total internal reflection', kind: 'dielectric', criteria: ['exactFromAir', 'tir', 'fromInside', 'nearCritical'], reference: EXACT, start: START },
-  { id: 'safe', title: 'Make it safe for cos θ outside [0, 1]', kind: 'dielectric', criteria: ['exactFromAir', 'clamped'], reference: EXACT, start: START },
-  { id: 'mediump', title: 'Keep it accurate in mediump near the critical angle', kind: 'dielectric', criteria: ['mediumpCritical', 'mediumpSane', 'tir'], reference: EXACT_MEDIUMP, start: START },
+  { id: 'schlick', title: EXERCISE_TITLES.schlick, kind: 'dielectric', criteria: ['schlickFromAir', 'schlickClamped'], reference: SCHLICK, start: START },
+  { id: 'exact', title: EXERCISE_TITLES.exact, kind: 'dielectric', criteria: ['exactFromAir', 'matched'], reference: EXACT, start: START },
+  { id: 'tir', title: EXERCISE_TITLES.tir, kind: 'dielectric', criteria: ['exactFromAir', 'tir', 'fromInside', 'nearCritical'], reference: EXACT, start: START },
+  { id: 'safe', title: EXERCISE_TITLES.safe, kind: 'dielectric', criteria: ['exactFromAir', 'clamped'], reference: EXACT, start: START },
+  { id: 'mediump', title: EXERCISE_TITLES.mediump, kind: 'dielectric', criteria: ['mediumpCritical', 'mediumpSane', 'tir'], reference: EXACT_MEDIUMP, start: START },
   {
-    id: 'gold', title: 'The conductor form, for gold', kind: 'conductor', metal: 'gold', criteria: ['conductor', 'conductorClamped'], reference: CONDUCTOR,
+    id: 'gold', title: EXERCISE_TITLES.gold, kind: 'conductor', metal: 'gold', criteria: ['conductor', 'conductorClamped'], reference: CONDUCTOR,
     start: `${CONDUCTOR_SIGNATURE} {\n  // n + ik: gold's complex index per channel (red 650 nm, green 550 nm, blue 450 nm).\n  return vec3(0.0);\n}`,
   },
 ].map((e) => Object.freeze({ ...e, signature: e.kind === 'conductor' ? CONDUCTOR_SIGNATURE : DIELECTRIC_SIGNATURE })));

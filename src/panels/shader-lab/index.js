@@ -22,10 +22,14 @@ import { errorSummary, gradeExercise } from './gradeExercise.js';
 import { checkStudentCode, readCompileLog, studentFragment } from './studentShader.js';
 import { createSpherePainter } from './paintSpheres.js';
 import { readStored, writeStored } from './storedCode.js';
+import { useDeflate } from './codeCodec.js';
+import { deflateSync } from 'fflate';
 import './styles.css';
 import { schema } from './schema.js';
 
 export { schema };
+
+useDeflate((bytes) => deflateSync(bytes, { level: 9 })); // the link's compact form, from now on
 
 const PRECISIONS = ['highp', 'mediump'];
 const MAP_GRID = { width: 91, height: 54 }; // θ every 1°, n_i/n_t from 0.4 to 2.5

@@ -1,11 +1,10 @@
 // Parameters of the `shader-lab` panel: controls, URL keys and messages all use them. Pure data
 // (no DOM), loaded with the page so the panel's link and state work before its module arrives.
-import { EXERCISES } from './exercises.js';
-import { MAX_CODE } from './studentShader.js';
+import { EXERCISE_TITLES, MAX_CODE } from './exerciseTitles.js';
 import { decodeCode, encodeCode } from './codeCodec.js';
 
 export const schema = {
-  exercise: { type: 'enum', default: 'schlick', options: Object.fromEntries(EXERCISES.map((e) => [e.id, e.title])), label: 'Exercise' },
+  exercise: { type: 'enum', default: 'schlick', options: EXERCISE_TITLES, label: 'Exercise' },
   // Empty: the exercise's starting code. The editor shows the code; the link keeps it compact.
   // Twice the panel's own limit: longer code reaches the panel, which refuses it in its own words.
   code: { type: 'text', default: '', maxLength: 2 * MAX_CODE, encode: encodeCode, decode: decodeCode, label: 'GLSL code', defaultText: 'the exercise’s starting code' },

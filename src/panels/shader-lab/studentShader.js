@@ -9,7 +9,9 @@
 // student's code makes the driver's error lines the student's own (GLSL ES 3.00 §3.4); the wrapper
 // after it starts at line WRAPPER_LINE, so its errors are told apart.
 
-export const MAX_CODE = 6000;
+import { MAX_CODE } from './exerciseTitles.js';
+
+export { MAX_CODE };
 export const WRAPPER_LINE = 10000;
 
 /** Problems that refuse the code before it reaches the GPU: [{ line, message }] (empty: fine). */
