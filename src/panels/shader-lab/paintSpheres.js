@@ -106,5 +106,3 @@ export function createSpherePainter(gl) {
     },
   };
 }
-
-export { COAT_INDEX };
