@@ -5,3 +5,10 @@ export function el(tag, className, text) {
   if (text !== undefined) node.textContent = text;
   return node;
 }
+
+/** A plain button (type="button", so it never submits a form) with its visible text. */
+export function button(text, className) {
+  const b = el('button', className, text);
+  b.type = 'button';
+  return b;
+}

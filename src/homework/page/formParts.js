@@ -1,12 +1,8 @@
-// The homework page's form pieces: a plain button, a labelled field, and a JSON file read with a
-// size limit. Text only (textContent), never markup.
-import { el } from '../../ui/el.js';
+// The homework page's form pieces: a labelled field, a titled section, and a file read with a
+// size limit (and the plain button of src/ui/el.js). Text only (textContent), never markup.
+import { button, el } from '../../ui/el.js';
 
-export function button(text, className) {
-  const b = el('button', className, text);
-  b.type = 'button';
-  return b;
-}
+export { button };
 
 /** A section named by its heading: { section, heading }. */
 export function titledSection(className, id, title) {

@@ -1,7 +1,7 @@
 // The DOM of the shader lab: the exercise and its criteria (stated before any code is graded),
 // the editor, the buttons, what the compiler or the page refused, the result of each criterion,
 // the error summary, and the student's stability map beside the reference answer's.
-import { el } from '../../ui/el.js';
+import { button, el } from '../../ui/el.js';
 import { createMapFigure } from '../shared/createMapFigure.js';
 import '../shared/twinStage.css';
 
@@ -15,15 +15,10 @@ export function buildShaderLabDom(host) {
   task.append(title, signature, criteria);
   const editor = el('div', 'sl-editor');
   const actions = el('div', 'sl-actions');
-  const button = (text) => {
-    const b = el('button', null, text);
-    b.type = 'button';
-    actions.append(b);
-    return b;
-  };
   const grade = button('Grade (Ctrl+Enter, ⌘Enter)');
   const restart = button('Start over');
   const reference = button('Show a reference answer');
+  actions.append(grade, restart, reference);
   const errors = el('ul', 'sl-errors');
   errors.setAttribute('aria-live', 'polite'); // said when it changes, not at every grade
   const summary = el('p', 'sl-summary');

@@ -1,15 +1,8 @@
 // The DOM of the speed-accuracy panel: the recommendation, a line about the error source (shown
 // while the GPU read-back runs or after it failed), the chart host, the benchmark bar (run,
 // cancel, progress, JSON export), the device line and the per-method table.
-import { el } from '../../ui/el.js';
+import { button, el } from '../../ui/el.js';
 import { toDegrees } from '../../optics/angles.js';
-
-
-function button(text, className) {
-  const b = el('button', className, text);
-  b.type = 'button';
-  return b;
-}
 
 /** Codes to a short string: small values in scientific notation, NaN/∞ as words. */
 export function formatCodes(v) {
