@@ -12,9 +12,11 @@ import { describeProblem } from './host/params.js';
 import { applyTheme, loadTheme } from './ui/theme.js';
 import { setSubscripted } from './ui/subscripts.js';
 import { showNotice } from './host/showNotice.js';
+import { installPageFaults } from './host/panelFaults.js';
 import { contextStats } from './gl/contextBudget.js';
 
 const root = document.getElementById('embed');
+installPageFaults((title, lines) => showNotice(root, title, lines, { kind: 'error' }));
 const search = new URLSearchParams(window.location.search);
 const id = search.get('panel');
 const hosts = {};

@@ -5,6 +5,7 @@ import './styles.css';
 import './homework/page/homework.css';
 import { setupPageControls } from './host/setupPageControls.js';
 import { showNotice } from './host/showNotice.js';
+import { installPageFaults } from './host/panelFaults.js';
 import { el } from './ui/el.js';
 import { readSheet } from './homework/readSheet.js';
 import { sheetFromCode } from './homework/sheetCodes.js';
@@ -16,6 +17,7 @@ import { readTextFile } from './homework/page/formParts.js';
 
 setupPageControls(document.querySelector('.page-controls'), {});
 const root = document.getElementById('homework');
+installPageFaults((title, lines) => showNotice(root, title, lines, { kind: 'error' }));
 const search = new URLSearchParams(window.location.search);
 window.fresnelLab = { homework: null };
 

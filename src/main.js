@@ -10,6 +10,7 @@ import { managePanels } from './host/managePanels.js';
 import { setupLectureMode } from './host/setupLectureMode.js';
 import { setupPageControls } from './host/setupPageControls.js';
 import { showNotice } from './host/showNotice.js';
+import { installPageFaults } from './host/panelFaults.js';
 import { contextStats, MAX_LIVE_CONTEXTS } from './gl/contextBudget.js';
 import { describeProblem, readParams } from './host/params.js';
 import { texReady } from './ui/tex.js';
@@ -41,6 +42,8 @@ const pageSchema = {
 };
 const page = readParams(pageSchema, new URLSearchParams(window.location.search));
 const main = document.querySelector('main');
+// An error nobody caught is said in its panel, or once at the top of the page (panelFaults.js).
+installPageFaults((title, lines) => showNotice(main, title, lines, { kind: 'error' }));
 showNotice(main, 'A page setting in the link was not usable:', page.problems.map(describeProblem));
 const maxLive = Math.round(page.values.maxContexts);
 

@@ -2,6 +2,7 @@
 // (contextBudget.js). No depth, stencil or MSAA unless asked: the lab's passes are full-screen
 // triangles that anti-alias themselves, and read-back contexts draw into float targets.
 import { countContext, WebGL2Unavailable } from './contextBudget.js';
+import { currentOwner } from './faultOwner.js';
 
 /**
  * @param {HTMLCanvasElement} canvas
@@ -17,12 +18,24 @@ export function createContext(canvas, attributes = {}) {
   });
   if (!gl) throw new WebGL2Unavailable('WebGL2 could not start on this canvas.');
   const release = countContext();
+  // The panel that made the context says so while it is gone (panelFaults.js). Asking for the
+  // restore (preventDefault) is what makes the browser give it back; the users rebuild on restore.
+  const owner = currentOwner();
+  const onLost = (event) => {
+    event.preventDefault();
+    owner?.contextLost();
+  };
+  const onRestored = () => owner?.contextRestored();
+  canvas.addEventListener('webglcontextlost', onLost);
+  canvas.addEventListener('webglcontextrestored', onRestored);
   let disposed = false;
   return {
     gl,
     dispose() {
       if (disposed) return;
       disposed = true;
+      canvas.removeEventListener('webglcontextlost', onLost);
+      canvas.removeEventListener('webglcontextrestored', onRestored);
       gl.getExtension('WEBGL_lose_context')?.loseContext();
       release();
     },

@@ -1,6 +1,9 @@
 // An RGBA32F render target (a texture and its framebuffer, no depth) for passes whose results are
 // read back or accumulated in float. Needs EXT_color_buffer_float, which the caller enables.
 
+/** A read-back that cannot finish: the context was lost while it waited (even if it is back now). */
+export class ContextLostError extends Error {}
+
 export function createFloatTarget(gl) {
   let texture = null;
   let framebuffer = null;
@@ -37,8 +40,8 @@ export function createFloatTarget(gl) {
     },
     /**
      * Its pixels as drawn so far, without waiting for the GPU: a read into a pixel-pack buffer and
-     * a fence polled from timers (as three.js readRenderTargetPixelsAsync does). Rejects if the
-     * context is lost before the fence signals.
+     * a fence polled from timers (as three.js readRenderTargetPixelsAsync does). Rejects with a
+     * ContextLostError if the context is lost before the fence signals.
      */
     readAsync() {
       const out = new Float32Array(target.width * target.height * 4);
@@ -51,15 +54,21 @@ export function createFloatTarget(gl) {
       gl.bindBuffer(gl.PIXEL_PACK_BUFFER, null);
       const sync = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
       gl.flush();
+      // The fence and the buffer belong to this context's generation: once it was lost they are
+      // gone, even after a restore (polling them then would be an error of the new context).
+      let gone = false;
+      const onLost = () => { gone = true; };
+      gl.canvas.addEventListener('webglcontextlost', onLost);
       return new Promise((resolve, reject) => {
         const probe = () => {
-          const status = gl.isContextLost() ? gl.WAIT_FAILED : gl.clientWaitSync(sync, 0, 0);
+          const status = gone || gl.isContextLost() ? gl.WAIT_FAILED : gl.clientWaitSync(sync, 0, 0);
           if (status === gl.TIMEOUT_EXPIRED) {
             setTimeout(probe, 4);
             return;
           }
+          gl.canvas.removeEventListener('webglcontextlost', onLost);
           if (status === gl.WAIT_FAILED) {
-            reject(new Error('The graphics context was lost during a read-back.'));
+            reject(new ContextLostError('The graphics context was lost during a read-back.'));
             return;
           }
           gl.deleteSync(sync);

@@ -314,6 +314,12 @@ export function methodsGpu(gl) {
   return shared.get(gl);
 }
 
+/** A new evaluator after the context was restored: the old one's objects went with the loss (none to delete). */
+export function renewMethodsGpu(gl) {
+  shared.delete(gl);
+  return methodsGpu(gl);
+}
+
 /** evaluateMethodsGpu(gl, { methodId, precision, inputs, extra }) → Float32Array: see evaluate above. */
 export function evaluateMethodsGpu(gl, options) {
   return methodsGpu(gl).evaluate(options);

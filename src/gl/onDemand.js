@@ -1,6 +1,10 @@
 // Render on demand: any number of requests within one animation frame draw once, and nothing
-// draws while nothing changes. `frames` counts the draws so tests can check that.
+// draws while nothing changes. `frames` counts the draws so tests can check that. A draw that
+// throws is the fault of the panel that made the loop (panelFaults.js), said in that panel.
+import { currentOwner } from './faultOwner.js';
+
 export function onDemand(draw) {
+  const owner = currentOwner();
   let pending = 0;
   const state = {
     frames: 0,
@@ -9,7 +13,15 @@ export function onDemand(draw) {
       pending = requestAnimationFrame(() => {
         pending = 0;
         state.frames += 1;
-        draw();
+        if (!owner) {
+          draw();
+          return;
+        }
+        try {
+          draw();
+        } catch (error) {
+          owner.fail(error);
+        }
       });
     },
     cancel() {

@@ -6,6 +6,8 @@
 // (copy link, copy embed code, PNG, CSV) and mounts and disposes the panel's view. Values outlive
 // the view, so a panel disposed to free its WebGL context comes back exactly as it was.
 import { warmGpu } from '../gl/warmGpu.js';
+import { ownedBy } from '../gl/faultOwner.js';
+import { createPanelFaults, watchInputs } from './panelFaults.js';
 import { applyParams, defaults, describeProblem, resolveKey } from './params.js';
 import { createControlState } from './createControlState.js';
 import { bindGui, createPanelGui } from './bindGui.js';
@@ -63,6 +65,19 @@ export function createPanelHost(container, panel, {
   toolbar.hidden = true;
   shell.append(content, side);
   container.append(shell, description);
+  // Faults once the panel runs (an error in its code, a lost context) are said on this line.
+  const faults = createPanelFaults({ title: panel.title, restart: () => restart() });
+  shell.before(faults.element);
+  watchInputs(container, faults);
+  /** Runs the panel's own code: what it makes is the panel's, and what it throws is said in the panel. */
+  const guarded = (fn) => {
+    try {
+      return ownedBy(faults, fn);
+    } catch (error) {
+      faults.fail(error);
+      return undefined;
+    }
+  };
   const controlState = createControlState(schema, shell);
   const prefersReducedMotion = window.matchMedia?.('(prefers-reduced-motion: reduce)').matches ?? false;
   let reducedMotion = null; // set by the embed's URL or a message; null: the reader's preference
@@ -85,6 +100,7 @@ export function createPanelHost(container, panel, {
   let mountPanel = panel.mount ?? null; // or, until panel.load() resolves, null
   let loading = null;
   let wanted = false;
+  let startFailed = false; // mount() threw: not tried again by itself (the notice says so)
 
   /** A frame of the panel's picture is drawn: counted, marked once for timing, and announced. */
   function frameDrawn() {
@@ -145,7 +161,7 @@ export function createPanelHost(container, panel, {
   }
 
   function refreshDescription() {
-    description.textContent = instance ? instance.describe() : '';
+    description.textContent = (instance && guarded(() => instance.describe())) ?? '';
     for (const canvas of content.querySelectorAll('canvas')) canvas.setAttribute('aria-describedby', description.id);
   }
 
@@ -168,12 +184,12 @@ export function createPanelHost(container, panel, {
     const all = new Set(keys);
     updating = true;
     try {
-      instance?.update(keys);
+      guarded(() => instance?.update(keys));
       while (waiting.length) {
         const next = [...new Set(waiting)];
         waiting = [];
         next.forEach((key) => all.add(key));
-        instance?.update(next);
+        guarded(() => instance?.update(next));
       }
     } finally {
       updating = false;
@@ -229,13 +245,15 @@ export function createPanelHost(container, panel, {
     controllers = {};
     controlState.clear();
     try {
-      instance = checkInstance(panel.id, mountPanel(content, ctx));
+      instance = checkInstance(panel.id, ownedBy(faults, () => mountPanel(content, ctx)));
     } catch (error) {
       instance = null;
+      startFailed = true;
       gui.destroy();
       gui = null;
+      toolbar.hidden = true;
       content.replaceChildren();
-      showNotice(noticeHost, `The ${panel.title} panel could not start.`, [error.message], { kind: 'error' });
+      showNotice(noticeHost, `The ${panel.title} panel could not start.`, [error.message, 'The other panels are not affected; reload the page to try again.'], { kind: 'error' });
       throw error;
     }
     buttons.png.disabled = !instance.png;
@@ -243,6 +261,46 @@ export function createPanelHost(container, panel, {
     refreshDescription();
     domFrameDrawn();
     return instance;
+  }
+
+  /**
+   * Shows the panel: its instance, or (while its module loads) a promise of it, which resolves
+   * to null when the panel was unmounted meanwhile. A failure is shown in the panel and thrown;
+   * a panel that failed to start is not started again (null).
+   */
+  function mount() {
+    if (instance) return instance;
+    if (startFailed) return null;
+    if (mountPanel) return mountNow();
+    wanted = true;
+    return load().then(() => (wanted && !instance && !startFailed ? mountNow() : instance));
+  }
+
+  function unmount() {
+    wanted = false;
+    if (!instance) return;
+    // No layout jump while it is away; rounded down, so the place is never taller than the panel was.
+    container.style.minHeight = `${Math.floor(container.getBoundingClientRect().height)}px`;
+    cancelAnimationFrame(domFrame);
+    domFrame = 0;
+    const gone = instance;
+    instance = null;
+    guarded(() => gone.dispose());
+    faults.reset();
+    gui?.destroy();
+    gui = null;
+    toolbar.hidden = true;
+    controllers = {};
+    controlState.clear();
+    content.replaceChildren();
+  }
+
+  /** After an error: the panel is disposed and mounted again, with its values. */
+  function restart() {
+    unmount();
+    container.style.minHeight = '';
+    const again = mount();
+    if (again instanceof Promise) again.catch(() => {}); // a failure is said in the panel
   }
 
   /** @type {import('./panelContract.js').PanelContext} */
@@ -258,7 +316,7 @@ export function createPanelHost(container, panel, {
     set: (update, options) => set(update, { source: 'user', ...options }),
     tie: (controller, keys) => controlState.tie(controller, keys),
     invalidate() {
-      instance?.update([]);
+      guarded(() => instance?.update([]));
       refreshDescription();
       domFrameDrawn();
     },
@@ -277,35 +335,13 @@ export function createPanelHost(container, panel, {
     get mounted() { return instance !== null; },
     get instance() { return instance; },
     get frames() { return frames; },
+    /** Errors met since start, and contexts lost now (panelFaults.js). */
+    get faults() { return { errors: faults.count, lost: faults.lost }; },
     /** Whether the panel's module is here (mount() then works at once). */
     get loaded() { return mountPanel !== null; },
     load,
-    /**
-     * Shows the panel: its instance, or (while its module loads) a promise of it, which resolves
-     * to null when the panel was unmounted meanwhile. A failure is shown in the panel and thrown.
-     */
-    mount() {
-      if (instance) return instance;
-      if (mountPanel) return mountNow();
-      wanted = true;
-      return load().then(() => (wanted && !instance ? mountNow() : instance));
-    },
-    unmount() {
-      wanted = false;
-      if (!instance) return;
-      // No layout jump while it is away; rounded down, so the place is never taller than the panel was.
-      container.style.minHeight = `${Math.floor(container.getBoundingClientRect().height)}px`;
-      cancelAnimationFrame(domFrame);
-      domFrame = 0;
-      instance.dispose();
-      instance = null;
-      gui?.destroy();
-      gui = null;
-      toolbar.hidden = true;
-      controllers = {};
-      controlState.clear();
-      content.replaceChildren();
-    },
+    mount,
+    unmount,
     set,
     /** listener({ keys, source }) after every change; returns a function that removes it. */
     onChange(listener) {

@@ -6,12 +6,18 @@
 import { buildChainsFor, mergeBuilds, splitTechniques } from './buildChainsFor.js';
 import ChainWorker from './chainWorker.js?worker';
 
+const ON_PAGE = 'the chains are built on the page’s thread instead, which may pause the page while they build';
+
+/** { workers } or { workers: null, problem } in words. */
 function startWorkers(count) {
-  if (typeof Worker === 'undefined') return null;
+  if (typeof Worker === 'undefined') return { workers: null, problem: `This browser has no Web Workers: ${ON_PAGE}.` };
+  const started = [];
   try {
-    return Array.from({ length: count }, () => new ChainWorker());
-  } catch {
-    return null;
+    for (let i = 0; i < count; i += 1) started.push(new ChainWorker());
+    return { workers: started, problem: '' };
+  } catch (error) {
+    started.forEach((w) => w.terminate());
+    return { workers: null, problem: `The chain-building workers could not start (${error?.message || error}): ${ON_PAGE}.` };
   }
 }
 
@@ -22,13 +28,13 @@ export function workerCount(cores = globalThis.navigator?.hardwareConcurrency ??
 
 /**
  * createChainBuilder({ useWorker = true, workers = workerCount() }) → { build(request) →
- * Promise<{ pyramid, chains, uploads, ms, where } | null>, where, dispose() }. A build resolves
+ * Promise<{ pyramid, chains, uploads, ms, where } | null>, where, problem, dispose() }. A build resolves
  * null when a newer build was requested before it finished (the caller drops it); it rejects on
  * a bad request. where: 'N workers', '1 worker' or 'main thread'; ms: the slowest share's time.
  */
 export function createChainBuilder({ useWorker = true, workers: count = workerCount() } = {}) {
   const shares = splitTechniques(count);
-  let workers = useWorker ? startWorkers(shares.length) : null;
+  let { workers, problem } = useWorker ? startWorkers(shares.length) : { workers: null, problem: '' };
   let latest = 0;
   const pending = new Map(); // id → { resolve, reject, request, parts, left }
 
@@ -40,7 +46,8 @@ export function createChainBuilder({ useWorker = true, workers: count = workerCo
   }
 
   // A worker that cannot load (a blocked module, a bundling fault) makes all fall back for good.
-  function fallBack() {
+  function fallBack(event) {
+    problem = `A chain-building worker failed (${event?.message || 'it could not load'}): ${ON_PAGE}.`;
     workers?.forEach((w) => w.terminate());
     workers = null;
     for (const [id, { resolve, reject, request }] of pending) {
@@ -66,11 +73,13 @@ export function createChainBuilder({ useWorker = true, workers: count = workerCo
 
   workers?.forEach((worker, share) => {
     worker.onmessage = (event) => onMessage(share, event);
-    worker.onerror = (event) => { event.preventDefault?.(); fallBack(); };
+    worker.onerror = (event) => { event.preventDefault?.(); fallBack(event); };
   });
 
   return {
     get where() { return describe(); },
+    /** Why the builds run on the page's thread although workers were asked for, in words ('' when they do not). */
+    get problem() { return problem; },
     build(request) {
       latest += 1;
       const id = latest;

@@ -1,18 +1,22 @@
-// Shared browser-test fixture: fails a test on any console error or page error, and logs the
+// Shared browser-test fixture: fails a test on any console error or page error (but those a fault
+// test expects: test.use({ allowedErrors })), and logs the
 // WebGL renderer string once per run so every report says what it ran on.
 import { test as base, expect } from '@playwright/test';
 
 let rendererLogged = false;
 
 export const test = base.extend({
-  page: async ({ page }, use) => {
+  // A test that injects a fault says which errors it expects (a regular expression); any other still fails it.
+  allowedErrors: [null, { option: true }],
+  page: async ({ page, allowedErrors }, use) => {
     const problems = [];
     page.on('console', (message) => {
       if (message.type() === 'error') problems.push(`console error: ${message.text()}`);
     });
     page.on('pageerror', (error) => problems.push(`page error: ${error.message}`));
     await use(page);
-    expect(problems, 'the page logged errors').toEqual([]);
+    const unexpected = problems.filter((problem) => !allowedErrors?.test(problem));
+    expect(unexpected, 'the page logged errors').toEqual([]);
   },
 });
 

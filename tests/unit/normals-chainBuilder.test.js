@@ -67,6 +67,24 @@ describe('createChainBuilder without a Worker (Node): the same build on this thr
     builder.dispose();
   });
 
+  it('says why it builds on this thread when workers were asked for, and is silent when they were not', () => {
+    expect(createChainBuilder().problem).toMatch(/no Web Workers: the chains are built on the page’s thread/);
+    expect(createChainBuilder({ useWorker: false }).problem).toBe('');
+  });
+
+  it('falls back and says so when a worker cannot be constructed', async () => {
+    const saved = globalThis.Worker;
+    globalThis.Worker = class { constructor() { throw new Error('blocked by the page’s policy'); } };
+    try {
+      const builder = createChainBuilder({ workers: 2 });
+      expect(builder.where).toBe('main thread');
+      expect(builder.problem).toMatch(/could not start \(blocked by the page’s policy\)/);
+      expect((await builder.build({ ...request, size: 16 })).chains.naive.size).toBe(16);
+    } finally {
+      if (saved === undefined) delete globalThis.Worker; else globalThis.Worker = saved;
+    }
+  });
+
   it('rejects a bad request with the map\'s own message', async () => {
     const builder = createChainBuilder({ useWorker: false });
     await expect(builder.build({ ...request, size: 30 })).rejects.toThrow(/power of two/);

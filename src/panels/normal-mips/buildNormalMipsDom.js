@@ -63,8 +63,8 @@ export function buildNormalMipsDom(host) {
       leftCap.hidden = !left;
       rightCap.hidden = !right;
     },
-    /** results: { technique: mean |Δ brightness| } or null (not measured for these settings, or measuring). */
-    setShimmer(results, measuring = false) {
+    /** results: { technique: mean |Δ brightness| } or null (not measured for these settings, or measuring); stopped: why a measurement ended without results. */
+    setShimmer(results, measuring = false, stopped = '') {
       if (measuring) {
         shimmer.textContent = 'Shimmer meter: measuring every technique under four sub-pixel camera moves…';
         return;
@@ -72,7 +72,7 @@ export function buildNormalMipsDom(host) {
       shimmer.textContent = results
         ? `Shimmer (mean brightness change per pixel under a sub-pixel camera move, lower is steadier): ${
           Object.entries(results).sort((a, b) => a[1] - b[1]).map(([t, v]) => `${TECHNIQUE_NAMES[t]} ${v.toFixed(4)}`).join(', ')}.`
-        : 'Shimmer meter: press “Measure shimmer” to compare how much each technique flickers when the camera moves by less than a pixel.';
+        : stopped || 'Shimmer meter: press “Measure shimmer” to compare how much each technique flickers when the camera moves by less than a pixel.';
     },
     /** A line over the stage while the chains build ('' hides it). */
     setBusy(text) {

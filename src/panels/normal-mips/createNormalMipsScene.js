@@ -6,7 +6,8 @@
 import { cappedPixelRatio } from '../../gl/cappedPixelRatio.js';
 import { WebGL2Unavailable } from '../../gl/contextBudget.js';
 import { createContext } from '../../gl/createContext.js';
-import { createFloatTarget } from '../../gl/createFloatTarget.js';
+import { ContextLostError, createFloatTarget } from '../../gl/createFloatTarget.js';
+import { currentOwner } from '../../gl/faultOwner.js';
 import { createMipTexture, maxAnisotropy, setAnisotropy } from '../../gl/createMipTexture.js';
 import { createProgram } from '../../gl/createProgram.js';
 import { assembleShader } from '../../gl/shaderChunks.js';
@@ -124,6 +125,7 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
   // errors stay in state.errors until the new set is complete; a restart, a newer measurement or a
   // lost context makes a running one stale.
   let measureId = 0;
+  const owner = currentOwner(); // the panel an error of a measurement, which runs outside its code, belongs to
   let measured = []; // resolvers of whenMeasured()
   let disposed = false;
 
@@ -134,7 +136,10 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
     runMeasure(id).catch((error) => {
       if (id !== measureId || disposed) return; // a read-back of a context already given up
       stopMeasure();
-      throw error;
+      // Lost before its event arrived: the restore starts the truth, and the measurement, again.
+      if (error instanceof ContextLostError) return;
+      if (!owner) throw error;
+      owner.fail(error); // said in the panel (panelFaults.js)
     });
   }
 
@@ -304,7 +309,8 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
     },
     /**
      * Shimmer meter: mean |Δ brightness| per pixel of each technique's picture under sub-pixel
-     * camera moves. Asynchronous read-backs, as for the errors; resolves null if disposed meanwhile.
+     * camera moves. Asynchronous read-backs, as for the errors; resolves null if disposed or the
+     * context was lost meanwhile.
      */
     async measureShimmer() {
       const offsets = [[0.5, 0], [0, 0.5], [0.5, 0.5], [0.25, 0.75]];
@@ -329,7 +335,7 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
           result[technique] = sum / offsets.length;
         }
       } catch (error) {
-        if (disposed || gl.isContextLost()) return null; // the context went away under a read-back
+        if (disposed || error instanceof ContextLostError) return null; // the context went away under a read-back
         throw error;
       }
       return result;

@@ -115,16 +115,22 @@ export function mount(root, ctx) {
   let shimmer = null;
   let shimmerRun = 0; // a change of settings makes a running measurement stale
   let shimmerBusy = false;
+  let shimmerStopped = ''; // why the last measurement ended without numbers
   const measure = async () => {
     await whenBuilt(); // measure the chains of the current settings
     const run = ++shimmerRun;
     shimmerBusy = true;
+    shimmerStopped = '';
     dom.setShimmer(null, true);
     const result = await scene?.measureShimmer() ?? null;
     if (run !== shimmerRun) return;
     shimmerBusy = false;
     shimmer = result;
-    dom.setShimmer(shimmer);
+    // null from a live scene: its context was lost under the read-backs
+    if (result === null && scene && !disposed) {
+      shimmerStopped = 'Shimmer meter: the measurement stopped because the graphics context was lost; press “Measure shimmer” again once the picture is back.';
+    }
+    dom.setShimmer(shimmer, false, shimmerStopped);
     ctx.invalidate();
   };
   ctx.gui.add({ measure }, 'measure').name('Measure shimmer (all techniques)');
@@ -198,7 +204,8 @@ export function mount(root, ctx) {
     dom.setSummary(`${TECHNIQUE_NAMES[values.technique]}, ${optionLabel(schema.precision, values.precision)}, ${values.channels} channels; base Beckmann α = ${base} `
       + `(Blinn-Phong s = ${exponentFromAlpha(base).toFixed(1)}); mip level ${values.level < 0 ? `automatic, ${anisoText}` : `forced to ${Math.min(values.level, levels - 1)}`} `
       + `of 0–${levels - 1}; R0 = ${normalIncidence(1, IOR).toFixed(3)}; ${built.size ? `all six chains of the ${built.size}² map built in ${built.ms.toFixed(0)} ms (${built.where})` : `the six chains of the ${size()}² map are being built`}.`
-      + (values.precision === 'f32' && scene && !scene.floatLinear ? ' This GPU cannot filter 32-bit float textures: pick 16-bit float.' : ''));
+      + (values.precision === 'f32' && scene && !scene.floatLinear ? ' This GPU cannot filter 32-bit float textures: pick 16-bit float.' : '')
+      + (builder.problem ? ` ${builder.problem}` : ''));
     dom.setLegend(`level ${levels - 1} (difference: 0 to 0.25)`);
   }
 
@@ -209,8 +216,9 @@ export function mount(root, ctx) {
       shimmer = null;
       shimmerRun += 1;
       shimmerBusy = false;
+      shimmerStopped = '';
     }
-    dom.setShimmer(shimmer, shimmerBusy);
+    dom.setShimmer(shimmer, shimmerBusy, shimmerStopped);
     const levels = levelCount(size());
     const base = values.alpha;
     const channels = Number(values.channels);

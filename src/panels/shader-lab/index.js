@@ -70,6 +70,13 @@ export function mount(root, ctx) {
       gpu = createMethodsGpu(context.gl);
       painter = createSpherePainter(context.gl);
     } catch (error) {
+      if (error instanceof ShaderError || error instanceof ShaderCompileFailed) { // the lab's own shaders, on an unusual driver
+        console.error(error);
+        gpu = null;
+        painter = null;
+        gpuProblem = `This GPU could not compile the lab’s own shaders, so nothing can be graded here: ${String(error.message).split('\n').find((l) => /ERROR/.test(l))?.trim() || error.message.split('\n')[0]}.`;
+        return;
+      }
       if (!(error instanceof GpuFloatUnavailable)) throw error;
       gpuProblem = `${error.message} Grading needs WebGL2 with float render targets.`;
     }

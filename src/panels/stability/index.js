@@ -7,7 +7,7 @@
 // got wrong (webglfundamentals "WebGL Precision Issues").
 import { WebGL2Unavailable } from '../../gl/contextBudget.js';
 import { createContext } from '../../gl/createContext.js';
-import { disposeMethodsGpu, GpuFloatUnavailable, gpuPrecisionInfo, methodsGpu } from '../../gl/evaluateMethodsGpu.js';
+import { disposeMethodsGpu, GpuFloatUnavailable, gpuPrecisionInfo, methodsGpu, renewMethodsGpu, ShaderCompileFailed } from '../../gl/evaluateMethodsGpu.js';
 import { cellAt, classifyGrid, criticalAngleDeg, gridInputs } from '../../optics/classifyGrid.js';
 import { methodById } from '../../optics/methods.js';
 import { contextFor } from '../../optics/rounding.js';
@@ -54,9 +54,37 @@ export function mount(root, ctx) {
     claimed = gpuPrecisionInfo(context.gl);
     ctx.frameDrawn();
   } catch (error) {
-    if (!(error instanceof WebGL2Unavailable || error instanceof GpuFloatUnavailable)) throw error;
-    gpuProblem = `${error.message} The GPU map needs WebGL2 with float render targets; the JavaScript map still works.`;
+    if (error instanceof ShaderCompileFailed) { // an unusual driver: the JavaScript map still stands
+      console.error(error);
+      gpu = null;
+      gpuProblem = `This GPU could not compile the evaluation shader, so there is no GPU map: ${error.log.trim().split('\n')[0] || error.message}. The JavaScript map still works.`;
+    } else if (error instanceof WebGL2Unavailable || error instanceof GpuFloatUnavailable) {
+      gpuProblem = `${error.message} The GPU map needs WebGL2 with float render targets; the JavaScript map still works.`;
+    } else throw error;
   }
+
+  // A lost context takes the evaluator's programs and textures with it; the values already read
+  // back stay true, so only maps not yet evaluated wait for the restore, which makes the evaluator anew.
+  let lost = false;
+  const LOST = 'The graphics context was lost; the GPU map comes back when it is restored.';
+  const onLost = (event) => {
+    event.preventDefault();
+    lost = true;
+    ctx.invalidate();
+  };
+  const onRestored = () => {
+    lost = false;
+    gpuProblem = '';
+    try {
+      gpu = renewMethodsGpu(context.gl);
+    } catch (error) {
+      gpu = null;
+      gpuProblem = `The GPU evaluator could not start again: ${error.message}`;
+    }
+    ctx.invalidate();
+  };
+  context?.gl.canvas.addEventListener('webglcontextlost', onLost);
+  context?.gl.canvas.addEventListener('webglcontextrestored', onRestored);
 
   const folder = ctx.gui.addFolder('Map');
   ctx.bind(folder, ['method', 'precision', 'tolerance']);
@@ -71,6 +99,10 @@ export function mount(root, ctx) {
     if (!gpu) return null;
     const key = `${values.method}|${pair.gpu}`;
     if (!gpuValues.has(key)) {
+      if (lost || context.gl.isContextLost()) {
+        gpuProblem = LOST;
+        return null;
+      }
       try {
         gpuValues.set(key, gpu.evaluate({ methodId: values.method, precision: pair.gpu, inputs: gridInputs(grid) }));
       } catch (error) { // a lost context, say: the JavaScript map still stands
@@ -177,6 +209,8 @@ export function mount(root, ctx) {
     get pair() { return pair; },
     /** The shared evaluator of this panel's context (createMethodsGpu's handle), or null. */
     get gpu() { return gpu; },
+    /** This panel's WebGL2 context (its canvas is never on the page), or null. */
+    get gl() { return context?.gl ?? null; },
     get precisionProbe() { return probe; },
     get probeCell() { return probeCell; },
     setProbe,
@@ -217,6 +251,8 @@ export function mount(root, ctx) {
         canvas.removeEventListener('keydown', onKey);
       }
       if (context) {
+        context.gl.canvas.removeEventListener('webglcontextlost', onLost);
+        context.gl.canvas.removeEventListener('webglcontextrestored', onRestored);
         disposeMethodsGpu(context.gl);
         context.dispose();
       }
