@@ -66,6 +66,7 @@ window.fresnelLab.ready = (async () => {
   }
   let messages = null;
   const host = createPanelHost(root, panel, {
+    titleLevel: 1, // the embed's title is its h1
     applyMaterial: (material) => panel.material && host.set({ [panel.material]: material.n }, { source: 'page' }),
     onFrame: (frame) => messages?.rendered(frame),
   });

@@ -33,13 +33,15 @@ function readOnly(values, id) {
  * container: where the panel lives (a section's .panel-mount, or the embed root).
  * panel: its definition (manifest entry, schema, mount; see panelContract.js).
  * prefix: URL key prefix ('' for the hero and embeds, 'id.' for other lecture-page panels).
+ * titleLevel: the level of the panel's title heading (2 on the lecture page, 1 in an embed); a
+ * panel's own headings are h3, one level below 2, and are said one level below the title.
  * @param {HTMLElement} container
  * @param {import('./panelContract.js').PanelDefinition} panel
- * @param {{ prefix?: string, noticeHost?: HTMLElement, onFrame?: (frame: number) => void,
+ * @param {{ prefix?: string, noticeHost?: HTMLElement, onFrame?: (frame: number) => void, titleLevel?: number,
  *   applyMaterial?: (material: { id?: string, name?: string, n: number }) => void }} [options]
  */
 export function createPanelHost(container, panel, {
-  prefix = '', noticeHost = container, onFrame = () => {}, applyMaterial = () => {},
+  prefix = '', noticeHost = container, onFrame = () => {}, applyMaterial = () => {}, titleLevel = 2,
 } = {}) {
   const { schema } = panel;
   const { values, problems } = readUrlState(schema, prefix);
@@ -258,6 +260,7 @@ export function createPanelHost(container, panel, {
     }
     buttons.png.disabled = !instance.png;
     buttons.csv.disabled = !instance.csv;
+    if (titleLevel !== 2) for (const heading of content.querySelectorAll('h3')) heading.setAttribute('aria-level', String(titleLevel + 1));
     refreshDescription();
     domFrameDrawn();
     return instance;

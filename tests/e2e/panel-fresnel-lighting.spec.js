@@ -48,7 +48,7 @@ test('the GLSL shown is the GLSL compiled, and Copy GLSL copies it', async ({ pa
     return gl.getAttachedShaders(program).map((s) => gl.getShaderSource(s)).join('\n');
   });
   expect(compiled).toContain(shown);
-  const button = page.getByRole('button', { name: 'Copy the GLSL lines to the clipboard' });
+  const button = page.getByRole('button', { name: 'Copy GLSL' });
   await expect(button).toHaveText('Copy GLSL');
   await button.click();
   await expect(page.locator('.fl-copy-status')).toHaveText('Copied');

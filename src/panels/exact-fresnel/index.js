@@ -52,6 +52,10 @@ export function mount(root, ctx) {
   const { values } = ctx;
   const panel = el('div', 'xf-panel');
   const formula = el('div', 'xf-formula');
+  // It scrolls sideways in a narrow column: focusable, so a keyboard can scroll it too.
+  formula.tabIndex = 0;
+  formula.setAttribute('role', 'group');
+  formula.setAttribute('aria-label', 'The exact Fresnel reflectance and its terms');
   formula.append(texElement(FORMULA), texElement(DEFINITIONS));
 
   const table = el('table', 'xf-terms');

@@ -76,7 +76,6 @@ export function mount(root, ctx) {
   const codeHead = el('div', 'fl-code-head');
   const copyButton = el('button', 'fl-copy', 'Copy GLSL');
   copyButton.type = 'button';
-  copyButton.setAttribute('aria-label', 'Copy the GLSL lines to the clipboard');
   const copyStatus = el('span', 'fl-copy-status');
   copyStatus.setAttribute('role', 'status');
   codeHead.append(el('h3', '', 'The GLSL (as compiled here)'), copyButton, copyStatus);

@@ -20,7 +20,6 @@ export function buildMetalsDom(host, metals, onPick) {
   const swatchRow = el('div', 'mt-swatches');
   swatchRow.setAttribute('role', 'group');
   swatchRow.setAttribute('aria-label', 'F0 per material (linear reflectance, red green blue); pick a metal');
-  const numbers = (rgb) => rgb.map((v) => v.toFixed(3)).join(' ');
   // Three numbers that wrap as a group when a swatch is narrow (text stays "0.956 0.792 0.408").
   const fillNumbers = (node, rgb) => {
     const parts = rgb.map((v) => el('span', '', v.toFixed(3)));
@@ -39,12 +38,13 @@ export function buildMetalsDom(host, metals, onPick) {
     const button = el('button', 'mt-swatch');
     button.type = 'button';
     button.dataset.metal = metal.id;
-    button.setAttribute('aria-label', `${metal.name}: F0 ${numbers(metal.f0)}`);
     const chip = el('span', 'mt-chip');
     chip.style.background = swatchColor(metal.f0);
     const f0 = el('span', 'mt-f0');
     fillNumbers(f0, metal.f0);
-    button.append(chip, el('span', 'mt-name', metal.name), f0);
+    // Its name is what it shows (the group says these are F0 in red, green, blue), so a voice
+    // command of the visible words reaches it.
+    button.append(chip, el('span', 'mt-name', metal.name), ' ', f0);
     button.addEventListener('click', () => onPick(metal.id));
     swatchRow.append(button);
     return button;

@@ -34,6 +34,7 @@ export function buildInspector(host) {
   canvas.width = SIZE;
   canvas.height = SIZE;
   canvas.setAttribute('role', 'img');
+  canvas.setAttribute('aria-label', 'Slope scatter of one texel’s normals with each technique’s fitted lobe, drawn once the mip chains are built.');
   const side = el('div', 'nm-inspector-side');
   const keyList = el('ul', 'nm-inspector-key');
   const verdict = el('p', 'nm-inspector-verdict');

@@ -42,7 +42,16 @@ export function mount(root, ctx) {
 
   const lines = el('table', 'r0-steps r0-lines');
   const caption = el('caption', 'r0-caption', 'Each line evaluated exactly as it is written');
-  lines.append(caption);
+  // Column headers for screen readers (every cell has one); the caption and layout say it on screen.
+  const head = el('thead', 'sr-only');
+  const headRow = el('tr');
+  for (const name of ['Left side', 'Expression', 'Step', 'Value of the line']) {
+    const th = el('th', '', name);
+    th.scope = 'col';
+    headRow.append(th);
+  }
+  head.append(headRow);
+  lines.append(caption, head);
   const lineCells = first.lines.map((line, i) => {
     const tr = el('tr');
     const lhs = el('td', 'r0-lhs');
@@ -51,7 +60,10 @@ export function mount(root, ctx) {
     expr.append(texElement(`\\displaystyle ${line.tex}`, { display: false, tag: 'span' }));
     const value = el('td', 'r0-value');
     value.dataset.line = String(i + 1);
-    tr.append(lhs, expr, el('td', 'r0-note', line.note), value);
+    // The step's words head its row: a screen reader says what the line does before its numbers.
+    const note = el('th', 'r0-note', line.note);
+    note.scope = 'row';
+    tr.append(lhs, expr, note, value);
     lines.append(tr);
     return value;
   });

@@ -7,9 +7,22 @@
 import { EditorState, Compartment, Transaction } from '@codemirror/state';
 import { EditorView, keymap, lineNumbers, highlightActiveLine, drawSelection } from '@codemirror/view';
 import { defaultKeymap, history, historyKeymap } from '@codemirror/commands';
-import { StreamLanguage, bracketMatching, defaultHighlightStyle, indentOnInput, syntaxHighlighting } from '@codemirror/language';
+import { HighlightStyle, StreamLanguage, bracketMatching, indentOnInput, syntaxHighlighting } from '@codemirror/language';
+import { tags } from '@lezer/highlight';
 import { shader } from '@codemirror/legacy-modes/mode/clike';
 import { lintGutter, setDiagnostics } from '@codemirror/lint';
+
+// The code's colours are the page theme's (--code-* in styles.css), each at least 4.5:1 against
+// the editor's background and its active line in both themes (WCAG 2.2, 1.4.3).
+const glslColours = HighlightStyle.define([
+  { tag: [tags.keyword, tags.modifier], color: 'var(--code-keyword)' },
+  { tag: [tags.typeName, tags.className, tags.namespace], color: 'var(--code-type)' },
+  { tag: [tags.number, tags.bool, tags.atom, tags.literal], color: 'var(--code-number)' },
+  { tag: tags.string, color: 'var(--code-string)' },
+  { tag: [tags.comment, tags.lineComment, tags.blockComment], color: 'var(--code-comment)', fontStyle: 'italic' },
+  { tag: [tags.standard(tags.variableName), tags.macroName, tags.meta], color: 'var(--code-builtin)' },
+  { tag: tags.invalid, color: 'var(--code-invalid)' },
+]);
 
 /**
  * parent: where the editor goes; doc: its text; label: its accessible name; onChange(text) after
@@ -30,7 +43,7 @@ export function createCodeEditor(parent, { doc, label, onChange, onRun }) {
         bracketMatching(),
         indentOnInput(),
         StreamLanguage.define(shader),
-        syntaxHighlighting(defaultHighlightStyle, { fallback: true }),
+        syntaxHighlighting(glslColours),
         lintGutter(),
         EditorView.lineWrapping, // long lines wrap: nothing is cut off on a projector
         keymap.of([{ key: 'Mod-Enter', run: () => { onRun(); return true; } }, ...defaultKeymap, ...historyKeymap]),
