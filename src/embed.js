@@ -14,6 +14,7 @@ import { setSubscripted } from './ui/subscripts.js';
 import { showNotice } from './host/showNotice.js';
 import { installPageFaults } from './host/panelFaults.js';
 import { contextStats } from './gl/contextBudget.js';
+import { audioTraceOn, installAudioKey, onAudioTrace, setAudioTrace, traceLog } from './ui/createAudioTrace.js';
 
 const root = document.getElementById('embed');
 installPageFaults((title, lines) => showNotice(root, title, lines, { kind: 'error' }));
@@ -22,6 +23,7 @@ const id = search.get('panel');
 const hosts = {};
 window.fresnelLab = {
   hosts, contexts: contextStats, panels: new Proxy({}, { get: (_t, key) => hosts[key]?.instance ?? null }), ready: null,
+  audio: { get on() { return audioTraceOn(); }, log: traceLog },
 };
 const { options, problems } = readEmbedOptions(search);
 // What the reader's browser remembers, overridden by the embed's URL and then by messages; never
@@ -31,6 +33,8 @@ if (options.theme) theme.scheme = options.theme;
 if (options.projector !== null) theme.projector = options.projector;
 applyTheme(theme, { remember: false });
 showNotice(root, 'Some embed options in the link were not usable:', problems.map(describeProblem));
+setAudioTrace(options.audio, 'url');
+installAudioKey();
 
 // A deck may leave the slide before the panel's module is here (reveal.js posts 'slide:stop' to
 // the frames of the slide it leaves): remember it, and do not start drawing until it resumes.
@@ -102,11 +106,13 @@ window.fresnelLab.ready = (async () => {
       theme: (scheme) => applyTheme(Object.assign(theme, { scheme }), { remember: false }),
       projector: (on) => applyTheme(Object.assign(theme, { projector: on }), { remember: false }),
       reducedMotion: (on) => host.setReducedMotion(on),
+      audio: (on) => setAudioTrace(on, 'api'),
       pause() { paused = true; show(); },
       resume() { paused = false; show(); },
     },
   });
   window.removeEventListener('message', early);
+  onAudioTrace((on, source) => { if (source !== 'api') messages.audio(on); }); // the reader's switch, told to the deck
   show();
   messages.ready();
   // The content's height, whenever it changes (a panel mounting, projector mode, a notice), so a

@@ -14,6 +14,7 @@ import { installPageFaults } from './host/panelFaults.js';
 import { contextStats, MAX_LIVE_CONTEXTS } from './gl/contextBudget.js';
 import { describeProblem, readParams } from './host/params.js';
 import { texReady } from './ui/tex.js';
+import { audioTraceOn, installAudioKey, onAudioTrace, setAudioTrace, traceLog } from './ui/createAudioTrace.js';
 
 const hosts = {};
 window.fresnelLab = {
@@ -21,6 +22,8 @@ window.fresnelLab = {
   contexts: contextStats,
   /** Each mounted panel's view (null while it is away), for scripts and tests. */
   panels: new Proxy({}, { get: (_t, id) => hosts[id]?.instance ?? null }),
+  /** The audio trace: on or off, and every sound it made (createAudioTrace.js). */
+  audio: { get on() { return audioTraceOn(); }, log: traceLog },
   ready: null,
 };
 
@@ -39,6 +42,7 @@ window.fresnelLab.applyMaterial = applyMaterial;
 // ?maxContexts=N holds fewer WebGL panels at once, for a weak laptop (at most 8, the default).
 const pageSchema = {
   maxContexts: { type: 'number', default: MAX_LIVE_CONTEXTS, min: 1, max: MAX_LIVE_CONTEXTS, step: 1, label: 'Live WebGL panels' },
+  audio: { type: 'boolean', default: false, label: 'Audio trace of the R(θ) plots' },
 };
 const page = readParams(pageSchema, new URLSearchParams(window.location.search));
 const main = document.querySelector('main');
@@ -46,6 +50,15 @@ const main = document.querySelector('main');
 installPageFaults((title, lines) => showNotice(main, title, lines, { kind: 'error' }));
 showNotice(main, 'A page setting in the link was not usable:', page.problems.map(describeProblem));
 const maxLive = Math.round(page.values.maxContexts);
+// The audio trace (A, or the button under a plot) is kept in the link, so a shared link keeps it.
+setAudioTrace(page.values.audio, 'url');
+installAudioKey();
+onAudioTrace((on) => {
+  const url = new URL(window.location.href);
+  if (on) url.searchParams.set('audio', '1');
+  else url.searchParams.delete('audio');
+  window.history.replaceState(window.history.state, '', url);
+});
 
 // The page and the manifest must agree: a section without a panel, or a panel without its section
 // or its module, is said on the page (and fails the tests), never dropped in silence.

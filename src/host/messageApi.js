@@ -6,12 +6,14 @@
 //   {type:'fresnel-lab:snapshot', width?, height?, id?}  answers fresnel-lab:snapshot {png, csv, params}
 //   {type:'fresnel-lab:lock' | 'unlock' | 'hide' | 'show', keys?}  controls; no keys: all of them
 //   {type:'fresnel-lab:theme', theme} · {type:'fresnel-lab:projector', on} · {type:'fresnel-lab:reducedMotion', on}
+//   {type:'fresnel-lab:audio', on}                the audio trace of the R(θ) plots
 //   {type:'fresnel-lab:pause'} · {type:'fresnel-lab:resume'}, and reveal.js's plain 'slide:stop' / 'slide:start'
 // Panel → deck: fresnel-lab:ready {apiVersion, panel, params}; fresnel-lab:changed {source, keys,
 // params} after every change (gathered for CHANGED_MS during a drag); fresnel-lab:state (as before
 // version 1, after get, set and changes not made by the API); fresnel-lab:rendered {frame};
 // fresnel-lab:error {message}; fresnel-lab:key {key} (keys no control used, for a deck's clicker);
-// fresnel-lab:size {height} (the page's content height in CSS pixels, so a host can fit the frame).
+// fresnel-lab:size {height} (the page's content height in CSS pixels, so a host can fit the frame);
+// fresnel-lab:audio {on} when the reader turned the audio trace on or off.
 // Anything else is ignored. Nothing from a message is evaluated or inserted as HTML.
 
 export const API_VERSION = 1;
@@ -60,6 +62,7 @@ export function parseMessage(data) {
       return data.theme === 'light' || data.theme === 'dark' ? { kind, theme: data.theme } : null;
     case 'projector':
     case 'reducedMotion':
+    case 'audio':
       return typeof data.on === 'boolean' ? { kind, on: data.on } : null;
     default: {
       if (!CONTROL_KINDS.includes(kind)) return null;
@@ -79,7 +82,7 @@ function plain(values) {
  * `?parentOrigin=` (messages go only there and only its messages are heard), 'none' (an unusable
  * parentOrigin: nothing is posted and nothing heard), or '*'. page: what
  * the embed page does for the page-wide messages: { theme(scheme), projector(on),
- * reducedMotion(on), pause(), resume() }.
+ * reducedMotion(on), audio(on), pause(), resume() }.
  */
 export function connectMessages(host, { parent = window.parent, origin = '*', page = {} } = {}) {
   const post = (target, message) => { if (origin !== 'none') target?.postMessage(message, origin); };
@@ -173,6 +176,7 @@ export function connectMessages(host, { parent = window.parent, origin = '*', pa
     },
     rendered: (frame) => announce({ type: 'fresnel-lab:rendered', panel: host.id, frame }),
     size: (height) => announce({ type: 'fresnel-lab:size', panel: host.id, height }),
+    audio: (on) => announce({ type: 'fresnel-lab:audio', panel: host.id, on }),
     disconnect() {
       window.removeEventListener('message', onMessage);
       window.removeEventListener('keydown', onKey);

@@ -38,7 +38,8 @@ function fmt(v, digits) {
  * options: xLabel, yLabel, xRange ([min, max] or null), yRange ([min, max] or null for auto),
  * xUnit ('°' or ''), xStep (ticks on multiples of it only, e.g. 1 for whole levels), series
  * [{ label, stroke, width, dash }], height, digits (legend decimals).
- * Markers set with setMarks([{ x, color, label, shadeTo }]) are drawn over the curves.
+ * Markers set with setMarks([{ x, color, label, shadeTo }]) are drawn over the curves, and the
+ * audio trace's cursor with setCursor(x, label).
  */
 export function createLinePlot(container, options) {
   const {
@@ -46,6 +47,7 @@ export function createLinePlot(container, options) {
   } = options;
   let data = [[], ...series.map(() => [])];
   let marks = [];
+  let cursor = null; // the audio trace's θ (createAudioTrace.js), drawn with the marks
   let plot = null;
 
   const axis = (label, unit, vertical = false) => ({
@@ -78,7 +80,7 @@ export function createLinePlot(container, options) {
       ],
       legend: { live: true },
       cursor: { drag: { x: false, y: false } },
-      hooks: { draw: [(u) => drawMarks(u, marks)] },
+      hooks: { draw: [(u) => drawMarks(u, cursor ? [...marks, cursor] : marks)] },
     }, data, container));
   }
   build();
@@ -97,6 +99,13 @@ export function createLinePlot(container, options) {
     },
     setMarks(next) {
       marks = next.filter((m) => m && m.x != null && Number.isFinite(m.x));
+      plot.redraw(false, false);
+    },
+    /** The audio trace's cursor at x (null: none), drawn over the curves in the text colour. */
+    setCursor(x, label = '') {
+      const next = x == null ? null : { x, color: '--text', label };
+      if (next?.x === cursor?.x && next?.label === cursor?.label) return;
+      cursor = next;
       plot.redraw(false, false);
     },
     /** The plot as a PNG data URL on the panel's background, with its legend drawn underneath

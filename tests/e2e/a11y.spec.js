@@ -37,6 +37,12 @@ for (const id of PANEL_IDS) {
   });
 }
 
+test('the audio trace’s controls, shown', async ({ page }) => {
+  await openLab(page, 'embed.html?panel=polarization&audio=1&theme=light');
+  await expect(page.locator('.trace-body')).toBeVisible();
+  expect(await seriousViolations(page)).toEqual([]);
+});
+
 test('the shader lab’s editor in the light theme', async ({ page }) => {
   await openLab(page, 'embed.html?panel=shader-lab&theme=light');
   expect(await seriousViolations(page)).toEqual([]);

@@ -13,6 +13,7 @@ import { fixed as fixedTo, sci } from '../../ui/format.js';
 import { criticalMark, thetaMark } from '../../ui/plotMarks.js';
 import { texElement } from '../../ui/tex.js';
 import { addSwap } from '../shared/indexPair.js';
+import { addDielectricTrace } from '../shared/dielectricTrace.js';
 import './styles.css';
 import { schema } from './schema.js';
 
@@ -127,6 +128,7 @@ export function mount(root, ctx) {
     xLabel: 'θ (degrees)', yLabel: 'R', height: 240,
     series: [{ label: 'Exact R', stroke: '--c-exact', width: 3.5 }],
   });
+  const trace = addDielectricTrace(plotHost, plot, () => values);
 
   const gui = ctx.gui;
   ctx.bind(gui, ['theta', 'nI', 'nT']);
@@ -183,6 +185,7 @@ export function mount(root, ctx) {
       curvesKey = key;
       curves = reflectanceCurves(nI, nT);
       plot.setData([curves.theta, curves.exact]);
+      trace.refresh();
     }
     const critical = criticalAngle(nI, nT);
     plot.setMarks([
@@ -212,7 +215,9 @@ export function mount(root, ctx) {
       };
     },
     png: () => plot.toPng(),
+    trace,
     dispose() {
+      trace.dispose();
       plot.dispose();
       panel.remove();
     },

@@ -16,6 +16,7 @@ import fragmentSource from './fresnel-lighting.frag.glsl?raw';
 import mixSource from './fresnel-lighting-mix.glsl?raw';
 import './styles.css';
 import { schema } from './schema.js';
+import { addDielectricTrace } from '../shared/dielectricTrace.js';
 
 const METHOD_NAMES = { exact: 'exact Fresnel', schlick: "Schlick's approximation" };
 
@@ -94,6 +95,7 @@ export function mount(root, ctx) {
       { label: 'Constant w', stroke: '--c-marker' },
     ],
   });
+  const trace = addDielectricTrace(plotHost, plot, () => ({ nI: 1, nT: values.nT }), ['exact', 'schlick'], { exact: 'F exact', schlick: 'F Schlick' });
 
   const onCopy = async () => {
     copyStatus.textContent = await copyCode(MIX_GLSL, code);
@@ -113,6 +115,7 @@ export function mount(root, ctx) {
     if (nT !== curvesN) {
       curvesN = nT;
       curves = reflectanceCurves(1, nT);
+      trace.refresh();
     }
     plot.setData([curves.theta, curves.exact, curves.schlick, curves.theta.map(() => weight)]);
     plot.setMarks([thetaMark(RIM_DEG, `${RIM_DEG}°`)]);
@@ -161,8 +164,10 @@ export function mount(root, ctx) {
       };
     },
     png: stage.view ? () => stage.view.toDataURL() : null,
+    trace,
     dispose() {
       copyButton.removeEventListener('click', onCopy);
+      trace.dispose();
       plot.dispose();
       stage.dispose();
     },

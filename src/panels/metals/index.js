@@ -4,9 +4,10 @@
 // coloured; its exact reflectance is compared with Schlick's on the channel's own F0, and near
 // grazing the exact curve dips below F0, which Schlick cannot do.
 import { cosDeg } from '../../optics/angles.js';
-import { fresnelExact, normalIncidence } from '../../optics/fresnel.js';
+import { fresnelConductor, fresnelExact, normalIncidence } from '../../optics/fresnel.js';
 import { metalById, metalF0, metals } from '../../optics/materials.js';
-import { CHANNELS, metalCurveStats, metalCurves } from '../../optics/metalCurves.js';
+import { CHANNELS, metalCurveStats, metalCurves, schlickForF0 } from '../../optics/metalCurves.js';
+import { createAudioTrace } from '../../ui/createAudioTrace.js';
 import { createLinePlot } from '../../ui/createLinePlot.js';
 import { createTwinStage } from '../shared/createTwinStage.js';
 import { buildMetalsDom } from './buildMetalsDom.js';
@@ -59,6 +60,20 @@ export function mount(root, ctx) {
     ],
   });
 
+  // Heard per channel: a metal has neither a Brewster nor a critical angle, its shallow dip is heard in the pitch.
+  const trace = createAudioTrace(dom.plotHost, {
+    plot,
+    curves: () => {
+      const metal = metalById(values.metal);
+      const f0 = metalF0(metal);
+      return [
+        ...CHANNELS.map((c, ch) => ({ label: `${metal.name} exact ${SHORT[c]}`, at: (deg) => fresnelConductor(cosDeg(deg), metal.n[ch], metal.k[ch]) })),
+        ...CHANNELS.map((c, ch) => ({ label: `${metal.name} Schlick ${SHORT[c]}`, at: (deg) => schlickForF0(cosDeg(deg), f0[ch]) })),
+      ];
+    },
+    landmarks: () => ({ brewster: null, critical: null }),
+  });
+
   ctx.bind(ctx.gui.addFolder('Materials'), ['metal', 'fresnel', 'nT']);
 
   let curves = null;
@@ -77,6 +92,7 @@ export function mount(root, ctx) {
         label: `${SHORT[s.channel]} dips ${s.dip.toFixed(3)} below F0`,
       })));
       dom.setTable(metal, stats);
+      trace.refresh();
     }
     const dielectricF0 = normalIncidence(1, values.nT);
     dom.setSwatches({ n: values.nT, f0: dielectricF0 }, metal.id);
@@ -121,7 +137,9 @@ export function mount(root, ctx) {
       return { filename: `metals-${values.metal}.csv`, columns };
     },
     png: stage.view ? () => stage.view.toDataURL() : null,
+    trace,
     dispose() {
+      trace.dispose();
       plot.dispose();
       stage.dispose();
     },

@@ -11,6 +11,7 @@ import { brewsterMark, criticalMark, thetaMark } from '../../ui/plotMarks.js';
 import { addSwap } from '../shared/indexPair.js';
 import './styles.css';
 import { schema } from './schema.js';
+import { addDielectricTrace } from '../shared/dielectricTrace.js';
 
 export { schema };
 
@@ -72,6 +73,8 @@ export function mount(root, ctx) {
     series: SERIES,
     height: 340,
   });
+  // Rp first: its fall to zero is the Brewster angle, heard as the pitch reaching the bottom.
+  const trace = addDielectricTrace(plotHost, plot, () => values, ['p', 's', 'exact']);
 
   const folder = ctx.gui.addFolder('Interface and readout');
   ctx.bind(folder, ['nI', 'nT', 'theta']);
@@ -92,6 +95,7 @@ export function mount(root, ctx) {
       curvesKey = key;
       curves = reflectanceCurves(nI, nT);
       plot.setData([curves.theta, curves.s, curves.p, curves.exact]);
+      trace.refresh();
       brewster = brewsterAngle(nI, nT) / DEG;
       const c = criticalAngle(nI, nT);
       critical = c === null ? null : c / DEG;
@@ -138,7 +142,9 @@ export function mount(root, ctx) {
     },
     /** The plot on the panel's background (uPlot's canvas is transparent). */
     png: () => plot.toPng(),
+    trace,
     dispose() {
+      trace.dispose();
       plot.dispose();
       panel.remove();
     },

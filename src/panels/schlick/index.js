@@ -13,6 +13,7 @@ import { angle as deg, fixed as fixedTo } from '../../ui/format.js';
 import { criticalMark, thetaMark } from '../../ui/plotMarks.js';
 import { renderTex, texElement } from '../../ui/tex.js';
 import { addSwap } from '../shared/indexPair.js';
+import { addDielectricTrace } from '../shared/dielectricTrace.js';
 import './styles.css';
 import { schema } from './schema.js';
 
@@ -80,6 +81,7 @@ export function mount(root, ctx) {
   const plot = createLinePlot(plotHost, {
     xLabel: 'θ, angle from the normal (degrees)', yLabel: 'Reflectance R and |error|', series: SERIES, height: 340,
   });
+  const trace = addDielectricTrace(plotHost, plot, () => values, ['exact', 'schlick', 'schlickT']);
 
   ctx.bind(ctx.gui, ['nI', 'nT', 'theta']);
   addSwap(ctx, ctx.gui, 'Swap n_i ↔ n_t (look out of the glass)');
@@ -93,6 +95,7 @@ export function mount(root, ctx) {
     const inside = nI > nT;
     const none = cmp.theta.map(() => null); // Schlick on cos θt is Schlick itself when nI ≤ nT
     plot.setData([cmp.theta, cmp.exact, cmp.schlick, inside ? cmp.schlickT : none, cmp.error, inside ? cmp.errorT : none]);
+    trace.refresh();
     worstOut.textContent = `${fixed(cmp.worst.value, 4)} at ${deg(cmp.worst.theta)}`;
     worstTOut.textContent = inside
       ? `${fixed(cmp.worstT.value, 4)} at ${deg(cmp.worstT.theta)}`
@@ -165,7 +168,9 @@ export function mount(root, ctx) {
       };
     },
     png: () => plot.toPng(),
+    trace,
     dispose() {
+      trace.dispose();
       plot.dispose();
       panel.remove();
     },

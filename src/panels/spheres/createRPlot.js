@@ -29,6 +29,7 @@ export function createRPlot(container) {
       lines.setData([curves.theta, curves.exact, curves.schlick, curves.s, curves.p, curves.error]);
       refresh();
     },
+    setCursor: (deg, label) => lines.setCursor(deg, label),
     setHover(theta) {
       hover = theta;
       refresh();

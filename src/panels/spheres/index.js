@@ -11,6 +11,7 @@ import { indexPresets } from '../shared/indexPresets.js';
 import { addSwap } from '../shared/indexPair.js';
 import { startWebGL } from '../shared/startWebGL.js';
 import { createRPlot } from './createRPlot.js';
+import { addDielectricTrace } from '../shared/dielectricTrace.js';
 import { createSphereTrio } from './createSphereTrio.js';
 import { buildSpheresDom } from './buildSpheresDom.js';
 import { schema } from './schema.js';
@@ -28,6 +29,7 @@ export function mount(root, ctx) {
   const { values } = ctx;
   const dom = buildSpheresDom(root);
   const plot = createRPlot(dom.plot);
+  const trace = addDielectricTrace(dom.plot, plot, () => values, ['exact', 'schlick', 's', 'p']);
   const trio = startWebGL(dom.stage, () => createSphereTrio(dom.canvas, { onChange: onViewChange, onFrame: ctx.frameDrawn }),
     'The spheres need WebGL2; the plot below still works.');
 
@@ -71,6 +73,7 @@ export function mount(root, ctx) {
       const critical = criticalAngle(nI, nT);
       const brewster = brewsterAngle(nI, nT) / DEG;
       plot.setCurves(curves, { brewster, critical: critical === null ? null : critical / DEG });
+      trace.refresh();
       dom.setSummary([
         ['R0', normalIncidence(nI, nT).toFixed(5)],
         ['Brewster', formatAngle(brewster)],
@@ -116,6 +119,7 @@ export function mount(root, ctx) {
   return {
     trio,
     plot,
+    trace,
     get curves() { return curves; },
     get errScale() { return errScale; },
     update,
@@ -140,6 +144,7 @@ export function mount(root, ctx) {
       dom.canvas.removeEventListener('pointermove', onHover);
       dom.canvas.removeEventListener('pointerleave', onLeave);
       trio?.dispose();
+      trace.dispose();
       plot.dispose();
     },
   };
