@@ -30,7 +30,12 @@ export function bindGui(gui, schema, draft, onChange, keys = Object.keys(schema)
   return controllers;
 }
 
+/** Below this width (a phone) a panel's controls start folded: a drawer under the picture, opened by its title. */
+export const FOLDED_BELOW_PX = 600;
+
 /** A GUI placed inside the panel (not floating over the page), keyboard-operable like any form. */
 export function createPanelGui(container, title) {
-  return new GUI({ container, title, width: 360 });
+  const gui = new GUI({ container, title, width: 360 });
+  if (window.matchMedia?.(`(max-width: ${FOLDED_BELOW_PX - 0.02}px)`).matches) gui.close();
+  return gui;
 }

@@ -30,6 +30,13 @@ function withCpuCanvas(make) {
   }
 }
 
+/** Below this width (a phone) an axis title keeps only what comes before its comma, and its unit. */
+const COMPACT_PX = 480;
+export function compactLabel(label) {
+  const head = label.split(',')[0];
+  return head !== label && /\(degrees\)/.test(label) ? `${head} (degrees)` : head;
+}
+
 function fmt(v, digits) {
   return v == null || Number.isNaN(v) ? '–' : v.toFixed(digits);
 }
@@ -49,9 +56,10 @@ export function createLinePlot(container, options) {
   let marks = [];
   let cursor = null; // the audio trace's θ (createAudioTrace.js), drawn with the marks
   let plot = null;
+  let compact = false;
 
   const axis = (label, unit, vertical = false) => ({
-    label,
+    label: compact && !vertical ? compactLabel(label) : label,
     stroke: () => cssVar('--text'),
     font: `${Math.round(15 * lineScale())}px system-ui, sans-serif`,
     labelFont: `bold ${Math.round(16 * lineScale())}px system-ui, sans-serif`,
@@ -65,6 +73,7 @@ export function createLinePlot(container, options) {
 
   function build() {
     plot?.destroy();
+    compact = container.clientWidth < COMPACT_PX;
     const scale = lineScale();
     plot = withCpuCanvas(() => new uPlot({
       width: Math.max(280, container.clientWidth),
@@ -85,7 +94,10 @@ export function createLinePlot(container, options) {
   }
   build();
 
-  const resize = new ResizeObserver(() => plot.setSize({ width: Math.max(280, container.clientWidth), height }));
+  const resize = new ResizeObserver(() => {
+    if ((container.clientWidth < COMPACT_PX) !== compact) build();
+    else plot.setSize({ width: Math.max(280, container.clientWidth), height });
+  });
   resize.observe(container);
   const onTheme = () => build();
   window.addEventListener('fresnel-lab:theme', onTheme);

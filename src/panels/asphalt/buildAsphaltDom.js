@@ -3,6 +3,7 @@
 import { texElement } from '../../ui/tex.js';
 import './styles.css';
 import { el } from '../../ui/el.js';
+import { makeScrollBox } from '../../ui/scrollBox.js';
 
 export function buildAsphaltDom(host) {
   const root = el('div', 'asphalt-panel');
@@ -23,7 +24,7 @@ export function buildAsphaltDom(host) {
     + '\\qquad \\cos\\theta_d = \\mathbf l\\cdot\\mathbf h',
     { className: 'asphalt-formula' },
   );
-  root.append(stage, readout, summary, formula);
+  root.append(stage, readout, summary, makeScrollBox(formula, 'The specular formula'));
   host.append(root);
 
   return {

@@ -16,6 +16,7 @@ import { addSwap } from '../shared/indexPair.js';
 import { addDielectricTrace } from '../shared/dielectricTrace.js';
 import './styles.css';
 import { schema } from './schema.js';
+import { makeScrollBox, scrollBox } from '../../ui/scrollBox.js';
 
 export { schema };
 
@@ -52,11 +53,7 @@ function valueCell(key) {
 export function mount(root, ctx) {
   const { values } = ctx;
   const panel = el('div', 'xf-panel');
-  const formula = el('div', 'xf-formula');
-  // It scrolls sideways in a narrow column: focusable, so a keyboard can scroll it too.
-  formula.tabIndex = 0;
-  formula.setAttribute('role', 'group');
-  formula.setAttribute('aria-label', 'The exact Fresnel reflectance and its terms');
+  const formula = makeScrollBox(el('div', 'xf-formula'), 'The exact Fresnel reflectance and its terms');
   formula.append(texElement(FORMULA), texElement(DEFINITIONS));
 
   const table = el('table', 'xf-terms');
@@ -110,13 +107,13 @@ export function mount(root, ctx) {
   const slideOrder = orderRow('Slide: 1 + c² − m²', 'lecture');
   const codeOrder = orderRow('Safe: (1 − m)(1 + m) + c²', 'safe');
   const cOut = el('p', 'xf-c');
-  why.append(cOut, orders);
+  why.append(cOut, scrollBox(orders, 'g² and R in two orders of evaluation'));
 
   const plotHost = el('div', 'xf-plot');
   plotHost.setAttribute('role', 'img');
   plotHost.setAttribute('aria-label', 'Exact reflectance R against the angle θ, with the current θ marked');
   const left = el('div', 'xf-left');
-  left.append(table, checks, status);
+  left.append(scrollBox(table, 'Each quantity at the current θ, n_i and n_t'), checks, status);
   const right = el('div', 'xf-right');
   right.append(why, plotHost);
   const body = el('div', 'xf-body');

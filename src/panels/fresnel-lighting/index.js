@@ -17,6 +17,7 @@ import mixSource from './fresnel-lighting-mix.glsl?raw';
 import './styles.css';
 import { schema } from './schema.js';
 import { addDielectricTrace } from '../shared/dielectricTrace.js';
+import { makeScrollBox } from '../../ui/scrollBox.js';
 
 const METHOD_NAMES = { exact: 'exact Fresnel', schlick: "Schlick's approximation" };
 
@@ -80,7 +81,7 @@ export function mount(root, ctx) {
   const copyStatus = el('span', 'fl-copy-status');
   copyStatus.setAttribute('role', 'status');
   codeHead.append(el('h3', '', 'The GLSL (as compiled here)'), copyButton, copyStatus);
-  const pre = el('pre');
+  const pre = makeScrollBox(el('pre'), 'The GLSL');
   const code = el('code', 'language-glsl');
   const lines = MIX_GLSL.split('\n').map((line) => el('span', '', line));
   lines.forEach((line, i) => code.append(...(i ? ['\n', line] : [line])));

@@ -3,6 +3,7 @@
 // to sRGB (the sRGB transfer function, src/ui/srgb.js) with the linear numbers beside.
 import { linearToHex } from '../../ui/srgb.js';
 import { el } from '../../ui/el.js';
+import { scrollBox } from '../../ui/scrollBox.js';
 
 /** CSS colour of a linear RGB reflectance. */
 export function swatchColor(rgb) {
@@ -63,7 +64,7 @@ export function buildMetalsDom(host, metals, onPick) {
 
   const plotHost = el('div', 'mt-plot');
   plotHost.setAttribute('aria-label', 'Reflectance against angle per colour channel: exact (solid) and Schlick (dashed)');
-  host.append(swatchRow, table, plotHost);
+  host.append(swatchRow, scrollBox(table, 'Table of the metal’s channels'), plotHost);
 
   return {
     plotHost,

@@ -10,6 +10,7 @@ import { createLobe, texelLobe } from '../../normals/effectiveRoughness.js';
 import { reconstructZ } from '../../normals/lobeFormulas.js';
 import { storageCost } from '../../normals/storageCost.js';
 import { TECHNIQUE_NAMES, TECHNIQUES } from '../../normals/techniqueLayout.js';
+import { makeScrollBox } from '../../ui/scrollBox.js';
 
 const CELL = 84; // CSS pixels per level thumbnail
 const LUT = Array.from({ length: 256 }, (_, i) => colormap(i / 255).map((v) => Math.round(v * 255)));
@@ -65,7 +66,7 @@ function meanStoredLength(chain, level) {
 }
 
 export function buildMipStrip(host, { onPick } = {}) {
-  const root = el('div', 'nm-strip');
+  const root = makeScrollBox(el('div', 'nm-strip'), 'The mip chain, level by level');
   const heading = el('h3', 'nm-strip-title', 'The mip chain, level by level');
   const grid = el('div', 'nm-strip-grid');
   const legend = el('div', 'nm-strip-legend');

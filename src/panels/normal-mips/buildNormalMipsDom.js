@@ -4,6 +4,7 @@
 import { colormapGradient } from '../../ui/colormap.js';
 import { el } from '../../ui/el.js';
 import { TECHNIQUE_NAMES } from '../../normals/techniqueLayout.js';
+import { makeScrollBox } from '../../ui/scrollBox.js';
 
 const fmt = (x) => (Number.isFinite(x) ? x.toFixed(4) : '–');
 
@@ -46,7 +47,7 @@ export function buildNormalMipsDom(host) {
   table.append(thead, tbody);
   const shimmer = el('p', 'nm-shimmer');
   shimmer.setAttribute('aria-live', 'polite');
-  const tableWrap = el('div', 'nm-table-wrap');
+  const tableWrap = makeScrollBox(el('div', 'nm-table-wrap'), 'RMSE table');
   tableWrap.append(table);
   const plotSlot = el('div', 'nm-plot-slot'); // the error-by-distance plot (createErrorDistancePlot.js)
   root.append(stage, summary, legend, title, tableWrap, plotSlot, shimmer);

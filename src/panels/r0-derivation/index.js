@@ -10,6 +10,7 @@ import { renderTex, texElement } from '../../ui/tex.js';
 import { addSwap } from '../shared/indexPair.js';
 import './styles.css';
 import { schema } from './schema.js';
+import { makeScrollBox, scrollBox } from '../../ui/scrollBox.js';
 
 export { schema };
 
@@ -81,10 +82,10 @@ export function mount(root, ctx) {
   const spreadOut = ref('Largest difference between the lines');
   const normalOut = ref('normalIncidence(n_i, n_t)');
   const exactOut = ref('fresnelExact(cos 0° = 1, n_i, n_t)');
-  const numbers = el('div', 'r0-numbers');
+  const numbers = makeScrollBox(el('div', 'r0-numbers'), 'R(0°) with these indices');
   check.append(verdict, refs, numbers);
 
-  panel.append(setupHead, setup, lines, check);
+  panel.append(setupHead, scrollBox(setup, 'The setting θ = 0°'), scrollBox(lines, 'The derivation, line by line'), check);
   root.append(panel);
 
   ctx.bind(ctx.gui, ['nI', 'nT']);

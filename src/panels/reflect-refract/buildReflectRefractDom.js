@@ -4,6 +4,7 @@
 import { renderTex, texNumber } from '../../ui/tex.js';
 import { REFLECTION_BANDS } from './model.js';
 import { el } from '../../ui/el.js';
+import { makeScrollBox } from '../../ui/scrollBox.js';
 
 export function buildReflectRefractDom(host) {
   const root = el('div', 'rr-panel');
@@ -34,7 +35,7 @@ export function buildReflectRefractDom(host) {
   const barT = el('span', 'rr-bar-t');
   bar.append(barR, barT);
   const summary = el('dl', 'rr-summary');
-  const formula = el('div', 'rr-formula');
+  const formula = makeScrollBox(el('div', 'rr-formula'), 'Reflected and transmitted fractions');
   root.append(stage, bands, bar, summary, formula);
   host.append(root);
 

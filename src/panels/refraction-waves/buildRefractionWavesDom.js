@@ -6,6 +6,7 @@ import { angle, fixed } from '../../ui/format.js';
 import { setSubscripted } from '../../ui/subscripts.js';
 import { renderTex, texNumber } from '../../ui/tex.js';
 import { el } from '../../ui/el.js';
+import { makeScrollBox } from '../../ui/scrollBox.js';
 
 // A field amplitude: real numbers as they are, complex ones (total internal reflection) as
 // magnitude ∠ phase.
@@ -37,7 +38,7 @@ export function buildRefractionWavesDom(host, { onPlayToggle }) {
   play.addEventListener('click', onPlayToggle);
   controls.append(play);
   const summary = el('dl', 'rw-summary');
-  const snell = el('div', 'rw-snell');
+  const snell = makeScrollBox(el('div', 'rw-snell'), 'Snell’s law at these indices');
   const note = el('p', 'rw-note');
   root.append(stage, controls, summary, snell, note);
   host.append(root);

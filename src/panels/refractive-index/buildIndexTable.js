@@ -2,6 +2,7 @@
 // "Use" button per row, and the custom row in the footer. Rebuilt from data on every render, so the
 // DOM never disagrees with the values.
 import { el } from '../../ui/el.js';
+import { makeScrollBox } from '../../ui/scrollBox.js';
 
 /** The table's columns, each a sort key of materialRows.js (SORT_KEYS). */
 export const COLUMNS = [
@@ -41,7 +42,7 @@ function cells(row) {
 
 export function buildIndexTable(host, { onSort, onUse }) {
   const root = el('div', 'ri-panel');
-  const scroller = el('div', 'ri-scroll');
+  const scroller = makeScrollBox(el('div', 'ri-scroll'), 'Table of refractive indices');
   const table = el('table', 'ri-table');
   const caption = el('caption', 'ri-caption',
     'Dielectrics at 589 nm. Speed in km/s uses c = 299 792.458 km/s; R0 and the critical angle are for air taken as n = 1.');

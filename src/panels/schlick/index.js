@@ -16,6 +16,7 @@ import { addSwap } from '../shared/indexPair.js';
 import { addDielectricTrace } from '../shared/dielectricTrace.js';
 import './styles.css';
 import { schema } from './schema.js';
+import { makeScrollBox } from '../../ui/scrollBox.js';
 
 export { schema };
 
@@ -39,7 +40,7 @@ const fixed = (value, digits = 6) => fixedTo(value, digits);
 export function mount(root, ctx) {
   const { values } = ctx;
   const panel = el('div', 'sk-panel');
-  const formulas = el('div', 'sk-formulas');
+  const formulas = makeScrollBox(el('div', 'sk-formulas'), 'Schlick’s approximation and its terms');
   const r0Tex = el('div', 'sk-tex');
   const atTex = el('div', 'sk-tex');
   formulas.append(texElement(FORMULA), r0Tex, atTex);

@@ -3,6 +3,7 @@
 // cancel, progress, JSON export), the device line and the per-method table.
 import { button, el } from '../../ui/el.js';
 import { toDegrees } from '../../optics/angles.js';
+import { makeScrollBox } from '../../ui/scrollBox.js';
 
 /** Codes to a short string: small values in scientific notation, NaN/∞ as words. */
 export function formatCodes(v) {
@@ -57,7 +58,7 @@ export function buildSpeedAccuracyDom(host, { onRun, onCancel, onJson }) {
   const thead = el('thead');
   const tbody = el('tbody');
   table.append(caption, thead, tbody);
-  const tableWrap = el('div', 'sa-table-wrap');
+  const tableWrap = makeScrollBox(el('div', 'sa-table-wrap'), 'Table of methods');
   tableWrap.append(table);
   const stage = el('div', 'sa-stage'); // off-screen: the frame-timing canvases live here while they run
   stage.setAttribute('aria-hidden', 'true');

@@ -1,7 +1,10 @@
 // The DOM of the spheres panel: stage (canvas, labels, legend), readouts, plot host, toolbar.
 // Plain elements with classes styled in src/styles.css; numbers use tabular figures so they
 // update without the layout jumping.
-import { el } from '../../ui/el.js';
+import { button, el } from '../../ui/el.js';
+
+// On a narrow screen the spheres are shown one at a time, at a size that reads, with these to switch.
+const SINGLE = [['exact', 'Exact'], ['schlick', 'Schlick'], ['error', '|Exact − Schlick|']];
 import { angle as formatAngle } from '../../ui/format.js';
 
 export function buildSpheresDom(host) {
@@ -14,7 +17,22 @@ export function buildSpheresDom(host) {
   canvas.setAttribute('aria-label',
     'Three spheres: exact Fresnel, Schlick, and their difference as a heatmap. Drag or use the arrow keys to orbit.');
   const labels = el('div', 'stage-labels');
-  for (const text of ['Exact Fresnel', "Schlick's approximation", '|Exact − Schlick|']) labels.append(el('span', '', text));
+  const labelSpans = ['Exact Fresnel', "Schlick's approximation", '|Exact − Schlick|'].map((text, i) => {
+    const span = el('span', '', text);
+    span.dataset.mode = SINGLE[i][0];
+    return span;
+  });
+  labels.append(...labelSpans);
+  const switcher = el('div', 'sphere-switch');
+  switcher.setAttribute('role', 'group');
+  switcher.setAttribute('aria-label', 'Sphere shown');
+  switcher.hidden = true;
+  const switches = SINGLE.map(([mode, text]) => {
+    const b = button(text);
+    b.dataset.mode = mode;
+    switcher.append(b);
+    return b;
+  });
   const legend = el('div', 'legend');
   legend.setAttribute('aria-label', 'Heatmap colour legend');
   const legendBar = el('div', 'legend-bar');
@@ -26,7 +44,7 @@ export function buildSpheresDom(host) {
   const summary = el('dl', 'summary');
   const plot = el('div', 'plot');
   plot.setAttribute('aria-label', 'Reflectance R against angle θ');
-  main.append(stage, readout, summary, plot);
+  main.append(switcher, stage, readout, summary, plot);
   root.append(main);
   host.append(root);
 
@@ -42,6 +60,15 @@ export function buildSpheresDom(host) {
     canvas,
     plot,
     setReadout,
+    switches,
+    /** One sphere ('exact' | 'schlick' | 'error') or all three (null): the stage, its labels and the switch follow. */
+    setSingle(mode) {
+      switcher.hidden = mode === null;
+      stage.classList.toggle('stage-single', mode !== null);
+      for (const b of switches) b.setAttribute('aria-pressed', String(b.dataset.mode === mode));
+      for (const span of labelSpans) span.hidden = mode !== null && span.dataset.mode !== mode;
+      legend.hidden = mode !== null && mode !== 'error';
+    },
     setSummary(pairs) {
       summary.replaceChildren(...pairs.flatMap(([term, value]) => {
         const wrap = el('div');

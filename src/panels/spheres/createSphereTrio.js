@@ -16,6 +16,7 @@ export function createSphereTrio(canvas, { onChange, onFrame } = {}) {
     uNI: { value: 1 }, uNT: { value: 1.5 },
     uKd: { value: [0, 0, 0] }, uKs: { value: [1, 1, 1] },
     uSunDir: { value: [0, 1, 0] }, uEnvStrength: { value: 1 }, uErrScale: { value: 0.05 },
+    uSingle: { value: -1 },
   };
   const shaderView = createShaderView(canvas, { fragment, uniforms, onFrame, maxPixels: 1_500_000 });
   const view = { azimuth: 0, elevation: 15, distance: 6 };
@@ -31,13 +32,31 @@ export function createSphereTrio(canvas, { onChange, onFrame } = {}) {
   }
   placeCamera();
 
-  // Orbit by pointer drag and by arrow keys (the canvas is focusable); wheel zooms.
+  // Orbit by a drag of the mouse or one finger and by arrow keys (the canvas is focusable); the
+  // wheel or two fingers pinching zoom.
   let drag = null;
+  let pinch = null;
+  const pointers = new Map(); // pointerId → { x, y }
+  const span = () => {
+    const [a, b] = [...pointers.values()];
+    return Math.max(1, Math.hypot(a.x - b.x, a.y - b.y));
+  };
   const onPointerDown = (event) => {
-    drag = { x: event.clientX, y: event.clientY, azimuth: view.azimuth, elevation: view.elevation };
+    pointers.set(event.pointerId, { x: event.clientX, y: event.clientY });
     canvas.setPointerCapture(event.pointerId);
+    if (pointers.size === 2) {
+      drag = null; // a second finger: a pinch, not an orbit
+      pinch = { span: span(), distance: view.distance };
+    } else if (pointers.size === 1) {
+      drag = { x: event.clientX, y: event.clientY, azimuth: view.azimuth, elevation: view.elevation };
+    }
   };
   const onPointerMove = (event) => {
+    if (pointers.has(event.pointerId)) pointers.set(event.pointerId, { x: event.clientX, y: event.clientY });
+    if (pinch && pointers.size >= 2) {
+      setView({ distance: (pinch.distance * pinch.span) / span() }); // fingers apart: nearer
+      return;
+    }
     if (!drag) return;
     const scale = 180 / Math.max(200, canvas.getBoundingClientRect().height);
     setView({
@@ -45,7 +64,11 @@ export function createSphereTrio(canvas, { onChange, onFrame } = {}) {
       elevation: drag.elevation + (event.clientY - drag.y) * scale,
     });
   };
-  const onPointerUp = () => { drag = null; };
+  const onPointerUp = (event) => {
+    pointers.delete(event.pointerId);
+    if (pointers.size < 2) pinch = null;
+    drag = null; // the finger left after a pinch does not start an orbit
+  };
   // The wheel zooms once the reader has picked the view (clicked or tabbed to it) or holds Ctrl:
   // a page or a notebook scrolled past the canvas keeps scrolling.
   const onWheel = (event) => {
@@ -95,16 +118,26 @@ export function createSphereTrio(canvas, { onChange, onFrame } = {}) {
       uniforms.uErrScale.value = errScale;
       shaderView.render();
     },
+    /** One sphere alone ('exact', 'schlick' or 'error'; a narrow screen), or all three (null). */
+    setSingle(mode) {
+      const next = mode === null ? -1 : SPHERE_MODES.indexOf(mode);
+      if (next === uniforms.uSingle.value) return;
+      uniforms.uSingle.value = next;
+      shaderView.render();
+    },
+    get single() { return uniforms.uSingle.value < 0 ? null : SPHERE_MODES[uniforms.uSingle.value]; },
     /** Which sphere is under a client point, and the cos θ between its normal and the view there. */
     pick(clientX, clientY) {
       const rect = canvas.getBoundingClientRect();
-      const w = rect.width / VIEW_COUNT;
-      const index = Math.floor((clientX - rect.left) / w);
-      if (index < 0 || index >= VIEW_COUNT) return null;
-      const x = ((clientX - rect.left - index * w) / w) * 2 - 1;
+      const alone = uniforms.uSingle.value >= 0;
+      const count = alone ? 1 : VIEW_COUNT;
+      const w = rect.width / count;
+      const slot = Math.floor((clientX - rect.left) / w);
+      if (slot < 0 || slot >= count) return null;
+      const x = ((clientX - rect.left - slot * w) / w) * 2 - 1;
       const y = 1 - ((clientY - rect.top) / rect.height) * 2;
       const hit = hitSphere(camera.eye, rayThrough(camera, x, y, w / rect.height));
-      return hit && { mode: SPHERE_MODES[index], cosTheta: hit.cosTheta };
+      return hit && { mode: SPHERE_MODES[alone ? uniforms.uSingle.value : slot], cosTheta: hit.cosTheta };
     },
     /** Draws now and reads one pixel (CSS coordinates within the canvas) as [r, g, b, a] bytes. */
     readPixel: (x, y) => shaderView.readPixel(x, y),

@@ -25,6 +25,8 @@ const VIEW_KEYS = ['viewAz', 'viewEl', 'viewDist'];
  * @param {import('../../host/panelContract.js').PanelContext} ctx
  * @returns {import('../../host/panelContract.js').PanelInstance}
  */
+const NARROW_PX = 820; // the width of the page or frame: phones, and tablets held upright
+
 export function mount(root, ctx) {
   const { values } = ctx;
   const dom = buildSpheresDom(root);
@@ -114,6 +116,23 @@ export function mount(root, ctx) {
   };
   dom.canvas.addEventListener('pointermove', onHover);
   dom.canvas.addEventListener('pointerleave', onLeave);
+
+  // On a phone or an upright tablet (or a frame as narrow) one sphere is shown at a time, picked
+  // with the switch: three side by side would each be a thumbnail, the legend on the third.
+  let chosen = 'exact';
+  const narrow = window.matchMedia(`(max-width: ${NARROW_PX - 0.02}px)`);
+  const showSingle = () => {
+    const single = narrow.matches && trio ? chosen : null;
+    dom.setSingle(single);
+    trio?.setSingle(single);
+  };
+  const onSwitch = (event) => {
+    chosen = event.currentTarget.dataset.mode;
+    showSingle();
+  };
+  dom.switches.forEach((b) => b.addEventListener('click', onSwitch));
+  narrow.addEventListener('change', showSingle);
+  showSingle();
   update();
 
   return {
@@ -141,6 +160,7 @@ export function mount(root, ctx) {
     },
     png: trio ? () => trio.toDataURL() : null,
     dispose() {
+      narrow.removeEventListener('change', showSingle);
       dom.canvas.removeEventListener('pointermove', onHover);
       dom.canvas.removeEventListener('pointerleave', onLeave);
       trio?.dispose();

@@ -10,6 +10,7 @@ precision highp float;
 #include <colormap>
 
 uniform vec2 uResolution;  // drawing-buffer pixels
+uniform float uSingle;     // -1: the three spheres side by side; 0, 1, 2: that one alone (a phone)
 uniform vec3 uEye;         // camera position; the sphere is the unit sphere at the origin
 uniform vec3 uForward;
 uniform vec3 uRight;
@@ -38,9 +39,11 @@ vec3 shade(int mode, vec3 N, vec3 V) {
 }
 
 void main() {
-  float viewWidth = uResolution.x / 3.0;
-  int mode = int(min(2.0, floor(gl_FragCoord.x / viewWidth)));
-  vec2 ndc = vec2((gl_FragCoord.x - float(mode) * viewWidth) / viewWidth, gl_FragCoord.y / uResolution.y) * 2.0 - 1.0;
+  bool single = uSingle >= 0.0;
+  float viewWidth = single ? uResolution.x : uResolution.x / 3.0;
+  int slot = single ? 0 : int(min(2.0, floor(gl_FragCoord.x / viewWidth)));
+  int mode = single ? int(uSingle) : slot;
+  vec2 ndc = vec2((gl_FragCoord.x - float(slot) * viewWidth) / viewWidth, gl_FragCoord.y / uResolution.y) * 2.0 - 1.0;
   vec2 screen = ndc * uTanHalfFov * vec2(viewWidth / uResolution.y, 1.0);
   vec3 dir = normalize(uForward + screen.x * uRight + screen.y * uUp);
   // The ray passes the centre at distance d = √(|eye|² − b²); the silhouette is d = 1. Coverage

@@ -1,0 +1,93 @@
+// Phones and tablets: every embed at 390×844 and 768×1024 with touch fits its width (nothing to
+// scroll sideways but the boxes made to), cuts no label it lays over a picture, and passes the
+// audit at that size; the hero shows one sphere at a time with a switch, orbits under one finger
+// and zooms under two (real touch events through the DevTools protocol), and its controls start
+// folded below the picture. Each page's screenshot is kept with the test's output.
+import AxeBuilder from '@axe-core/playwright';
+import { test, expect, openLab, settledFrames } from './fixtures.js';
+import { PANEL_IDS } from '../../src/panels/manifest.js';
+
+const SIZES = [{ width: 390, height: 844 }, { width: 768, height: 1024 }];
+
+/** Elements wider than the screen outside a box that scrolls, and overlay labels cut by their box. */
+const layoutProblems = (page) => page.evaluate(() => {
+  const width = document.documentElement.clientWidth;
+  const problems = [];
+  if (document.documentElement.scrollWidth > width) problems.push(`the page is ${document.documentElement.scrollWidth} px wide on a ${width} px screen`);
+  const labels = '.stage-labels span, .twin-stage-labels span, .nm-cap, .rw-medium, .legend, .sphere-switch button, .toolbar button, .trace-toggle';
+  for (const e of document.querySelectorAll(labels)) {
+    const box = e.getBoundingClientRect();
+    if (!box.width) continue; // not shown
+    const name = `${e.className || e.tagName} “${e.textContent.trim().slice(0, 30)}”`;
+    if (e.scrollWidth > e.clientWidth + 1) problems.push(`${name} is cut (${e.scrollWidth} px of text in ${e.clientWidth})`);
+    if (box.left < -1 || box.right > width + 1) problems.push(`${name} runs off the screen (${Math.round(box.left)}–${Math.round(box.right)})`);
+  }
+  return problems;
+});
+
+for (const size of SIZES) {
+  test.describe(`${size.width}×${size.height}, touch`, () => {
+    test.use({ viewport: size, isMobile: true, hasTouch: true });
+    for (const id of PANEL_IDS) {
+      test(`the ${id} embed fits, cuts no label and passes the audit`, async ({ page }, testInfo) => {
+        await openLab(page, `embed.html?panel=${id}`);
+        expect(await layoutProblems(page)).toEqual([]);
+        const { violations } = await new AxeBuilder({ page }).analyze();
+        expect(violations.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => `${v.id}: ${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join('; ')}`)).toEqual([]);
+        await page.screenshot({ path: testInfo.outputPath(`${id}-${size.width}.png`), fullPage: true });
+      });
+    }
+  });
+}
+
+test.describe('the hero on a phone', () => {
+  test.use({ viewport: { width: 390, height: 844 }, isMobile: true, hasTouch: true });
+
+  test('one sphere at a time, switched; the controls folded under the picture', async ({ page }) => {
+    await openLab(page, 'embed.html?panel=spheres');
+    const switcher = page.getByRole('group', { name: 'Sphere shown' });
+    await expect(switcher).toBeVisible();
+    await expect(switcher.getByRole('button', { name: 'Exact', exact: true })).toHaveAttribute('aria-pressed', 'true');
+    const pickCentre = () => page.evaluate(() => {
+      const box = document.querySelector('.stage-canvas').getBoundingClientRect();
+      return window.fresnelLab.panels.spheres.trio.pick(box.left + box.width / 2, box.top + box.height / 2)?.mode;
+    });
+    expect(await pickCentre()).toBe('exact');
+    await expect(page.locator('.legend')).toBeHidden();
+    await switcher.getByRole('button', { name: '|Exact − Schlick|' }).click();
+    expect(await pickCentre()).toBe('error');
+    await expect(page.locator('.legend')).toBeVisible();
+    await expect(page.locator('.stage-labels span:visible')).toHaveText(['|Exact − Schlick|']);
+    // The controls: folded, below the picture, opened by their title.
+    const gui = page.locator('.lil-gui.lil-root');
+    await expect(gui).toHaveClass(/lil-closed/);
+    const stageBottom = (await page.locator('.stage').boundingBox()).y + (await page.locator('.stage').boundingBox()).height;
+    expect((await gui.boundingBox()).y).toBeGreaterThanOrEqual(stageBottom);
+    await gui.locator('> .lil-title').click();
+    await expect(gui).not.toHaveClass(/lil-closed/);
+    await expect(gui.getByText('n_t (sphere)')).toBeVisible();
+  });
+
+  test('one finger orbits, two fingers pinch to zoom', async ({ page }) => {
+    await openLab(page, 'embed.html?panel=spheres');
+    await settledFrames(page, 'spheres');
+    const box = await page.locator('.stage-canvas').boundingBox();
+    const cx = box.x + box.width / 2;
+    const cy = box.y + box.height / 2;
+    const cdp = await page.context().newCDPSession(page);
+    const touch = (type, points) => cdp.send('Input.dispatchTouchEvent', { type, touchPoints: points.map(([x, y], id) => ({ x, y, id })) });
+    const values = () => page.evaluate(() => ({ ...window.fresnelLab.hosts.spheres.values }));
+    const start = await values();
+    await touch('touchStart', [[cx, cy]]);
+    for (let i = 1; i <= 5; i += 1) await touch('touchMove', [[cx + i * 12, cy]]);
+    await touch('touchEnd', []);
+    await expect.poll(async () => (await values()).viewAz).not.toBe(start.viewAz);
+    expect((await values()).viewDist).toBe(start.viewDist);
+    const orbited = await values();
+    await touch('touchStart', [[cx - 30, cy], [cx + 30, cy]]);
+    for (let i = 1; i <= 5; i += 1) await touch('touchMove', [[cx - 30 - i * 15, cy], [cx + 30 + i * 15, cy]]);
+    await touch('touchEnd', []);
+    await expect.poll(async () => (await values()).viewDist).toBeLessThan(start.viewDist); // fingers apart: nearer
+    expect((await values()).viewAz).toBe(orbited.viewAz); // a pinch is not an orbit
+  });
+});
