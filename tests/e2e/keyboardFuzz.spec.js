@@ -6,22 +6,11 @@
 // by itself.
 import { test, expect, openLab, settledFrames } from './fixtures.js';
 import { PANEL_IDS } from '../../src/panels/manifest.js';
+import { seededRandom } from '../../src/homework/seededRandom.js';
 
 const SEED = Number(process.env.FUZZ_SEED ?? 20261203);
 const KEYS = ['Tab', 'Tab', 'Tab', 'Shift+Tab', 'ArrowLeft', 'ArrowRight', 'ArrowUp', 'ArrowDown', 'PageUp', 'PageDown',
   'Home', 'End', ' ', 'Enter', '0', '1', '2', '3', '4', '5', '6', '7', '8', '9'];
-
-/** mulberry32: a small seeded generator (Tommy Ettinger's, public domain), enough to replay a run. */
-function random(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 // Words the page means: prose about NaN, the stability map's class, an exercise's criterion.
 const MEANT = [/returns NaN/g, /NaN or infinite/g, /\(no NaN[^)]*\)/g, /NaN\/∞/g];
@@ -53,7 +42,7 @@ const outsideSchema = (page) => page.evaluate(() => {
 });
 
 async function fuzz(page, seed, presses) {
-  const next = random(seed);
+  const { next } = seededRandom(seed);
   const pressed = [];
   for (let i = 0; i < presses; i += 1) {
     let key = KEYS[Math.floor(next() * KEYS.length)];
