@@ -4,6 +4,7 @@
 // the camera numbers come from src/panels/shared/createTwinStage.js, which also maps θ to pixels.
 uniform vec2 uResolution; // drawing-buffer pixels
 uniform vec3 uCamera;     // (distance to the sphere centre, focal length, elevation in radians)
+uniform float uStacked;   // 1: one sphere above the other (a phone), each in a 4:3 half; 0: side by side
 
 struct StageHit {
   bool found;
@@ -15,11 +16,21 @@ struct StageHit {
 
 StageHit castStage() {
   StageHit hit;
-  float halfWidth = 0.5 * uResolution.x;
-  hit.side = gl_FragCoord.x >= halfWidth ? 1 : 0;
-  // Pixel offset from the centre of this half, in units of half the canvas height.
-  vec2 ndc = (gl_FragCoord.xy - vec2((float(hit.side) + 0.5) * halfWidth, 0.5 * uResolution.y))
-    / (0.5 * uResolution.y);
+  vec2 centre;
+  float scale; // half the height of this sphere's half
+  if (uStacked > 0.5) {
+    float halfHeight = 0.5 * uResolution.y;
+    hit.side = gl_FragCoord.y >= halfHeight ? 0 : 1; // the first sphere on top
+    centre = vec2(0.5 * uResolution.x, (hit.side == 0 ? 1.5 : 0.5) * halfHeight);
+    scale = 0.5 * halfHeight;
+  } else {
+    float halfWidth = 0.5 * uResolution.x;
+    hit.side = gl_FragCoord.x >= halfWidth ? 1 : 0;
+    centre = vec2((float(hit.side) + 0.5) * halfWidth, 0.5 * uResolution.y);
+    scale = 0.5 * uResolution.y;
+  }
+  // Pixel offset from the centre of this half, in units of half its height.
+  vec2 ndc = (gl_FragCoord.xy - centre) / scale;
   float elevation = uCamera.z;
   vec3 eye = uCamera.x * vec3(0.0, sin(elevation), cos(elevation));
   vec3 forward = -normalize(eye);

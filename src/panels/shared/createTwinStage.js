@@ -9,6 +9,9 @@ import { el } from '../../ui/el.js';
 import { DEG } from '../../optics/angles.js';
 
 
+/** Below this width (a phone) the two spheres are stacked. */
+const STACKED_BELOW_PX = 600;
+
 /** Unit spheres seen from this far from their centres, with this vertical field of view, from a little above. */
 export const STAGE_CAMERA = Object.freeze({ distance: 4, fovDeg: 36, elevationDeg: 10 });
 
@@ -50,8 +53,20 @@ export function createTwinStage(host, { fragment, uniforms, ariaLabel, fallback,
       ...uniforms,
       uCamera: { value: [distance, 1 / Math.tan((fovDeg * DEG) / 2), elevationDeg * DEG] },
       uSunDir: { value: [0, 1, 0] },
+      uStacked: { value: 0 },
     },
   }), fallback);
+
+  // On a phone the spheres stand one above the other, each as large as the screen is wide allows.
+  const phone = window.matchMedia(`(max-width: ${STACKED_BELOW_PX - 0.02}px)`);
+  const arrange = () => {
+    stage.classList.toggle('twin-stacked', phone.matches && Boolean(view));
+    if (!view) return;
+    view.uniforms.uStacked.value = phone.matches ? 1 : 0;
+    view.render();
+  };
+  phone.addEventListener('change', arrange);
+  arrange();
 
   /**
    * CSS pixel (within the canvas) of the point at view angle θ on sphere `side` (0 left, 1 right),
@@ -60,11 +75,11 @@ export function createTwinStage(host, { fragment, uniforms, ariaLabel, fallback,
    */
   function pointAt(side, thetaDeg, towardDeg = 90) {
     const { width, height } = canvas.getBoundingClientRect();
-    const r = offsetAtAngle(thetaDeg) * (height / 2);
-    return {
-      x: (side + 0.5) * (width / 2) + r * Math.cos(towardDeg * DEG),
-      y: height / 2 - r * Math.sin(towardDeg * DEG),
-    };
+    const stacked = view?.uniforms.uStacked.value === 1;
+    const r = offsetAtAngle(thetaDeg) * (stacked ? height / 4 : height / 2);
+    const cx = stacked ? width / 2 : (side + 0.5) * (width / 2);
+    const cy = stacked ? (side + 0.5) * (height / 2) : height / 2;
+    return { x: cx + r * Math.cos(towardDeg * DEG), y: cy - r * Math.sin(towardDeg * DEG) };
   }
 
   return {
@@ -84,6 +99,7 @@ export function createTwinStage(host, { fragment, uniforms, ariaLabel, fallback,
       return view.readPixel(x, y);
     },
     dispose() {
+      phone.removeEventListener('change', arrange);
       view?.dispose();
     },
   };
