@@ -12,6 +12,7 @@ precision highp float;
 #include <color>
 
 uniform vec2 uResolution;
+uniform float uStacked; // 1: Phong above Phong × F (a phone); 0: side by side
 uniform float uViewEl;     // radians above the floor; the camera looks at the origin
 uniform float uTanHalfFov;
 uniform float uCameraDist;
@@ -49,10 +50,17 @@ vec4 termsOf(vec3 dir, vec3 camPos) {
   return vec4(diffuse, lobe);
 }
 
-// The view ray of this pixel, in the left or the right view (x in 0..0.5 is Phong, 0.5..1 Phong × F).
+// Whether this pixel is in the Phong × F view: the right half, or stacked the lower half.
+bool inFresnelView() {
+  return uStacked > 0.5 ? vUv.y < 0.5 : vUv.x >= 0.5;
+}
+
+// The view ray of this pixel, in the left (top) or the right (bottom) view.
 vec3 viewDir(out vec3 camPos) {
-  vec2 ndc = vec2(fract(vUv.x * 2.0) * 2.0 - 1.0, vUv.y * 2.0 - 1.0);
-  float aspect = 0.5 * uResolution.x / uResolution.y;
+  bool stacked = uStacked > 0.5;
+  vec2 ndc = stacked ? vec2(vUv.x * 2.0 - 1.0, fract(vUv.y * 2.0) * 2.0 - 1.0)
+                     : vec2(fract(vUv.x * 2.0) * 2.0 - 1.0, vUv.y * 2.0 - 1.0);
+  float aspect = stacked ? uResolution.x / (0.5 * uResolution.y) : 0.5 * uResolution.x / uResolution.y;
   vec3 forward = vec3(0.0, -sin(uViewEl), cos(uViewEl));
   vec3 up = vec3(0.0, cos(uViewEl), sin(uViewEl));
   vec3 side = vec3(-1.0, 0.0, 0.0);
@@ -73,10 +81,11 @@ void main() {
   vec4 terms = keptTerms();
   // The light is directional: θ, and so k, is the same at every point of a view.
   float cosTheta = max(normalize(uSunDir).y, 0.0);
-  float k = vUv.x >= 0.5 ? fresnelExact(cosTheta, 1.0, uN) : normalIncidence(1.0, uN);
+  float k = inFresnelView() ? fresnelExact(cosTheta, 1.0, uN) : normalIncidence(1.0, uN);
   vec3 color = terms.rgb + vec3(uLight * k * terms.a);
   // A dividing line two pixels wide between the halves.
-  float divide = step(abs(gl_FragCoord.x - 0.5 * uResolution.x), 1.0);
+  float divide = uStacked > 0.5 ? step(abs(gl_FragCoord.y - 0.5 * uResolution.y), 1.0)
+                                : step(abs(gl_FragCoord.x - 0.5 * uResolution.x), 1.0);
   vec3 display = 1.0 - exp(-uExposure * color);
   fragColor = vec4(mix(linearToSrgb(display), vec3(0.0), divide), 1.0);
 }

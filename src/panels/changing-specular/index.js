@@ -33,9 +33,19 @@ export function mount(root, ctx) {
     uniforms: {
       uViewEl: { value: 0.5 }, uSunDir: { value: [0, 0.5, 0.87] }, uS: { value: 60 }, uN: { value: 1.5 },
       uTanHalfFov: { value: Math.tan((SCENE.fovY / 2) * DEG) }, uCameraDist: { value: SCENE.cameraDist },
-      uLight: { value: SCENE.light }, uExposure: { value: SCENE.exposure },
+      uLight: { value: SCENE.light }, uExposure: { value: SCENE.exposure }, uStacked: { value: 0 },
     },
   }), 'The floors need WebGL2; the diagram and plot below still work.');
+  // On a phone the two floors stand one above the other, each as wide as the screen.
+  const phone = window.matchMedia('(max-width: 599.98px)');
+  const arrange = () => {
+    dom.stage.classList.toggle('cspec-stacked', phone.matches && Boolean(view));
+    if (!view) return;
+    view.uniforms.uStacked.value = phone.matches ? 1 : 0;
+    view.render();
+  };
+  phone.addEventListener('change', arrange);
+  arrange();
   const plot = createLinePlot(dom.plot, {
     xLabel: 'Elevation of light and view (mirror), °',
     yLabel: 'Peak highlight',
@@ -115,6 +125,7 @@ export function mount(root, ctx) {
     },
     png: view ? () => view.toDataURL() : null,
     dispose() {
+      phone.removeEventListener('change', arrange);
       view?.dispose();
       plot.dispose();
     },

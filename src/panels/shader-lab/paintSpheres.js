@@ -77,16 +77,20 @@ export function createSpherePainter(gl) {
         program = createProgram(gl, sphereFragment(code, exercise));
       }
       if (!program) return;
+      // On a phone one sphere above the other (the twin stage's uStacked), each in a 4:3 half.
+      const stacked = window.matchMedia('(max-width: 599.98px)').matches;
+      target.parentElement?.classList.toggle('twin-stacked', stacked);
       const box = target.getBoundingClientRect();
       const ratio = Math.min(2, window.devicePixelRatio || 1);
       const width = Math.max(2, Math.round((box.width || 640) * ratio));
-      const height = Math.max(1, Math.round(width / 2));
+      const height = Math.max(1, Math.round(stacked ? width * 1.5 : width / 2));
       const canvas = /** @type {HTMLCanvasElement} */ (gl.canvas);
       if (canvas.width !== width || canvas.height !== height) Object.assign(canvas, { width, height });
       const { distance, fovDeg, elevationDeg } = STAGE_CAMERA;
       program.setUniforms({
         uResolution: { value: [width, height] },
         uCamera: { value: [distance, 1 / Math.tan((fovDeg * DEG) / 2), elevationDeg * DEG] },
+        uStacked: { value: stacked ? 1 : 0 },
         uSunDir: { value: directionFromAngles(35, 40) },
         uN: { value: COAT_INDEX },
         uKd: { value: KD },
