@@ -42,7 +42,7 @@ function fmt(v, digits) {
 }
 
 /**
- * options: xLabel, yLabel, xRange ([min, max] or null), yRange ([min, max] or null for auto),
+ * options: xLabel, xShort (the x title on a narrow plot; else compactLabel(xLabel)), yLabel, xRange ([min, max] or null), yRange ([min, max] or null for auto),
  * xUnit ('°' or ''), xStep (ticks on multiples of it only, e.g. 1 for whole levels), series
  * [{ label, stroke, width, dash }], height, digits (legend decimals).
  * Markers set with setMarks([{ x, color, label, shadeTo }]) are drawn over the curves, and the
@@ -50,7 +50,7 @@ function fmt(v, digits) {
  */
 export function createLinePlot(container, options) {
   const {
-    xLabel, yLabel, xRange = [0, 90], yRange = [0, 1], xUnit = '°', xStep = null, series, height = 320, digits = 4,
+    xLabel, xShort = compactLabel(xLabel), yLabel, xRange = [0, 90], yRange = [0, 1], xUnit = '°', xStep = null, series, height = 320, digits = 4,
   } = options;
   let data = [[], ...series.map(() => [])];
   let marks = [];
@@ -59,7 +59,7 @@ export function createLinePlot(container, options) {
   let compact = false;
 
   const axis = (label, unit, vertical = false) => ({
-    label: compact && !vertical ? compactLabel(label) : label,
+    label: compact && !vertical ? xShort : label,
     stroke: () => cssVar('--text'),
     font: `${Math.round(15 * lineScale())}px system-ui, sans-serif`,
     labelFont: `bold ${Math.round(16 * lineScale())}px system-ui, sans-serif`,
@@ -81,7 +81,7 @@ export function createLinePlot(container, options) {
       scales: { x: { time: false, range: xRange ?? undefined }, y: { range: yRange ?? undefined } },
       axes: [{ ...axis(xLabel, xUnit), ...(xStep ? { incrs: [1, 2, 5, 10].map((k) => k * xStep) } : {}) }, axis(yLabel, '', true)],
       series: [
-        { label: xLabel.split(',')[0], value: (_u, v) => (v == null ? '–' : `${v.toFixed(2)}${xUnit}`) },
+        { label: (options.xShort ?? xLabel).split(',')[0], value: (_u, v) => (v == null ? '–' : `${v.toFixed(2)}${xUnit}`) },
         ...series.map((s) => ({
           label: s.label, stroke: resolveColor(s.stroke), dash: s.dash, width: (s.width ?? 2.5) * scale,
           value: (_u, v) => fmt(v, digits), points: { show: false },

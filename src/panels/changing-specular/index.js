@@ -48,6 +48,7 @@ export function mount(root, ctx) {
   arrange();
   const plot = createLinePlot(dom.plot, {
     xLabel: 'Elevation of light and view (mirror), °',
+    xShort: 'Elevation of light and view, °',
     yLabel: 'Peak highlight',
     yRange: [0, 1],
     height: 260,
