@@ -2,6 +2,7 @@
 // the host owns the values: a controller edits a draft copy and hands each change to the host
 // (validated there), which then writes the draft back and refreshes the controller.
 import GUI from 'lil-gui';
+import { phoneWidth } from '../ui/phoneWidth.js';
 
 /** lil-gui's options ({ label: value }) from a schema's (an array of values, or { value: label }). */
 export function guiOptions(spec) {
@@ -30,12 +31,9 @@ export function bindGui(gui, schema, draft, onChange, keys = Object.keys(schema)
   return controllers;
 }
 
-/** Below this width (a phone) a panel's controls start folded: a drawer under the picture, opened by its title. */
-export const FOLDED_BELOW_PX = 600;
-
 /** A GUI placed inside the panel (not floating over the page), keyboard-operable like any form. */
 export function createPanelGui(container, title) {
   const gui = new GUI({ container, title, width: 360 });
-  if (window.matchMedia?.(`(max-width: ${FOLDED_BELOW_PX - 0.02}px)`).matches) gui.close();
+  if (window.matchMedia && phoneWidth().matches) gui.close(); // on a phone: a drawer under the picture, opened by its title
   return gui;
 }

@@ -13,6 +13,7 @@ import { startWebGL } from '../shared/startWebGL.js';
 import { buildChangingSpecularDom } from './buildChangingSpecularDom.js';
 import fragment from './changing-specular.frag.glsl?raw';
 import { schema } from './schema.js';
+import { phoneWidth } from '../../ui/phoneWidth.js';
 
 export { schema };
 
@@ -37,7 +38,7 @@ export function mount(root, ctx) {
     },
   }), 'The floors need WebGL2; the diagram and plot below still work.');
   // On a phone the two floors stand one above the other, each as wide as the screen.
-  const phone = window.matchMedia('(max-width: 599.98px)');
+  const phone = phoneWidth();
   const arrange = () => {
     dom.stage.classList.toggle('cspec-stacked', phone.matches && Boolean(view));
     if (!view) return;

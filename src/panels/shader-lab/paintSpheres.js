@@ -11,6 +11,7 @@ import { DEG } from '../../optics/angles.js';
 import { STAGE_CAMERA } from '../shared/createTwinStage.js';
 import { WRAPPER_LINE } from './studentShader.js';
 import { exactReference } from './exercises.js';
+import { phoneWidth } from '../../ui/phoneWidth.js';
 
 const COAT_INDEX = 1.5;
 const KD = [0.55, 0.09, 0.05]; // linear RGB of the diffuse layer (a red paint)
@@ -78,7 +79,7 @@ export function createSpherePainter(gl) {
       }
       if (!program) return;
       // On a phone one sphere above the other (the twin stage's uStacked), each in a 4:3 half.
-      const stacked = window.matchMedia('(max-width: 599.98px)').matches;
+      const stacked = phoneWidth().matches;
       target.parentElement?.classList.toggle('twin-stacked', stacked);
       const box = target.getBoundingClientRect();
       const ratio = Math.min(2, window.devicePixelRatio || 1);

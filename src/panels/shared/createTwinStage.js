@@ -7,10 +7,8 @@ import { startWebGL } from './startWebGL.js';
 import './twinStage.css';
 import { el } from '../../ui/el.js';
 import { DEG } from '../../optics/angles.js';
+import { phoneWidth } from '../../ui/phoneWidth.js';
 
-
-/** Below this width (a phone) the two spheres are stacked. */
-const STACKED_BELOW_PX = 600;
 
 /** Unit spheres seen from this far from their centres, with this vertical field of view, from a little above. */
 export const STAGE_CAMERA = Object.freeze({ distance: 4, fovDeg: 36, elevationDeg: 10 });
@@ -58,7 +56,7 @@ export function createTwinStage(host, { fragment, uniforms, ariaLabel, fallback,
   }), fallback);
 
   // On a phone the spheres stand one above the other, each as large as the screen is wide allows.
-  const phone = window.matchMedia(`(max-width: ${STACKED_BELOW_PX - 0.02}px)`);
+  const phone = phoneWidth();
   const arrange = () => {
     stage.classList.toggle('twin-stacked', phone.matches && Boolean(view));
     if (!view) return;
