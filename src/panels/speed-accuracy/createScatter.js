@@ -22,6 +22,17 @@ function formatTick(v) {
   return a >= 1e4 || a < 1e-3 ? v.toExponential(0) : String(+v.toPrecision(3));
 }
 
+/** Words of `text` in lines no wider than `maxWidth` at the context's font (a word wider stays whole). */
+function wrapText(g, text, maxWidth) {
+  const lines = [];
+  for (const word of text.split(' ')) {
+    const last = lines.length - 1;
+    if (last >= 0 && g.measureText(`${lines[last]} ${word}`).width <= maxWidth) lines[last] += ` ${word}`;
+    else lines.push(word);
+  }
+  return lines;
+}
+
 function formatPower(e) {
   if (e >= 0 && e <= 3) return String(10 ** e);
   if (e < 0 && e >= -2) return (10 ** e).toFixed(-e);
@@ -55,7 +66,20 @@ export function createScatter(container, { ariaLabel }) {
     const font = (px, bold = false) => `${bold ? 'bold ' : ''}${Math.round(px * s)}px ${FONT}`;
     const text = cssVar('--text', '#eee');
     const grid = cssVar('--grid', 'rgba(255,255,255,0.14)');
-    const box = { left: 92 * s, right: width - 24, top: 44 * s, bottom: height - 64 * s };
+    // On a wide chart the title sits right of the key in one row; on a narrow one (a phone) it
+    // wraps onto rows of its own above the key, and the x title wraps below the ticks.
+    const left = 92 * s;
+    const right = width - 24;
+    const keyWidth = 150 * s;
+    g.font = font(15, true);
+    const titleBesideKey = !data.title || g.measureText(data.title).width + keyWidth <= right - left;
+    const titleLines = titleBesideKey ? [] : wrapText(g, data.title, right - 8);
+    const headerRows = titleLines.length + 1;
+    g.font = font(16, true);
+    const xLabelLines = wrapText(g, data.xLabel, width - 16);
+    const rowH = 20 * s;
+    const box = { left, right, top: (24 + 20 * headerRows) * s, bottom: height - (40 + xLabelLines.length * 22) * s };
+    const keyY = box.top - 20 * s;
 
     // Axes ranges: x from 0 (or the lowest cost) to the highest max; y in decades around the data.
     const { points } = data;
@@ -103,7 +127,11 @@ export function createScatter(container, { ariaLabel }) {
     g.lineWidth = 1.5 * s;
     g.strokeRect(box.left, box.top, box.right - box.left, box.bottom - box.top);
     g.font = font(16, true);
-    g.fillText(data.xLabel, (box.left + box.right) / 2, box.bottom + 34 * s);
+    xLabelLines.forEach((line, i) => { // centred under the plot, shifted left as far as it must to stay whole
+      const half = g.measureText(line).width / 2;
+      const x = Math.max(half + 8, Math.min((box.left + box.right) / 2, width - half - 8));
+      g.fillText(line, x, box.bottom + (34 + 22 * i) * s);
+    });
     g.save();
     g.translate(22 * s, (box.top + box.bottom) / 2);
     g.rotate(-Math.PI / 2);
@@ -113,10 +141,15 @@ export function createScatter(container, { ariaLabel }) {
 
     if (data.title) { // which scene and precision: the PNG export must say it without the page around it
       g.font = font(15, true);
-      g.textAlign = 'right';
       g.textBaseline = 'middle';
       g.fillStyle = text;
-      g.fillText(data.title, box.right, box.top - 20 * s);
+      if (titleBesideKey) {
+        g.textAlign = 'right';
+        g.fillText(data.title, box.right, keyY);
+      } else {
+        g.textAlign = 'left';
+        titleLines.forEach((line, i) => g.fillText(line, 8, keyY - (titleLines.length - i) * rowH));
+      }
     }
 
     // The budget line.
@@ -130,10 +163,8 @@ export function createScatter(container, { ariaLabel }) {
     g.stroke();
     g.setLineDash([]);
     g.font = font(15, true);
-    g.textAlign = 'left';
-    g.textBaseline = 'bottom';
-    g.fillStyle = budgetColor;
-    g.fillText(`Budget: ${data.budget.label}`, box.left + 8, Y(data.budget.codes) - 4);
+    const budgetText = `Budget: ${data.budget.label}`; // drawn with the point labels, over their leaders
+    const budgetRect = { x0: box.left + 4, x1: box.left + 12 + g.measureText(budgetText).width, y0: Y(data.budget.codes) - 4 - 18 * s, y1: Y(data.budget.codes) + 2 * s };
 
     // The Pareto front: a staircase through its points (right, then down).
     const frontColor = cssVar('--c-exact', '#4cc9f0');
@@ -153,7 +184,6 @@ export function createScatter(container, { ariaLabel }) {
       g.font = font(15, true);
       g.textAlign = 'left';
       g.textBaseline = 'middle';
-      const keyY = box.top - 20 * s;
       g.fillStyle = frontColor;
       g.fillRect(box.left, keyY - 1.5 * s, 28 * s, 3 * s);
       g.fillText('Pareto front', box.left + 36 * s, keyY);
@@ -194,7 +224,9 @@ export function createScatter(container, { ariaLabel }) {
       }
     }
     const lineH = 22 * s;
-    const taken = drawn.map(({ px, py }) => ({ x0: px - 9 * s, x1: px + 9 * s, y0: py - 9 * s, y1: py + 9 * s }));
+    // A point hidden costs far more than a label overlapped (weight), should no spot be free.
+    const taken = [budgetRect, ...drawn.map(({ px, py }) => ({ x0: px - 9 * s, x1: px + 9 * s, y0: py - 9 * s, y1: py + 9 * s, weight: 50 }))];
+    const placed = [];
     g.font = font(15, true);
     g.textBaseline = 'middle';
     g.textAlign = 'left';
@@ -202,31 +234,43 @@ export function createScatter(container, { ariaLabel }) {
       const label = p.recommended ? `${p.name} ★` : p.name;
       const w = g.measureText(label).width;
       const candidates = [];
-      for (const k of [0, -1, 1, -2, 2, -3, 3, -4, 4]) {
+      for (const k of [0, -1, 1, -2, 2, -3, 3, -4, 4, -5, 5, -6, 6, -7, 7, -8, 8]) {
         candidates.push({ x: px + 16 * s, y: py + k * lineH }, { x: px - 16 * s - w, y: py + k * lineH });
       }
-      const fits = (c) => {
-        const r = { x0: c.x - 3, x1: c.x + w + 3, y0: c.y - lineH / 2, y1: c.y + lineH / 2 };
-        const inside = r.x0 >= box.left && r.x1 <= box.right && r.y0 >= box.top && r.y1 <= box.bottom;
-        return inside && !taken.some((t) => r.x0 < t.x1 && t.x0 < r.x1 && r.y0 < t.y1 && t.y0 < r.y1) ? r : null;
-      };
-      let spot = candidates[0];
-      let rect = null;
-      for (const c of candidates) {
-        rect = fits(c);
-        if (rect) { spot = c; break; }
-      }
-      rect ??= { x0: spot.x - 3, x1: spot.x + w + 3, y0: spot.y - lineH / 2, y1: spot.y + lineH / 2 };
+      // The first spot inside the plot that covers nothing; failing that (a crowded narrow chart),
+      // the spot inside that covers the least.
+      const rectAt = (c) => ({ x0: c.x - 3, x1: c.x + w + 3, y0: c.y - lineH / 2, y1: c.y + lineH / 2 });
+      const inside = (r) => r.x0 >= box.left && r.x1 <= box.right && r.y0 >= box.top && r.y1 <= box.bottom;
+      const covered = (r) => taken.reduce((sum, t) => sum + (t.weight ?? 1)
+        * Math.max(0, Math.min(r.x1, t.x1) - Math.max(r.x0, t.x0)) * Math.max(0, Math.min(r.y1, t.y1) - Math.max(r.y0, t.y0)), 0);
+      const inBox = candidates.filter((c) => inside(rectAt(c)));
+      const spot = inBox.find((c) => covered(rectAt(c)) === 0)
+        ?? inBox.reduce((best, c) => (best && covered(rectAt(best)) <= covered(rectAt(c)) ? best : c), null)
+        ?? candidates[0];
+      const rect = rectAt(spot);
       taken.push(rect);
-      if (Math.abs(spot.y - py) > 1) { // a leader line to a displaced label
-        g.strokeStyle = text;
-        g.lineWidth = 1.5 * s;
-        g.beginPath();
-        g.moveTo(px, py);
-        g.lineTo(spot.x > px ? rect.x0 : rect.x1, spot.y);
-        g.stroke();
-      }
-      g.fillStyle = cssVar('--plot-label-bg', 'rgba(13,17,23,0.85)');
+      placed.push({ label, px, py, spot, rect });
+    }
+    // Leader lines to displaced labels first, then every label on its background over them, so no
+    // line runs through a name.
+    g.strokeStyle = text;
+    g.lineWidth = 1.5 * s;
+    for (const { px, py, spot, rect } of placed) {
+      if (Math.abs(spot.y - py) <= 1) continue;
+      g.beginPath();
+      g.moveTo(px, py);
+      g.lineTo(spot.x > px ? rect.x0 : rect.x1, spot.y);
+      g.stroke();
+    }
+    const labelBg = cssVar('--plot-label-bg', 'rgba(13,17,23,0.85)');
+    g.fillStyle = labelBg;
+    g.fillRect(budgetRect.x0, budgetRect.y0, budgetRect.x1 - budgetRect.x0, budgetRect.y1 - budgetRect.y0 - 4 * s);
+    g.fillStyle = budgetColor;
+    g.textBaseline = 'bottom';
+    g.fillText(budgetText, box.left + 8, Y(data.budget.codes) - 4);
+    g.textBaseline = 'middle';
+    for (const { label, spot, rect } of placed) {
+      g.fillStyle = labelBg;
       g.fillRect(rect.x0, rect.y0 + 1, rect.x1 - rect.x0, lineH - 2);
       g.fillStyle = text;
       g.fillText(label, spot.x, spot.y);
