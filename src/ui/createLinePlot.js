@@ -4,6 +4,8 @@
 import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
 import { cssVar, lineScale } from './theme.js';
+import { quietestSpot } from './quietestSpot.js';
+import { tickDecimals } from './format.js';
 
 /** Colours may name a CSS custom property ('--c-exact') so they follow the theme. */
 export function resolveColor(color) {
@@ -45,7 +47,8 @@ function fmt(v, digits) {
  * options: xLabel, xShort (the x title on a narrow plot; else compactLabel(xLabel)), yLabel, xRange ([min, max] or null), yRange ([min, max] or null for auto),
  * xUnit ('°' or ''), xStep (ticks on multiples of it only, e.g. 1 for whole levels), series
  * [{ label, stroke, width, dash }], height, digits (legend decimals).
- * Markers set with setMarks([{ x, color, label, shadeTo }]) are drawn over the curves, and the
+ * Markers set with setMarks([{ x, color, label, short, shadeTo }]) are drawn over the curves (short:
+ * the label where the plot is too narrow for it), and the
  * audio trace's cursor with setCursor(x, label).
  */
 export function createLinePlot(container, options) {
@@ -65,7 +68,7 @@ export function createLinePlot(container, options) {
     labelFont: `bold ${Math.round(16 * lineScale())}px system-ui, sans-serif`,
     grid: { stroke: () => cssVar('--grid'), width: 1 },
     ticks: { stroke: () => cssVar('--grid') },
-    values: unit ? (_u, ticks) => ticks.map((t) => `${+t.toFixed(6)}${unit}`) : undefined,
+    values: (_u, ticks, _axis, _space, incr) => ticks.map((t) => `${+t.toFixed(tickDecimals(incr))}${unit}`),
     // Room for the tick labels, which grow with the type in projector mode: their width (y axis)
     // grows in full, the height of a line of text (x axis) less.
     size: Math.round(60 * (vertical ? lineScale() : Math.sqrt(lineScale()))),
@@ -159,6 +162,30 @@ export function createLinePlot(container, options) {
   };
 }
 
+/**
+ * Points along every shown curve in canvas pixels, no more than `spacing` apart (a steep segment
+ * gets as many as its length on screen), for marker labels to keep off them (quietestSpot.js).
+ */
+function curvePixels(u, spacing) {
+  const xs = u.data[0].map((v) => u.valToPos(v, 'x', true));
+  const points = [];
+  u.data.slice(1).forEach((ys, i) => {
+    if (u.series[i + 1].show === false) return;
+    let last = null;
+    ys.forEach((y, j) => {
+      if (y == null || Number.isNaN(y)) { last = null; return; }
+      const p = [xs[j], u.valToPos(y, 'y', true)];
+      if (last) {
+        const steps = Math.ceil(Math.hypot(p[0] - last[0], p[1] - last[1]) / spacing);
+        for (let k = 1; k < steps; k += 1) points.push([last[0] + ((p[0] - last[0]) * k) / steps, last[1] + ((p[1] - last[1]) * k) / steps]);
+      }
+      points.push(p);
+      last = p;
+    });
+  });
+  return points;
+}
+
 function drawMarks(u, marks) {
   const { ctx } = u;
   const { top, height, left, width } = u.bbox;
@@ -175,7 +202,12 @@ function drawMarks(u, marks) {
     const b = px(m.shadeTo);
     ctx.fillRect(Math.min(a, b), top, Math.abs(b - a), height);
   }
-  marks.forEach((m, row) => {
+  const points = curvePixels(u, 3 * ratio);
+  const labelH = (19 * lineScale() + 2) * ratio;
+  const step = 12 * ratio;
+  const tops = Array.from({ length: Math.max(1, Math.floor((height - labelH - 12 * ratio) / step) + 1) }, (_, i) => top + 4 * ratio + i * step);
+  const taken = [];
+  marks.forEach((m) => {
     const x = px(m.x);
     const color = resolveColor(m.color);
     ctx.strokeStyle = color;
@@ -186,13 +218,24 @@ function drawMarks(u, marks) {
     ctx.lineTo(x, top + height);
     ctx.stroke();
     if (!m.label) return;
-    const w = ctx.measureText(m.label).width;
-    const tx = x + 6 * ratio + w > left + width ? x - 6 * ratio - w : x + 6 * ratio;
-    const ty = top + (6 + row * 24 * lineScale()) * ratio;
+    // Beside its line at the height that hides the least (higher first, then right before left);
+    // on a plot too narrow for either side, the short label (m.short), else kept inside the plot.
+    const gap = 6 * ratio;
+    const pad = 3 * ratio;
+    const sides = (tw) => [x + gap, x - gap - tw].filter((tx) => tx >= left && tx + tw <= left + width);
+    const text = m.short && !sides(ctx.measureText(m.label).width).length ? m.short : m.label;
+    const w = ctx.measureText(text).width;
+    const xs0 = sides(w);
+    if (!xs0.length) xs0.push(Math.max(left + pad, left + width - w - pad));
+    const spots = tops.flatMap((y0) => xs0.map((tx) => ({ x0: tx - pad, x1: tx + w + pad, y0, y1: y0 + labelH })));
+    const spot = quietestSpot(spots, points, taken);
+    taken.push({ ...spot, y0: spot.y0 - pad, y1: spot.y1 + pad });
+    const tx = spot.x0 + pad;
+    const ty = spot.y0 + 2 * ratio;
     ctx.fillStyle = cssVar('--plot-label-bg', 'rgba(13, 17, 23, 0.85)'); // legible over the curves
-    ctx.fillRect(tx - 3 * ratio, ty - 2 * ratio, w + 6 * ratio, (19 * lineScale() + 2) * ratio);
+    ctx.fillRect(spot.x0, spot.y0, spot.x1 - spot.x0, labelH);
     ctx.fillStyle = color;
-    ctx.fillText(m.label, tx, ty);
+    ctx.fillText(text, tx, ty);
   });
   ctx.restore();
 }

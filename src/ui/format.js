@@ -22,3 +22,14 @@ export function angle(deg, digits = 2) {
 
 /** A piece of a file name: lower-case letters, digits and dashes (accents dropped). */
 export const fileSlug = (text) => String(text).toLowerCase().normalize('NFKD').replace(/[^a-z0-9]+/g, '-').replace(/^-|-$/g, '').slice(0, 40) || 'sheet';
+
+/**
+ * Decimals that tell ticks `incr` apart: as many as the step itself has (0.25 → 2, 2e-4 → 4).
+ * uPlot's default formatter keeps three, so a range of 0 to 0.001 read 0, 0, 0, 0.001, 0.001.
+ */
+export function tickDecimals(incr) {
+  if (!(incr > 0)) return 0;
+  let k = 0;
+  while (k < 12 && Math.abs(+incr.toFixed(k) - incr) > incr * 1e-6) k += 1;
+  return k;
+}

@@ -5,7 +5,7 @@ import { angle } from './format.js';
 
 /** note: added after the angle, e.g. ' (Rp = 0)' where the plot shows Rp. */
 export function brewsterMark(deg, note = '') {
-  return deg == null ? null : { x: deg, color: '--c-brewster', label: `Brewster ${angle(deg)}${note}` };
+  return deg == null ? null : { x: deg, color: '--c-brewster', label: `Brewster ${angle(deg)}${note}`, short: `Brewster ${angle(deg)}` };
 }
 
 /** null when there is no critical angle (n_i ≤ n_t). */

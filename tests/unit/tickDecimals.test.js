@@ -1,0 +1,25 @@
+import { describe, it, expect } from 'vitest';
+import { tickDecimals } from '../../src/ui/format.js';
+
+describe('tickDecimals', () => {
+  it('gives as many decimals as the tick step has', () => {
+    expect(tickDecimals(10)).toBe(0);
+    expect(tickDecimals(1)).toBe(0);
+    expect(tickDecimals(0.2)).toBe(1);
+    expect(tickDecimals(0.25)).toBe(2);
+    expect(tickDecimals(0.0002)).toBe(4);
+    expect(tickDecimals(1.5e-7)).toBe(8);
+  });
+
+  it('tells apart the ticks of a range from 0 to 0.001', () => {
+    const ticks = [0, 0.0002, 0.0004, 0.0006, 0.0008, 0.001];
+    const labels = ticks.map((t) => String(+t.toFixed(tickDecimals(0.0002))));
+    expect(new Set(labels).size).toBe(ticks.length);
+    expect(labels).toEqual(['0', '0.0002', '0.0004', '0.0006', '0.0008', '0.001']);
+  });
+
+  it('reads a step with rounding noise as the step it means', () => {
+    expect(tickDecimals(0.1 + 0.2 - 0.2)).toBe(1);
+    expect(tickDecimals(0)).toBe(0);
+  });
+});
