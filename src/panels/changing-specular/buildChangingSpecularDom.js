@@ -94,7 +94,7 @@ export function buildChangingSpecularDom(host) {
   const stage = el('div', 'cspec-stage');
   const canvas = el('canvas', 'cspec-canvas');
   canvas.setAttribute('role', 'img');
-  canvas.setAttribute('aria-label', 'The same flat tiled floor twice: left lit with Phong\'s highlight, right with Phong times F.');
+  canvas.setAttribute('aria-label', 'The same flat tiled floor twice: the first lit with Phong\'s highlight, the second with Phong times F.');
   const labels = el('div', 'cspec-labels');
   const left = el('span', 'cspec-tag cspec-tag-phong', 'Phong: R0·(v·r)^s');
   const right = el('span', 'cspec-tag cspec-tag-fresnel', 'Phong × F: F(θ)·(v·r)^s');
@@ -130,8 +130,8 @@ export function buildChangingSpecularDom(host) {
       const ratio = (h.F / h.R0).toFixed(2);
       note.textContent = h.R0 === 0
         ? 'At the centre of each view. With n_t = 1 there is no interface: nothing is reflected at any angle.'
-        : `At the centre of each view. F is ${ratio}× R0 here, so the right-hand floor reflects ${ratio}× `
-          + 'the light of the left one at every point of its highlight.';
+        : `At the centre of each view. F is ${ratio}× R0 here, so the Phong × F floor reflects ${ratio}× `
+          + 'the light of the Phong one at every point of its highlight.';
     },
   };
 }

@@ -29,7 +29,7 @@ export const MIX_GLSL = mixSource.trimEnd();
 export const FRAGMENT = assembleShader(fragmentSource, { 'fresnel-lighting-mix': mixSource });
 const RIM_DEG = 80; // the angle quoted for the rim
 
-/** F at θ (degrees) on the left sphere, from the float64 reference (light from air into the coat). */
+/** F at θ (degrees) on the Fresnel sphere, from the float64 reference (light from air into the coat). */
 function weightAt(thetaDeg, nT, method) {
   const c = cosDeg(thetaDeg);
   return method === 'exact' ? fresnelExact(c, 1, nT) : fresnelSchlick(c, 1, nT);
@@ -67,8 +67,8 @@ export function mount(root, ctx) {
     fragment: FRAGMENT,
     uniforms,
     onFrame: ctx.frameDrawn,
-    ariaLabel: 'Two red spheres under a clear coat. Left: the coat weight is the Fresnel factor F, so the rim turns '
-      + 'toward the coat colour. Right: a constant weight, so the rim stays the diffuse colour.',
+    ariaLabel: 'Two red spheres under a clear coat. On the first, the coat weight is the Fresnel factor F, so the rim '
+      + 'turns toward the coat colour. On the second, a constant weight, so the rim stays the diffuse colour.',
     fallback: 'The spheres need WebGL2; the numbers and the GLSL below still apply.',
   });
 
@@ -151,9 +151,9 @@ export function mount(root, ctx) {
     update,
     describe() {
       const { nT, method, weight } = values;
-      return `Left sphere: k = mix(kd, ks, F), with F by ${METHOD_NAMES[method]} at the view angle N·V for a coat of n_t = ${nT}: `
+      return `Fresnel sphere (first): k = mix(kd, ks, F), with F by ${METHOD_NAMES[method]} at the view angle N·V for a coat of n_t = ${nT}: `
         + `F is ${weightAt(0, nT, method).toFixed(4)} at 0° and ${weightAt(RIM_DEG, nT, method).toFixed(4)} at ${RIM_DEG}°, so its rim turns toward ks. `
-        + `Right sphere: a constant weight w = ${weight.toFixed(3)} at every angle, so its rim keeps the same mix as its centre.`;
+        + `Other sphere (second): a constant weight w = ${weight.toFixed(3)} at every angle, so its rim keeps the same mix as its centre.`;
     },
     csv() {
       return {

@@ -4,8 +4,8 @@ import { transmittedIndex } from '../shared/indexPair.js';
 
 export const schema = {
   ...transmittedIndex({ what: 'coat', aliases: ['n'] }),
-  method: { type: 'enum', default: 'exact', options: { exact: 'Exact Fresnel', schlick: "Schlick's approximation" }, label: 'F on the left sphere' },
-  weight: { type: 'number', default: 0.04, min: 0, max: 1, step: 0.001, label: 'Constant ks weight w (right)' },
+  method: { type: 'enum', default: 'exact', options: { exact: 'Exact Fresnel', schlick: "Schlick's approximation" }, label: 'F on the Fresnel sphere' },
+  weight: { type: 'number', default: 0.04, min: 0, max: 1, step: 0.001, label: 'Constant ks weight w (other sphere)' },
   kd: { type: 'color', default: '#a3241c', label: 'kd (diffuse layer)' },
   ks: { type: 'color', default: '#ffffff', label: 'ks (coat)' },
   lightAz: { type: 'number', default: 35, min: -180, max: 180, step: 1, label: 'Light azimuth °' },

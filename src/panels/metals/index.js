@@ -40,7 +40,7 @@ export function mount(root, ctx) {
     uniforms,
     onFrame: ctx.frameDrawn,
     cache: { live: ['uN'] }, // the dielectric's index redraws its F alone (metals.frag.glsl)
-    ariaLabel: 'Left: a dielectric sphere, dark head-on and bright only at its rim. Right: a metal sphere that '
+    ariaLabel: 'First, a dielectric sphere, dark head-on and bright only at its rim; second, a metal sphere that '
       + 'reflects most of the light at every angle, tinted by its colour.',
     fallback: 'The spheres need WebGL2; the swatches, table and plot below still work.',
   });

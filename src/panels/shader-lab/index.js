@@ -239,8 +239,8 @@ export function mount(root, ctx) {
     const waiting = lost ? LOST : 'No map until the code compiles and runs.';
     dom.setSpheresMessage(lost ? LOST : state.spheres);
     dom.spheresCanvas.setAttribute('aria-label', ex.kind === 'conductor'
-      ? 'Two gold spheres reflecting the sky: left with your function, right with the exact conductor Fresnel.'
-      : 'Two red spheres under a clear coat of n = 1.5: left with your function, right with the exact Fresnel reflectance.');
+      ? 'Two gold spheres reflecting the sky: the first with your function, the second with the exact conductor Fresnel.'
+      : 'Two red spheres under a clear coat of n = 1.5: the first with your function, the second with the exact Fresnel reflectance.');
     for (const side of ['student', 'reference']) {
       const figure = side === 'student' ? dom.student : dom.referenceMap;
       const map = state.maps[side];
