@@ -128,6 +128,14 @@ test.describe('a GPU that refuses every shader', () => {
   });
 });
 
+/** A panel still answers its controls: a new value changes what it says about itself. */
+async function expectFollowsControls(page, id) {
+  const describe = () => page.evaluate((i) => window.fresnelLab.hosts[i].instance.describe(), id);
+  const before = await describe();
+  await page.evaluate((i) => window.fresnelLab.hosts[i].set({ nT: 2.4 }), id);
+  await expect.poll(describe).not.toBe(before);
+}
+
 test.describe('an error in a panel’s code', () => {
   test.use({ allowedErrors: /met an error|an injected fault/ });
 
@@ -147,9 +155,7 @@ test.describe('an error in a panel’s code', () => {
     const exact = page.locator('section[data-panel="exact-fresnel"]');
     await exact.scrollIntoViewIfNeeded();
     await expect.poll(() => page.evaluate(() => window.fresnelLab.hosts['exact-fresnel'].mounted)).toBe(true);
-    const described = await page.evaluate(() => window.fresnelLab.hosts['exact-fresnel'].instance.describe());
-    await page.evaluate(() => window.fresnelLab.hosts['exact-fresnel'].set({ nT: 2.4 }));
-    await expect.poll(() => page.evaluate(() => window.fresnelLab.hosts['exact-fresnel'].instance.describe())).not.toBe(described);
+    await expectFollowsControls(page, 'exact-fresnel');
     // Restart: a new instance with the values the panel had, and the line gone.
     await spheres.scrollIntoViewIfNeeded();
     await spheres.getByRole('button', { name: 'Restart this panel' }).click();
@@ -171,9 +177,7 @@ test.describe('an error in a panel’s code', () => {
     await page.locator('canvas').first().focus();
     await page.keyboard.press('ArrowRight');
     await expect(page.locator('.panel-fault-text')).toHaveText(/met an error: an injected fault in a key handler/);
-    const described = await page.evaluate(() => window.fresnelLab.hosts['exact-fresnel'].instance.describe());
-    await page.evaluate(() => window.fresnelLab.hosts['exact-fresnel'].set({ nT: 2.4 }));
-    await expect.poll(() => page.evaluate(() => window.fresnelLab.hosts['exact-fresnel'].instance.describe())).not.toBe(described);
+    await expectFollowsControls(page, 'exact-fresnel');
   });
 
   test('an error outside every panel: one notice at the top of the page', async ({ page }) => {

@@ -13,7 +13,7 @@ import { startWebGL } from '../shared/startWebGL.js';
 import { buildChangingSpecularDom } from './buildChangingSpecularDom.js';
 import fragment from './changing-specular.frag.glsl?raw';
 import { schema } from './schema.js';
-import { phoneWidth } from '../../ui/phoneWidth.js';
+import { stackOnPhone } from '../shared/stackOnPhone.js';
 
 export { schema };
 
@@ -38,15 +38,7 @@ export function mount(root, ctx) {
     },
   }), 'The floors need WebGL2; the diagram and plot below still work.');
   // On a phone the two floors stand one above the other, each as wide as the screen.
-  const phone = phoneWidth();
-  const arrange = () => {
-    dom.stage.classList.toggle('cspec-stacked', phone.matches && Boolean(view));
-    if (!view) return;
-    view.uniforms.uStacked.value = phone.matches ? 1 : 0;
-    view.render();
-  };
-  phone.addEventListener('change', arrange);
-  arrange();
+  const layout = stackOnPhone(dom.stage, 'cspec-stacked', view);
   const plot = createLinePlot(dom.plot, {
     xLabel: 'Elevation of light and view (mirror), °',
     xShort: 'Elevation of light and view, °',
@@ -127,7 +119,7 @@ export function mount(root, ctx) {
     },
     png: view ? () => view.toDataURL() : null,
     dispose() {
-      phone.removeEventListener('change', arrange);
+      layout.dispose();
       view?.dispose();
       plot.dispose();
     },

@@ -7,7 +7,7 @@ import { startWebGL } from './startWebGL.js';
 import './twinStage.css';
 import { el } from '../../ui/el.js';
 import { DEG } from '../../optics/angles.js';
-import { phoneWidth } from '../../ui/phoneWidth.js';
+import { stackOnPhone } from './stackOnPhone.js';
 
 
 /** Unit spheres seen from this far from their centres, with this vertical field of view, from a little above. */
@@ -56,15 +56,7 @@ export function createTwinStage(host, { fragment, uniforms, ariaLabel, fallback,
   }), fallback);
 
   // On a phone the spheres stand one above the other, each as large as the screen is wide allows.
-  const phone = phoneWidth();
-  const arrange = () => {
-    stage.classList.toggle('twin-stacked', phone.matches && Boolean(view));
-    if (!view) return;
-    view.uniforms.uStacked.value = phone.matches ? 1 : 0;
-    view.render();
-  };
-  phone.addEventListener('change', arrange);
-  arrange();
+  const layout = stackOnPhone(stage, 'twin-stacked', view);
 
   /**
    * CSS pixel (within the canvas) of the point at view angle θ on sphere `side` (0 left, 1 right),
@@ -73,7 +65,7 @@ export function createTwinStage(host, { fragment, uniforms, ariaLabel, fallback,
    */
   function pointAt(side, thetaDeg, towardDeg = 90) {
     const { width, height } = canvas.getBoundingClientRect();
-    const stacked = view?.uniforms.uStacked.value === 1;
+    const stacked = layout.stacked();
     const r = offsetAtAngle(thetaDeg) * (stacked ? height / 4 : height / 2);
     const cx = stacked ? width / 2 : (side + 0.5) * (width / 2);
     const cy = stacked ? (side + 0.5) * (height / 2) : height / 2;
@@ -97,7 +89,7 @@ export function createTwinStage(host, { fragment, uniforms, ariaLabel, fallback,
       return view.readPixel(x, y);
     },
     dispose() {
-      phone.removeEventListener('change', arrange);
+      layout.dispose();
       view?.dispose();
     },
   };
