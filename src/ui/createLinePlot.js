@@ -39,6 +39,16 @@ export function compactLabel(label) {
   return head !== label && /\(degrees\)/.test(label) ? `${head} (degrees)` : head;
 }
 
+/** Width in CSS pixels of a y tick label at the axis font. */
+function textWidth(u, text) {
+  const { ctx } = u;
+  ctx.save();
+  ctx.font = `${Math.round(15 * lineScale() * (window.devicePixelRatio || 1))}px system-ui, sans-serif`;
+  const width = ctx.measureText(String(text)).width / (window.devicePixelRatio || 1);
+  ctx.restore();
+  return width;
+}
+
 function fmt(v, digits) {
   return v == null || Number.isNaN(v) ? '–' : v.toFixed(digits);
 }
@@ -70,8 +80,11 @@ export function createLinePlot(container, options) {
     ticks: { stroke: () => cssVar('--grid') },
     values: (_u, ticks, _axis, _space, incr) => ticks.map((t) => `${+t.toFixed(tickDecimals(incr))}${unit}`),
     // Room for the tick labels, which grow with the type in projector mode: their width (y axis)
-    // grows in full, the height of a line of text (x axis) less.
-    size: Math.round(60 * (vertical ? lineScale() : Math.sqrt(lineScale()))),
+    // grows in full, and more where the labels are long (0.0008), so they never reach the axis
+    // title; the height of a line of text (x axis) grows less.
+    size: vertical
+      ? (u, values) => Math.max(Math.round(60 * lineScale()), 21 + Math.ceil(Math.max(0, ...(values ?? []).map((v) => textWidth(u, v)))))
+      : Math.round(60 * Math.sqrt(lineScale())),
   });
 
   function build() {
@@ -207,17 +220,20 @@ function drawMarks(u, marks) {
   const step = 12 * ratio;
   const tops = Array.from({ length: Math.max(1, Math.floor((height - labelH - 12 * ratio) / step) + 1) }, (_, i) => top + 4 * ratio + i * step);
   const taken = [];
+  // Every line first, then the labels over them, so no line runs through another mark's name.
+  ctx.lineWidth = 2 * ratio * lineScale();
+  ctx.setLineDash([6 * ratio, 5 * ratio]);
+  for (const m of marks) {
+    ctx.strokeStyle = resolveColor(m.color);
+    ctx.beginPath();
+    ctx.moveTo(px(m.x), top);
+    ctx.lineTo(px(m.x), top + height);
+    ctx.stroke();
+  }
   marks.forEach((m) => {
+    if (!m.label) return;
     const x = px(m.x);
     const color = resolveColor(m.color);
-    ctx.strokeStyle = color;
-    ctx.lineWidth = 2 * ratio * lineScale();
-    ctx.setLineDash([6 * ratio, 5 * ratio]);
-    ctx.beginPath();
-    ctx.moveTo(x, top);
-    ctx.lineTo(x, top + height);
-    ctx.stroke();
-    if (!m.label) return;
     // Beside its line at the height that hides the least (higher first, then right before left);
     // on a plot too narrow for either side, the short label (m.short), else kept inside the plot.
     const gap = 6 * ratio;

@@ -116,7 +116,7 @@ test('the exact forms in mediump fail near the critical angle (on this GPU, or i
 test('hover and arrow keys probe a cell: θ, ratio, exact R and both values', async ({ page }) => {
   await openLab(page, embed('&method=schlick-mul&precision=fp32'));
   const readout = page.locator('.st-readout');
-  await expect(readout).toContainText('Hover a map');
+  await expect(readout).toContainText('Hover or tap a map');
   await page.evaluate(() => window.fresnelLab.panels.stability.setProbe({ i: 120, j: 5 }));
   const exact = fresnelExact(Math.cos(60 * DEG), 0.5, 1);
   await expect(readout).toContainText('θ = 60.00°, n_i/n_t = 0.500');

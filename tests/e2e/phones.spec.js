@@ -91,3 +91,26 @@ test.describe('the hero on a phone', () => {
     expect((await values()).viewAz).toBe(orbited.viewAz); // a pinch is not an orbit
   });
 });
+
+test.describe('reading a picture by touch', () => {
+  test.use({ viewport: { width: 390, height: 844 }, isMobile: true, hasTouch: true });
+
+  test('a tap on the asphalt road reads θd and F there, and the reading stays after the finger lifts', async ({ page }) => {
+    await openLab(page, 'embed.html?panel=asphalt');
+    const readout = page.locator('.asphalt-readout');
+    await expect(readout).toContainText('Hover or tap the road');
+    const box = await page.locator('.asphalt-canvas').boundingBox();
+    await page.touchscreen.tap(box.x + box.width / 2, box.y + box.height * 0.85); // the near road
+    await expect(readout).toHaveText(/^Road [\d.]+ m ahead: θd = [\d.]+°, F = [\d.]+/);
+  });
+
+  test('a tap on a stability map reads that cell', async ({ page }) => {
+    await openLab(page, 'embed.html?panel=stability');
+    const readout = page.locator('.st-readout');
+    await expect(readout).toContainText('Hover or tap a map');
+    const box = await page.locator('.st-canvas').first().boundingBox();
+    await page.touchscreen.tap(box.x + box.width / 2, box.y + box.height / 2);
+    await expect(readout).toContainText('θ');
+    await expect(readout).not.toContainText('Hover or tap');
+  });
+});

@@ -91,8 +91,8 @@ export function mount(root, ctx) {
     view.render();
   }
 
-  // Hovering the road: the angle θd between the sun and the half-vector there, and F(θd).
-  const hint = 'Hover the road to read θd (sun to half-vector) and F there.';
+  // Hovering or tapping the road: the angle θd between the sun and the half-vector there, and F(θd).
+  const hint = 'Hover or tap the road to read θd (sun to half-vector) and F there.';
   const onHover = (event) => {
     const rect = dom.canvas.getBoundingClientRect();
     const ndcX = (2 * (event.clientX - rect.left)) / rect.width - 1;
@@ -103,7 +103,8 @@ export function mount(root, ctx) {
         + `specular ${f3(hit.specular)}, diffuse ${f3(hit.diffuse)}`
       : 'Sky: no road under the cursor.');
   };
-  const onLeave = () => dom.setReadout(hint);
+  // A finger leaves the canvas as it lifts: what it tapped stays read until the next tap.
+  const onLeave = (event) => { if (event?.pointerType !== 'touch') dom.setReadout(hint); };
   // Keyboard: arrows raise or lower the camera (Shift for 5°), Home overhead, End grazing.
   const onKey = (event) => {
     const step = event.shiftKey ? 5 : 1;
@@ -115,6 +116,7 @@ export function mount(root, ctx) {
     ctx.set({ camEl: Math.min(max, Math.max(min, next)) });
   };
   dom.canvas.addEventListener('pointermove', onHover);
+  dom.canvas.addEventListener('pointerdown', onHover); // a tap moves no pointer
   dom.canvas.addEventListener('pointerleave', onLeave);
   dom.canvas.addEventListener('keydown', onKey);
   const resize = new ResizeObserver(() => update());
@@ -158,6 +160,7 @@ export function mount(root, ctx) {
     dispose() {
       resize.disconnect();
       dom.canvas.removeEventListener('pointermove', onHover);
+      dom.canvas.removeEventListener('pointerdown', onHover);
       dom.canvas.removeEventListener('pointerleave', onLeave);
       dom.canvas.removeEventListener('keydown', onKey);
       view?.dispose();

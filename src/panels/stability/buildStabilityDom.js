@@ -23,7 +23,7 @@ export function buildStabilityDom(host) {
   maps.append(gpu.figure, js.figure);
   const readout = el('p', 'st-readout');
   readout.setAttribute('aria-live', 'polite');
-  const hint = 'Hover a map, or focus it and use the arrow keys (Shift: 10 cells), to read θ, n_i/n_t, the value and the exact R.';
+  const hint = 'Hover or tap a map, or focus it and use the arrow keys (Shift: 10 cells), to read θ, n_i/n_t, the value and the exact R.';
   root.append(note, legend, maps, readout);
   host.append(root);
   return {

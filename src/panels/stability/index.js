@@ -195,6 +195,7 @@ export function mount(root, ctx) {
   const listeners = ['gpu', 'js'].map((side) => {
     const move = onMove(side);
     dom[side].canvas.addEventListener('pointermove', move);
+    dom[side].canvas.addEventListener('pointerdown', move); // a tap moves no pointer
     dom[side].canvas.addEventListener('keydown', onKey);
     return [dom[side].canvas, move];
   });
@@ -248,6 +249,7 @@ export function mount(root, ctx) {
       window.removeEventListener('fresnel-lab:theme', redraw);
       for (const [canvas, move] of listeners) {
         canvas.removeEventListener('pointermove', move);
+        canvas.removeEventListener('pointerdown', move);
         canvas.removeEventListener('keydown', onKey);
       }
       if (context) {
