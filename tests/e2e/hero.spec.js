@@ -54,7 +54,7 @@ test('hovering a sphere marks its θ and reads out the values there', async ({ p
   await expect(page.locator('.readout')).toContainText('θ = 0.');
   await expect(page.locator('.readout')).toContainText('F exact = 0.0400');
   await page.mouse.move(box.x + 4, box.y + 4); // the sky: no sphere under the cursor
-  await expect(page.locator('.readout')).toContainText('Hover a sphere');
+  await expect(page.locator('.readout')).toContainText('Hover or tap a sphere');
 });
 
 test('the plot redraws when n_t changes in the controls', async ({ page }) => {

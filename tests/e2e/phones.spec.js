@@ -104,6 +104,15 @@ test.describe('reading a picture by touch', () => {
     await expect(readout).toHaveText(/^Road [\d.]+ m ahead: θd = [\d.]+°, F = [\d.]+/);
   });
 
+  test('a tap on the hero’s sphere reads that pixel, and the reading stays after the finger lifts', async ({ page }) => {
+    await openLab(page, 'embed.html?panel=spheres');
+    const readout = page.locator('.readout');
+    await expect(readout).toContainText('Hover or tap a sphere');
+    const box = await page.locator('.stage-canvas').boundingBox();
+    await page.touchscreen.tap(box.x + box.width / 2, box.y + box.height / 2);
+    await expect(readout).toHaveText(/^Pixel: θ = [\d.]+°\s+F exact = [\d.]+/);
+  });
+
   test('a tap on a stability map reads that cell', async ({ page }) => {
     await openLab(page, 'embed.html?panel=stability');
     const readout = page.locator('.st-readout');

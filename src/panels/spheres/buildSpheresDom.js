@@ -51,7 +51,7 @@ export function buildSpheresDom(host) {
   const setReadout = (data) => {
     readout.textContent = data
       ? `Pixel: θ = ${formatAngle(data.theta)}   F exact = ${data.exact.toFixed(4)}   F Schlick = ${data.schlick.toFixed(4)}   |error| = ${data.error.toFixed(4)}`
-      : 'Hover a sphere to read θ, F exact, F Schlick and the error at that pixel.';
+      : 'Hover or tap a sphere to read θ, F exact, F Schlick and the error at that pixel.';
   };
   setReadout(null);
 

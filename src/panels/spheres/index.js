@@ -100,7 +100,7 @@ export function mount(root, ctx) {
     });
   }
 
-  // Hovering a sphere: its θ on the plot and the numbers at that pixel.
+  // Hovering or tapping a sphere: its θ on the plot and the numbers at that pixel.
   const onHover = (event) => {
     const hit = trio?.pick(event.clientX, event.clientY);
     if (!hit) return onLeave();
@@ -110,11 +110,13 @@ export function mount(root, ctx) {
     dom.setReadout({ theta, exact, schlick, error: Math.abs(exact - schlick) });
     plot.setHover(theta);
   };
-  const onLeave = () => {
+  const onLeave = (event) => {
+    if (event?.pointerType === 'touch') return; // a lifted finger leaves what it tapped read
     dom.setReadout(null);
     plot.setHover(null);
   };
   dom.canvas.addEventListener('pointermove', onHover);
+  dom.canvas.addEventListener('pointerdown', onHover); // a tap moves no pointer
   dom.canvas.addEventListener('pointerleave', onLeave);
 
   // On a phone or an upright tablet (or a frame as narrow) one sphere is shown at a time, picked
@@ -162,6 +164,7 @@ export function mount(root, ctx) {
     dispose() {
       narrow.removeEventListener('change', showSingle);
       dom.canvas.removeEventListener('pointermove', onHover);
+      dom.canvas.removeEventListener('pointerdown', onHover);
       dom.canvas.removeEventListener('pointerleave', onLeave);
       trio?.dispose();
       trace.dispose();
