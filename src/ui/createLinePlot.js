@@ -39,13 +39,15 @@ export function compactLabel(label) {
   return head !== label && /\(degrees\)/.test(label) ? `${head} (degrees)` : head;
 }
 
-/** Width in CSS pixels of a y tick label at the axis font. */
+/** The type of tick labels and marker labels, `scale` × its CSS size (the canvas's pixel ratio). */
+const tickFont = (scale = 1) => `${Math.round(15 * lineScale() * scale)}px system-ui, sans-serif`;
+
+/** Width in CSS pixels of a tick label (measured unscaled: uPlot's context carries no transform). */
 function textWidth(u, text) {
-  const { ctx } = u;
-  ctx.save();
-  ctx.font = `${Math.round(15 * lineScale() * (window.devicePixelRatio || 1))}px system-ui, sans-serif`;
-  const width = ctx.measureText(String(text)).width / (window.devicePixelRatio || 1);
-  ctx.restore();
+  u.ctx.save();
+  u.ctx.font = tickFont();
+  const width = u.ctx.measureText(String(text)).width;
+  u.ctx.restore();
   return width;
 }
 
@@ -74,7 +76,7 @@ export function createLinePlot(container, options) {
   const axis = (label, unit, vertical = false) => ({
     label: compact && !vertical ? xShort : label,
     stroke: () => cssVar('--text'),
-    font: `${Math.round(15 * lineScale())}px system-ui, sans-serif`,
+    font: tickFont(),
     labelFont: `bold ${Math.round(16 * lineScale())}px system-ui, sans-serif`,
     grid: { stroke: () => cssVar('--grid'), width: 1 },
     ticks: { stroke: () => cssVar('--grid') },
@@ -205,7 +207,7 @@ function drawMarks(u, marks) {
   const ratio = window.devicePixelRatio || 1;
   const px = (x) => Math.round(u.valToPos(x, 'x', true));
   ctx.save();
-  ctx.font = `${Math.round(15 * ratio * lineScale())}px system-ui, sans-serif`;
+  ctx.font = tickFont(ratio);
   ctx.textBaseline = 'top';
   ctx.textAlign = 'left'; // uPlot leaves its axis alignment on the context
   for (const m of marks) {

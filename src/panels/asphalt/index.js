@@ -7,6 +7,7 @@ import { createShaderView } from '../../gl/createShaderView.js';
 import { DEG } from '../../optics/angles.js';
 import { normalIncidence } from '../../optics/fresnel.js';
 import { startWebGL } from '../shared/startWebGL.js';
+import { readByPointer } from '../../ui/readByPointer.js';
 import { SCENE, cameraBasis, highlightInView, pixelRay, shadeRoad, sunDirection } from './model.js';
 import { buildAsphaltDom } from './buildAsphaltDom.js';
 import fragment from './asphalt.frag.glsl?raw';
@@ -103,8 +104,7 @@ export function mount(root, ctx) {
         + `specular ${f3(hit.specular)}, diffuse ${f3(hit.diffuse)}`
       : 'Sky: no road under the cursor.');
   };
-  // A finger leaves the canvas as it lifts: what it tapped stays read until the next tap.
-  const onLeave = (event) => { if (event?.pointerType !== 'touch') dom.setReadout(hint); };
+  const onLeave = () => dom.setReadout(hint);
   // Keyboard: arrows raise or lower the camera (Shift for 5°), Home overhead, End grazing.
   const onKey = (event) => {
     const step = event.shiftKey ? 5 : 1;
@@ -115,9 +115,7 @@ export function mount(root, ctx) {
     event.preventDefault();
     ctx.set({ camEl: Math.min(max, Math.max(min, next)) });
   };
-  dom.canvas.addEventListener('pointermove', onHover);
-  dom.canvas.addEventListener('pointerdown', onHover); // a tap moves no pointer
-  dom.canvas.addEventListener('pointerleave', onLeave);
+  const stopReading = readByPointer(dom.canvas, onHover, onLeave);
   dom.canvas.addEventListener('keydown', onKey);
   const resize = new ResizeObserver(() => update());
   resize.observe(dom.canvas);
@@ -159,9 +157,7 @@ export function mount(root, ctx) {
     png: view ? () => view.toDataURL() : null,
     dispose() {
       resize.disconnect();
-      dom.canvas.removeEventListener('pointermove', onHover);
-      dom.canvas.removeEventListener('pointerdown', onHover);
-      dom.canvas.removeEventListener('pointerleave', onLeave);
+      stopReading();
       dom.canvas.removeEventListener('keydown', onKey);
       view?.dispose();
     },

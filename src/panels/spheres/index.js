@@ -14,6 +14,7 @@ import { createRPlot } from './createRPlot.js';
 import { addDielectricTrace } from '../shared/dielectricTrace.js';
 import { createSphereTrio } from './createSphereTrio.js';
 import { buildSpheresDom } from './buildSpheresDom.js';
+import { readByPointer } from '../../ui/readByPointer.js';
 import { schema } from './schema.js';
 
 export { schema };
@@ -110,14 +111,11 @@ export function mount(root, ctx) {
     dom.setReadout({ theta, exact, schlick, error: Math.abs(exact - schlick) });
     plot.setHover(theta);
   };
-  const onLeave = (event) => {
-    if (event?.pointerType === 'touch') return; // a lifted finger leaves what it tapped read
+  const onLeave = () => {
     dom.setReadout(null);
     plot.setHover(null);
   };
-  dom.canvas.addEventListener('pointermove', onHover);
-  dom.canvas.addEventListener('pointerdown', onHover); // a tap moves no pointer
-  dom.canvas.addEventListener('pointerleave', onLeave);
+  const stopReading = readByPointer(dom.canvas, onHover, onLeave);
 
   // On a phone or an upright tablet (or a frame as narrow) one sphere is shown at a time, picked
   // with the switch: three side by side would each be a thumbnail, the legend on the third.
@@ -163,9 +161,7 @@ export function mount(root, ctx) {
     png: trio ? () => trio.toDataURL() : null,
     dispose() {
       narrow.removeEventListener('change', showSingle);
-      dom.canvas.removeEventListener('pointermove', onHover);
-      dom.canvas.removeEventListener('pointerdown', onHover);
-      dom.canvas.removeEventListener('pointerleave', onLeave);
+      stopReading();
       trio?.dispose();
       trace.dispose();
       plot.dispose();

@@ -18,6 +18,7 @@ import { drawMap } from '../shared/drawMap.js';
 import { composePng } from '../shared/composePng.js';
 import './styles.css';
 import { schema } from './schema.js';
+import { readByPointer } from '../../ui/readByPointer.js';
 
 export { schema };
 
@@ -193,11 +194,8 @@ export function mount(root, ctx) {
     setProbe({ i: Math.min(map.width - 1, Math.max(0, cell.i + di)), j: Math.min(map.height - 1, Math.max(0, cell.j + dj)) });
   };
   const listeners = ['gpu', 'js'].map((side) => {
-    const move = onMove(side);
-    dom[side].canvas.addEventListener('pointermove', move);
-    dom[side].canvas.addEventListener('pointerdown', move); // a tap moves no pointer
     dom[side].canvas.addEventListener('keydown', onKey);
-    return [dom[side].canvas, move];
+    return [dom[side].canvas, readByPointer(dom[side].canvas, onMove(side))]; // the probe stays where it was read
   });
   const redraw = () => draw();
   const resizeObserver = new ResizeObserver(redraw);
@@ -247,9 +245,8 @@ export function mount(root, ctx) {
     dispose() {
       resizeObserver.disconnect();
       window.removeEventListener('fresnel-lab:theme', redraw);
-      for (const [canvas, move] of listeners) {
-        canvas.removeEventListener('pointermove', move);
-        canvas.removeEventListener('pointerdown', move);
+      for (const [canvas, stopReading] of listeners) {
+        stopReading();
         canvas.removeEventListener('keydown', onKey);
       }
       if (context) {
