@@ -10,10 +10,18 @@ import { transmittedAngle } from '../optics/waves.js';
 import { toksvigExponent, toksvigFactor } from '../normals/lobeFormulas.js';
 import { INDICES, fixed } from './questionParts.js';
 import { angleOfMax, angleWhere } from './solveAngle.js';
+import { highlightInView } from '../panels/asphalt/model.js';
 
 const reflectance = (nI, nT) => (t) => fresnelExact(cosDeg(t), nI, nT);
 const schlickGap = (nT) => (t) => schlickErrorAt(t, 1, nT);
-const percent = (x) => `${Math.round(x * 100)} %`;
+const ASPHALT_ROUGHNESS = 0.8;
+// The brightest spot in view of the asphalt panel at camera elevation camEl: its specular part's
+// share of its light (0.5 where the highlight equals the diffuse road). The central column is the
+// same at any aspect ratio (the sun is straight ahead), so the aspect given does not matter.
+const specularShare = (p) => (camEl) => {
+  const { peak } = highlightInView({ camEl, sunEl: p.sunEl, roughness: ASPHALT_ROUGHNESS, nT: p.nT, fresnel: true }, 2);
+  return peak.specular / (peak.specular + peak.diffuse);
+};
 
 export const LIGHT_QUESTIONS = [
   {
@@ -46,12 +54,14 @@ export const LIGHT_QUESTIONS = [
     state: () => ({ technique: 'toksvig' }),
   },
   {
-    id: 'asphalt-sheen', panel: 'asphalt', kind: 'predict', unit: 'deg', tolerance: 2,
-    params: (rng) => ({ nT: rng.pick([1.5, 1.55, 1.6]), level: rng.pick([0.1, 0.2, 0.3]) }),
-    prompt: (p) => `A road of n_t = ${p.nT}, seen first from overhead, then lower and lower. Predict the angle from the normal past which its surface reflects more than ${percent(p.level)} of the light (R > ${p.level}), where the sheen appears. Within 2°.`,
-    expected: (p) => angleWhere(reflectance(1, p.nT), p.level),
-    curve: (p) => ({ label: 'R', f: reflectance(1, p.nT), level: p.level }),
-    state: (p) => ({ nT: p.nT }),
+    // What the asphalt panel computes: the brightest spot in view against the diffuse road it sits on.
+    id: 'asphalt-outshine', panel: 'asphalt', kind: 'predict', unit: 'deg', tolerance: 2,
+    axis: 'Camera elevation above the road',
+    params: (rng) => ({ nT: rng.pick([1.5, 1.55, 1.6]), sunEl: rng.pick([10, 15, 20]) }),
+    prompt: (p) => `A road of n_t = ${p.nT} and roughness ${ASPHALT_ROUGHNESS} under a sun ${p.sunEl}° above it, straight ahead. Lower the camera from overhead (90°). Predict the camera elevation at which the brightest spot in view first reflects more light specularly than diffusely (the panel's highlight ÷ diffuse passes 1). Within 2°.`,
+    expected: (p) => angleWhere(specularShare(p), 0.5, 2, 90),
+    curve: (p) => ({ label: 'Specular share of the brightest spot', f: specularShare(p), level: 0.5 }),
+    state: (p) => ({ nT: p.nT, sunEl: p.sunEl, roughness: ASPHALT_ROUGHNESS, camEl: 90, fresnel: true }),
   },
   {
     id: 'phong-grazing', panel: 'changing-specular', kind: 'choice',

@@ -6,6 +6,7 @@
 //   kind 'numeric': typed, with units, checked at the tolerance stated in the prompt;
 //   kind 'predict': an angle committed before the panel shows the truth; `curve` is what the
 //                   prediction is drawn against once the truth is shown (it stays drawn);
+//                   `axis`, where given, names what the 0°–90° axis measures (else θ from the normal);
 //   kind 'choice':  one option holds.
 // Every question has `state(p)`: the values its panel starts from.
 import { LIGHT_QUESTIONS } from './lightQuestions.js';

@@ -51,8 +51,12 @@ export const PANELS = Object.freeze([
     id: 'asphalt',
     title: 'Does asphalt have a specular highlight?',
     lede: `Look straight down at a road and it is dull; look along it towards a low sun and it shines. Nothing about
-        the asphalt changed, only the angle: at grazing angles even a rough, dark surface reflects a large share of
-        the light. Sweep the camera from overhead to grazing, and switch Fresnel off to see what a model without it misses.`,
+        the asphalt changed, only the angle, and two things grow with it: the rough microfacets send what they reflect
+        into a lobe that leans forward, towards grazing views (with Fresnel off the brightest spot still grows about 13×
+        from overhead to a camera 6° up), and F at the angle between the sun and the half-vector rises (another 9.5×).
+        Even so the road reflects only about 7 % of the sunlight specularly, less than its diffuse albedo of 9 %: the
+        sheen is bright because that light is concentrated, not because there is much of it. Switch Fresnel off to see
+        what a model without it misses.`,
     cite: 'Lecture: “Specular”.',
     webgl: true,
     material: 'nT',

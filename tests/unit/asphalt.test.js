@@ -1,8 +1,10 @@
 import { describe, expect, it } from 'vitest';
 import { fresnelExact, normalIncidence } from '../../src/optics/fresnel.js';
+import { microfacetSpecular } from '../../src/optics/microfacet.js';
 import {
-  SCENE, cameraBasis, highlightInView, pixelRay, shadeRoad, sunDirection,
+  SCENE, cameraBasis, highlightInView, pixelRay, shadeRoad, sheenGrowth, specularAlbedo, sunDirection,
 } from '../../src/panels/asphalt/model.js';
+import { questionById } from '../../src/homework/questions.js';
 
 const DEG = Math.PI / 180;
 const base = { camEl: 6, sunEl: 10, roughness: 0.8, nT: 1.55, fresnel: true };
@@ -44,9 +46,12 @@ describe('road shading', () => {
     expect(peak.specular).toBeLessThan(peak.diffuse);
     expect(centre.F).toBeLessThan(0.06);
   });
-  it('near grazing the highlight sits at the mirror point and outshines the road many times', () => {
+  it('near grazing the highlight sits at the horizon and outshines the road many times', () => {
     const { peak } = highlightInView({ ...base, camEl: 4 }, 2, 801);
-    expect(peak.thetaD).toBeCloseTo(90 - base.sunEl / 2, 0); // mirror point: h = n, θd = 90° − sunEl
+    // Not at the mirror point (h = n, θd = 90° − sunEl = 80°): the lobe's 1/cosθv carries the peak to
+    // the far road, where v runs along it and l·v = −cos(sunEl), so θd = (180° − sunEl)/2.
+    expect(Math.abs(peak.thetaD - 80)).toBeGreaterThan(4);
+    expect(peak.thetaD).toBeCloseTo((180 - base.sunEl) / 2, 1);
     expect(peak.F).toBeGreaterThan(0.5);
     expect(peak.specular / peak.diffuse).toBeGreaterThan(20);
   });
@@ -55,5 +60,90 @@ describe('road shading', () => {
     const off = highlightInView({ ...base, camEl: 4, fresnel: false }, 2).peak;
     expect(off.specular / on.specular).toBeCloseTo(normalIncidence(1, 1.55) / on.F, 10);
     expect(off.specular).toBeLessThan(on.specular / 10);
+  });
+});
+
+// The directional albedo by brute force: a midpoint grid over the outgoing hemisphere (cos θo, φ).
+function albedoByDirections({ sunEl, roughness, nT }, n) {
+  const l = sunDirection(sunEl);
+  let sum = 0;
+  for (let i = 0; i < n; i += 1) {
+    const mu = (i + 0.5) / n;
+    const s = Math.sqrt(1 - mu * mu);
+    for (let j = 0; j < 2 * n; j += 1) {
+      const phi = (Math.PI * (j + 0.5)) / n;
+      const o = [s * Math.sin(phi), mu, s * Math.cos(phi)];
+      const h = l.map((x, k) => x + o[k]);
+      const len = Math.hypot(...h);
+      const cosD = Math.min(1, dot(l, h) / len);
+      const F = fresnelExact(cosD, 1, nT);
+      sum += microfacetSpecular({ cosL: l[1], cosV: mu, cosH: Math.min(1, h[1] / len), alpha: roughness ** 2, F }) * mu;
+    }
+  }
+  return (sum * 2 * Math.PI) / (2 * n * n);
+}
+
+describe('how much the road reflects, and why it shines', () => {
+  it('the specular albedo holds its shown digits against a far finer grid, and a direct integral agrees', () => {
+    for (const roughness of [0.2, 0.45, 0.8, 1]) {
+      for (const sunEl of [2, 10, 30, 45]) {
+        const v = { ...base, roughness, sunEl };
+        expect(Math.abs(specularAlbedo(v) - specularAlbedo(v, 400)), `${roughness} ${sunEl}`).toBeLessThan(2.5e-4);
+      }
+    }
+    expect(specularAlbedo({ ...base, sunEl: 10 })).toBeCloseTo(albedoByDirections({ ...base, sunEl: 10 }, 600), 3);
+    expect(specularAlbedo({ ...base, sunEl: 60 })).toBeCloseTo(albedoByDirections({ ...base, sunEl: 60 }, 300), 4);
+  });
+  it('at the default roughness only a few per cent is reflected specularly, even at 80–85°', () => {
+    // Issue figures: about 2.7 % head-on, 4.1 % at 60°, 7.3 % at 80°, 9.1 % at 85° (θ from the normal).
+    const at = (theta) => specularAlbedo({ ...base, sunEl: 90 - theta });
+    expect(at(0)).toBeCloseTo(0.0265, 3);
+    expect(at(60)).toBeCloseTo(0.0406, 3);
+    expect(at(80)).toBeCloseTo(0.0734, 3);
+    expect(at(85)).toBeCloseTo(0.0914, 3);
+    expect(Math.abs(at(85) - SCENE.albedo)).toBeLessThan(0.005); // about the diffuse albedo
+    // Fresnel off: F = R0 everywhere, so less is reflected at grazing.
+    expect(specularAlbedo({ ...base, sunEl: 10, fresnel: false })).toBeLessThan(at(80) / 1.8);
+  });
+  it('the growth from overhead is the lobe times F, and both factors are large', () => {
+    const g = sheenGrowth({ ...base, camEl: 6 }, 2);
+    const now = highlightInView({ ...base, camEl: 6 }, 2).peak;
+    const overhead = highlightInView({ ...base, camEl: 90 }, 2).peak;
+    expect(g.total).toBeCloseTo(now.specular / overhead.specular, 10);
+    expect(g.lobe).toBeGreaterThan(12);
+    expect(g.lobe).toBeLessThan(14);
+    expect(g.fresnel).toBeGreaterThan(9);
+    // With Fresnel off the lobe grows just the same and F not at all.
+    const off = sheenGrowth({ ...base, camEl: 6, fresnel: false }, 2);
+    expect(off.lobe).toBeCloseTo(g.lobe, 10);
+    expect(off.fresnel).toBe(1);
+  });
+  it('the brightest spot is refined off the grid: no row of a finer scan is brighter', () => {
+    for (const camEl of [30, 60, 75]) {
+      const { peak } = highlightInView({ ...base, camEl }, 2);
+      const fine = highlightInView({ ...base, camEl }, 2, 4001).column;
+      for (const row of fine) expect(row.specular).toBeLessThanOrEqual(peak.specular * (1 + 1e-12));
+    }
+  });
+});
+
+describe('the homework question asks what the panel computes', () => {
+  const q = questionById('asphalt-outshine');
+  it('its answer is the camera elevation where the brightest spot equals the diffuse road', () => {
+    for (const nT of [1.5, 1.55, 1.6]) {
+      for (const sunEl of [10, 15, 20]) {
+        const camEl = q.expected({ nT, sunEl });
+        const values = { camEl, sunEl, roughness: 0.8, nT, fresnel: true };
+        const { peak } = highlightInView(values, 16 / 9); // any aspect: the central column is the same
+        expect(peak.specular / peak.diffuse).toBeCloseTo(1, 8);
+        // Dull above it, brighter than the road below it.
+        const ratio = (e) => highlightInView({ ...values, camEl: e }, 2).peak;
+        expect(ratio(camEl + 2).specular).toBeLessThan(ratio(camEl + 2).diffuse);
+        expect(ratio(camEl - 2).specular).toBeGreaterThan(ratio(camEl - 2).diffuse);
+      }
+    }
+  });
+  it('its start state is the panel overhead with the question\'s sun and index', () => {
+    expect(q.state({ nT: 1.55, sunEl: 15 })).toEqual({ nT: 1.55, sunEl: 15, roughness: 0.8, camEl: 90, fresnel: true });
   });
 });

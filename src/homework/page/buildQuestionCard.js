@@ -94,8 +94,9 @@ export function buildQuestionCard({ number, item, question, params, saved, attem
   } else if (question.kind === 'predict') {
     let moved = answer !== null;
     figure = createPredictFigure({
-      label: `Your prediction for question ${number}, θ in degrees`,
+      label: `Your prediction for question ${number}, ${question.axis ?? 'θ'} in degrees`,
       describedBy: prompt.id,
+      ...(question.axis ? { axis: question.axis } : {}),
       onChange: () => { moved = true; commit.disabled = false; },
     });
     if (answer !== null) figure.setValue(answer);

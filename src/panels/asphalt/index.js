@@ -1,22 +1,30 @@
 // @ts-check
 // Panel `asphalt`: does a rough road have a specular highlight? A ray-cast road under a low sun
-// ahead of the camera; overhead it is dull, near grazing it shines, because F at the half-vector
-// angle grows towards 1 there (lecture, "Specular"). Fresnel off keeps F = R0 and shows what a model
-// without it misses. Every number comes from model.js (float64).
+// ahead of the camera; overhead it is dull, near grazing it shines (lecture, "Specular"). Two
+// factors grow towards grazing: the GGX lobe D·G2/(4 cosθl cosθv) gathers the reflected light
+// into a forward beam, and F at the half-vector angle θd rises; the summary gives each one's share.
+// The share of sunlight reflected specularly stays small (a few per cent, about the road's diffuse
+// albedo): the sheen is concentrated light, not a large share of it. Fresnel off keeps F = R0 and
+// shows what a model without it misses. Every number comes from model.js (float64).
 import { createShaderView } from '../../gl/createShaderView.js';
 import { DEG } from '../../optics/angles.js';
 import { normalIncidence } from '../../optics/fresnel.js';
 import { startWebGL } from '../shared/startWebGL.js';
 import { readByPointer } from '../../ui/readByPointer.js';
-import { SCENE, cameraBasis, highlightInView, pixelRay, shadeRoad, sunDirection } from './model.js';
+import { fixed } from '../../ui/format.js';
+import {
+  SCENE, cameraBasis, highlightInView, pixelRay, shadeRoad, sheenGrowth, specularAlbedo, sunDirection,
+} from './model.js';
 import { buildAsphaltDom } from './buildAsphaltDom.js';
 import fragment from './asphalt.frag.glsl?raw';
 import { schema } from './schema.js';
 
 export { schema };
 
-const f3 = (x) => x.toFixed(3);
-const deg = (x) => `${x.toFixed(1)}°`;
+const f3 = (x) => fixed(x, 3);
+const deg = (x) => `${fixed(x, 1)}°`;
+const percent = (x) => `${fixed(100 * x, 1)} %`;
+const times = (x) => `×${fixed(x, 1)}`;
 
 /** Mean RGB (0–255) of a square of drawing-buffer pixels around CSS (x, y), drawn just now. */
 function readBlock(view, x, y, radius = 3) {
@@ -66,17 +74,29 @@ export function mount(root, ctx) {
     return rect.width > 0 && rect.height > 0 ? rect.width / rect.height : 2;
   };
   let state = null;
+  // What the camera does not change is computed once per sun, roughness, index and switch.
+  let sunKey = '';
+  let albedo = 0;
+  let growth = null;
 
   function update() {
     state = highlightInView(values, aspect());
     const { peak, centre } = state;
     const r0 = normalIncidence(1, values.nT);
+    const key = [values.sunEl, values.roughness, values.nT, values.fresnel].join();
+    if (key !== sunKey) {
+      sunKey = key;
+      albedo = specularAlbedo(values);
+    }
+    growth = sheenGrowth(values, aspect());
     dom.setBadge(values.fresnel ? 'Fresnel on: F(θd) exact' : `Fresnel off: F = R0 = ${f3(r0)}`, values.fresnel);
     dom.setSummary([
       ['F at the view centre', `${f3(centre.F)} (θd = ${deg(centre.thetaD)})`, true],
       ['Highlight luminance', `${f3(peak.specular)} at θd = ${deg(peak.thetaD)}, F = ${f3(peak.F)}`, true],
       ['Diffuse road', f3(peak.diffuse)],
-      ['Highlight ÷ diffuse', `${(peak.specular / peak.diffuse).toFixed(1)}×`],
+      ['Highlight ÷ diffuse', `${fixed(peak.specular / peak.diffuse, 1)}×`],
+      ['Growth since overhead', `${times(growth.total)}: lobe ${times(growth.lobe)}, F ${times(growth.fresnel)}`],
+      ['Sunlight reflected specularly', `${percent(albedo)} (diffuse albedo ${percent(SCENE.albedo)})`],
       ['R0 (head-on)', f3(r0)],
     ]);
     if (!view) return;
@@ -100,7 +120,7 @@ export function mount(root, ctx) {
     const ndcY = 1 - (2 * (event.clientY - rect.top)) / rect.height;
     const hit = shadeRoad(pixelRay(values.camEl, ndcX, ndcY, rect.width / rect.height), values);
     dom.setReadout(hit
-      ? `Road ${hit.distance.toFixed(1)} m ahead: θd = ${deg(hit.thetaD)}, F = ${f3(hit.F)}, `
+      ? `Road ${fixed(hit.distance, 1)} m ahead: θd = ${deg(hit.thetaD)}, F = ${f3(hit.F)}, `
         + `specular ${f3(hit.specular)}, diffuse ${f3(hit.diffuse)}`
       : 'Sky: no road under the cursor.');
   };
@@ -137,8 +157,11 @@ export function mount(root, ctx) {
       return `Camera ${values.camEl}° above the road, sun ${values.sunEl}° ahead, roughness ${values.roughness}, `
         + `n_t = ${values.nT} (assumed for bitumen), Fresnel ${values.fresnel ? 'on' : 'off'}. `
         + `At the centre of view the sun meets the microfacets at θd = ${deg(centre.thetaD)}, where F is ${f3(centre.F)}; `
-        + `the brightest highlight has luminance ${f3(peak.specular)}, ${(peak.specular / peak.diffuse).toFixed(1)} times `
-        + `the diffuse road (${f3(peak.diffuse)}).`;
+        + `the brightest highlight has luminance ${f3(peak.specular)}, ${fixed(peak.specular / peak.diffuse, 1)} times `
+        + `the diffuse road (${f3(peak.diffuse)}). Since the camera was overhead it grew ${times(growth.total)}: `
+        + `${times(growth.lobe)} from the lobe D·G2/(4 cos θl cos θv), which gathers the reflected light into a forward beam, `
+        + `and ${times(growth.fresnel)} from F. The road reflects ${percent(albedo)} of the sunlight specularly, `
+        + `against a diffuse albedo of ${percent(SCENE.albedo)}: the sheen is concentrated, not plentiful.`;
     },
     csv() {
       const { column } = state;

@@ -2,8 +2,9 @@
 // Pure math, no DOM: the panel's numbers, its hover readout and its tests come from here, and the
 // shader (asphalt.frag.glsl) receives these same constants as uniforms.
 import { fresnelExact, normalIncidence } from '../../optics/fresnel.js';
-import { microfacetSpecular } from '../../optics/microfacet.js';
+import { microfacetSpecular, smithG2 } from '../../optics/microfacet.js';
 import { DEG } from '../../optics/angles.js';
+import { refinedMax } from '../../optics/refinedMax.js';
 
 
 export const SCENE = {
@@ -55,8 +56,9 @@ export function pixelRay(camElDeg, ndcX, ndcY, aspect) {
 /**
  * Shading of the flat road seen along `dir` (from the camera): the half-vector angle θd between the
  * light and h, F there (exact, from air n_i = 1 into the binder's n_t), and the luminance of the specular and diffuse
- * parts. Specular radiance L = f·E·cosθl with f the GGX Cook–Torrance BRDF (src/optics/microfacet.js);
- * with Fresnel off, F is the constant R0. Diffuse is Lambert: albedo·(E·cosθl/π + ambient).
+ * parts. Specular radiance L = f·E·cosθl with f the GGX Cook–Torrance BRDF (src/optics/microfacet.js),
+ * kept as its two factors: `lobe` = D·G2/(4 cosθl cosθv), where the rough facets send the light, and F.
+ * With Fresnel off, F is the constant R0. Diffuse is Lambert: albedo·(E·cosθl/π + ambient).
  * Returns null when the ray does not meet the road.
  */
 export function shadeRoad(dir, { sunEl, roughness, nT, fresnel }) {
@@ -67,11 +69,11 @@ export function shadeRoad(dir, { sunEl, roughness, nT, fresnel }) {
   const cosD = Math.min(1, Math.max(0, dot(l, h)));
   const F = fresnel ? fresnelExact(cosD, 1, nT) : normalIncidence(1, nT);
   const cosL = l[1];
-  const f = microfacetSpecular({ cosL, cosV: v[1], cosH: h[1], alpha: roughness * roughness, F });
-  const specular = f * SUN_Y * Math.max(0, cosL);
+  const lobe = microfacetSpecular({ cosL, cosV: v[1], cosH: h[1], alpha: roughness * roughness, F: 1 });
+  const specular = lobe * F * SUN_Y * Math.max(0, cosL);
   const diffuse = SCENE.albedo * (SUN_Y * Math.max(0, cosL) / Math.PI + AMBIENT_Y);
   const distance = SCENE.cameraHeight / -dir[1];
-  return { thetaD: Math.acos(cosD) / DEG, F, specular, diffuse, distance };
+  return { thetaD: Math.acos(cosD) / DEG, F, lobe, specular, diffuse, distance };
 }
 
 /** The tone curve of the shader, 1 − exp(−exposure·x), on a luminance. */
@@ -81,19 +83,101 @@ export function displayed(x) {
 
 /**
  * The brightest highlight in view: a scan of the central column (the sun is straight ahead, so by
- * symmetry the peak lies on it): the road rows of that column, the brightest of them, and the
- * view centre's shading.
+ * symmetry the peak lies on it), its brightest row refined between its grid neighbours
+ * (refinedMax.js) so the numbers shown of it hold, and the view centre's shading.
  */
 export function highlightInView(values, aspect, rows = 241) {
   const column = [];
-  let peak = null;
+  const ys = [];
+  const speculars = [];
+  const at = (ndcY) => shadeRoad(pixelRay(values.camEl, 0, ndcY, aspect), values);
   for (let i = 0; i < rows; i += 1) {
     const ndcY = -1 + (2 * i) / (rows - 1);
-    const hit = shadeRoad(pixelRay(values.camEl, 0, ndcY, aspect), values);
-    if (!hit) continue;
-    column.push({ ...hit, ndcY });
-    if (!peak || hit.specular > peak.specular) peak = column.at(-1);
+    const hit = at(ndcY);
+    ys.push(ndcY);
+    speculars.push(hit ? hit.specular : 0);
+    if (hit) column.push({ ...hit, ndcY });
   }
-  const centre = shadeRoad(pixelRay(values.camEl, 0, 0, aspect), values);
+  const best = refinedMax(ys, speculars, (y) => at(y)?.specular ?? 0);
+  const peak = { ...at(best.theta), ndcY: best.theta };
+  const centre = at(0);
   return { peak, centre, column };
+}
+
+/** Camera elevation of the overhead view that sheenGrowth compares with. */
+export const OVERHEAD = 90;
+
+/**
+ * How the brightest spot grew from the camera overhead to this view, split into the two factors
+ * of its specular luminance E·cosθl·lobe·F (E·cosθl is the same everywhere): the lobe
+ * D·G2/(4 cosθl cosθv) and F(θd). total = lobe × fresnel.
+ */
+export function sheenGrowth(values, aspect) {
+  const now = highlightInView(values, aspect).peak;
+  const overhead = highlightInView({ ...values, camEl: OVERHEAD }, aspect).peak;
+  const lobe = now.lobe / overhead.lobe;
+  const fresnel = now.F / overhead.F;
+  return { lobe, fresnel, total: lobe * fresnel, overhead };
+}
+
+/** u in [0, 1) where the increasing g(u) crosses `level`, by bisection. */
+function crossing(g, level) {
+  let lo = 0;
+  let hi = 1;
+  for (let i = 0; i < 60; i += 1) {
+    const mid = (lo + hi) / 2;
+    if (g(mid) < level) lo = mid;
+    else hi = mid;
+  }
+  return (lo + hi) / 2;
+}
+
+/**
+ * The share of the sunlight falling on the road that its specular layer reflects, into all
+ * directions: the directional albedo ∫ f cosθo dωo of the GGX BRDF for light at elevation sunEl.
+ * Integrated over the half-vector h, whose GGX distribution maps u ∈ [0, 1) to
+ * tan²θh = α²u/(1 − u) (Walter et al., EGSR 2007, eq. 35): with dωo = 4(o·h) dωh the integrand is
+ * G2·F(θd)·(l·h)/(cosθl cosθh) (D cancels). For each θh the reflected direction o = 2(l·h)h − l
+ * stays above the road for |φ| < φmax, cos φmax = e(u) = l_y(1 − 2cos²θh)/(2 l_z sinθh cosθh), which
+ * grows with u: every φ below the u where e = −1, a part up to the u where e = 1, none past it.
+ * The φ integral runs over its range alone, and the part-range stretch of u, where φmax has square-
+ * root ends, is sampled through u = a + (b − a)(1 − cos πt)/2, which smooths them: midpoint sums then
+ * converge fast (a unit test holds the result against a far finer grid).
+ */
+export function specularAlbedo({ sunEl, roughness, nT, fresnel }, n = 64) {
+  const l = sunDirection(sunEl);
+  const alpha = roughness * roughness;
+  const a2 = alpha * alpha;
+  const r0 = normalIncidence(1, nT);
+  const cosHAt = (u) => 1 / Math.sqrt(1 + (a2 * u) / (1 - u));
+  const edgeAt = (u) => {
+    const c = cosHAt(u);
+    return (l[1] * (1 - 2 * c * c)) / (2 * l[2] * Math.sqrt((1 - c) * (1 + c)) * c);
+  };
+  // ∫ over |φ| < φmax of the integrand at u, divided by 2π.
+  const ring = (u) => {
+    const cosH = cosHAt(u);
+    const sinH = Math.sqrt((1 - cosH) * (1 + cosH));
+    const edge = edgeAt(u);
+    if (edge >= 1) return 0;
+    const phiMax = edge <= -1 ? Math.PI : Math.acos(edge);
+    let sum = 0;
+    for (let j = 0; j < n; j += 1) {
+      const cosD = l[1] * cosH + l[2] * sinH * Math.cos((phiMax * (j + 0.5)) / n);
+      const cosO = Math.min(1, Math.max(0, 2 * cosD * cosH - l[1]));
+      const F = fresnel ? fresnelExact(Math.min(1, cosD), 1, nT) : r0;
+      sum += (smithG2(l[1], cosO, alpha) * F * cosD) / (l[1] * cosH);
+    }
+    return (sum * phiMax) / (Math.PI * n);
+  };
+  const full = crossing(edgeAt, -1);
+  const none = crossing(edgeAt, 1);
+  let total = 0;
+  for (let i = 0; i < n; i += 1) total += (ring((full * (i + 0.5)) / n) * full) / n;
+  for (let i = 0; i < n; i += 1) {
+    const t = (i + 0.5) / n;
+    const u = full + ((none - full) * (1 - Math.cos(Math.PI * t))) / 2;
+    total += (ring(u) * (none - full) * Math.PI * Math.sin(Math.PI * t)) / (2 * n);
+  }
+  return total;
 }
