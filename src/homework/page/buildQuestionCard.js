@@ -96,7 +96,7 @@ export function buildQuestionCard({ number, item, question, params, saved, attem
     figure = createPredictFigure({
       label: `Your prediction for question ${number}, ${question.axis ?? 'θ'} in degrees`,
       describedBy: prompt.id,
-      ...(question.axis ? { axis: question.axis } : {}),
+      ...(question.axis ? { axisTitle: question.axis } : {}),
       onChange: () => { moved = true; commit.disabled = false; },
     });
     if (answer !== null) figure.setValue(answer);

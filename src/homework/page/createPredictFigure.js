@@ -19,12 +19,12 @@ const svg = (tag, attrs = {}) => {
 const THETA_AXIS = 'θ from the normal';
 
 /**
- * label: the accessible name of the slider; describedBy: the id of the question's text; axis: what
+ * label: the accessible name of the slider; describedBy: the id of the question's text; axisTitle: what
  * the 0°–90° axis measures (a question's own, else the angle from the normal).
  * onChange(value) while it moves. Returns { element, value(), setValue(v), lock({ committed }),
  * showTruth({ curve, truth }), hideTruth(), focus() }.
  */
-export function createPredictFigure({ label, describedBy = null, axis = THETA_AXIS, initial = 45, onChange = () => {} }) {
+export function createPredictFigure({ label, describedBy = null, axisTitle = THETA_AXIS, initial = 45, onChange = () => {} }) {
   const element = el('figure', 'predict-figure');
   const picture = svg('svg', { viewBox: `0 0 ${W} ${H}`, class: 'predict-svg', 'aria-hidden': 'false' });
   const axis = svg('g', { class: 'predict-axis', 'aria-hidden': 'true' });
@@ -37,7 +37,7 @@ export function createPredictFigure({ label, describedBy = null, axis = THETA_AX
     axis.append(tick);
   }
   const title = svg('text', { x: x(90), y: baseline + 46, 'text-anchor': 'end', class: 'predict-axis-title' });
-  title.textContent = axis;
+  title.textContent = axisTitle;
   axis.append(title);
   const truthLayer = svg('g', { class: 'predict-truth', 'aria-hidden': 'true' });
   const marker = svg('g', { class: 'predict-marker', tabindex: 0, role: 'slider' });
@@ -133,7 +133,7 @@ export function createPredictFigure({ label, describedBy = null, axis = THETA_AX
       curveName.textContent = `${curve.label}${curve.level !== undefined ? ` (line: ${curve.level})` : ''}`;
       truthLayer.append(name, curveName);
       element.classList.add('revealed');
-      const against = axis === THETA_AXIS ? 'θ' : `the ${axis.charAt(0).toLowerCase()}${axis.slice(1)}`;
+      const against = axisTitle === THETA_AXIS ? 'θ' : `the ${axisTitle.charAt(0).toLowerCase()}${axisTitle.slice(1)}`;
       caption.textContent = `${curve.label} against ${against}; the true angle is ${truth.toFixed(2)}°${committed ? `, yours ${value.toFixed(1)}°` : ''}.`;
     },
   };
