@@ -2,7 +2,7 @@
 // incidence: exact conductor Fresnel beside Schlick's approximation with the channel's own F0,
 // their largest difference, and the dip of the exact curve below F0 near grazing, which Schlick
 // (rising from F0 to 1 monotonically) cannot show. Every value comes from fresnel.js.
-import { conductorNormalIncidence, fresnelConductor, fresnelSchlick } from './fresnel.js';
+import { conductorNormalIncidence, fresnelConductor, fresnelConductorPolarized, fresnelSchlick } from './fresnel.js';
 import { cosDeg } from './angles.js';
 import { refinedMax } from './refinedMax.js';
 
@@ -52,19 +52,24 @@ export function metalCurves(metal, count = 361) {
 /**
  * Per channel of `metal` (the one the curves are of): F0, the largest |exact − Schlick| and its
  * angle, and the lowest exact value with its angle, each refined off the grid (refinedMax.js);
- * `dip` is how far that lowest value lies below F0 (0 when the curve never drops).
+ * `dip` is how far that lowest value lies below F0 (0 when the curve never drops); `principal`, the
+ * principal (pseudo-Brewster) angle where Rp is least, which a conductor has instead of Brewster's
+ * Rp = 0 (Born & Wolf, Principles of Optics, 7th ed., §14.4.1).
  */
 export function metalCurveStats({ theta, f0, exact, error }, metal) {
   return CHANNELS.map((name, ch) => {
     const F = (t) => fresnelConductor(cosDeg(t), metal.n[ch], metal.k[ch]);
     const worst = refinedMax(theta, error[ch], (t) => Math.abs(F(t) - schlickForF0(cosDeg(t), f0[ch])));
     const low = refinedMax(theta, exact[ch].map((v) => -v), (t) => -F(t));
+    const Rp = (t) => fresnelConductorPolarized(cosDeg(t), metal.n[ch], metal.k[ch]).p;
+    const leastRp = refinedMax(theta, theta.map((t) => -Rp(t)), (t) => -Rp(t));
     return {
       channel: name,
       f0: f0[ch],
       maxError: worst,
       minimum: { value: -low.value, theta: low.theta },
       dip: Math.max(0, f0[ch] - -low.value),
+      principal: { theta: leastRp.theta, rp: -leastRp.value },
     };
   });
 }

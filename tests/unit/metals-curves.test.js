@@ -70,3 +70,45 @@ describe('metal curves', () => {
     expect(stat.maxError.theta).toBeGreaterThan(80); // dielectric Schlick errs most near 85°
   });
 });
+
+describe('where the lecture\'s "almost no Fresnel factor" falls short', async () => {
+  const { metalsLectureGap, channelsAt, NEUTRAL } = await import('../../src/panels/metals/lectureGap.js');
+  const { metals } = await import('../../src/optics/materials.js');
+  const { fresnelConductorPolarized } = await import('../../src/optics/fresnel.js');
+  const stats = (m) => metalCurveStats(metalCurves(m), m);
+  it('gold: from 0.96, 0.79, 0.41 head-on to 0.99, 0.98, 0.94 at 89°, its tint fading', () => {
+    const gold = metalById('gold');
+    const text = metalsLectureGap(gold, stats(gold));
+    const [head, grazing] = [channelsAt(gold, 0), channelsAt(gold, 89)];
+    expect(head.map((x) => x.toFixed(2))).toEqual(['0.96', '0.79', '0.41']);
+    expect(grazing.map((x) => x.toFixed(2))).toEqual(['0.99', '0.98', '0.94']);
+    expect(text).toContain('0.96, 0.79, 0.41 at 0°, 0.99, 0.98, 0.94 at 89°');
+    expect(text).toContain('tint fades towards white');
+    expect(text).toContain('by up to 0.007, red, near 70°');
+  });
+  it('iron: green and blue fall to about 0.49 near 65–70°; silver, aluminium and iron are nearly neutral', () => {
+    const iron = stats(metalById('iron'));
+    expect(iron[1].minimum.value).toBeCloseTo(0.49, 2);
+    expect(iron[2].minimum.value).toBeCloseTo(0.49, 1);
+    for (const s of iron.slice(1)) expect(s.minimum.theta > 63 && s.minimum.theta < 70).toBe(true);
+    for (const id of ['silver', 'aluminium', 'iron']) {
+      const m = metalById(id);
+      expect(metalsLectureGap(m, stats(m)), id).toContain('nearly neutral at every angle');
+      expect(Math.max(...channelsAt(m, 0)) - Math.min(...channelsAt(m, 0))).toBeLessThan(NEUTRAL);
+    }
+    for (const id of ['gold', 'copper']) expect(metalsLectureGap(metalById(id), stats(metalById(id))), id).toContain('tint fades');
+  });
+  it('every metal rises towards 1 at grazing in every channel, and has a principal angle where Rp is least', () => {
+    for (const m of metals) {
+      const grazing = channelsAt(m, 89.9);
+      for (let ch = 0; ch < 3; ch += 1) expect(grazing[ch]).toBeGreaterThan(channelsAt(m, 0)[ch]);
+      for (const [ch, s] of stats(m).entries()) {
+        // No angle on a 0.01° grid has a smaller Rp than the refined principal angle's.
+        for (let t = 0; t <= 90; t += 0.01) {
+          expect(fresnelConductorPolarized(Math.cos(t * DEG), m.n[ch], m.k[ch]).p).toBeGreaterThanOrEqual(s.principal.rp - 1e-12);
+        }
+        expect(s.principal.theta > 60 && s.principal.theta < 85, `${m.id} ${ch}`).toBe(true);
+      }
+    }
+  });
+});

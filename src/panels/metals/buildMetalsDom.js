@@ -4,6 +4,7 @@
 import { linearToHex } from '../../ui/srgb.js';
 import { el } from '../../ui/el.js';
 import { scrollBox } from '../../ui/scrollBox.js';
+import { lectureNote } from '../../ui/lectureNote.js';
 
 /** CSS colour of a linear RGB reflectance. */
 export function swatchColor(rgb) {
@@ -20,7 +21,7 @@ const CHANNEL_NAMES = ['Red', 'Green', 'Blue'];
 export function buildMetalsDom(host, metals, onPick) {
   const swatchRow = el('div', 'mt-swatches');
   swatchRow.setAttribute('role', 'group');
-  swatchRow.setAttribute('aria-label', 'F0 per material (linear reflectance, red green blue); pick a metal');
+  swatchRow.setAttribute('aria-label', 'F0 per material (linear reflectance sampled at 650, 550 and 450 nm: red, green, blue); pick a metal');
   // Three numbers that wrap as a group when a swatch is narrow (text stays "0.956 0.792 0.408").
   const fillNumbers = (node, rgb) => {
     const parts = rgb.map((v) => el('span', '', v.toFixed(3)));
@@ -53,7 +54,7 @@ export function buildMetalsDom(host, metals, onPick) {
 
   const table = el('table', 'mt-table');
   const head = el('tr');
-  for (const text of ['Channel', 'n + ik', 'F0', 'Max |exact − Schlick|', 'Lowest exact R (below F0)']) {
+  for (const text of ['Channel', 'n + ik', 'F0', 'Max |exact − Schlick|', 'Lowest exact R (below F0)', 'Principal angle (Rp least)']) {
     const th = el('th', '', text);
     th.scope = 'col';
     head.append(th);
@@ -64,10 +65,20 @@ export function buildMetalsDom(host, metals, onPick) {
 
   const plotHost = el('div', 'mt-plot');
   plotHost.setAttribute('aria-label', 'Reflectance against angle per colour channel: exact (solid) and Schlick (dashed)');
-  host.append(swatchRow, scrollBox(table, 'Table of the metal’s channels'), plotHost);
+  // F0 here is the reflectance at three wavelengths, not a colour integrated over the spectrum.
+  const sampled = el('p', 'mt-sampled', 'F0 is sampled at 650, 550 and 450 nm as red, green and blue: '
+    + 'a linear reflectance at three wavelengths, not an sRGB reflectance integrated over each primary '
+    + '(for gold Real-Time Rendering, 4th ed., Table 9.2, gives about 1.00, 0.78, 0.34 in linear sRGB).');
+  host.append(swatchRow, sampled);
+  const note = lectureNote(host);
+  host.append(scrollBox(table, 'Table of the metal’s channels'), plotHost);
 
   return {
     plotHost,
+    /** The note on the lecture's "almost no Fresnel factor" (lectureGap.js) and its source. */
+    setNote(text, source) {
+      note.set(text, source);
+    },
     /** Dielectric swatch (grey F0), and which metal is chosen. */
     setSwatches({ n, f0 }, metalId) {
       dielectricChip.style.background = swatchColor([f0, f0, f0]);
@@ -88,7 +99,8 @@ export function buildMetalsDom(host, metals, onPick) {
           : 'none: never below F0';
         row.append(name, el('td', '', `${metal.n[ch].toFixed(3)} + ${metal.k[ch].toFixed(3)}i`),
           el('td', '', s.f0.toFixed(4)),
-          el('td', '', `${s.maxError.value.toFixed(4)} at ${s.maxError.theta.toFixed(2)}°`), el('td', '', dip));
+          el('td', '', `${s.maxError.value.toFixed(4)} at ${s.maxError.theta.toFixed(2)}°`), el('td', '', dip),
+          el('td', '', `${s.principal.theta.toFixed(2)}° (Rp = ${s.principal.rp.toFixed(3)})`));
         return row;
       }));
     },

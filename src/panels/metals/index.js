@@ -2,7 +2,9 @@
 // Panel `metals`: a dielectric and a conductor side by side (lecture, "Fresnel reflection and
 // materials"). The metal's index is complex, n + ik, per RGB channel, so its F0 is high and
 // coloured; its exact reflectance is compared with Schlick's on the channel's own F0, and near
-// grazing the exact curve dips below F0, which Schlick cannot do.
+// grazing the exact curve dips below F0, which Schlick cannot do, then rises to 1: a metal has a
+// Fresnel factor too, and a note beside the panel says where the lecture's "almost no Fresnel
+// factor" falls short (lectureGap.js).
 import { cosDeg } from '../../optics/angles.js';
 import { fresnelConductor, fresnelExact, normalIncidence } from '../../optics/fresnel.js';
 import { metalById, metalF0, metals } from '../../optics/materials.js';
@@ -11,6 +13,7 @@ import { createAudioTrace } from '../../ui/createAudioTrace.js';
 import { createLinePlot } from '../../ui/createLinePlot.js';
 import { createTwinStage } from '../shared/createTwinStage.js';
 import { buildMetalsDom } from './buildMetalsDom.js';
+import { SOURCE, metalsLectureGap } from './lectureGap.js';
 import fragment from './metals.frag.glsl?raw';
 import './styles.css';
 import { schema } from './schema.js';
@@ -41,7 +44,7 @@ export function mount(root, ctx) {
     onFrame: ctx.frameDrawn,
     cache: { live: ['uN'] }, // the dielectric's index redraws its F alone (metals.frag.glsl)
     ariaLabel: 'First, a dielectric sphere, dark head-on and bright only at its rim; second, a metal sphere that '
-      + 'reflects most of the light at every angle, tinted by its colour.',
+      + 'reflects much of the light head-on, tinted by its F0, and more towards its rim.',
     fallback: 'The spheres need WebGL2; the swatches, table and plot below still work.',
   });
   stage.setLight(SUN.azimuth, SUN.elevation);
@@ -92,6 +95,7 @@ export function mount(root, ctx) {
         label: `${SHORT[s.channel]} dips ${s.dip.toFixed(3)} below F0`,
       })));
       dom.setTable(metal, stats);
+      dom.setNote(metalsLectureGap(metal, stats), SOURCE);
       trace.refresh();
     }
     const dielectricF0 = normalIncidence(1, values.nT);
