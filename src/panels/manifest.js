@@ -27,9 +27,9 @@ export const PANELS = Object.freeze([
     id: 'spheres',
     hero: true,
     title: "Exact Fresnel vs Schlick's approximation",
-    lede: `Each sphere is a diffuse surface under a clear coat: the coat reflects the fraction F of the light,
-        the diffuse layer gets the rest, k = (1 − F)·k<sub>d</sub> + F·k<sub>s</sub>.
-        Left, F is the exact Fresnel reflectance; middle, Schlick's cheap polynomial; right, how far apart they are.
+    lede: `Each sphere is shaded with the lecture's coat model, k = (1 − F)·k<sub>d</sub> + F·k<sub>s</sub>: a diffuse colour
+        and a mirrored sky weighed by one F at the view angle (a heuristic; Fresnel in lighting below shows how a layered
+        coat differs). The first sphere takes the exact Fresnel reflectance, the second Schlick's cheap polynomial, the third shows how far apart they are.
         Both agree head-on and part near the rim, where the view grazes the surface.
         Swap the indices to look out of the glass: past the critical angle all light is reflected, and Schlick misses it.`,
     cite: 'Lecture: “Reflection Math”, “Fresnel Reflection in Lighting”.',
@@ -152,8 +152,9 @@ export const PANELS = Object.freeze([
   {
     id: 'fresnel-lighting',
     title: 'Fresnel reflection in lighting',
-    lede: `A diffuse surface under a shiny coat: the coat reflects F of the light and the diffuse layer the rest,
-        k = mix(k<sub>d</sub>, k<sub>s</sub>, F). Compare with a constant k<sub>s</sub>, and copy the GLSL.`,
+    lede: `The lecture's model of a diffuse surface under a shiny coat weighs the two by F at the view angle,
+        k = mix(k<sub>d</sub>, k<sub>s</sub>, F). Compare with a constant k<sub>s</sub>, copy the GLSL, and switch to the
+        layered coat to see what the heuristic leaves out.`,
     cite: 'Lecture: “Fresnel Reflection in Lighting”.',
     webgl: true,
     material: 'nT',
@@ -161,8 +162,11 @@ export const PANELS = Object.freeze([
   {
     id: 'metals',
     title: 'Dielectrics vs metals',
-    lede: `Plastic, glass and paint reflect a few percent head-on and almost everything at grazing. Metals reflect most of
-        the light at every angle, with a colour: their index is complex, n + ik, and differs per wavelength.`,
+    lede: `Plastic, glass and paint reflect a few per cent head-on and more only towards grazing. A metal's index is
+        complex, n + ik, and differs per wavelength: head-on it reflects far more (about half the light or more for the metals
+        here), with a colour for gold and copper, nearly neutral for silver, aluminium and iron. It still has a Fresnel
+        factor: towards grazing its R dips a little below F0, then rises to 1 in every channel, and a coloured metal's
+        tint fades to white.`,
     cite: 'Lecture: “Fresnel Reflection and Materials”.',
     webgl: true,
     material: 'nT',

@@ -46,3 +46,63 @@ describe('two-sphere stage geometry', () => {
     expect(viewAngleAt(edge * 1.01)).toBeNull();
   });
 });
+
+describe('the layered coat beside the lecture\'s mix', async () => {
+  const { coatConstants, diffuseShares, layeredCoat, lectureCoat } = await import('../../src/panels/fresnel-lighting/model.js');
+  const { hemisphericalReflectance } = await import('../../src/optics/diffuseFresnel.js');
+  const { fresnelExact } = await import('../../src/optics/fresnel.js');
+  it('diffuse reflectance: 0.60 under a coat of 1.5, 0.09 from the air, and 1 − r_in = (1 − r_out)/n²', () => {
+    // Egan & Hilgeman's fit, F_dr(η) = −1.440/η² + 0.710/η + 0.668 + 0.0636η (Jensen et al., SIGGRAPH 2001, eq. 5).
+    const fit = (eta) => -1.44 / eta ** 2 + 0.71 / eta + 0.668 + 0.0636 * eta;
+    for (const n of [1.33, 1.5, 1.7]) {
+      const inside = hemisphericalReflectance(n, 1);
+      const outside = hemisphericalReflectance(1, n);
+      expect(Math.abs(inside - fit(n)), `${n}`).toBeLessThan(0.006);
+      expect(1 - inside).toBeCloseTo((1 - outside) / (n * n), 12);
+    }
+    expect(hemisphericalReflectance(1.5, 1)).toBeCloseTo(0.5963, 4);
+    expect(hemisphericalReflectance(1.5, 1.5)).toBe(0);
+    // By brute force: a 20,000-step midpoint sum of 2R(μ)μ.
+    let sum = 0;
+    for (let i = 0; i < 20000; i += 1) { const mu = (i + 0.5) / 20000; sum += 2 * fresnelExact(mu, 1.5, 1) * mu / 20000; }
+    expect(hemisphericalReflectance(1.5, 1)).toBeCloseTo(sum, 5);
+  });
+  it('with no coat (n = 1) the layered model is the bare base, as the lecture\'s is', () => {
+    const { ri, re } = coatConstants(1);
+    expect(ri).toBe(0);
+    expect(re).toBe(0);
+    const v = { albedo: 0.4, sun: 0.7, sky: 0.2, ks: 0.9, cosV: 0.6, cosL: 0.7, n: 1, ri, re };
+    expect(layeredCoat(v)).toBeCloseTo(0.4 * (0.7 + 0.2), 14);
+    expect(lectureCoat({ kd: 0.4 * 0.9, ks: 0.9, cosV: 0.6, n: 1 })).toBeCloseTo(0.36, 14);
+  });
+  it('a coated base that is not near white lets out less of its diffuse light than the lecture\'s mix; energy is kept', () => {
+    const { ri } = coatConstants(1.5);
+    // Light bouncing under the coat (1/(1 − albedo·ri)) makes up for the losses only on a near-white base.
+    expect(diffuseShares({ albedo: 1, cosV: 1, cosL: 1, n: 1.5, ri }).layered).toBeGreaterThan(0.96);
+    for (const albedo of [0, 0.2, 0.5, 0.7]) {
+      for (const cosV of [1, 0.5, 0.1]) {
+        const s = diffuseShares({ albedo, cosV, cosL: 1, n: 1.5, ri });
+        expect(s.layered).toBeLessThan(s.lecture);
+        expect(s.layered).toBeGreaterThan(0);
+      }
+    }
+    // Head-on under an overhead sun, base albedo 0.5: (1 − 0.04)² / (2.25 (1 − 0.5·0.5963)).
+    const s = diffuseShares({ albedo: 0.5, cosV: 1, cosL: 1, n: 1.5, ri });
+    expect(s.layered).toBeCloseTo((0.96 * 0.96) / (2.25 * (1 - 0.5 * hemisphericalReflectance(1.5, 1))), 12);
+    expect(s.lecture).toBeCloseTo(0.96, 12);
+    // Energy: the coated white base under a white sky reflects at most what arrives (albedo 1: all of it).
+    const { re } = coatConstants(1.5);
+    let out = 0;
+    const N = 2000;
+    for (let i = 0; i < N; i += 1) {
+      const mu = (i + 0.5) / N;
+      const fV = fresnelExact(mu, 1, 1.5);
+      out += 2 * mu * (layeredCoat({ albedo: 1, sun: 0, sky: 1, ks: 0, cosV: mu, cosL: 1, n: 1.5, ri, re }) + fV) / N;
+    }
+    expect(out).toBeCloseTo(1, 3); // sky in = diffuse out + mirrored sky (a white sky is uniform)
+  });
+  it('the GLSL shows the layered lines the model twins', () => {
+    expect(MIX_GLSL).toContain('vec3 kLayered = fV * ks + (1.0 - fV) / (n * n)');
+    expect(MIX_GLSL).toContain('* albedo * ((1.0 - fresnelExact(cosL, 1.0, n)) * sun + (1.0 - re) * sky) / (1.0 - albedo * ri);');
+  });
+});

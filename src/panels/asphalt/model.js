@@ -4,6 +4,7 @@
 import { fresnelExact, normalIncidence } from '../../optics/fresnel.js';
 import { microfacetSpecular, smithG2 } from '../../optics/microfacet.js';
 import { DEG } from '../../optics/angles.js';
+import { luminance } from '../../optics/luminance.js';
 import { refinedMax } from '../../optics/refinedMax.js';
 
 
@@ -16,10 +17,6 @@ export const SCENE = {
   exposure: 2.5, // scene-to-display scale before the tone curve 1 − exp(−x)
 };
 
-/** Relative luminance of linear Rec. 709 RGB (ITU-R BT.709 weights). */
-export function luminance([r, g, b]) {
-  return 0.2126 * r + 0.7152 * g + 0.0722 * b;
-}
 
 const SUN_Y = luminance(SCENE.sun);
 const AMBIENT_Y = luminance(SCENE.ambient);

@@ -2,7 +2,9 @@
 // Panel `fresnel-lighting`: a diffuse sphere under a shiny coat, k = mix(kd, ks, F) (lecture,
 // "Fresnel reflection in lighting"), beside the same sphere with a constant weight w. Only the
 // Fresnel sphere's rim turns toward ks. F is taken at the view angle N·V (for a mirror coat the
-// half vector is N, so V·H = N·V). The GLSL under the picture is the file the shader includes.
+// half vector is N, so V·H = N·V). The lecture's mix is a heuristic; "Layered coat" shades the same
+// sphere as a base under a clear coat (model.js), and a note says how the two differ. The GLSL
+// under the picture is the file the shader includes.
 import { hexToLinear } from '../../ui/srgb.js';
 import { assembleShader } from '../../gl/shaderChunks.js';
 import { cosDeg } from '../../optics/angles.js';
@@ -18,8 +20,15 @@ import './styles.css';
 import { schema } from './schema.js';
 import { addDielectricTrace } from '../shared/dielectricTrace.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
+import { lectureNote } from '../../ui/lectureNote.js';
+import { fixed } from '../../ui/format.js';
+import { luminance } from '../../optics/luminance.js';
+import { coatConstants, diffuseShares } from './model.js';
 
-const METHOD_NAMES = { exact: 'exact Fresnel', schlick: "Schlick's approximation" };
+const METHOD_NAMES = { exact: 'exact Fresnel', schlick: "Schlick's approximation", layered: 'the layered coat, exact F' };
+const METHOD_CODES = { exact: 0, schlick: 1, layered: 2 };
+const COAT_SOURCE = 'Kelemen & Szirmay-Kalos, Eurographics 2001 short papers; Weidlich & Wilkie, GRAPHITE 2007; '
+  + 'Pharr, Jakob & Humphreys, Physically Based Rendering, 4th ed., §14.3 (CoatedDiffuse)';
 
 export { schema };
 
@@ -32,7 +41,7 @@ const RIM_DEG = 80; // the angle quoted for the rim
 /** F at θ (degrees) on the Fresnel sphere, from the float64 reference (light from air into the coat). */
 function weightAt(thetaDeg, nT, method) {
   const c = cosDeg(thetaDeg);
-  return method === 'exact' ? fresnelExact(c, 1, nT) : fresnelSchlick(c, 1, nT);
+  return method === 'schlick' ? fresnelSchlick(c, 1, nT) : fresnelExact(c, 1, nT);
 }
 
 /** Copies text; where the clipboard API is refused, selects the code so Ctrl+C works. */
@@ -61,7 +70,7 @@ export function mount(root, ctx) {
   root.append(panel);
   const uniforms = {
     uKd: { value: [0, 0, 0] }, uKs: { value: [0, 0, 0] }, uN: { value: 1.5 },
-    uWeight: { value: 0.04 }, uMethod: { value: 0 },
+    uWeight: { value: 0.04 }, uMethod: { value: 0 }, uRi: { value: 0 }, uRe: { value: 0 },
   };
   const stage = createTwinStage(panel, {
     fragment: FRAGMENT,
@@ -86,6 +95,7 @@ export function mount(root, ctx) {
   const lines = MIX_GLSL.split('\n').map((line) => el('span', '', line));
   lines.forEach((line, i) => code.append(...(i ? ['\n', line] : [line])));
   pre.append(code);
+  const note = lectureNote(panel);
   panel.append(summary, plotHost, codeHead, pre);
 
   const plot = createLinePlot(plotHost, {
@@ -111,34 +121,58 @@ export function mount(root, ctx) {
 
   let curves = null;
   let curvesN = null;
+  let layers = null; // ri and re of the coat (model.js)
   function update() {
     const { nT, method, weight } = values;
     if (nT !== curvesN) {
       curvesN = nT;
       curves = reflectanceCurves(1, nT);
+      layers = coatConstants(nT);
       trace.refresh();
     }
+    // Head-on under an overhead sun, for a base as bright as kd: how much of its diffuse light each model lets out.
+    const albedo = luminance(hexToLinear(values.kd));
+    const shares = diffuseShares({ albedo, cosV: 1, cosL: 1, n: nT, ri: layers.ri });
+    note.set(`The lecture's k = mix(kd, ks, F) is a heuristic: it weighs the diffuse layer by one F, taken at the view `
+      + `angle, although the light entered at the light's angle, and it loses nothing inside the coat. A diffuse base `
+      + `under a clear coat of n = ${nT} receives 1 − F(θl) of the sunlight, lets out 1 − F(θv) of what it reflects, `
+      + `spread over a wider cone (1/n²), and the coat's underside sends ${fixed(layers.ri, 2)} of that diffuse light back `
+      + `to the base. Head-on, under an overhead sun, the lecture's model lets out ${fixed(shares.lecture, 2)} of this kd's `
+      + `diffuse light, the layered coat ${fixed(shares.layered, 2)}`
+      + `${shares.layered < shares.lecture ? ': the coated surface looks darker' : ' (light bouncing under the coat makes up for the losses on a bright base)'}. `
+      + `"Layered coat" shows it on the same sphere.`, COAT_SOURCE);
     plot.setData([curves.theta, curves.exact, curves.schlick, curves.theta.map(() => weight)]);
     plot.setMarks([thetaMark(RIM_DEG, `${RIM_DEG}°`)]);
     const rim = weightAt(RIM_DEG, nT, method);
     summary.replaceChildren(...[
-      ['F(0°) = R0', normalIncidence(1, nT).toFixed(4)],
-      [`F(${RIM_DEG}°) ${method === 'exact' ? 'exact' : 'Schlick'}`, rim.toFixed(4)],
-      ['Constant w', `${weight.toFixed(3)} at every angle`],
+      ['F(0°) = R0', fixed(normalIncidence(1, nT), 4)],
+      [`F(${RIM_DEG}°) ${method === 'schlick' ? 'Schlick' : 'exact'}`, fixed(rim, 4)],
+      ['Constant w', `${fixed(weight, 3)} at every angle`],
+      ...(method === 'layered' ? [
+        ['Coat underside reflects', `${fixed(layers.ri, 4)} of diffuse light`],
+        ['Diffuse let out head-on', `${fixed(shares.layered, 3)} (lecture: ${fixed(shares.lecture, 3)})`],
+      ] : []),
     ].map(([term, value]) => {
       const wrap = el('div');
       wrap.append(el('dt', '', term), el('dd', '', value));
       return wrap;
     }));
-    const live = method === 'exact' ? 'kExact' : 'kSchlick';
-    for (const line of lines) line.classList.toggle('fl-live', line.textContent.startsWith(`vec3 ${live} `) || line.textContent.startsWith('vec3 kConstant '));
-    stage.setLabels([`k = mix(kd, ks, F), F ${method === 'exact' ? 'exact' : 'Schlick'}`, `k = mix(kd, ks, ${weight.toFixed(3)})`]);
+    const live = { exact: ['vec3 kExact '], schlick: ['vec3 kSchlick '], layered: ['float fV ', 'vec3 kLayered ', '  * albedo'] }[method];
+    for (const line of lines) {
+      line.classList.toggle('fl-live', [...live, 'vec3 kConstant '].some((start) => line.textContent.startsWith(start)));
+    }
+    stage.setLabels([
+      method === 'layered' ? 'Layered coat, F exact' : `k = mix(kd, ks, F), F ${method === 'exact' ? 'exact' : 'Schlick'}`,
+      `k = mix(kd, ks, ${fixed(weight, 3)})`,
+    ]);
     if (!stage.view) return;
     uniforms.uKd.value = hexToLinear(values.kd); // the control's hex is sRGB; the shader lights in linear
     uniforms.uKs.value = hexToLinear(values.ks);
     uniforms.uN.value = nT;
     uniforms.uWeight.value = weight;
-    uniforms.uMethod.value = method === 'exact' ? 0 : 1;
+    uniforms.uMethod.value = METHOD_CODES[method];
+    uniforms.uRi.value = layers.ri;
+    uniforms.uRe.value = layers.re;
     stage.setLight(values.lightAz, values.lightEl);
     stage.render();
   }
@@ -151,9 +185,13 @@ export function mount(root, ctx) {
     update,
     describe() {
       const { nT, method, weight } = values;
-      return `Fresnel sphere (first): k = mix(kd, ks, F), with F by ${METHOD_NAMES[method]} at the view angle N·V for a coat of n_t = ${nT}: `
-        + `F is ${weightAt(0, nT, method).toFixed(4)} at 0° and ${weightAt(RIM_DEG, nT, method).toFixed(4)} at ${RIM_DEG}°, so its rim turns toward ks. `
-        + `Other sphere (second): a constant weight w = ${weight.toFixed(3)} at every angle, so its rim keeps the same mix as its centre.`;
+      const model = method === 'layered'
+        ? `a diffuse base under a clear coat of n_t = ${nT} (the layered model: F at the light's and the view's angle, `
+          + `the coat's underside reflecting ${fixed(layers.ri, 3)} of the diffuse light back)`
+        : `k = mix(kd, ks, F), with F by ${METHOD_NAMES[method]} at the view angle N·V for a coat of n_t = ${nT}`;
+      return `Fresnel sphere (first): ${model}: `
+        + `F is ${fixed(weightAt(0, nT, method), 4)} at 0° and ${fixed(weightAt(RIM_DEG, nT, method), 4)} at ${RIM_DEG}°, so its rim turns toward ks. `
+        + `Other sphere (second): a constant weight w = ${fixed(weight, 3)} at every angle, so its rim keeps the same mix as its centre.`;
     },
     csv() {
       return {

@@ -4,7 +4,11 @@ import { transmittedIndex } from '../shared/indexPair.js';
 
 export const schema = {
   ...transmittedIndex({ what: 'coat', aliases: ['n'] }),
-  method: { type: 'enum', default: 'exact', options: { exact: 'Exact Fresnel', schlick: "Schlick's approximation" }, label: 'F on the Fresnel sphere' },
+  method: {
+    type: 'enum', default: 'exact',
+    options: { exact: 'Exact Fresnel', schlick: "Schlick's approximation", layered: 'Layered coat, exact F (beyond the lecture)' },
+    label: 'F on the Fresnel sphere',
+  },
   weight: { type: 'number', default: 0.04, min: 0, max: 1, step: 0.001, label: 'Constant ks weight w (other sphere)' },
   kd: { type: 'color', default: '#a3241c', label: 'kd (diffuse layer)' },
   ks: { type: 'color', default: '#ffffff', label: 'ks (coat)' },

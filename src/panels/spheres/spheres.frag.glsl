@@ -2,7 +2,8 @@
 // |exact − Schlick|), ray-cast analytically in one full-screen pass (trioCamera.js holds the same
 // camera in JS). Exact normals and silhouettes with no mesh; the silhouette is anti-aliased by its
 // coverage of the pixel, the background is the environment the spheres reflect. The sphere is a
-// coated diffuse surface, k = mix(kd, ks, F) (lecture, "Fresnel reflection in lighting").
+// coated diffuse surface, k = mix(kd, ks, F) (lecture, "Fresnel reflection in lighting"): the
+// lecture's heuristic, one F at the view angle; fresnel-lighting shows the layered coat beside it.
 precision highp float;
 #include <fresnel>
 #include <environment>
