@@ -40,6 +40,9 @@ function schlickWorstCodes() {
 }
 const codesText = (codes) => (codes < 0.005 ? 'less than 0.01 codes' : `${fixed(codes, 2)} codes`);
 
+/** Indices whose rims the rim-scaling explanation compares. */
+const RIM_INDICES = [1.33, 1.5, 2];
+
 export const FRESNEL_QUESTIONS = [
   {
     id: 'r0-materials', panel: 'refractive-index', kind: 'choice',
@@ -169,7 +172,8 @@ export const FRESNEL_QUESTIONS = [
       {
         id: 'energy', text: () => 'No: F is a fraction of the light; scaled, it exceeds 1 near grazing and breaks energy conservation.',
         holds: (p) => 2 * fresnelExact(cosDeg(85), 1, p.nT) > 1,
-        why: (p) => `Right: 2·F(85°) = ${fixed(2 * fresnelExact(cosDeg(85), 1, p.nT), 3)} > 1. Change the light or the index instead.`,
+        why: (p) => `Right: 2·F(85°) = ${fixed(2 * fresnelExact(cosDeg(85), 1, p.nT), 3)} > 1. Brighten the light or the environment instead; `
+          + `the index barely moves the rim (F(85°) = ${RIM_INDICES.map((n) => fixed(fresnelExact(cosDeg(85), 1, n), 2)).join(', ')} for n = ${RIM_INDICES.join(', ')}).`,
       },
     ],
     state: (p) => ({ nT: p.nT }),

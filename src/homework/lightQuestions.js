@@ -9,7 +9,7 @@ import { phongHighlights } from '../optics/phong.js';
 import { transmittedAngle } from '../optics/waves.js';
 import { toksvigExponent, toksvigFactor } from '../normals/lobeFormulas.js';
 import { INDICES, fixed } from './questionParts.js';
-import { angleOfMax, angleWhere } from './solveAngle.js';
+import { angleOfMax, angleWhere } from '../optics/solveAngle.js';
 import { highlightInView } from '../panels/asphalt/model.js';
 
 const reflectance = (nI, nT) => (t) => fresnelExact(cosDeg(t), nI, nT);

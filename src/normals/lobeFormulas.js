@@ -2,7 +2,9 @@
 // α is the GGX/Beckmann roughness (α = perceptual roughness², Burley, "Physically Based Shading
 // at Disney", SIGGRAPH 2012), s the Blinn-Phong exponent. For small values every isotropic
 // method is α'² ≈ α² + 2v with v the per-axis slope variance (derived: the small-variance limit
-// of each formula below).
+// of each formula below). Adding variances is exact for Beckmann, whose slopes are Gaussian (a
+// Gaussian blurred by a Gaussian stays one), and the normal-mips panel shades with Beckmann; GGX's
+// slope distribution has no finite variance, so for GGX the same sum is a heuristic fit.
 
 /** s = 2/α² − 2 (the Phong–Beckmann correspondence of Walter et al., "Microfacet Models for
  * Refraction through Rough Surfaces", EGSR 2007). */

@@ -6,7 +6,10 @@ import { SPEED_OF_LIGHT_KM_S } from './waves.js';
 
 export const SORT_KEYS = ['name', 'n', 'speed', 'r0', 'critical', 'source'];
 
-/** One table row: n, speed c/n (fraction of c and km/s), R0 from air, critical angle to air (degrees). */
+/**
+ * One table row: n, phase speed c/n (fraction of c and km/s), group speed c/n_g in km/s (null
+ * without dispersion data), R0 from air, critical angle to air (degrees).
+ */
 export function materialRow(material) {
   const s = dielectricSummary(material);
   return {
@@ -16,6 +19,7 @@ export function materialRow(material) {
     source: s.source,
     speed: s.speed,
     speedKmS: SPEED_OF_LIGHT_KM_S * s.speed,
+    groupSpeedKmS: s.groupSpeed === null ? null : SPEED_OF_LIGHT_KM_S * s.groupSpeed,
     r0: s.r0,
     critical: s.criticalAngle === null ? null : toDegrees(s.criticalAngle),
   };

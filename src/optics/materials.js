@@ -33,12 +33,33 @@ export function metalById(id) {
   return metals.find((m) => m.id === id) ?? null;
 }
 
-/** Table row for a dielectric seen from air: speed c/n (as a fraction of c), R0, critical angle. */
+/**
+ * The group index n_g = n − λ dn/dλ at 589 nm, the speed of a pulse being c/n_g (Hecht, Optics,
+ * 5th ed., §7.2), with dn/dλ the slope at 589 nm of the parabola through the data at 550, 589 and
+ * 650 nm. Null where the data has no dispersion (one wavelength, or the same n at all of them).
+ */
+export function groupIndex(spectrum) {
+  const [a, b, c] = ['550', REFERENCE_NM, '650'].map((nm) => spectrum?.[nm]);
+  if (![a, b, c].every((v) => typeof v === 'number') || (a === b && b === c)) return null;
+  const [x0, x1, x2] = [550, 589, 650];
+  // Derivative at x1 of the Lagrange parabola through (x0, a), (x1, b), (x2, c).
+  const slope = (a * (x1 - x2)) / ((x0 - x1) * (x0 - x2))
+    + (b * (2 * x1 - x0 - x2)) / ((x1 - x0) * (x1 - x2))
+    + (c * (x1 - x0)) / ((x2 - x0) * (x2 - x1));
+  return b - x1 * slope;
+}
+
+/**
+ * Table row for a dielectric seen from air: the phase speed c/n and, where the data has dispersion,
+ * the group speed c/n_g (as fractions of c), R0, critical angle.
+ */
 export function dielectricSummary(material, outside = 1) {
   const n = material.n;
+  const ng = groupIndex(material.spectrum);
   return {
     ...material,
     speed: 1 / n,
+    groupSpeed: ng === null ? null : 1 / ng,
     r0: normalIncidence(outside, n),
     criticalAngle: criticalAngle(n, outside),
   };

@@ -39,10 +39,10 @@ export const PANELS = Object.freeze([
   {
     id: 'normal-mips',
     title: 'Mipmapping normal maps',
-    lede: `A mipmap level stores the average of the texels below it. For colours that is right; for normals it is not:
-        averaging unit normals that point different ways gives a shorter vector, and renormalizing it throws away the
-        spread that made the surface look rough. Far away, a bumpy surface turns too shiny. Compare how each technique
-        keeps that spread against the ground truth, with numbers.`,
+    lede: `A mipmap level stores the average of the texels below it. For colours stored in linear space that is right;
+        for normals it is not: averaging unit normals that point different ways gives a shorter vector, and renormalizing
+        it throws away the spread that made the surface look rough. Far away, a bumpy surface turns too shiny. Compare how
+        each technique keeps that spread against the ground truth, with numbers.`,
     cite: 'Lecture agenda: “Mipmapping normal maps”; Toksvig 2005, Olano &amp; Baker 2010.',
     webgl: true,
     material: null,
@@ -84,8 +84,9 @@ export const PANELS = Object.freeze([
   {
     id: 'refraction-waves',
     title: 'Wave theory: why light bends',
-    lede: `Light travels at c/n in a material of index n. When a wavefront crosses into a slower medium, the part that
-        enters first slows first, so the front turns: Snell's law, n<sub>i</sub> sin θ<sub>i</sub> = n<sub>t</sub> sin θ<sub>t</sub>.
+    lede: `In a material of index n the crests of a light wave travel at c/n (the phase speed; a pulse travels a little
+        slower, at c/n<sub>g</sub>). When a wavefront crosses into a slower medium, the part that enters first slows first,
+        so the front turns: Snell's law, n<sub>i</sub> sin θ<sub>i</sub> = n<sub>t</sub> sin θ<sub>t</sub>.
         Going into a faster medium past the critical angle, no transmitted wave can match the front, and all of it is reflected.`,
     cite: 'Lecture: “Wave Theory – Refraction”.',
     webgl: true,
@@ -104,9 +105,11 @@ export const PANELS = Object.freeze([
   {
     id: 'refractive-index',
     title: 'Fresnel reflection: the refractive index',
-    lede: `The refractive index n is the ratio of the speed of light in a vacuum to its speed in the material; glass is
-        about 1.5. It alone sets how much a dielectric reflects head-on (R0) and the angle past which light cannot get
-        out (the critical angle). Pick a row to use that material in every panel.`,
+    lede: `The refractive index n is the ratio of the speed of light in a vacuum to its phase speed in the material;
+        glass is about 1.5. How much a dielectric reflects head-on (R0) and the angle past which light cannot get out
+        (the critical angle) depend on the ratio of the indices on the two sides, n<sub>t</sub>/n<sub>i</sub>, not on n
+        alone: glass of 1.5 reflects 0.04 head-on in air but 0.0035 under water. The table gives both with air on the
+        other side. Pick a row to use that material in every panel.`,
     cite: 'Lecture: “Fresnel Reflection”.',
     webgl: false,
     material: null,
@@ -163,8 +166,8 @@ export const PANELS = Object.freeze([
     id: 'metals',
     title: 'Dielectrics vs metals',
     lede: `Plastic, glass and paint reflect a few per cent head-on and more only towards grazing. A metal's index is
-        complex, n + ik, and differs per wavelength: head-on it reflects far more (about half the light or more for the metals
-        here), with a colour for gold and copper, nearly neutral for silver, aluminium and iron. It still has a Fresnel
+        complex, n + ik, and differs per wavelength: head-on it reflects far more (from 0.41 to 0.99 of the light per channel for the
+        metals here), with a colour for gold and copper, nearly neutral for silver, aluminium and iron. It still has a Fresnel
         factor: towards grazing its R dips a little below F0, then rises to 1 in every channel, and a coloured metal's
         tint fades to white.`,
     cite: 'Lecture: “Fresnel Reflection and Materials”.',

@@ -53,3 +53,22 @@ describe('interfaceSplit (angle-ratio panel)', () => {
     expect(R.at(-1)).toBe(1);
   });
 });
+
+describe('the stone-skipping analogy says how far it holds', async () => {
+  const { halfReflectedAngle, stoneAnalogy } = await import('../../src/panels/angle-ratio/analogy.js');
+  it('from air into glass light mostly reflects only past 82.8°: R = 0.39 at 80°, 0.56 at 84°', () => {
+    const half = halfReflectedAngle(1, 1.5);
+    expect(fresnelExact(cosDeg(half), 1, 1.5)).toBeCloseTo(0.5, 12);
+    expect(fresnelExact(cosDeg(half - 0.1), 1, 1.5)).toBeLessThan(0.5);
+    const text = stoneAnalogy(1, 1.5);
+    expect(text).toContain('only past 82.8° from the normal');
+    expect(text).toContain(`R = ${fresnelExact(cosDeg(80), 1, 1.5).toFixed(2)} at 80°, ${fresnelExact(cosDeg(84), 1, 1.5).toFixed(2)} at 84°`);
+    expect(text).toContain('R = 0.39 at 80°, 0.56 at 84°');
+    expect(text).toContain('not a stone that bounces');
+  });
+  it('from the denser side it points to total internal reflection, far from grazing; equal indices reflect nothing', () => {
+    expect(stoneAnalogy(1.5, 1)).toContain('critical angle, 41.8°, far from grazing');
+    expect(halfReflectedAngle(1.5, 1.5)).toBeNull();
+    expect(stoneAnalogy(1.5, 1.5)).toContain('nothing is reflected at any angle');
+  });
+});

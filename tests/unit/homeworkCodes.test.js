@@ -3,7 +3,7 @@ import { HAND_IN_PREFIX, handInFromText, handInToCode, makeHandIn, sheetFromCode
 import { readSheet } from '../../src/homework/readSheet.js';
 import { gradeHandIn } from '../../src/homework/gradeHandIn.js';
 import { readStartState } from '../../src/homework/readStartState.js';
-import { angleOfMax, angleWhere } from '../../src/homework/solveAngle.js';
+import { angleOfMax, angleWhere } from '../../src/optics/solveAngle.js';
 import { decimalsFor, formatValue } from '../../src/homework/formatAnswer.js';
 import { questionById } from '../../src/homework/questions.js';
 

@@ -49,3 +49,21 @@ describe('material rows (refractive-index panel)', () => {
     expect(formatIndex(1.3333)).toBe('1.3333');
   });
 });
+
+describe('phase and group speed', async () => {
+  const { groupIndex } = await import('../../src/optics/materials.js');
+  it('a pulse in water travels at about 222 000 km/s, slower than the phase speed c/n', () => {
+    const water = byId('water');
+    expect(formatKmS(water.groupSpeedKmS, 1000)).toBe('222\u202f000');
+    expect(water.groupSpeedKmS).toBeLessThan(water.speedKmS);
+    // n_g = n − λ dn/dλ: with a straight line through (550, a), (650, c) the slope is (c − a)/100.
+    const n589 = 1.3 - 39 * 1e-4; // on the line, 39 nm past 550
+    expect(groupIndex({ 550: 1.3, 589: n589, 650: 1.29 })).toBeCloseTo(n589 + 589 * 1e-4, 12);
+  });
+  it('no group speed where the data has no dispersion: one wavelength, or the same n at all (air)', () => {
+    expect(byId('air').groupSpeedKmS).toBeNull();
+    expect(byId('skin').groupSpeedKmS).toBeNull();
+    expect(customRow(1.7).groupSpeedKmS).toBeNull();
+    expect(byId('air').source).toContain('0 C');
+  });
+});

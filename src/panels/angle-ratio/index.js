@@ -8,6 +8,7 @@ import { setSubscripted } from '../../ui/subscripts.js';
 import { cssVar } from '../../ui/theme.js';
 import { addSwap } from '../shared/indexPair.js';
 import { buildAngleRatioDiagram, svgToPng } from './buildAngleRatioDiagram.js';
+import { stoneAnalogy } from './analogy.js';
 import './styles.css';
 import { schema } from './schema.js';
 
@@ -52,9 +53,7 @@ export function mount(root, ctx) {
   bars.append(rBar.row, tBar.row);
   const status = el('p', 'ar-status');
   status.setAttribute('aria-live', 'polite');
-  const analogy = el('p', 'ar-analogy',
-    'Think of skipping a stone: the flatter it meets the water, the more likely it bounces off instead of '
-    + 'going in, and light arriving at a grazing angle likewise mostly reflects.');
+  const analogy = el('p', 'ar-analogy');
   panel.append(figure, bars, status, analogy);
   root.append(panel);
 
@@ -92,6 +91,7 @@ export function mount(root, ctx) {
         + 'so there is no refracted ray and T = 0; all the light is reflected.'
       : `θ_i = ${theta.toFixed(1)}°, θ_t = ${split.thetaT.toFixed(2)}° (Snell's law). ${critical}`);
     panel.classList.toggle('ar-is-tir', split.tir);
+    analogy.textContent = stoneAnalogy(nI, nT);
     refreshPng();
   }
   update();

@@ -70,7 +70,7 @@ export function buildRefractionWavesDom(host, { onPlayToggle }) {
         ['Incidence θ_i', angle(s.thetaI)],
         ['Transmitted θ_t', s.thetaT === null ? 'none (total internal reflection)' : angle(s.thetaT)],
         ['Critical angle', s.critical === null ? 'none (n_i ≤ n_t)' : angle(s.critical)],
-        ['Speeds', `v_i = ${kmS(s.mI.speedKmS)}, v_t = ${kmS(s.mT.speedKmS)}`],
+        ['Phase speeds c/n', `v_i = ${kmS(s.mI.speedKmS)}, v_t = ${kmS(s.mT.speedKmS)}`],
         ['Reflected R', s.R.toFixed(4)],
         ['Transmitted T', s.T.toFixed(4)],
       ].map(([term, value]) => {

@@ -125,7 +125,7 @@ export function mount(root, ctx) {
     update,
     describe() {
       const { mI, mT } = state;
-      const media = `Above, n_i = ${state.nI}: wavelength ${mI.wavelength.toFixed(1)} nm and speed ${mI.speed.toFixed(3)} c; `
+      const media = `Above, n_i = ${state.nI}: wavelength ${mI.wavelength.toFixed(1)} nm and phase speed ${mI.speed.toFixed(3)} c; `
         + `below, n_t = ${state.nT}: ${mT.wavelength.toFixed(1)} nm and ${mT.speed.toFixed(3)} c. `;
       const critical = state.critical === null ? 'there is no critical angle' : `the critical angle is ${state.critical.toFixed(2)}°`;
       return media + (state.thetaT === null

@@ -8,7 +8,7 @@ import { makeScrollBox } from '../../ui/scrollBox.js';
 export const COLUMNS = [
   { key: 'name', label: 'Material' },
   { key: 'n', label: 'n (589 nm)', numeric: true },
-  { key: 'speed', label: 'Speed c/n', numeric: true },
+  { key: 'speed', label: 'Phase speed c/n', numeric: true },
   { key: 'r0', label: 'R0 from air', numeric: true },
   { key: 'critical', label: 'Critical angle to air', numeric: true },
   { key: 'source', label: 'Source' },
@@ -21,9 +21,13 @@ export function formatIndex(n) {
   return decimals >= 4 ? text : n.toFixed(4);
 }
 
-/** 224850.3 → "224 850" with a narrow no-break space between thousands (SI style). */
-export function formatKmS(value) {
-  return Math.round(value).toString().replace(/\B(?=(\d{3})+(?!\d))/g, '\u202f');
+/**
+ * 224850.3 → "224 850" with a narrow no-break space between thousands (SI style), rounded to
+ * `step` km/s: the data's n, to 4 or 5 decimals, holds a phase speed to about 10 km/s; a group
+ * speed from three wavelengths, to about 1000.
+ */
+export function formatKmS(value, step = 10) {
+  return (Math.round(value / step) * step).toString().replace(/\B(?=(\d{3})+(?!\d))/g, '\u202f');
 }
 
 /** Long paths may wrap after each '/' and inside the site name (a zero-width space), so the column stays narrow. */
@@ -45,7 +49,9 @@ export function buildIndexTable(host, { onSort, onUse }) {
   const scroller = makeScrollBox(el('div', 'ri-scroll'), 'Table of refractive indices');
   const table = el('table', 'ri-table');
   const caption = el('caption', 'ri-caption',
-    'Dielectrics at 589 nm. Speed in km/s uses c = 299 792.458 km/s; R0 and the critical angle are for air taken as n = 1.');
+    'Dielectrics at 589 nm. c/n is the phase speed, at which the crests move; a pulse of light moves at the '
+    + 'group speed c/n_g, n_g = n − λ dn/dλ from the data at 550, 589 and 650 nm (Hecht, Optics, 5th ed., §7.2). '
+    + 'Speeds in km/s use c = 299 792.458 km/s; R0 and the critical angle are for air taken as n = 1.');
   const thead = el('thead');
   const tbody = el('tbody');
   const tfoot = el('tfoot');
@@ -88,6 +94,7 @@ export function buildIndexTable(host, { onSort, onUse }) {
     const [n, speed, r0, critical] = cells(row);
     const speedCell = el('td', 'ri-num');
     speedCell.append(el('span', '', speed), el('span', 'ri-kms', `${formatKmS(row.speedKmS)} km/s`));
+    if (row.groupSpeedKmS !== null) speedCell.append(el('span', 'ri-kms ri-group', `pulse ≈ ${formatKmS(row.groupSpeedKmS, 1000)} km/s`));
     const useCell = el('td');
     tr.append(name, useCell, el('td', 'ri-num ri-n', n), speedCell, el('td', 'ri-num ri-r0', r0),
       el('td', 'ri-num ri-critical', critical), el('td', 'ri-source', breakable(row.source)));

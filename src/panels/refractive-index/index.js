@@ -72,6 +72,7 @@ export function mount(root, ctx) {
           n_589nm: all.map((r) => r.n),
           speed_fraction_of_c: all.map((r) => r.speed),
           speed_km_per_s: all.map((r) => r.speedKmS),
+          group_speed_km_per_s: all.map((r) => (r.groupSpeedKmS === null ? NaN : r.groupSpeedKmS)),
           R0_from_air: all.map((r) => r.r0),
           critical_angle_deg: all.map((r) => (r.critical === null ? NaN : r.critical)),
         },

@@ -1,7 +1,7 @@
 // Angles that questions ask for and no closed form gives: where a curve of θ crosses a level, and
 // where a curve peaks. Both are refined far below any question's tolerance (a grid alone would be
 // off by up to half its step).
-import { refinedMax } from '../optics/refinedMax.js';
+import { refinedMax } from './refinedMax.js';
 
 /** θ in degrees in [lo, hi] where f(θ) = level, by bisection; f must cross the level once there. */
 export function angleWhere(f, level, lo = 0, hi = 90) {
