@@ -20,6 +20,10 @@ test('mounts in an embed with a labelled canvas and the key numbers', async ({ p
   await expect(entry('Highlight luminance')).toContainText(peak.specular.toFixed(3));
   await expect(page.locator('.panel-description')).toContainText('n_t = 1.55 (assumed for bitumen)');
   expect(centre.F).toBeGreaterThan(0.4); // default camera 6° above the road: near grazing
+  // The two causes and how little is reflected (model.js, tests/unit/asphalt.test.js): the lede's figures.
+  await expect(entry('Growth since overhead')).toHaveText(/^×1\d\d\.\d: lobe ×12\.7, F ×9\.5$/);
+  await expect(entry('Sunlight reflected specularly')).toHaveText('7.3 % (diffuse albedo 9.0 %)');
+  await expect(page.locator('.panel-description')).toContainText('the sheen is concentrated, not plentiful');
 });
 
 test('the highlight is bright near grazing, absent overhead, and weak without Fresnel', async ({ page }) => {

@@ -88,6 +88,25 @@ test('the URL sets n, the method and the weight', async ({ page }) => {
   expect(p.centre[0][2]).toBeGreaterThan(p.centre[0][0]); // the blue kd from the URL
 });
 
+test('the layered coat darkens the base beside the lecture\'s mix, and the note says where the lecture is loose', async ({ page }) => {
+  await openLab(page, embed());
+  const note = page.locator('.fl-panel .lecture-note');
+  await expect(note).toContainText("The lecture's k = mix(kd, ks, F) is a heuristic");
+  await expect(note).toContainText('sends 0.60 of that diffuse light back'); // hemisphericalReflectance(1.5, 1) = 0.5963
+  await expect(note.locator('cite')).toContainText('Weidlich & Wilkie');
+  const mix = await probes(page);
+  await page.evaluate(() => window.fresnelLab.hosts['fresnel-lighting'].set({ method: 'layered' }));
+  await expect(page.locator('.twin-stage-labels')).toContainText('Layered coat, F exact');
+  await expect(page.locator('.fl-summary')).toContainText('0.5963 of diffuse light');
+  await expect(page.locator('.fl-panel pre code .fl-live', { hasText: 'vec3 kLayered' })).toHaveCount(1);
+  await expect(page.locator('.fl-panel pre code .fl-live', { hasText: 'kExact' })).toHaveCount(0);
+  const layered = await probes(page);
+  // The red base under the coat: its diffuse light crosses the coat twice and spreads out (1/n²),
+  // so the centre's red drops well below the lecture's mix; the constant-weight sphere is unchanged.
+  expect(layered.centre[0][0]).toBeLessThan(mix.centre[0][0] - 20);
+  expect(diff(layered.centre[1], mix.centre[1])).toBeLessThanOrEqual(3);
+});
+
 test('nothing draws while nothing changes', async ({ page }) => {
   await openLab(page, embed());
   const idle = await expectIdle(page, 'fresnel-lighting');
