@@ -129,7 +129,9 @@ export function createPredictFigure({ label, describedBy = null, axisTitle = THE
       truthLayer.append(svg('line', { x1: x(truth), x2: x(truth), y1: PAD.top, y2: baseline, class: 'predict-true' }));
       const name = svg('text', { x: x(truth) + (truth > 60 ? -6 : 6), y: PAD.top + 12, 'text-anchor': truth > 60 ? 'end' : 'start', class: 'predict-true-label' });
       name.textContent = `true: ${truth.toFixed(2)}°`;
-      const curveName = svg('text', { x: PAD.left + 6, y: PAD.top + 30, class: 'predict-curve-label' });
+      // The curve's name goes top left, or low on the left where the curve starts high there.
+      const highOnLeft = Math.max(...ys.slice(0, 145)) > 0.7 * top;
+      const curveName = svg('text', { x: PAD.left + 6, y: highOnLeft ? baseline - 40 : PAD.top + 30, class: 'predict-curve-label' });
       curveName.textContent = `${curve.label}${curve.level !== undefined ? ` (line: ${curve.level})` : ''}`;
       truthLayer.append(name, curveName);
       element.classList.add('revealed');
