@@ -1,7 +1,7 @@
-// `npm run bench -- --tiny` end to end: it builds the site into a private folder, serves it,
-// runs the speed-accuracy benchmark in headless Chromium (launched as playwright.config.js does)
-// and writes results.json and results.png; here into a temporary folder, so bench/ keeps the
-// committed full-size run.
+// `npm run bench -- --tiny` end to end on the site the browser tests already built (npm run
+// test:e2e builds dist/ with the benchmark's three.js peer page): it serves it, runs the
+// speed-accuracy benchmark in headless Chromium (launched as playwright.config.js does) and writes
+// results.json and results.png; here into a temporary folder, so bench/ keeps the committed run.
 import { test, expect } from '@playwright/test';
 import { execFile } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
@@ -20,7 +20,7 @@ test('npm run bench -- --tiny writes a valid results.json and a chart PNG', asyn
   const out = mkdtempSync(join(tmpdir(), 'fresnel-lab-bench-test-'));
   try {
     const { code, stdout, stderr } = await new Promise((done) => {
-      execFile(process.execPath, ['bench/run.js', '--tiny', '--out', out], { timeout: 110_000 }, (error, so, se) => {
+      execFile(process.execPath, ['bench/run.js', '--tiny', '--site', 'dist', '--out', out], { timeout: 110_000 }, (error, so, se) => {
         done({ code: error ? (error.code ?? 1) : 0, stdout: so, stderr: se });
       });
     });
