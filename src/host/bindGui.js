@@ -16,7 +16,7 @@ export function guiOptions(spec) {
  * onChange(key, value) runs on every change; returns { key: controller }.
  */
 export function bindGui(gui, schema, draft, onChange, keys = Object.keys(schema)) {
-  const controllers = {};
+  const controllers = Object.create(null);
   for (const key of keys) {
     const spec = schema[key];
     if (!spec) throw new Error(`bindGui: ${key} is not in the schema`);

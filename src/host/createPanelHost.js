@@ -96,7 +96,7 @@ export function createPanelHost(container, panel, {
 
   let instance = null;
   let gui = null;
-  let controllers = {};
+  let controllers = Object.create(null); // keyed by schema keys only: a name from outside finds nothing inherited
   let frames = 0;
   let rejectedNotice = null;
   let mountPanel = panel.mount ?? null; // or, until panel.load() resolves, null
@@ -218,7 +218,7 @@ export function createPanelHost(container, panel, {
       rejectedNotice = showNotice(noticeHost, `Some values for the ${panel.title} panel were not usable:`,
         result.rejected.map(describeProblem));
       for (const { key } of result.rejected) {
-        if (key in values) {
+        if (Object.hasOwn(values, key)) {
           draft[key] = values[key];
           controllers[key]?.updateDisplay();
         }
@@ -244,7 +244,7 @@ export function createPanelHost(container, panel, {
     container.style.minHeight = '';
     gui = createPanelGui(guiHost, `${panel.title}: controls`);
     toolbar.hidden = false;
-    controllers = {};
+    controllers = Object.create(null);
     controlState.clear();
     try {
       instance = checkInstance(panel.id, ownedBy(faults, () => mountPanel(content, ctx)));
@@ -293,7 +293,7 @@ export function createPanelHost(container, panel, {
     gui?.destroy();
     gui = null;
     toolbar.hidden = true;
-    controllers = {};
+    controllers = Object.create(null);
     controlState.clear();
     content.replaceChildren();
   }

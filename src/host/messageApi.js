@@ -16,6 +16,8 @@
 // fresnel-lab:audio {on} when the reader turned the audio trace on or off.
 // Anything else is ignored. Nothing from a message is evaluated or inserted as HTML.
 
+import { rawText } from './params.js';
+
 export const API_VERSION = 1;
 
 /** How long changes are gathered into one `changed` message (a slider drag sends a few a second). */
@@ -99,7 +101,7 @@ export function connectMessages(host, { parent = window.parent, origin = '*', pa
       case 'set': {
         const { rejected } = host.set(message.params, { source: 'api' });
         if (rejected.length) {
-          sayError(`Rejected ${rejected.map((r) => `${r.key}: ${String(r.raw).slice(0, 40)} ${r.reason}`).join('; ')}`);
+          sayError(`Rejected ${rejected.map((r) => `${rawText(r.key)}: ${rawText(r.raw)} ${r.reason}`).join('; ')}`);
         }
         say(state());
         return;

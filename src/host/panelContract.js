@@ -14,6 +14,7 @@
  * @property {number} [min]
  * @property {number} [max]
  * @property {number} [step]       also sets how many decimals the URL keeps
+ * @property {boolean} [integer]   numbers: whole numbers only (an index or a count)
  * @property {string[]|Record<string, string>} [options]  enum values, or { value: label }
  * @property {string[]} [aliases]  older keys that still read, so links made before a rename work
  * @property {number} [maxLength]  texts: the longest accepted

@@ -4,7 +4,7 @@
 // (in the manner of PhET's query-parameter tables).
 //
 // Spec fields: type ('number' | 'enum' | 'color' | 'boolean' | 'text'), default, label, and
-// for numbers min, max, step; for enums options (an array of values, or { value: label });
+// for numbers min, max, step and, for an index or a count, integer: true (a whole number only); for enums options (an array of values, or { value: label });
 // for texts maxLength and optionally encode/decode, a compact form for the link (decode also
 // takes the plain text, which messages send; it returns null for a form it cannot read);
 // optionally aliases: older keys that still read (links and decks made before a rename keep working).
@@ -17,7 +17,20 @@ function enumValues(spec) {
 
 /** The label an enum shows for a value (the value itself when the options are a plain list). */
 export function optionLabel(spec, value) {
-  return Array.isArray(spec.options) ? String(value) : spec.options[value] ?? String(value);
+  return Array.isArray(spec.options) || !Object.hasOwn(spec.options, value) ? String(value) : spec.options[value];
+}
+
+/**
+ * Any value from outside as a short text for a notice or an error message, without running any of
+ * its code: String() of an object calls its toString, which a message can set to something that
+ * throws ({ toString: 'x' }), and a getter could run anything.
+ */
+export function rawText(raw, max = 40) {
+  let text;
+  if (raw === null || ['string', 'number', 'boolean', 'undefined', 'bigint'].includes(typeof raw)) text = String(raw);
+  else if (Array.isArray(raw)) text = '(a list)';
+  else text = typeof raw === 'object' ? '(an object)' : `(a ${typeof raw})`;
+  return text.length > max ? `${text.slice(0, max)}…` : text;
 }
 
 /** Number of decimals implied by a step (0.001 → 3), used to write short, exact URLs. */
@@ -35,12 +48,14 @@ export function parseValue(spec, raw) {
     case 'number': {
       const value = typeof raw === 'number' ? raw : typeof raw === 'string' && raw.trim() !== '' ? Number(raw) : NaN;
       if (!Number.isFinite(value)) return { ok: false, reason: 'is not a number' };
+      if (spec.integer && !Number.isInteger(value)) return { ok: false, reason: 'is not a whole number' };
       if (value < spec.min || value > spec.max) {
         return { ok: false, reason: `is outside ${spec.min} to ${spec.max}` };
       }
       return { ok: true, value };
     }
     case 'enum': {
+      if (!['string', 'number', 'boolean'].includes(typeof raw)) return { ok: false, reason: `is not one of ${enumValues(spec).join(', ')}` };
       const value = String(raw);
       if (!enumValues(spec).includes(value)) return { ok: false, reason: `is not one of ${enumValues(spec).join(', ')}` };
       return { ok: true, value };
@@ -156,8 +171,8 @@ export function writeParams(schema, values, search, prefix = '') {
 
 /** A readable sentence for a problem, for the on-screen notice. */
 export function describeProblem({ key, raw, reason, fallback }) {
-  const shown = String(raw).length > 40 ? `${String(raw).slice(0, 40)}…` : String(raw);
+  const shown = rawText(raw);
   return fallback === undefined
-    ? `${key}=${shown} ${reason}; ignored.`
-    : `${key}=${shown} ${reason}; using ${fallback}.`;
+    ? `${rawText(key)}=${shown} ${reason}; ignored.`
+    : `${rawText(key)}=${shown} ${reason}; using ${fallback}.`;
 }

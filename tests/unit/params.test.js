@@ -60,3 +60,46 @@ describe('URL schema parsing', () => {
     expect(rejected.map((r) => r.key)).toEqual(['nI', 'bogus']);
   });
 });
+
+describe('values from outside that name inherited things or run code when turned to text', async () => {
+  const { applyParams, describeProblem, parseValue, rawText } = await import('../../src/host/params.js');
+  const schema = {
+    nT: { type: 'number', default: 1.5, min: 1, max: 3, step: 0.01, label: 'n_t', aliases: ['n'] },
+    mode: { type: 'enum', default: 'a', options: { a: 'A', b: 'B' }, label: 'Mode' },
+  };
+  const hostile = { toString: 'x', valueOf: 1 }; // String(hostile) throws
+  it('an inherited name is not a parameter, and says so', () => {
+    for (const name of ['constructor', 'toString', 'valueOf', 'hasOwnProperty', '__proto__']) {
+      const update = JSON.parse(`{${JSON.stringify(name)}: 1}`);
+      const values = { nT: 1.5, mode: 'a' };
+      const { rejected, changed } = applyParams(schema, values, update);
+      expect(rejected.map((r) => [r.key, r.reason]), name).toEqual([[name, 'is not a parameter of this panel']]);
+      expect(changed).toEqual([]);
+      expect(Object.keys(values)).toEqual(['nT', 'mode']);
+    }
+  });
+  it('an object whose toString is not a function is refused and named without calling it', () => {
+    expect(() => parseValue(schema.mode, hostile)).not.toThrow();
+    expect(parseValue(schema.mode, hostile).ok).toBe(false);
+    expect(parseValue(schema.mode, ['a']).ok).toBe(false);
+    const { rejected } = applyParams(schema, { nT: 1.5, mode: 'a' }, { mode: hostile, nT: hostile });
+    expect(rejected).toHaveLength(2);
+    expect(rejected.map(describeProblem)).toEqual([
+      'mode=(an object) is not one of a, b; ignored.', 'nT=(an object) is not a number; ignored.',
+    ]);
+    expect(rawText('x'.repeat(100))).toBe(`${'x'.repeat(40)}…`);
+    expect(rawText(null)).toBe('null');
+  });
+});
+
+describe('whole-number parameters', async () => {
+  const { parseValue } = await import('../../src/host/params.js');
+  const { schema: mips } = await import('../../src/panels/normal-mips/schema.js');
+  it('an index takes whole numbers only (a texel 0.75 read NaN normals)', () => {
+    for (const key of ['level', 'texelLevel', 'texelX', 'texelY']) {
+      expect(mips[key].integer, key).toBe(true);
+      expect(parseValue(mips[key], '0.7501')).toEqual({ ok: false, reason: 'is not a whole number' });
+      expect(parseValue(mips[key], 3)).toEqual({ ok: true, value: 3 });
+    }
+  });
+});
