@@ -1,41 +1,37 @@
-// The accessibility audit: axe-core on the lecture page (scrolled through, so that every panel is
-// mounted and seen), on every embed and on the homework page. Any serious or critical violation
-// fails; the visible-label rule (label-content-name-mismatch, still marked experimental in axe)
-// is on, since a voice-control user says what the control shows.
-import AxeBuilder from '@axe-core/playwright';
-import { test, expect, openLab } from './fixtures.js';
-import { PANEL_IDS } from '../../src/panels/manifest.js';
+// The accessibility audit (audit.js) on the lecture page, scrolled through so that every panel is
+// mounted and seen, on the audio trace, the shader lab's editor in light, and the homework page.
+// Every embed is audited in embeds.spec.js, on a desktop, a phone and a tablet.
+import { test, expect, openLab, settledFrames } from './fixtures.js';
+import { PANELS } from '../../src/panels/manifest.js';
+import { seriousViolations } from './audit.js';
 
-const EXTRA_RULES = { 'label-content-name-mismatch': { enabled: true }, 'td-has-header': { enabled: true } };
-
-/** The serious and critical violations on the page, each with the first elements it names. */
-async function seriousViolations(page) {
-  const { violations } = await new AxeBuilder({ page }).options({ rules: EXTRA_RULES }).analyze();
-  return violations
-    .filter((v) => v.impact === 'serious' || v.impact === 'critical')
-    .map((v) => `${v.impact} ${v.id}: ${v.help} (${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join('; ')})`);
-}
-
-for (const scheme of ['dark', 'light']) {
-  test(`the lecture page, scrolled through, ${scheme}`, async ({ page }) => {
-    test.setTimeout(180_000);
-    await page.addInitScript((theme) => localStorage.setItem('fresnel-lab:theme', JSON.stringify({ scheme: theme })), scheme);
-    await openLab(page, './');
-    for (const section of await page.locator('section[data-panel]').all()) {
-      await section.scrollIntoViewIfNeeded();
-      const id = await section.getAttribute('data-panel');
-      await expect.poll(() => page.evaluate((panelId) => window.fresnelLab.hosts[panelId].mounted, id), { message: `${id} mounted` }).toBe(true);
-    }
-    expect(await seriousViolations(page)).toEqual([]);
-  });
-}
-
-for (const id of PANEL_IDS) {
-  test(`the ${id} embed`, async ({ page }) => {
-    await openLab(page, `embed.html?panel=${id}`);
-    expect(await seriousViolations(page)).toEqual([]);
-  });
-}
+// One walk down the lecture page with reduced motion: every panel has its section, mounts when it
+// comes near and then settles (nothing moves by itself), no CSS animation runs, and the page passes
+// the audit in the dark theme and, switched in place, in the light one.
+test('the lecture page, scrolled through: every panel mounts and settles, reduced motion holds, audited dark and light', async ({ page }) => {
+  test.setTimeout(240_000);
+  await page.emulateMedia({ reducedMotion: 'reduce' });
+  await openLab(page, './');
+  const sections = await page.evaluate(() => [...document.querySelectorAll('section[data-panel]')].map((s) => ({
+    id: s.dataset.panel, heading: s.querySelector('h2').textContent, lede: s.querySelector('.lede').textContent,
+  })));
+  expect(sections.map((s) => s.id)).toEqual(PANELS.map((p) => p.id));
+  await expect(page.locator('main > .notice-error')).toHaveCount(0);
+  for (const [i, entry] of PANELS.entries()) {
+    expect(sections[i].heading.replace(/\s+/g, ' ')).toBe(entry.title.replace(/_([a-z])/g, '$1'));
+    expect(sections[i].lede).toContain('(');
+    await page.locator(`section[data-panel="${entry.id}"]`).scrollIntoViewIfNeeded();
+    await expect.poll(() => page.evaluate((pid) => window.fresnelLab.hosts[pid].mounted, entry.id), { message: entry.id }).toBe(true);
+    await expect(page.locator(`section[data-panel="${entry.id}"] .panel-description`)).toHaveText(/\d/);
+    await settledFrames(page, entry.id); // throws if it keeps drawing
+  }
+  expect(await page.evaluate(() => window.fresnelLab.hosts['refraction-waves'].values.play)).toBe(false);
+  expect(await page.evaluate(() => document.getAnimations().length)).toBe(0);
+  expect(await seriousViolations(page), 'dark').toEqual([]);
+  await page.locator('.page-controls select').first().selectOption('light');
+  await expect(page.locator('html')).toHaveAttribute('data-theme', 'light');
+  expect(await seriousViolations(page), 'light').toEqual([]);
+});
 
 test('the audio trace’s controls, shown', async ({ page }) => {
   await openLab(page, 'embed.html?panel=polarization&audio=1&theme=light');
