@@ -45,9 +45,12 @@ for (const [n, entry] of PANELS.entries()) {
     });
     const messages = randomMessages(SEED + 1000 + n, Object.keys(schemas[id]), 60);
     await sendMessages(page, messages);
-    // Markup as values, as keys and as control names: refused or shown, always as text.
+    // Markup as values (in every text the panel takes, such as the shader lab's code, whose
+    // compile log quotes it), as keys and as control names: refused or shown, always as text.
+    const texts = Object.keys(schemas[id]).filter((key) => schemas[id][key].type === 'text');
     await sendMessages(page, XSS.flatMap((markup) => [
       JSON.stringify({ type: 'fresnel-lab:set', params: { [markup]: markup, [Object.keys(schemas[id])[0]]: markup } }),
+      ...texts.map((key) => JSON.stringify({ type: 'fresnel-lab:set', params: { [key]: `float fresnel() { ${markup} }` } })),
       JSON.stringify({ type: 'fresnel-lab:lock', keys: [markup] }),
     ]));
     await expectSound(page, `${id} after messages ${messages.join(' ').slice(0, 400)}`);

@@ -2,23 +2,52 @@
 // API of embeds, bad links, themes. (Every panel mounting, here and alone: contract.spec.js.)
 import { test, expect, openDeck, openLab, nextFrames } from './fixtures.js';
 
-test('never more than 8 live WebGL contexts while scrolling the whole page, and none leak', async ({ page }) => {
-  test.setTimeout(180_000);
+/**
+ * Bytes the page's own script holds after a garbage collection, from a heap snapshot: objects,
+ * closures, arrays and strings. V8's compiled code (which grows while functions warm up, and
+ * levels off) and the browser's native buffers (bounded by the browser) are left out.
+ */
+async function scriptHeap(cdp) {
+  await cdp.send('HeapProfiler.collectGarbage');
+  const chunks = [];
+  const keep = (event) => chunks.push(event.chunk);
+  cdp.on('HeapProfiler.addHeapSnapshotChunk', keep);
+  await cdp.send('HeapProfiler.takeHeapSnapshot', { reportProgress: false });
+  cdp.off('HeapProfiler.addHeapSnapshotChunk', keep);
+  const { snapshot: { meta }, nodes } = JSON.parse(chunks.join(''));
+  const width = meta.node_fields.length;
+  const type = meta.node_fields.indexOf('type');
+  const size = meta.node_fields.indexOf('self_size');
+  const kinds = meta.node_types[0];
+  const held = new Set(['object', 'closure', 'array', 'string', 'concatenated string', 'sliced string', 'regexp', 'number']);
+  let bytes = 0;
+  for (let i = 0; i < nodes.length; i += width) if (held.has(kinds[nodes[i + type]])) bytes += nodes[i + size];
+  return bytes;
+}
+
+test('scrolling the whole page again and again: never more than 8 live WebGL contexts, none leak, and the heap stops growing', async ({ page }) => {
+  test.setTimeout(240_000);
   await openLab(page);
+  const cdp = await page.context().newCDPSession(page);
+  await cdp.send('HeapProfiler.enable');
   const height = await page.evaluate(() => document.documentElement.scrollHeight);
-  for (let pass = 0; pass < 2; pass += 1) {
+  const held = [];
+  for (let pass = 0; pass < 5; pass += 1) {
     for (let y = 0; y <= height; y += 500) {
       await page.evaluate((top) => window.scrollTo(0, top), y);
       await nextFrames(page); // the observers have seen this position: panels near it mount
     }
     await page.evaluate(() => window.scrollTo(0, 0));
     await nextFrames(page);
+    if (pass >= 2) held.push(await scriptHeap(cdp)); // after two passes every panel has mounted and gone twice
   }
   const stats = await page.evaluate(() => ({ ...window.fresnelLab.contexts }));
-  console.log(`[contexts] ${JSON.stringify(stats)}`);
+  console.log(`[contexts] ${JSON.stringify(stats)}; [script heap after passes 3–5] ${held.map((b) => `${(b / 1e6).toFixed(3)} MB`).join(', ')}`);
   expect(stats.peak).toBeLessThanOrEqual(8);
   const mountedGl = await page.evaluate(() => Object.values(window.fresnelLab.hosts).filter((h) => h.mounted && h.usesWebGL).length);
   expect(stats.live).toBeLessThanOrEqual(mountedGl); // every context belongs to a mounted panel
+  // Each pass mounts and disposes every panel; what they leave behind would add up pass by pass.
+  expect(held.at(-1) - held[0], 'bytes the page kept over two more passes').toBeLessThan(40_000);
 });
 
 test('with a budget of 2, the farthest WebGL panel gives its context up first', async ({ page }) => {

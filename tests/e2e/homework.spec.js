@@ -230,3 +230,37 @@ test('keyboard only: compose, predict, answer and check', async ({ page }) => {
   await expect(card(page, 2).locator('.hw-result')).toHaveText('Right.');
   await expect(card(page, 2).locator('.hw-why')).toHaveText([/^No:/, /^Right:/]);
 });
+
+test('markup in a sheet\'s title, a start state, a student\'s name and a file name stays text everywhere', async ({ page }) => {
+  test.setTimeout(120_000);
+  const { XSS, injected } = await import('./doorFuzz.js');
+  const title = `Week 3 ${XSS[0]}`;
+  const sheet = { version: 1, title, items: [{ question: 'exact-r', state: { theta: XSS[1].slice(0, 64) } }] };
+  await page.goto(sheetLink(sheet));
+  await expect(page.locator('h1')).toHaveText(title);
+  const name = XSS[4];
+  await page.getByLabel(/Your name/).fill(name);
+  const frame = () => page.frames().find((f) => f.url().includes('embed.html'));
+  await expect.poll(() => Boolean(frame())).toBe(true);
+  await frame().waitForFunction(() => window.fresnelLab?.hosts && Object.values(window.fresnelLab.hosts).every((h) => h.mounted));
+  await expect(frame().locator('.notice')).toContainText('theta=<svg onload'); // the bad start value quoted as text
+  for (const f of page.frames()) expect(await injected(f), f.url()).toEqual([]);
+
+  const downloading = page.waitForEvent('download');
+  await page.getByRole('button', { name: /^Hand in/ }).click();
+  const download = await downloading;
+  expect(download.suggestedFilename()).not.toMatch(/[<>"']/);
+  const file = JSON.parse(readFileSync(await download.path(), 'utf8'));
+  expect(file.name).toBe(name);
+  const named = test.info().outputPath(`${XSS[5].replace(/\//g, '')}.json`);
+  writeFileSync(named, JSON.stringify(file));
+  const notAHandIn = test.info().outputPath(`${XSS[0].replace(/\//g, '')}.txt`);
+  writeFileSync(notAHandIn, XSS.join('\n'));
+  await page.goto('homework.html');
+  await page.getByLabel('The sheet you set').fill(`homework.html?sheet=${Buffer.from(JSON.stringify(sheet)).toString('base64url')}`);
+  await page.getByLabel('Or choose handed-in files').setInputFiles([named, notAHandIn]);
+  await expect(page.locator('.hw-score')).toHaveCount(1);
+  await expect(page.locator('.hw-score')).toContainText(`${title}: ${name}`);
+  await expect(page.locator('.hw-report').nth(1)).toContainText('<img src=x'); // the refused file, named as it is
+  expect(await injected(page)).toEqual([]);
+});
