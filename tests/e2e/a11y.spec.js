@@ -4,10 +4,12 @@
 import { test, expect, openLab, settledFrames } from './fixtures.js';
 import { PANELS } from '../../src/panels/manifest.js';
 import { seriousViolations } from './audit.js';
+import { mountedHeight, reservedHeight } from './layout.js';
 
-// One walk down the lecture page with reduced motion: every panel has its section, mounts when it
-// comes near and then settles (nothing moves by itself), no CSS animation runs, and the page passes
-// the audit in the dark theme and, switched in place, in the light one.
+// One walk down the lecture page with reduced motion: every panel has its section, its place kept
+// before it mounts and never taller than it, mounts when it comes near and then settles (nothing
+// moves by itself), no CSS animation runs, and the page passes the audit in the dark theme and,
+// switched in place, in the light one.
 test('the lecture page, scrolled through: every panel mounts and settles, reduced motion holds, audited dark and light', async ({ page }) => {
   test.setTimeout(240_000);
   await page.emulateMedia({ reducedMotion: 'reduce' });
@@ -20,8 +22,12 @@ test('the lecture page, scrolled through: every panel mounts and settles, reduce
   for (const [i, entry] of PANELS.entries()) {
     expect(sections[i].heading.replace(/\s+/g, ' ')).toBe(entry.title.replace(/_([a-z])/g, '$1'));
     expect(sections[i].lede).toContain('(');
+    const reserved = await reservedHeight(page, entry.id); // read before it mounts (loading.spec.js: other widths)
     await page.locator(`section[data-panel="${entry.id}"]`).scrollIntoViewIfNeeded();
     await expect.poll(() => page.evaluate((pid) => window.fresnelLab.hosts[pid].mounted, entry.id), { message: entry.id }).toBe(true);
+    const height = await mountedHeight(page, entry.id);
+    expect(reserved, `${entry.id}'s reserved place`).toBeLessThanOrEqual(height);
+    expect(reserved, `${entry.id}'s reserved place`).toBeGreaterThan(0.4 * height);
     await expect(page.locator(`section[data-panel="${entry.id}"] .panel-description`)).toHaveText(/\d/);
     await settledFrames(page, entry.id); // throws if it keeps drawing
   }

@@ -1,5 +1,6 @@
-// What a phone or tablet must not show: elements wider than the screen outside a box that scrolls,
-// and overlay labels cut by their box or running off the screen.
+// Layout read from a page: what a phone or tablet must not show (elements wider than the screen
+// outside a box that scrolls, overlay labels cut by their box or running off the screen), and the
+// place the lecture page keeps for a panel against the panel's height once mounted.
 
 /** Each problem in words; [] when the page fits. */
 export const layoutProblems = (page) => page.evaluate(() => {
@@ -16,3 +17,12 @@ export const layoutProblems = (page) => page.evaluate(() => {
   }
   return problems;
 });
+
+/** The place the lecture page keeps for panel `id` before it mounts (panelPlaces.css), in px. */
+export const reservedHeight = (page, id) => page.evaluate((pid) => parseFloat(getComputedStyle(document.querySelector(`#${pid} > .panel-mount`)).minHeight), id);
+
+/** A mounted panel's own height: from the top of its mount to the bottom of its description. */
+export const mountedHeight = (page, id) => page.evaluate((pid) => {
+  const mount = document.querySelector(`#${pid} > .panel-mount`);
+  return mount.querySelector('.panel-description').getBoundingClientRect().bottom - mount.getBoundingClientRect().top;
+}, id);

@@ -1,6 +1,7 @@
 // Download only what is used, draw only on screen: which modules a page fetches, and what it
 // announces. three.js is recognised by its WebGLRenderer in a script's text.
 import { test, expect, openDeck, openLab } from './fixtures.js';
+import { mountedHeight, reservedHeight } from './layout.js';
 
 /** Every script the page fetches; `all()` resolves to them once each one's text has been read. */
 function watchScripts(page) {
@@ -79,21 +80,17 @@ test('a panel without WebGL announces rendered after a change, like the WebGL on
   expect(frames[1]).toBeGreaterThan(frames[0]);
 });
 
-test('each panel\'s place is reserved before it mounts, and never taller than the panel', async ({ page }) => {
+test('each panel\'s place is reserved before it mounts, and never taller than the panel (at 1280 px: a11y.spec.js)', async ({ page }) => {
   test.setTimeout(180_000);
-  for (const width of [800, 1280, 1920]) {
+  for (const width of [800, 1920]) {
     await page.setViewportSize({ width, height: 800 });
     await openLab(page, './');
     const ids = await page.evaluate(() => Object.keys(window.fresnelLab.hosts));
     for (const id of ids) {
-      const reserved = await page.evaluate((pid) => parseFloat(getComputedStyle(document.querySelector(`#${pid} > .panel-mount`)).minHeight), id);
+      const reserved = await reservedHeight(page, id);
       await page.evaluate((pid) => document.getElementById(pid).scrollIntoView(), id);
       await expect.poll(() => page.evaluate((pid) => window.fresnelLab.hosts[pid].mounted, id), { timeout: 60_000 }).toBe(true);
-      // The panel's own height: from the top of its mount to the bottom of its description.
-      const height = await page.evaluate((pid) => {
-        const mount = document.querySelector(`#${pid} > .panel-mount`);
-        return mount.querySelector('.panel-description').getBoundingClientRect().bottom - mount.getBoundingClientRect().top;
-      }, id);
+      const height = await mountedHeight(page, id);
       expect(reserved, `${id} at ${width} px`).toBeLessThanOrEqual(height);
       expect(reserved, `${id} at ${width} px`).toBeGreaterThan(0.4 * height);
     }
