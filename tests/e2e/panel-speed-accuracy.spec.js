@@ -182,7 +182,8 @@ test('a running benchmark pauses while the panel is off screen and goes on when 
     spacer.style.height = '4000px';
     document.body.prepend(spacer); // the panel is now far below the window
   });
-  await page.evaluate((id) => { window.benchDone = window.fresnelLab.panels[id].run('tiny').then(() => true); }, PANEL);
+  // The run's promise rejects when it is cancelled below; kept here, so that is no unhandled rejection.
+  await page.evaluate((id) => { window.benchDone = window.fresnelLab.panels[id].run('tiny').then(() => 'done', (error) => error.message); }, PANEL);
   await expect(page.locator('.sa-status')).toContainText('Paused while the panel is off screen');
   const paused = await page.locator('.sa-progress').evaluate((p) => p.value);
   await page.waitForTimeout(1000); // a window in which a paused run must not move
@@ -194,6 +195,7 @@ test('a running benchmark pauses while the panel is off screen and goes on when 
   await expect(page.locator('.sa-status')).not.toContainText('Paused');
   await page.locator('.sa-cancel').click();
   await expect(page.locator('.sa-status')).toHaveText('Cancelled');
+  expect(await page.evaluate(() => window.benchDone)).toBe('Benchmark cancelled');
 });
 
 test('"Error measured by" this GPU plots the errors read back from the GPU, and says so', async ({ page }) => {
