@@ -5,6 +5,7 @@ import { linearToHex } from '../../ui/srgb.js';
 import { el } from '../../ui/el.js';
 import { scrollBox } from '../../ui/scrollBox.js';
 import { lectureNote } from '../../ui/lectureNote.js';
+import { fixed } from '../../ui/format.js';
 
 /** CSS colour of a linear RGB reflectance. */
 export function swatchColor(rgb) {
@@ -100,7 +101,7 @@ export function buildMetalsDom(host, metals, onPick) {
         row.append(name, el('td', '', `${metal.n[ch].toFixed(3)} + ${metal.k[ch].toFixed(3)}i`),
           el('td', '', s.f0.toFixed(4)),
           el('td', '', `${s.maxError.value.toFixed(4)} at ${s.maxError.theta.toFixed(2)}°`), el('td', '', dip),
-          el('td', '', `${s.principal.theta.toFixed(2)}° (Rp = ${s.principal.rp.toFixed(3)})`));
+          el('td', '', `${fixed(s.principal.theta, 2)}° (Rp = ${fixed(s.principal.rp, 3)})`));
         return row;
       }));
     },
