@@ -1,8 +1,10 @@
 import { defineConfig } from 'vite';
 import { readdirSync, existsSync, readFileSync } from 'node:fs';
-import { resolve } from 'node:path';
+import { dirname, resolve } from 'node:path';
+import { createRequire } from 'node:module';
 import { viteSingleFile } from 'vite-plugin-singlefile';
 import { PANELS, SECTIONS_MARKER, manifestProblems, sectionHtml } from './src/panels/manifest.js';
+import { contentSecurityPolicy, inlineTexts, withPolicyMeta } from './scripts/contentSecurityPolicy.js';
 
 const root = import.meta.dirname;
 
@@ -60,6 +62,30 @@ function offlineAssets() {
   };
 }
 
+/**
+ * Every built page carries its Content-Security-Policy as a meta (scripts/contentSecurityPolicy.js).
+ * Build only: the dev server's own inline scripts (HMR) would be refused. Runs after the single-file
+ * plugin has inlined a page's script and style, so their hashes are of what the page holds.
+ */
+function policyMeta() {
+  return {
+    name: 'fresnel-lab-csp-meta',
+    apply: 'build',
+    enforce: 'post',
+    generateBundle: {
+      order: 'post',
+      handler(_options, bundle) {
+        for (const file of Object.values(bundle)) {
+          if (file.type !== 'asset' || !file.fileName.endsWith('.html')) continue;
+          const html = String(file.source);
+          const policy = contentSecurityPolicy({ singleFile: Boolean(singleFile), ...inlineTexts(html) });
+          file.source = withPolicyMeta(html, policy);
+        }
+      },
+    },
+  };
+}
+
 // FRESNEL_LAB_SINGLE_FILE=index|embed builds that page alone into dist/offline as one HTML file
 // (scripts, styles, fonts and workers inlined by vite-plugin-singlefile), which works opened from
 // disk and in a sandboxed iframe; scripts/buildOffline.js runs both after the ordinary build.
@@ -78,15 +104,22 @@ const pages = {
 // Relative base: the built site works from any sub-path (a course page, a USB stick).
 export default defineConfig({
   base: './',
-  plugins: singleFile ? [panelManifest(), offlineAssets(), viteSingleFile()] : [panelManifest()],
+  plugins: singleFile ? [panelManifest(), offlineAssets(), viteSingleFile(), policyMeta()] : [panelManifest(), policyMeta()],
   build: {
     ...(singleFile ? { outDir: 'dist/offline', emptyOutDir: false } : {}),
     target: 'es2022',
+    // Fonts stay files (font-src 'self' in the pages' CSP); the single-file plugin inlines everything.
+    ...(singleFile ? {} : { assetsInlineLimit: (file) => (/\.(woff2?|ttf)$/.test(file) ? false : undefined) }),
     // three.js's WebGLRenderer is most of the normal-map viewer's chunk; only that panel loads it.
     chunkSizeWarningLimit: 700,
     rollupOptions: {
       input: singleFile ? pages[singleFile] : pages,
     },
+  },
+  resolve: {
+    // lil-gui's stylesheet, which its package does not export: imported by styles.css as a file,
+    // since the pages' CSP refuses the <style> lil-gui would inject.
+    alias: { 'lil-gui/dist/lil-gui.css': resolve(dirname(createRequire(import.meta.url).resolve('lil-gui')), 'lil-gui.css') },
   },
   server: { host: '127.0.0.1' },
   preview: { host: '127.0.0.1' },

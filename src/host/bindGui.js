@@ -33,7 +33,7 @@ export function bindGui(gui, schema, draft, onChange, keys = Object.keys(schema)
 
 /** A GUI placed inside the panel (not floating over the page), keyboard-operable like any form. */
 export function createPanelGui(container, title) {
-  const gui = new GUI({ container, title, width: 360 });
+  const gui = new GUI({ container, title, width: 360, injectStyles: false }); // styles.css imports its CSS
   if (window.matchMedia && phoneWidth().matches) gui.close(); // on a phone: a drawer under the picture, opened by its title
   return gui;
 }

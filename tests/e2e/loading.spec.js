@@ -2,6 +2,10 @@
 // announces. three.js is recognised by its WebGLRenderer in a script's text.
 import { test, expect, openDeck, openLab } from './fixtures.js';
 import { mountedHeight, reservedHeight } from './layout.js';
+import { pathToFileURL } from 'node:url';
+import { resolve } from 'node:path';
+import { INJECTION_ERRORS, expectInjectionRefused, policyMeta, recordViolations, violations } from './policyCheck.js';
+import { PANEL_IDS } from '../../src/panels/manifest.js';
 
 /** Every script the page fetches; `all()` resolves to them once each one's text has been read. */
 function watchScripts(page) {
@@ -95,4 +99,69 @@ test('each panel\'s place is reserved before it mounts, and never taller than th
       expect(reserved, `${id} at ${width} px`).toBeGreaterThan(0.4 * height);
     }
   }
+});
+
+// Served without any CSP header (vite preview sends none) and opened from disk: each built page
+// carries its own policy, works under it, and refuses an injected script.
+test.describe('the built pages\' Content-Security-Policy meta', () => {
+  test.use({ allowedErrors: INJECTION_ERRORS });
+
+  /** Scrolls through the lecture page until every panel has drawn. */
+  async function everyPanelDrawn(page) {
+    for (const id of PANEL_IDS) {
+      await page.locator(`section[data-panel="${id}"]`).evaluate((s) => s.scrollIntoView({ block: 'center' }));
+      await expect.poll(() => page.evaluate((pid) => window.fresnelLab.hosts[pid].frames, id), { message: id, timeout: 60_000 })
+        .toBeGreaterThan(0);
+    }
+  }
+
+  test('served pages: every panel, an editor, an export, the homework page and the deck run under it', async ({ page }) => {
+    test.setTimeout(180_000);
+    await recordViolations(page);
+    expect((await page.request.get('./')).headers()['content-security-policy']).toBeUndefined();
+    await openLab(page, './');
+    expect(await policyMeta(page)).toMatch(/script-src 'self'; style-src 'self';/);
+    await everyPanelDrawn(page);
+    await expect(page.locator('section[data-panel="shader-lab"] .cm-editor .cm-line').first()).toBeVisible();
+    expect(await violations(page)).toEqual([]);
+    await expectInjectionRefused(page);
+
+    await openLab(page, './embed.html?panel=angle-ratio'); // its PNG copies styles into an SVG
+    await policyMeta(page);
+    await expect.poll(() => page.evaluate(() => window.fresnelLab.panels['angle-ratio'].png()?.slice(0, 22))).toBe('data:image/png;base64,');
+    const coloured = await page.evaluate(async () => { // the rays keep their colours (styles written through the CSSOM)
+      const image = new Image();
+      image.src = window.fresnelLab.panels['angle-ratio'].png();
+      await image.decode();
+      const g = Object.assign(document.createElement('canvas'), { width: image.width, height: image.height }).getContext('2d');
+      g.drawImage(image, 0, 0);
+      const d = g.getImageData(0, 0, image.width, image.height).data;
+      let count = 0;
+      for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - d[i + 1]) + Math.abs(d[i + 1] - d[i + 2]) > 80) count += 1;
+      return count;
+    });
+    expect(coloured).toBeGreaterThan(500);
+    await page.goto('./homework.html');
+    await policyMeta(page);
+    await expect(page.getByRole('button', { name: /SCORM/ })).toBeVisible();
+    await page.goto('./examples/deck.html');
+    expect(await policyMeta(page)).toMatch(/style-src 'self' 'sha256-/); // its own <style>, by hash
+    await page.waitForFunction(() => window.deck?.isReady());
+    expect(await violations(page)).toEqual([]);
+  });
+
+  test('the single-file lecture page from disk: inline script and style by hash, fonts data:, workers blob:', async ({ page }) => {
+    test.setTimeout(180_000);
+    await recordViolations(page);
+    await page.goto(pathToFileURL(resolve(import.meta.dirname, '../../dist/offline/index.html')).href);
+    await page.evaluate(() => window.fresnelLab.ready);
+    const policy = await policyMeta(page);
+    expect(policy).toMatch(/script-src 'sha256-[\w+/=]+'; style-src 'sha256-[\w+/=]+'; img-src 'self' data:; font-src data:; worker-src blob:/);
+    await everyPanelDrawn(page);
+    await page.locator('section[data-panel="normal-mips"]').evaluate((s) => s.scrollIntoView({ block: 'center' }));
+    await expect(page.locator('section[data-panel="normal-mips"] .nm-summary')).toContainText(/built in \d+ ms \(\d worker/);
+    expect(await page.evaluate(() => document.fonts.check('20px KaTeX_Main'))).toBe(true);
+    expect(await violations(page)).toEqual([]);
+    await expectInjectionRefused(page);
+  });
 });

@@ -191,7 +191,8 @@ export function svgToPng(svg, background, scale = 2) {
   const to = [copy, ...copy.querySelectorAll('*')];
   from.forEach((node, i) => {
     const style = getComputedStyle(node);
-    to[i].setAttribute('style', COPIED.map((p) => `${p}:${style.getPropertyValue(p)}`).join(';'));
+    // Through the CSSOM: a style attribute written as text is refused by the page's CSP.
+    for (const p of COPIED) to[i].style.setProperty(p, style.getPropertyValue(p));
   });
   copy.setAttribute('width', W);
   copy.setAttribute('height', H);

@@ -4,6 +4,7 @@
 // editors and CodeMirror's own default have it (Escape, then Tab, leaves it too); Ctrl+Enter
 // (⌘Enter) grades. Its colours and size come from the page's theme, and long lines wrap, so it
 // reads on a projector.
+import '../../ui/adoptStyleModules.js'; // before any editor: its styles as a constructed sheet (CSP)
 import { EditorState, Compartment, Transaction } from '@codemirror/state';
 import { EditorView, keymap, lineNumbers, highlightActiveLine, drawSelection } from '@codemirror/view';
 import { defaultKeymap, history, historyKeymap } from '@codemirror/commands';
