@@ -67,6 +67,49 @@ test.describe('a lost context', () => {
   });
 });
 
+test.describe('a loss in the middle of progressive work', () => {
+  test('normal-mips: lost while the ground truth accumulates, said, and accumulated to its cap once back', async ({ page }) => {
+    await openLab(page, 'embed.html?panel=normal-mips'); // the truth on, as the panel starts
+    // Lost in the same task that sees the truth started but not finished.
+    const at = await (await page.waitForFunction(() => {
+      const { state, gl } = window.fresnelLab.panels['normal-mips'].scene ?? {};
+      if (!(state?.samples > 0 && state.samples < state.cap)) return false;
+      window.lost = gl.getExtension('WEBGL_lose_context');
+      window.lost.loseContext();
+      return { samples: state.samples, cap: state.cap };
+    }, null, { timeout: 60_000 })).jsonValue();
+    expect(at.samples).toBeLessThan(at.cap);
+    await expect(page.locator('.panel-fault-text')).toHaveText(LOST_LINE);
+    await expect(page.locator('.nm-errors')).toContainText('Ground truth converging');
+    await page.evaluate(() => window.lost.restoreContext());
+    await expect(page.locator('.panel-fault')).toBeHidden();
+    // Started over on the restored context and accumulated to its cap, then measured.
+    await expect.poll(() => page.evaluate(() => window.fresnelLab.panels['normal-mips'].scene.state.samples), { timeout: 60_000 })
+      .toBeGreaterThanOrEqual(at.cap);
+    await expect.poll(() => page.evaluate(() => Boolean(window.fresnelLab.panels['normal-mips'].scene.state.errors)), { timeout: 60_000 })
+      .toBe(true);
+    expect(await page.evaluate(() => window.fresnelLab.hosts['normal-mips'].faults)).toEqual({ errors: 0, lost: 0 });
+  });
+
+  test('normal-mips: every canvas asked for WebGL before the chains arrive (the loss tests do), and its 2D pictures still draw', async ({ page }) => {
+    await openLab(page, 'embed.html?panel=normal-mips');
+    // Before the worker's chains: the strip and inspector canvases have no picture yet.
+    const early = await page.evaluate(`(() => {
+      const early = !window.fresnelLab.panels['normal-mips'].chains;
+      window.lost = (${contextsOf})('normal-mips').map((gl) => gl.getExtension('WEBGL_lose_context'));
+      window.lost.forEach((ext) => ext.loseContext());
+      return early;
+    })()`);
+    expect(early, 'the chains were still being built').toBe(true);
+    await page.evaluate(() => window.fresnelLab.panels['normal-mips'].whenBuilt());
+    await page.evaluate(() => window.lost.forEach((ext) => ext.restoreContext()));
+    await expect(page.locator('.panel-fault')).toBeHidden();
+    expect(await page.evaluate(() => window.fresnelLab.panels['normal-mips'].inspected?.points.length)).toBeGreaterThan(0);
+    await expect.poll(() => page.evaluate(() => window.fresnelLab.panels['normal-mips'].scene.state.samples), { timeout: 60_000 })
+      .toBeGreaterThan(0);
+  });
+});
+
 test.describe('a chain-building worker', () => {
   test('that cannot start: the chains are built on the page’s thread, and the panel says so', async ({ page }) => {
     await page.addInitScript(() => {

@@ -4,6 +4,7 @@
 // per-axis σ = α′/√2 for the isotropic lobes (v = α′²/2, the per-axis slope variance of a Beckmann lobe) and LEAN's covariance
 // ellipse (leanCovariance, base lobe included). Lobes come from texelLobe (effectiveRoughness.js).
 import { el } from '../../ui/el.js';
+import { context2d } from '../../ui/context2d.js';
 import { createLobe, texelLobe } from '../../normals/effectiveRoughness.js';
 import { TECHNIQUE_NAMES, TECHNIQUES } from '../../normals/techniqueLayout.js';
 import { cssVar, lineScale } from '../../ui/theme.js';
@@ -33,6 +34,7 @@ export function buildInspector(host) {
   const canvas = el('canvas', 'nm-inspector-canvas');
   canvas.width = SIZE;
   canvas.height = SIZE;
+  const g = context2d(canvas); // claimed now: see context2d.js
   canvas.setAttribute('role', 'img');
   canvas.setAttribute('aria-label', 'Slope scatter of one texel’s normals with each technique’s fitted lobe, drawn once the mip chains are built.');
   const side = el('div', 'nm-inspector-side');
@@ -65,7 +67,7 @@ export function buildInspector(host) {
       let extent = 0.2;
       for (const [x, y] of points) extent = Math.max(extent, Math.abs(x), Math.abs(y));
       extent *= 1.35;
-      const g = canvas.getContext('2d');
+      if (!g) return null;
       const toPx = (x, y) => [SIZE / 2 + (x / extent) * (SIZE / 2), SIZE / 2 - (y / extent) * (SIZE / 2)];
       g.fillStyle = cssVar('--bg', '#111');
       g.fillRect(0, 0, SIZE, SIZE);

@@ -6,6 +6,7 @@
 // and the storage cost of every technique's chain (storageCost.js). Heat colours: src/ui/colormap.js.
 import { colormap, colormapGradient } from '../../ui/colormap.js';
 import { el } from '../../ui/el.js';
+import { context2d } from '../../ui/context2d.js';
 import { createLobe, texelLobe } from '../../normals/effectiveRoughness.js';
 import { reconstructZ } from '../../normals/lobeFormulas.js';
 import { storageCost } from '../../normals/storageCost.js';
@@ -42,7 +43,8 @@ function paint(canvas, size, pixel) {
   }
   const source = new OffscreenCanvas(m, m);
   source.getContext('2d').putImageData(image, 0, 0);
-  const g = canvas.getContext('2d');
+  const g = context2d(canvas);
+  if (!g) return;
   g.imageSmoothingEnabled = false;
   g.clearRect(0, 0, canvas.width, canvas.height);
   g.drawImage(source, 0, 0, canvas.width, canvas.height);
@@ -93,6 +95,7 @@ export function buildMipStrip(host, { onPick } = {}) {
         const canvas = el('canvas', 'nm-strip-cell');
         canvas.width = CELL;
         canvas.height = CELL;
+        context2d(canvas); // claimed now, before its first picture: see context2d.js
         canvas.setAttribute('role', 'img');
         canvas.setAttribute('aria-label', `${name} of mip level ${l}`);
         // A click picks that texel for the inspector (the inspector's sliders do the same from the keyboard).

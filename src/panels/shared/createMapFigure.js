@@ -1,6 +1,7 @@
 // A stability map's figure (title, canvas, a message in its place when there is none, the count of
 // cells per class), as the stability panel and the shader lab show them; drawn by drawMap.js.
 import { el } from '../../ui/el.js';
+import { context2d } from '../../ui/context2d.js';
 import { CLASS_NAMES } from '../../optics/stabilityMap.js';
 import { CLASS_COLORS } from './drawMap.js';
 import './stabilityMaps.css';
@@ -24,6 +25,7 @@ export function createMapFigure(side, { focusable = true } = {}) {
   figure.dataset.side = side;
   const title = el('h3', 'st-map-title');
   const canvas = el('canvas', 'st-canvas');
+  context2d(canvas); // claimed now, before the first map: see context2d.js
   canvas.tabIndex = focusable ? 0 : -1; // focusable where arrow keys move a probe over it
   canvas.setAttribute('role', 'img');
   const message = el('p', 'st-map-message');

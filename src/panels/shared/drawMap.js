@@ -2,6 +2,7 @@
 // linear), axes, the critical-angle curve θc = asin(1/ratio) for ratio > 1, rings around failures when they are few (one failing cell would otherwise be a 3-pixel
 // dot on a projector), and the probed cell. Colours come from the theme's CSS variables.
 import { cssVar, lineScale } from '../../ui/theme.js';
+import { context2d } from '../../ui/context2d.js';
 import { criticalAngleDeg } from '../../optics/classifyGrid.js';
 import { FINE } from '../../optics/stabilityMap.js';
 
@@ -160,7 +161,8 @@ export function drawMap(canvas, map, probeCell) {
   const ratio = Math.min(2, window.devicePixelRatio || 1);
   canvas.width = Math.round(cssW * ratio);
   canvas.height = Math.round(cssH * ratio);
-  const g = canvas.getContext('2d');
+  const g = context2d(canvas);
+  if (!g) return null;
   g.setTransform(ratio, 0, 0, ratio, 0, 0);
   const fontPx = parseFloat(getComputedStyle(canvas).fontSize) || 16;
   g.font = `${fontPx}px system-ui, sans-serif`;

@@ -3,6 +3,7 @@
 // method labelled beside its point (nudged apart where they crowd), the recommended one ringed.
 // Theme-aware (CSS variables read at draw time), sized for a projector, redrawn on resize.
 import { cssVar, lineScale } from '../../ui/theme.js';
+import { context2d } from '../../ui/context2d.js';
 
 const FONT = 'system-ui, sans-serif';
 
@@ -46,6 +47,7 @@ function formatPower(e) {
 export function createScatter(container, { ariaLabel }) {
   const canvas = document.createElement('canvas');
   canvas.className = 'sa-chart';
+  context2d(canvas); // claimed now, before the first run: see context2d.js
   canvas.setAttribute('role', 'img');
   canvas.setAttribute('aria-label', ariaLabel);
   container.append(canvas);
@@ -57,7 +59,8 @@ export function createScatter(container, { ariaLabel }) {
     const height = Math.max(240, canvas.clientHeight);
     canvas.width = Math.round(width * ratio);
     canvas.height = Math.round(height * ratio);
-    const g = canvas.getContext('2d');
+    const g = context2d(canvas);
+    if (!g) return;
     g.setTransform(ratio, 0, 0, ratio, 0, 0);
     g.fillStyle = cssVar('--panel', '#161b22');
     g.fillRect(0, 0, width, height);
