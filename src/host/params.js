@@ -52,7 +52,7 @@ export function parseValue(spec, raw) {
       if (value < spec.min || value > spec.max) {
         return { ok: false, reason: `is outside ${spec.min} to ${spec.max}` };
       }
-      return { ok: true, value };
+      return { ok: true, value: value + 0 }; // -0 is 0: it would print as −0 and write a link of its own
     }
     case 'enum': {
       if (!['string', 'number', 'boolean'].includes(typeof raw)) return { ok: false, reason: `is not one of ${enumValues(spec).join(', ')}` };
@@ -87,7 +87,8 @@ export function formatValue(spec, value) {
   switch (spec.type) {
     case 'number': {
       const text = value.toFixed(stepDecimals(spec.step));
-      return text.includes('.') ? text.replace(/\.?0+$/, '') : text;
+      const short = text.includes('.') ? text.replace(/\.?0+$/, '') : text;
+      return short === '-0' ? '0' : short; // a tiny negative value rounds to 0, not to a link of its own
     }
     case 'color':
       return value.replace('#', '');

@@ -103,3 +103,14 @@ describe('whole-number parameters', async () => {
     }
   });
 });
+
+describe('minus zero', async () => {
+  const { formatValue, parseValue } = await import('../../src/host/params.js');
+  const spec = { type: 'number', default: 0, min: -10, max: 10, step: 0.1, label: 'x' };
+  it('is read as 0, and a tiny negative value is written as 0 (the link wrote -0, which read back as another link)', () => {
+    for (const raw of ['-0', -0, '-0.0']) expect(Object.is(parseValue(spec, raw).value, 0), String(raw)).toBe(true);
+    expect(formatValue(spec, -5e-324)).toBe('0');
+    expect(formatValue(spec, -0.04)).toBe('0');
+    expect(formatValue(spec, -0.06)).toBe('-0.1');
+  });
+});
