@@ -7,6 +7,7 @@ import { questionById } from './questions.js';
 import { gradeAnswer, questionParams, readAnswer } from './gradeAnswer.js';
 import { SHEET_VERSION, readSheet } from './readSheet.js';
 import { hashSeed } from './seededRandom.js';
+import { rawText } from '../host/params.js';
 
 const text = (v, max) => typeof v === 'string' && v.length > 0 && v.length <= max;
 
@@ -25,7 +26,7 @@ export function gradeHandIn(data, { expected = null } = {}) {
   if (data.version !== SHEET_VERSION) problems.push(`version must be ${SHEET_VERSION}.`);
   if (!text(data.seed, 64)) problems.push('seed must be a text of 1 to 64 characters.');
   if (!Array.isArray(data.answers) || (read.ok && data.answers.length !== read.sheet.items.length)) problems.push('answers must hold one entry per question.');
-  if (read.ok && read.sheet.seed !== undefined && data.seed !== read.sheet.seed) problems.push(`this sheet gives everyone the seed ${read.sheet.seed}, but the file says ${String(data.seed).slice(0, 64)}.`);
+  if (read.ok && read.sheet.seed !== undefined && data.seed !== read.sheet.seed) problems.push(`this sheet gives everyone the seed ${read.sheet.seed}, but the file says ${rawText(data.seed, 64)}.`);
   if (read.ok && expected && sheetFingerprint(read.sheet) !== sheetFingerprint(expected)) {
     problems.push(`it answers another sheet (fingerprint ${sheetFingerprint(read.sheet)}) than the one given to check against (${sheetFingerprint(expected)}): an edited copy, or the wrong sheet.`);
   }

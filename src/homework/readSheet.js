@@ -2,6 +2,8 @@
 // and anything unexpected is refused with a reason. Handed-in files: gradeHandIn.js.
 import { questionById } from './questions.js';
 import { EMBED_KEYS } from '../host/readEmbedOptions.js';
+import { rawText, resolveKey } from '../host/params.js';
+import { panelSchema } from '../panels/panelSchema.js';
 
 export const SHEET_VERSION = 1;
 const MAX_ITEMS = 40;
@@ -10,10 +12,11 @@ const text = (v, max) => typeof v === 'string' && v.length > 0 && v.length <= ma
 const plainObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
 
 /**
- * An item's start state: panel values the question does not set (a view, a roughness). Only its
- * shape is checked here; the panel checks each value against its schema and says so on screen.
+ * An item's start state: panel values the question does not set (a view, a roughness). Its shape
+ * and its names are checked here (a name the panel does not know would be dropped there without a
+ * word); the panel checks each value against its schema and says so on screen.
  */
-function stateProblems(state, where) {
+function stateProblems(state, panelId, where) {
   if (state === undefined) return [];
   if (!plainObject(state)) return [`${where}: state must be an object of panel values.`];
   const entries = Object.entries(state);
@@ -22,6 +25,7 @@ function stateProblems(state, where) {
     if (!/^[A-Za-z][A-Za-z0-9]{0,31}$/.test(key)) return [`${where}: “${key.slice(0, 32)}” is not a panel value's name.`];
     // The frame's own options (which panel, locks, the deck's origin) are the sheet page's to set.
     if (EMBED_KEYS.includes(key)) return [`${where}: ${key} is not a panel value (it is an option of the embed page).`];
+    if (resolveKey(panelSchema(panelId) ?? {}, key) === undefined) return [`${where}: ${key} is not a value of this question's panel.`];
     const fits = (typeof value === 'number' && Number.isFinite(value)) || typeof value === 'boolean' || text(value, 64);
     return fits ? [] : [`${where}: ${key} must be a number, true or false, or a short text.`];
   });
@@ -37,8 +41,10 @@ export function readSheet(data) {
     problems.push(`items must be a list of 1 to ${MAX_ITEMS} questions.`);
   } else {
     data.items.forEach((item, i) => {
-      if (!questionById(item?.question)) problems.push(`item ${i + 1}: there is no question “${String(item?.question).slice(0, 40)}”.`);
-      else problems.push(...stateProblems(item.state, `item ${i + 1}`));
+      const question = questionById(item?.question);
+      // rawText: the id may be any JSON, and String() of an object whose toString is not a function throws.
+      if (!question) problems.push(`item ${i + 1}: there is no question “${rawText(item?.question)}”.`);
+      else problems.push(...stateProblems(item.state, question.panel, `item ${i + 1}`));
     });
   }
   if (data.seed !== undefined && !text(data.seed, 64)) problems.push('seed, where given, must be a text of 1 to 64 characters.');

@@ -10,6 +10,15 @@
 // optionally aliases: older keys that still read (links and decks made before a rename keep working).
 
 const HEX = /^#?([0-9a-f]{6})$/i;
+// A number as a person writes one: decimal, optionally signed, with an exponent. Number() also
+// takes 0x1, 0b1, 0o7 and Infinity, which no link or control writes.
+const DECIMAL = /^[-+]?(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?$/i;
+
+/** A decimal number written as text (surrounding spaces allowed), or NaN. */
+export function readNumber(text) {
+  const trimmed = text.trim();
+  return DECIMAL.test(trimmed) ? Number(trimmed) : NaN;
+}
 
 function enumValues(spec) {
   return Array.isArray(spec.options) ? spec.options.map(String) : Object.keys(spec.options);
@@ -46,7 +55,7 @@ export function stepDecimals(step) {
 export function parseValue(spec, raw) {
   switch (spec.type) {
     case 'number': {
-      const value = typeof raw === 'number' ? raw : typeof raw === 'string' && raw.trim() !== '' ? Number(raw) : NaN;
+      const value = typeof raw === 'number' ? raw : typeof raw === 'string' ? readNumber(raw) : NaN;
       if (!Number.isFinite(value)) return { ok: false, reason: 'is not a number' };
       if (spec.integer && !Number.isInteger(value)) return { ok: false, reason: 'is not a whole number' };
       if (value < spec.min || value > spec.max) {

@@ -3,20 +3,19 @@
 // values and messages work at once; its module (DOM, scene, shaders, libraries) is its own chunk,
 // loaded only when the panel is about to be seen, so a page downloads only what it shows.
 import { PANELS, panelEntry } from './manifest.js';
+import { panelSchema } from './panelSchema.js';
 
 /** @typedef {{ schema?: import('../host/panelContract.js').Schema, mount?: import('../host/panelContract.js').PanelDefinition['mount'] }} PanelModule */
 const modules = /** @type {Record<string, () => Promise<PanelModule>>} */ (import.meta.glob('./*/index.js'));
-const schemas = /** @type {Record<string, import('../host/panelContract.js').Schema>} */ (
-  import.meta.glob('./*/schema.js', { eager: true, import: 'schema' }));
-const moduleOf = (id) => modules[`./${id}/index.js`];
+const moduleOf = (id) => (Object.hasOwn(modules, `./${id}/index.js`) ? modules[`./${id}/index.js`] : undefined);
 
 /** Manifest ids whose folder has no index.js or schema.js: a build or test failure, never a silent omission. */
-export const missingModules = PANELS.filter((p) => !moduleOf(p.id) || !schemas[`./${p.id}/schema.js`]).map((p) => p.id);
+export const missingModules = PANELS.filter((p) => !moduleOf(p.id) || !panelSchema(p.id)).map((p) => p.id);
 
 /** The module's mount(), checked: the module must keep the contract and export the same schema. */
 async function loadMount(id) {
   const module = await moduleOf(id)();
-  if (typeof module.mount !== 'function' || module.schema !== schemas[`./${id}/schema.js`]) {
+  if (typeof module.mount !== 'function' || module.schema !== panelSchema(id)) {
     throw new Error(`src/panels/${id}/index.js must export mount() and the schema of its schema.js.`);
   }
   return module.mount;
@@ -29,7 +28,7 @@ async function loadMount(id) {
  */
 export function panelDefinition(id) {
   const entry = panelEntry(id);
-  const schema = schemas[`./${id}/schema.js`];
+  const schema = panelSchema(id);
   if (!entry || !moduleOf(id) || !schema || typeof schema !== 'object') {
     throw new Error(`There is no panel module src/panels/${id}/index.js with a schema.js in the manifest.`);
   }

@@ -49,7 +49,7 @@ describe('sheets with start states, hand-ins with names and times', () => {
 
 describe('start states from links', () => {
   it('reads pairs, embed links and lecture links, typed', () => {
-    expect(readStartState('theta=10&fresnel=false&layer=both', 'exact-fresnel')).toEqual({ ok: true, state: { theta: 10, fresnel: false, layer: 'both' } });
+    expect(readStartState('camEl=10&fresnel=false&roughness=0.5', 'asphalt')).toEqual({ ok: true, state: { camEl: 10, fresnel: false, roughness: 0.5 } });
     expect(readStartState('https://example.org/lab/embed.html?panel=asphalt&camEl=4&theme=light&lock=nT', 'asphalt')).toEqual({ ok: true, state: { camEl: 4 } });
     expect(readStartState('./index.html?asphalt.camEl=4&schlick.theta=3#asphalt', 'asphalt')).toEqual({ ok: true, state: { camEl: 4 } });
     expect(readStartState('', 'asphalt')).toEqual({ ok: true, state: {} });
