@@ -2,10 +2,12 @@
 // (RFC 4648 §5) of its raw DEFLATE (RFC 1951), about half the length of the percent-encoded text
 // ("*" and "." are among the few characters a query string keeps as they are). Plain text (from a
 // message, or a link written by hand) reads as it is; GLSL cannot begin with "*".
-// Reading comes with every page (links are read before any panel loads), so it uses tiny-inflate,
-// about 1 KB, which needs the length up front; writing needs deflate, which fflate brings with the
-// panel's module (useDeflate). Until then a link keeps the code as plain text, which reads the same.
-import inflate from 'tiny-inflate';
+// Reading comes with every page (links are read before any panel loads): fflate's inflate alone,
+// about 2 KB, which stops at the end of its input and at a bad code (a smaller inflater looped for
+// ever on some made-up links). Writing needs deflate, which fflate brings with the panel's module
+// (useDeflate). Until then a link keeps the code as plain text, or in stored blocks when it starts
+// with "*" (RFC 1951 §3.2.4), so that it reads back the same.
+import { inflateSync } from 'fflate';
 import { MAX_CODE } from './exerciseTitles.js';
 
 const COMPACT = /^\*([0-9a-z]{1,6})\.([A-Za-z0-9_-]*)$/;
@@ -19,10 +21,10 @@ export function useDeflate(fn) {
 }
 
 export function encodeCode(text) {
-  if (!deflate || !text) return text;
+  if (!text || (!deflate && !text.startsWith('*'))) return text;
   const utf8 = new TextEncoder().encode(text);
   let binary = '';
-  for (const b of deflate(utf8)) binary += String.fromCharCode(b);
+  for (const b of (deflate ?? storedBlocks)(utf8)) binary += String.fromCharCode(b);
   return `*${utf8.length.toString(36)}.${btoa(binary).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '')}`;
 }
 
@@ -34,10 +36,22 @@ export function decodeCode(raw) {
   if (!(length > 0 && length <= MAX_BYTES)) return null;
   try {
     const binary = atob(match[2].replace(/-/g, '+').replace(/_/g, '/'));
-    const out = inflate(Uint8Array.from(binary, (c) => c.charCodeAt(0)), new Uint8Array(length));
+    // One byte of room: a stream that runs on past its stated length is refused, not cut.
+    const out = inflateSync(Uint8Array.from(binary, (c) => c.charCodeAt(0)), { out: new Uint8Array(length + 1) });
     if (out.length !== length) return null;
     return new TextDecoder('utf-8', { fatal: true }).decode(out);
   } catch {
     return null;
   }
+}
+
+/** Raw DEFLATE of stored blocks, no compression (RFC 1951 §3.2.4): header, LEN, NLEN, bytes. */
+function storedBlocks(bytes) {
+  const out = [];
+  for (let at = 0; at === 0 || at < bytes.length; at += 0xffff) {
+    const block = bytes.subarray(at, at + 0xffff);
+    const last = at + 0xffff >= bytes.length ? 1 : 0;
+    out.push(last, block.length & 0xff, block.length >> 8, ~block.length & 0xff, (~block.length >> 8) & 0xff, ...block);
+  }
+  return out;
 }

@@ -24,10 +24,14 @@ export function checkStudentCode(code) {
   // stay, so lines still count.
   const lines = code.replace(/\r\n?/g, '\n');
   const bare = lines.replace(/\/\/[^\n]*|\/\*[\s\S]*?\*\//g, (c) => c.replace(/[^\n]/g, ' '));
+  // Continuations are looked for before comments go, as the compiler joins lines before it reads
+  // comments: a "// …\" comment runs on through the next line, so a "/*" there opens none, and
+  // what that seemed to hide (a loop) is code (GLSL ES 3.00 §3.2).
+  const raw = lines.split('\n');
   bare.split('\n').forEach((text, i) => {
     const line = i + 1;
     if (/\b(for|while|do)\b/.test(text)) problems.push({ line, message: 'Loops are refused here: a Fresnel function needs none, and a loop that never ends would stall the graphics card.' });
-    if (/\\\s*$/.test(text)) problems.push({ line, message: 'A backslash at the end of a line is refused here: it joins two lines, which could hide a loop.' });
+    if (/\\\s*$/.test(raw[i])) problems.push({ line, message: 'A backslash at the end of a line is refused here (in a comment too): it joins two lines, which could hide a loop.' });
     if (/^\s*#/.test(text)) problems.push({ line, message: 'Preprocessor lines (#…) are refused here: the page writes the shader around your function, and a function needs none.' });
     if (/\bprecision\b/.test(text)) problems.push({ line, message: 'Precision statements are refused here: the page sets the precision your function is graded in (a highp local inside it is fine).' });
   });
