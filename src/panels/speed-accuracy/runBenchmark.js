@@ -9,6 +9,7 @@ import { deviceInfo, timeMethodsGpu } from '../../gl/timeMethodsGpu.js';
 import { benchResults, DEFAULT_DOMAIN, GPU_ERROR_KEYS } from '../../optics/benchResults.js';
 import { sceneById } from '../../optics/scenes.js';
 import { timeCpu } from './timeCpu.js';
+import { readCachedResults } from './cachedResults.js';
 import { timeFrames } from './timeFrames.js';
 import { gpuErrorsOn, rememberGpuErrors } from './measureGpuErrors.js';
 
@@ -95,13 +96,12 @@ export async function runBenchmark(host, { size = 'normal', onProgress, signal, 
   });
 }
 
-/** The results saved this session, or null. */
+/** The results saved this session, or null (read as untrusted text: cachedResults.js). */
 export function loadCachedResults() {
   try {
-    const saved = JSON.parse(sessionStorage.getItem(CACHE_KEY) ?? 'null');
-    return saved?.version && Array.isArray(saved.methods) ? saved : null;
+    return readCachedResults(sessionStorage.getItem(CACHE_KEY));
   } catch {
-    return null;
+    return null; // storage refused
   }
 }
 
