@@ -7,7 +7,7 @@ const EXTRA_RULES = { 'label-content-name-mismatch': { enabled: true }, 'td-has-
 
 /** The serious and critical violations on the page, each with the first elements it names. */
 export async function seriousViolations(page) {
-  const { violations } = await new AxeBuilder({ page }).options({ rules: EXTRA_RULES }).analyze();
+  const { violations } = await new AxeBuilder({ page }).options({ rules: EXTRA_RULES, resultTypes: ['violations'] }).analyze();
   return violations
     .filter((v) => v.impact === 'serious' || v.impact === 'critical')
     .map((v) => `${v.impact} ${v.id}: ${v.help} (${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join('; ')})`);
