@@ -12,11 +12,36 @@ export function questionParams(question, seed) {
   return question.params(seededRandom(`${seed}:${question.id}`));
 }
 
+// What a question's parameters decide (its expected value, which option holds) is computed once per
+// question and parameters: parameters come from short lists, so a class of hundreds repeats a few
+// dozen combinations, and some cost tens of milliseconds (the asphalt question bisects over the
+// panel's scene: about 45 ms a hand-in, 45 s for a class of 500 without this).
+const MAX_REMEMBERED = 512; // per question; far above any question's combinations today
+const remembered = new WeakMap(); // question → Map(kind + parameters as JSON → value)
+
+function remember(question, kind, params, compute) {
+  let known = remembered.get(question);
+  if (!known) remembered.set(question, (known = new Map()));
+  const key = `${kind}:${JSON.stringify(params)}`;
+  if (known.has(key)) return known.get(key);
+  const value = compute();
+  if (known.size >= MAX_REMEMBERED) known.clear(); // a question with continuous parameters stays bounded
+  known.set(key, value);
+  return value;
+}
+
+/** The expected value of a numeric or predict question for these parameters (computed once). */
+export const expectedValue = (question, params) => remember(question, 'expected', params, () => question.expected(params));
+
 /** The option of a choice question that holds for these parameters (exactly one must). */
 export function trueOption(question, params) {
-  const holding = question.options(params).filter((option) => option.holds(params));
-  if (holding.length !== 1) throw new Error(`${question.id}: ${holding.length} options hold for ${JSON.stringify(params)}`);
-  return holding[0];
+  const options = question.options(params);
+  const id = remember(question, 'true', params, () => {
+    const holding = options.filter((option) => option.holds(params));
+    if (holding.length !== 1) throw new Error(`${question.id}: ${holding.length} options hold for ${JSON.stringify(params)}`);
+    return holding[0].id;
+  });
+  return options.find((option) => option.id === id);
 }
 
 /**
@@ -44,7 +69,7 @@ export function gradeAnswer(question, params, answer) {
     if (!chosen) return { answered: false, correct: false, expected: right.id, explanation: 'No option was chosen.' };
     return { answered: true, correct: chosen.id === right.id, expected: right.id, explanation: chosen.why(params) };
   }
-  const expected = question.expected(params);
+  const expected = expectedValue(question, params);
   const read = typeof answer === 'number' ? { ok: Number.isFinite(answer), value: answer, reason: 'That is not a number.' }
     : parseAnswer(answer, question.unit);
   const base = { expected, tolerance: question.tolerance, unit: question.unit };
