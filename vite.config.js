@@ -110,7 +110,8 @@ export default defineConfig({
     target: 'es2022',
     // Fonts stay files (font-src 'self' in the pages' CSP); the single-file plugin inlines everything.
     ...(singleFile ? {} : { assetsInlineLimit: (file) => (/\.(woff2?|ttf)$/.test(file) ? false : undefined) }),
-    // three.js's WebGLRenderer is most of the normal-map viewer's chunk; only that panel loads it.
+    // The largest chunk is the benchmark's three.js peer (about 540 KB), fetched only when a benchmark
+    // run reaches it; the next is the shader lab's editor (about 380 KB), loaded with that panel alone.
     chunkSizeWarningLimit: 700,
     rollupOptions: {
       input: singleFile ? pages[singleFile] : pages,

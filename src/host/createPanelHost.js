@@ -369,11 +369,12 @@ export function createPanelHost(container, panel, {
       reducedMotion = on;
       if (on && panel.animates && values[panel.animates]) set({ [panel.animates]: false }, { source: 'api' });
     },
+    /** The slide-sized poster of this view, as a PNG data URL (null before the panel mounts). */
+    poster,
     /**
      * The picture as a PNG data URL (fitted into width × height when given; null for a panel
      * without one), the plotted numbers as CSV text, and the values.
      */
-    poster,
     async snapshot({ width = null, height = null } = {}) {
       const url = instance?.png?.() ?? null;
       const table = instance?.csv?.() ?? null;

@@ -12,7 +12,7 @@ precision highp float;
 uniform vec3 uKd;       // linear RGB
 uniform vec3 uKs;       // linear RGB
 uniform float uN;       // the coat's refractive index (seen from air)
-uniform float uWeight;  // the constant weight of the right sphere
+uniform float uWeight;  // the constant weight w of the second sphere, the one without F
 uniform int uMethod;    // F on the first sphere: 0 exact, 1 Schlick, 2 the layered coat
 uniform float uRi;      // diffuse light the coat's underside reflects back (diffuseFresnel.js)
 uniform float uRe;      // diffuse sky light the coat reflects from above

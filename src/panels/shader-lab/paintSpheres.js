@@ -1,4 +1,4 @@
-// Two spheres shaded with Fresnel: on the left the student's function, on the right the exact one
+// Two spheres shaded with Fresnel: the first with the student's function, the second with the exact one
 // (the lab's exact answer, renamed so the two can sit in one shader), under the lab's sky
 // and sun, as in the fresnel-lighting and metals panels: a coated diffuse sphere
 // k = mix(kd, ks, F) for a dielectric (lecture, "Fresnel Reflection in Lighting"), the reflected
