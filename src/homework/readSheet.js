@@ -2,7 +2,7 @@
 // and anything unexpected is refused with a reason. Handed-in files: gradeHandIn.js.
 import { questionById } from './questions.js';
 import { EMBED_KEYS } from '../host/readEmbedOptions.js';
-import { rawText, resolveKey } from '../host/params.js';
+import { clipText, rawText, resolveKey } from '../host/params.js';
 import { panelSchema } from '../panels/panelSchema.js';
 
 export const SHEET_VERSION = 1;
@@ -10,6 +10,12 @@ const MAX_ITEMS = 40;
 const MAX_STATE_KEYS = 24;
 const text = (v, max) => typeof v === 'string' && v.length > 0 && v.length <= max;
 const plainObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
+const SHEET_FIELDS = ['version', 'title', 'reveal', 'seed', 'items'];
+const ITEM_FIELDS = ['question', 'state'];
+
+/** Fields a sheet or an item does not have, named: a typo such as "stat" would lose the start state unseen. */
+const unknownFields = (object, fields, what, where = '') => Object.keys(object).filter((key) => !fields.includes(key))
+  .map((key) => `${where}“${rawText(key, 32)}” is not a field of ${what} (${fields.join(', ')}).`);
 
 /**
  * An item's start state: panel values the question does not set (a view, a roughness). Its shape
@@ -22,7 +28,7 @@ function stateProblems(state, panelId, where) {
   const entries = Object.entries(state);
   if (entries.length > MAX_STATE_KEYS) return [`${where}: state holds more than ${MAX_STATE_KEYS} values.`];
   return entries.flatMap(([key, value]) => {
-    if (!/^[A-Za-z][A-Za-z0-9]{0,31}$/.test(key)) return [`${where}: “${key.slice(0, 32)}” is not a panel value's name.`];
+    if (!/^[A-Za-z][A-Za-z0-9]{0,31}$/.test(key)) return [`${where}: “${clipText(key, 32)}” is not a panel value's name.`];
     // The frame's own options (which panel, locks, the deck's origin) are the sheet page's to set.
     if (EMBED_KEYS.includes(key)) return [`${where}: ${key} is not a panel value (it is an option of the embed page).`];
     if (resolveKey(panelSchema(panelId) ?? {}, key) === undefined) return [`${where}: ${key} is not a value of this question's panel.`];
@@ -35,12 +41,14 @@ function stateProblems(state, panelId, where) {
 export function readSheet(data) {
   const problems = [];
   if (!data || typeof data !== 'object' || Array.isArray(data)) return { ok: false, problems: ['A sheet is a JSON object.'] };
+  problems.push(...unknownFields(data, SHEET_FIELDS, 'a sheet'));
   if (data.version !== SHEET_VERSION) problems.push(`version must be ${SHEET_VERSION}.`);
   if (!text(data.title, 200)) problems.push('title must be a text of 1 to 200 characters.');
   if (!Array.isArray(data.items) || data.items.length === 0 || data.items.length > MAX_ITEMS) {
     problems.push(`items must be a list of 1 to ${MAX_ITEMS} questions.`);
   } else {
     data.items.forEach((item, i) => {
+      if (plainObject(item)) problems.push(...unknownFields(item, ITEM_FIELDS, 'an item', `item ${i + 1}: `));
       const question = questionById(item?.question);
       // rawText: the id may be any JSON, and String() of an object whose toString is not a function throws.
       if (!question) problems.push(`item ${i + 1}: there is no question “${rawText(item?.question)}”.`);

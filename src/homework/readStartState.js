@@ -2,17 +2,21 @@
 // (an embed link, or a lecture link whose keys carry the panel's prefix). Only the panel's values
 // are kept: embed options (theme, lock, …) are the sheet page's business, not the item's. A name
 // the panel does not have (a typo, or one every object inherits, such as constructor) is refused
-// by name: the panel would drop it without a word.
+// by name: the panel would drop it without a word. Each value is checked against the panel's
+// schema here, so the lecturer hears of a bad one while composing rather than every student in the
+// panel, and an alias is kept under the key it stands for, so the composer can tell that the
+// question's own value wins over it.
 import { EMBED_KEYS } from '../host/readEmbedOptions.js';
-import { rawText, readNumber, resolveKey } from '../host/params.js';
+import { parseValue, rawText, resolveKey } from '../host/params.js';
 import { lecturePrefix, panelEntry } from '../panels/manifest.js';
 import { panelSchema } from '../panels/panelSchema.js';
 
-const typed = (raw) => (raw === 'true' ? true : raw === 'false' ? false : Number.isFinite(readNumber(raw)) ? readNumber(raw) : raw);
+const titleOf = (panelId) => panelEntry(panelId)?.title ?? rawText(panelId);
 
 /** { ok: true, state } (possibly empty) or { ok: false, problem }. */
 export function readStartState(text, panelId) {
-  const raw = String(text ?? '').trim();
+  // Only text is read: String() of an object whose toString is not a function throws.
+  const raw = typeof text === 'string' ? text.trim() : '';
   if (!raw) return { ok: true, state: {} };
   let search;
   try {
@@ -25,21 +29,29 @@ export function readStartState(text, panelId) {
   const fromLecture = !search.has('panel') && prefix && [...search.keys()].some((k) => k.startsWith(prefix));
   if (search.has('panel') && search.get('panel') !== panelId) {
     const other = panelEntry(search.get('panel'))?.title ?? 'another page';
-    return { ok: false, problem: `This link is for “${other}”, not “${panelEntry(panelId).title}”.` };
+    return { ok: false, problem: `This link is for “${other}”, not “${titleOf(panelId)}”.` };
   }
   const schema = panelSchema(panelId) ?? {};
   const state = {};
   const unknown = [];
+  const refused = [];
   for (const [key, value] of search) {
     let name = null;
     if (fromLecture) name = key.startsWith(prefix) ? key.slice(prefix.length) : null;
     else if (!EMBED_KEYS.includes(key) && !key.includes('.')) name = key;
     if (name === null) continue;
-    if (resolveKey(schema, name) === undefined) unknown.push(rawText(name));
-    else state[name] = typed(value);
+    const own = resolveKey(schema, name);
+    if (own === undefined) {
+      unknown.push(rawText(name));
+      continue;
+    }
+    const read = parseValue(schema[own], value);
+    // A text keeps the form its link has (a shader's code stays compact): the panel decodes it.
+    if (read.ok) state[own] = schema[own].type === 'text' ? value : read.value;
+    else refused.push(`${rawText(name)}=${rawText(value)} ${read.reason}`);
   }
-  if (unknown.length) {
-    return { ok: false, problem: `${unknown.join(', ')} ${unknown.length === 1 ? 'is not a value' : 'are not values'} of the “${panelEntry(panelId).title}” panel.` };
-  }
-  return { ok: true, state };
+  const problems = [];
+  if (unknown.length) problems.push(`${unknown.join(', ')} ${unknown.length === 1 ? 'is not a value' : 'are not values'} of the “${titleOf(panelId)}” panel.`);
+  if (refused.length) problems.push(`${refused.join('; ')}.`);
+  return problems.length ? { ok: false, problem: problems.join(' ') } : { ok: true, state };
 }

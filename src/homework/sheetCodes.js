@@ -38,8 +38,11 @@ function parseJson(text, what) {
   }
 }
 
+// A code or a file is text: anything else (a number, an object whose toString throws) is none.
+const asText = (raw) => (typeof raw === 'string' ? raw : '');
+
 function decode(code, what) {
-  const text = String(code ?? '').trim();
+  const text = asText(code).trim();
   if (!text) return { ok: false, problems: [`No ${what} was given.`] };
   if (text.length > MAX_CODE) return { ok: false, problems: [`This ${what} is too long to be one (${text.length} characters).`] };
   try {
@@ -71,7 +74,7 @@ export const handInToCode = (handIn) => HAND_IN_PREFIX + toBase64Url(JSON.string
  * { ok: true, data } (still to be graded by gradeHandIn) or { ok: false, problems }.
  */
 export function handInFromText(text) {
-  const trimmed = String(text ?? '').trim();
+  const trimmed = asText(text).trim();
   if (trimmed.startsWith('{')) return parseJson(trimmed, 'handed-in file');
   if (trimmed.startsWith(HAND_IN_PREFIX)) return decode(trimmed.slice(HAND_IN_PREFIX.length), 'handed-in code');
   if (!trimmed) return { ok: false, problems: ['Nothing was given: paste a handed-in code or choose a handed-in file.'] };

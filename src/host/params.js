@@ -39,7 +39,12 @@ export function rawText(raw, max = 40) {
   if (raw === null || ['string', 'number', 'boolean', 'undefined', 'bigint'].includes(typeof raw)) text = String(raw);
   else if (Array.isArray(raw)) text = '(a list)';
   else text = typeof raw === 'object' ? '(an object)' : `(a ${typeof raw})`;
-  return text.length > max ? `${text.slice(0, max)}…` : text;
+  return text.length > max ? `${clipText(text, max)}…` : text;
+}
+
+/** At most `max` UTF-16 units of a text, without half of a character beyond the BMP at the cut (it would show as �). */
+export function clipText(text, max) {
+  return text.slice(0, /[\ud800-\udbff]/.test(text.charAt(max - 1)) ? max - 1 : max);
 }
 
 /** Number of decimals implied by a step (0.001 → 3), used to write short, exact URLs. */

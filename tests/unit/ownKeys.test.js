@@ -42,10 +42,10 @@ describe('a start state', () => {
         .toEqual({ ok: false, problem: `${name} is not a value of the “${panelEntry('exact-fresnel').title}” panel.` });
     }
   });
-  it('keeps the panel\'s own keys and aliases, and reads numbers only as decimals', () => {
+  it('keeps the panel\'s own keys, an alias under its key, and reads numbers only as decimals', () => {
     expect(readStartState('camEl=10&fresnel=false', 'asphalt')).toEqual({ ok: true, state: { camEl: 10, fresnel: false } });
-    expect(readStartState('n1=1.2', 'polarization')).toEqual({ ok: true, state: { n1: 1.2 } });
-    expect(readStartState('theta=0x1', 'exact-fresnel')).toEqual({ ok: true, state: { theta: '0x1' } }); // the panel refuses it, by name
+    expect(readStartState('n1=1.2', 'polarization')).toEqual({ ok: true, state: { nI: 1.2 } });
+    expect(readStartState('theta=0x1', 'exact-fresnel')).toEqual({ ok: false, problem: 'theta=0x1 is not a number.' });
   });
 });
 
