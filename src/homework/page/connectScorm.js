@@ -1,11 +1,11 @@
 // Inside an LMS: the SCORM 1.2 run-time API (ADL, "SCORM Version 1.2 Run-Time Environment", 2001,
 // §3.2), the object `API` an LMS puts on a window above the page. Found, the sheet takes the
 // learner's id for its seed and their name, keeps answers in cmi.suspend_data (so they follow the
-// learner to another computer), and at hand-in reports the recomputed score to the gradebook.
+// learner to another computer), records each checked answer as an interaction (so the LMS's reports
+// show every question), and at hand-in reports the recomputed score to the gradebook.
 // Without an LMS, or with one whose API fails, nothing here runs and the page is the ordinary
 // homework page.
-
-const SUSPEND_LIMIT = 4096; // cmi.suspend_data holds at most 4096 characters in SCORM 1.2 (RTE §3.4.2)
+import { SUSPEND_LIMIT } from '../readResume.js';
 
 /** The nearest `API` on a window above (or the opener's), as the run-time's discovery does. */
 function findApi(start) {
@@ -33,9 +33,10 @@ function timespan(ms) {
 }
 
 /**
- * { learner: { id, name }, resume, save(work) → bool, report(score, total) → bool }, or null
- * without an LMS. Every call into the LMS is guarded: an LMS that throws or refuses makes a call
- * return false, never breaks the page.
+ * { learner: { id, name }, suspendData, save(work) → bool, record(interaction) → bool,
+ * report(score, total) → bool }, or null without an LMS. suspendData: what the LMS kept, unread
+ * (readResume.js reads it). Every call into the LMS is guarded: an LMS that throws or refuses
+ * makes a call return false, never breaks the page.
  */
 export function connectScorm(win = window) {
   const api = findApi(win);
@@ -66,12 +67,12 @@ export function connectScorm(win = window) {
     return true;
   };
   if (!begin()) return null;
-  let resume;
-  try {
-    resume = JSON.parse(get('cmi.suspend_data') || 'null');
-  } catch {
-    resume = null;
-  }
+  const suspendData = get('cmi.suspend_data');
+  // Which elements of an interaction the LMS keeps (RTE §3.4.2.7, cmi.interactions._children). An
+  // LMS that does not say ('' or an error) is tried element by element, and a refused id ends the
+  // tries; one whose list has no id keeps nothing that could be told apart, and is not sent any.
+  const children = get('cmi.interactions._children').split(',').map((name) => name.trim()).filter(Boolean);
+  let interactions = children.length === 0 || children.includes('id');
   let open = true;
   win.addEventListener('pagehide', () => {
     if (!open) return;
@@ -86,10 +87,35 @@ export function connectScorm(win = window) {
   win.addEventListener('pageshow', (event) => { if (event.persisted && !open) open = begin(); });
   return {
     learner: { id: get('cmi.core.student_id'), name: get('cmi.core.student_name') },
-    resume,
+    suspendData,
+    /** Keeps work in cmi.suspend_data, and commits it with the interactions recorded since. */
     save(work) {
       const data = JSON.stringify(work);
-      return data.length <= SUSPEND_LIMIT && set('cmi.suspend_data', data) && commit();
+      const kept = data.length <= SUSPEND_LIMIT && set('cmi.suspend_data', data);
+      return commit() && kept;
+    },
+    /**
+     * Appends an interaction (scormInteraction.js: its elements in writing order), committed by the
+     * next save. cmi.interactions is write-only in 1.2 and the LMS journals them (RTE §3.4.2.7):
+     * each check is a new one at the next index, cmi.interactions._count, never a rewrite. False
+     * where the LMS keeps none; an element it does not list in _children is left out.
+     */
+    record(interaction) {
+      if (!open || !interactions) return false;
+      const count = get('cmi.interactions._count').trim();
+      if (!/^\d{1,9}$/.test(count)) return false; // no count, no index that is surely free
+      const n = Number(count);
+      let written = true;
+      for (const [element, value] of Object.entries(interaction)) {
+        if (children.length && !children.includes(element.split('.')[0])) continue;
+        const ok = set(`cmi.interactions.${n}.${element}`, value);
+        if (!ok && element === 'id') {
+          interactions = false; // the LMS refuses interactions: no more tries, no orphaned elements
+          return false;
+        }
+        written &&= ok;
+      }
+      return written;
     },
     /** The score as a percentage (cmi.core.score.raw, 0–100) and the lesson completed. */
     report(score, total) {

@@ -9,6 +9,8 @@ import { questionById } from '../questions.js';
 import { questionParams, readAnswer } from '../gradeAnswer.js';
 import { gradeHandIn } from '../gradeHandIn.js';
 import { hashSeed, newSeed } from '../seededRandom.js';
+import { readResume } from '../readResume.js';
+import { scormInteraction } from '../scormInteraction.js';
 import { handInToCode, makeHandIn } from '../sheetCodes.js';
 import { openAnswerStore } from './answerStore.js';
 import { buildQuestionCard } from './buildQuestionCard.js';
@@ -35,12 +37,12 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
   store.forSeed(seed);
   const questions = sheet.items.map((item) => questionById(item.question));
   const params = questions.map((q) => questionParams(q, seed));
+  let resumeNotice = null;
   if (scorm) {
     // The LMS's copy of the answers wins: it follows the learner from one computer to another.
-    const resumed = scorm.resume;
-    if (resumed?.seed === seed && Array.isArray(resumed.answers) && resumed.answers.length === work.answers.length) {
-      resumed.answers.forEach((a, i) => { work.answers[i] = a; });
-    }
+    const resumed = readResume(scorm.suspendData, { seed, classSeed: sheet.seed ?? null, questions, params });
+    resumed.answers?.forEach((a, i) => { work.answers[i] = a; });
+    resumeNotice = resumed.notice;
     if (!work.name && scorm.learner.name) work.name = scorm.learner.name.slice(0, 100);
   }
   const answers = work.answers.map((raw, i) => readAnswer(questions[i], params[i], raw));
@@ -65,6 +67,7 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
   head.append(el('h1', null, sheet.title), seedLine, field('Your name (goes into the hand-in)', name, 'hw-field hw-name'), lectureLabel, revealAll);
   if (scorm) head.append(el('p', 'hw-meta', 'This sheet is part of your course: handing in sends your score to its gradebook.'));
   else if (!store.kept()) head.append(el('p', 'notice notice-warning', 'This browser does not let the page keep your answers: hand in before you close it.'));
+  if (resumeNotice) head.append(el('p', 'notice notice-warning hw-resume-notice', resumeNotice));
   root.append(head);
 
   const keep = () => {
@@ -91,6 +94,8 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
       onAnswer: (answer) => {
         work.answers[i] = answer;
         work.attempts[i] = card.attempts();
+        // Each check is one interaction in the LMS's reports; an empty box checked is no answer.
+        if (scorm && answer !== null) scorm.record(scormInteraction({ position: i + 1, question: questions[i], params: params[i], answer, at: new Date() }));
         keep();
         if (questions[i].kind === 'predict') queueMicrotask(refreshAll); // a panel held back may now show
       },
