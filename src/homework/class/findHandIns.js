@@ -1,0 +1,238 @@
+// @ts-check
+// Every hand-in in a text: a handed-in file's JSON, a list of codes one per line, codes mixed with
+// other text (a mail, an LMS's text export, a CSV with quoted fields). Each hand-in found is
+// { source, data } with the line it starts on; each that is there but cannot be read (a code cut
+// in the middle, JSON cut short) is refused with the same source and the reason. Nothing found in a
+// text that is not empty is refused too.
+//
+// Codes: mail programs wrap long lines, quote them with "> ", and quoted-printable mail ends a
+// wrapped line with "=". A code is the base64url of JSON (sheetCodes.js), and a proper prefix of a
+// JSON object is never valid JSON, so the code's end is the first place, among the ends of its
+// line pieces, where it decodes to a JSON object: text that follows it (a name, "Thanks") is not
+// taken in, and a line break inside it does not cut it. Cost: a piece is decoded only when its
+// last group of four characters decodes to "}", so a wrapped code is decoded about once.
+import { HAND_IN_KIND, HAND_IN_PREFIX, handInFromText } from '../sheetCodes.js';
+
+const MAX_CODE_CHARS = 200_000; // as sheetCodes.js: far above any sheet
+const MAX_JSON_CHARS = 1_000_000; // a hand-in's JSON: its sheet has at most 40 items of 24 values
+const MARK = `"${HAND_IN_KIND}"`; // the value of a hand-in's "kind"
+const FULL = 'not read: the cap on hand-ins read in all is reached.';
+const MAX_REFUSALS = 1000; // listed one by one, per text
+
+/**
+ * @typedef {{ source: string, data: unknown }} HandIn
+ * @typedef {{ source: string, reason: string }} Refusal
+ */
+
+const isCodeChar = (c) => (c >= 48 && c <= 57) || (c >= 65 && c <= 90) || (c >= 97 && c <= 122) || c === 45 || c === 95;
+const isSpace = (c) => c === 32 || c === 9 || c === 10 || c === 13 || c === 12 || c === 0xa0;
+
+/** The line (from 1) each position is on, by binary search over the line starts. */
+function lineFinder(text) {
+  const starts = [0];
+  for (let i = text.indexOf('\n'); i !== -1; i = text.indexOf('\n', i + 1)) starts.push(i + 1);
+  return (position) => {
+    let lo = 0;
+    let hi = starts.length - 1;
+    while (lo < hi) {
+      const mid = (lo + hi + 1) >> 1;
+      if (starts[mid] <= position) lo = mid;
+      else hi = mid - 1;
+    }
+    return lo + 1;
+  };
+}
+
+/** Whether a base64url text's last byte is "}" (the end of a JSON object), from its last group alone. */
+function endsInBrace(code) {
+  const rest = code.length % 4;
+  if (rest === 1) return false;
+  const group = code.slice(code.length - (rest || 4)).replace(/-/g, '+').replace(/_/g, '/');
+  try {
+    return atob(group + '='.repeat((4 - (group.length % 4)) % 4)).endsWith('}');
+  } catch {
+    return false;
+  }
+}
+
+/**
+ * The code that starts after a prefix at `start`, read up to `limit`: { data, end } for the first end
+ * at which it decodes to a JSON object, or { reason } why none does.
+ */
+function readCode(text, start, limit) {
+  let code = '';
+  const ends = []; // [length of code, position in text after it]
+  let run = start;
+  let lineStart = false;
+  const close = (i) => {
+    if (i > run) code += text.slice(run, i);
+    run = i;
+    if (code.length && (!ends.length || ends[ends.length - 1][0] !== code.length)) ends.push([code.length, i]);
+  };
+  let i = start;
+  for (; i < limit && code.length + i - run <= MAX_CODE_CHARS; i += 1) {
+    const c = text.charCodeAt(i);
+    if (isCodeChar(c)) {
+      lineStart = false;
+      continue;
+    }
+    close(i);
+    if (isSpace(c)) {
+      if (c === 10) lineStart = true;
+    } else if (c === 62 && lineStart) { // ">" that quotes a line in a reply
+      // skipped: the code may go on after it
+    } else if (c === 61 && /^=\r?\n/.test(text.slice(i, i + 3))) { // "=" that ends a quoted-printable line
+      i = text.indexOf('\n', i);
+      lineStart = true;
+    } else {
+      break; // any other character (a quote, a comma, "<", "=" padding) ends a code
+    }
+    run = i + 1;
+  }
+  close(Math.min(i, limit));
+  for (const [length, end] of ends) {
+    const piece = code.slice(0, length);
+    if (!endsInBrace(piece)) continue;
+    const read = handInFromText(HAND_IN_PREFIX + piece);
+    if (read.ok && read.data !== null && typeof read.data === 'object' && !Array.isArray(read.data)) return { data: read.data, end };
+  }
+  if (!ends.length) return { reason: `${HAND_IN_PREFIX} is followed by no code.` };
+  const first = handInFromText(HAND_IN_PREFIX + code.slice(0, ends[0][0]));
+  if (first.ok) return { reason: 'This handed-in code does not hold a hand-in (a JSON object).' };
+  const reason = first.problems.join(' ');
+  return { reason: /cut short/.test(reason) ? reason : `${reason} Was it cut short when copied?` };
+}
+
+/** Whether the character at i is escaped by an odd run of backslashes (counted up to 1,000). */
+function escaped(text, i) {
+  let n = 0;
+  for (let j = i - 1; j >= 0 && text.charCodeAt(j) === 92 && n < 1000; j -= 1) n += 1;
+  return n % 2 === 1;
+}
+
+/** The "{" that opens the object holding position `at`, searched back no further than `floor`; -1 if none. */
+function objectStart(text, at, floor) {
+  let depth = 0;
+  let inString = false;
+  for (let i = at - 1; i >= floor; i -= 1) {
+    const c = text[i];
+    if (c === '"') {
+      if (!escaped(text, i)) inString = !inString;
+    } else if (inString) continue;
+    else if (c === '}' || c === ']') depth += 1;
+    else if (c === '{' || c === '[') {
+      if (depth === 0) return c === '{' ? i : -1;
+      depth -= 1;
+    }
+  }
+  return -1;
+}
+
+/** The "}" that closes the object opened at `start`, searched no further than `ceiling`; -1 if none. */
+function objectEnd(text, start, ceiling) {
+  let depth = 0;
+  let inString = false;
+  for (let i = start; i < ceiling; i += 1) {
+    const c = text[i];
+    if (inString) {
+      if (c === '\\') i += 1;
+      else if (c === '"') inString = false;
+    } else if (c === '"') inString = true;
+    else if (c === '{' || c === '[') depth += 1;
+    else if (c === '}' || c === ']') {
+      depth -= 1;
+      if (depth === 0) return i;
+    }
+  }
+  return -1;
+}
+
+/**
+ * Hand-ins as JSON inside a text, found by their kind: [{ start, end, data } | { start, reason }].
+ * Each search stops at the next one's kind, so every character is looked at a bounded number of times.
+ */
+function findJson(text) {
+  const found = [];
+  const marks = [];
+  for (let m = text.indexOf(MARK); m !== -1; m = text.indexOf(MARK, m + 1)) if (!escaped(text, m)) marks.push(m);
+  let floor = 0;
+  marks.forEach((m, k) => {
+    if (m < floor) return; // inside a hand-in already read (a name that quotes the kind)
+    const start = objectStart(text, m, Math.max(floor, m - MAX_JSON_CHARS));
+    if (start < 0) {
+      found.push({ start: m, reason: 'A hand-in\'s JSON whose beginning is missing (its "{" is not there).' });
+      return;
+    }
+    const ceiling = Math.min(text.length, start + MAX_JSON_CHARS, k + 1 < marks.length ? marks[k + 1] : Infinity);
+    const end = objectEnd(text, start, ceiling);
+    if (end < 0) {
+      found.push({ start, reason: 'A hand-in\'s JSON that is cut short (it does not close before the next one or the end).' });
+      return;
+    }
+    try {
+      found.push({ start, end: end + 1, data: JSON.parse(text.slice(start, end + 1)) });
+      floor = end + 1;
+    } catch {
+      found.push({ start, reason: 'A hand-in\'s JSON that is not readable JSON.' });
+    }
+  });
+  return found;
+}
+
+/**
+ * Every hand-in in `text`, which came from `source` (a file's path, or "pasted text"); at most
+ * `maxHandIns` (what is left of the class's cap) are read, the rest refused. Never throws on any text.
+ * @param {string} text
+ * @param {string} source
+ * @param {{ maxHandIns?: number }} [options]
+ * @returns {{ handIns: HandIn[], refused: Refusal[] }}
+ */
+export function findHandIns(text, source, { maxHandIns = Infinity } = {}) {
+  /** @type {HandIn[]} */
+  const handIns = [];
+  /** @type {Refusal[]} */
+  const refused = [];
+  const trimmed = text.trim();
+  if (!trimmed) return { handIns, refused };
+  // A whole handed-in file, or a list of them.
+  if (trimmed.startsWith('{') || trimmed.startsWith('[')) {
+    let data;
+    try {
+      data = JSON.parse(trimmed);
+    } catch { /* JSON with other text around it, or cut: searched below */ }
+    const list = Array.isArray(data) ? data.map((item, i) => ({ source: `${source} [${i + 1}]`, data: item })) : [];
+    if (data !== null && typeof data === 'object' && !Array.isArray(data)) list.push({ source, data });
+    handIns.push(...list.slice(0, maxHandIns));
+    if (list.length > maxHandIns) refused.push({ source: `${source} [${maxHandIns + 1}–${list.length}]`, reason: FULL });
+    if (data !== undefined && (handIns.length || refused.length)) return { handIns, refused };
+  }
+  // A CSV cell doubles the quotes of the JSON in it ("{""kind"":…}"): read that JSON undoubled.
+  const scanned = text.includes(`"${MARK}"`) ? text.replaceAll('""', '"') : text;
+  const lineOf = lineFinder(scanned);
+  const found = findJson(scanned);
+  const taken = found.filter((f) => f.end !== undefined);
+  const inside = (i) => taken.some((f) => f.start <= i && i < f.end);
+  for (let p = scanned.indexOf(HAND_IN_PREFIX); p !== -1;) {
+    const next = scanned.indexOf(HAND_IN_PREFIX, p + HAND_IN_PREFIX.length);
+    if (!inside(p)) {
+      const code = readCode(scanned, p + HAND_IN_PREFIX.length, next === -1 ? scanned.length : next);
+      found.push({ start: p, ...code });
+    }
+    p = next;
+  }
+  found.sort((a, b) => a.start - b.start);
+  let unlisted = 0;
+  for (const f of found) {
+    const where = `${source}, line ${lineOf(f.start)}`;
+    const reason = f.reason ?? (handIns.length >= maxHandIns ? FULL : null);
+    if (!reason) handIns.push({ source: where, data: f.data });
+    else if (refused.length < MAX_REFUSALS) refused.push({ source: where, reason });
+    else unlisted += 1;
+  }
+  // A text of nothing but "FLH1." would list a refusal for each: past a thousand, they are counted.
+  if (unlisted) refused.push({ source, reason: `and ${unlisted} more hand-ins or codes in it that cannot be read (not listed one by one).` });
+  if (!handIns.length && !refused.length) {
+    refused.push({ source, reason: `holds no hand-in: no handed-in code (${HAND_IN_PREFIX}…) and no handed-in file's JSON.` });
+  }
+  return { handIns, refused };
+}

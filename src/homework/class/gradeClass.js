@@ -1,0 +1,117 @@
+// @ts-check
+// Grading a class: every hand-in against the sheet the lecturer set, each by gradeHandIn (answers
+// recomputed from the sheet, the seed and the answer; nothing a file says about its score is read).
+// A hand-in for another sheet, another class seed, or data that is no hand-in is refused with its
+// source and the reasons. The work is a generator that pauses between slices of about 40 ms, so a
+// page can grade on its own thread without a long task (gradeClass), or a worker can run it through
+// (classWorker.js); gradeClassSync runs it to its end (tests, Node).
+import { gradeHandIn, sheetFingerprint } from '../gradeHandIn.js';
+import { readSheet } from '../readSheet.js';
+import { HAND_IN_KIND } from '../sheetCodes.js';
+import { rawText } from '../../host/params.js';
+import { CLASS_FILE_KIND } from './classFile.js';
+
+/**
+ * @typedef {{ source: string, data: unknown }} HandIn
+ * @typedef {{ source: string, reason: string }} Refusal
+ * @typedef {{ source: string, result: any }} Graded  result: gradeHandIn's { ok: true, … } (its sheet is the class's)
+ * @typedef {{ ok: true, sheet: any, fingerprint: string, graded: Graded[], refused: Refusal[] } | { ok: false, problems: string[] }} ClassGrades
+ * @typedef {{ done: number, total: number }} Progress
+ */
+
+const SLICE_MS = 40;
+const plainObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
+const own = (object, key) => (Object.hasOwn(object, key) ? object[key] : undefined);
+
+/** Why `data` is not a hand-in at all, before grading (a sheet or a saved class view dropped among them), or null. */
+function notAHandIn(data) {
+  if (!plainObject(data)) return 'A hand-in is a JSON object.';
+  const kind = own(data, 'kind');
+  if (kind === CLASS_FILE_KIND) return 'This is a saved class view, not a hand-in: open it as a class view.';
+  if (kind !== undefined && kind !== HAND_IN_KIND) return `This is not a hand-in: its kind is ${rawText(kind)}.`;
+  if (Object.hasOwn(data, 'items') && !Object.hasOwn(data, 'answers')) return 'This is a sheet, not a hand-in: it has questions and no answers.';
+  return null;
+}
+
+/**
+ * The steps of grading: yields { done, total } after each slice of about `sliceMs` and returns the
+ * class's grades. sheet: the sheet the lecturer set (its JSON, read here once; required).
+ * @param {unknown} sheet
+ * @param {HandIn[]} handIns
+ * @param {{ sliceMs?: number, now?: () => number }} [options]
+ * @returns {Generator<Progress, ClassGrades, void>}
+ */
+export function* gradeClassSteps(sheet, handIns, { sliceMs = SLICE_MS, now = () => performance.now() } = {}) {
+  const read = readSheet(sheet);
+  if (!read.ok) return { ok: false, problems: read.problems.map((p) => `The sheet you set: ${p}`) };
+  const expected = read.sheet;
+  const list = Array.isArray(handIns) ? handIns : [];
+  /** @type {Graded[]} */
+  const graded = [];
+  /** @type {Refusal[]} */
+  const refused = [];
+  let sliceStart = now();
+  for (let i = 0; i < list.length; i += 1) {
+    const item = list[i];
+    const source = plainObject(item) && typeof own(item, 'source') === 'string' ? item.source : `hand-in ${i + 1}`;
+    const data = plainObject(item) ? own(item, 'data') : undefined;
+    const reason = notAHandIn(data);
+    if (reason) refused.push({ source, reason });
+    else {
+      let result;
+      try {
+        result = gradeHandIn(data, { expected });
+      } catch (error) {
+        result = { ok: false, problems: [`A question could not be graded: ${error?.message ?? 'an error'}.`] };
+      }
+      // The hand-in's sheet is the class's (the fingerprints agree): one shared object, not 500 copies.
+      if (result.ok) graded.push({ source, result: { ...result, sheet: expected } });
+      else refused.push({ source, reason: result.problems.join(' ') });
+    }
+    if (i + 1 < list.length && now() - sliceStart >= sliceMs) {
+      yield { done: i + 1, total: list.length };
+      sliceStart = now();
+    }
+  }
+  return { ok: true, sheet: expected, fingerprint: sheetFingerprint(expected), graded, refused };
+}
+
+/** The next task: the page's other work (input, painting) runs before grading goes on. */
+function nextTask() {
+  const scheduler = /** @type {any} */ (globalThis).scheduler;
+  if (typeof scheduler?.yield === 'function') return scheduler.yield();
+  return new Promise((resolve) => setTimeout(resolve, 0));
+}
+
+/**
+ * Grades a class in slices: between slices it awaits `pause` (the next task) and reports progress;
+ * an aborted `signal` stops it (the promise rejects with the signal's reason).
+ * @param {unknown} sheet
+ * @param {HandIn[]} handIns
+ * @param {{ sliceMs?: number, onProgress?: (progress: Progress) => void, signal?: AbortSignal, pause?: () => Promise<unknown> }} [options]
+ * @returns {Promise<ClassGrades>}
+ */
+export async function gradeClass(sheet, handIns, { sliceMs, onProgress, signal, pause = nextTask } = {}) {
+  const steps = gradeClassSteps(sheet, handIns, { sliceMs });
+  for (;;) {
+    signal?.throwIfAborted();
+    const step = steps.next();
+    if (step.done === true) return step.value;
+    onProgress?.(/** @type {Progress} */ (step.value));
+    await pause();
+  }
+}
+
+/**
+ * Grades a class at once (a worker, a test, Node).
+ * @param {unknown} sheet
+ * @param {HandIn[]} handIns
+ * @returns {ClassGrades}
+ */
+export function gradeClassSync(sheet, handIns) {
+  const steps = gradeClassSteps(sheet, handIns, { sliceMs: Infinity });
+  for (;;) {
+    const step = steps.next();
+    if (step.done) return step.value;
+  }
+}

@@ -1,0 +1,99 @@
+// @ts-check
+// A class's hand-ins from what a lecturer brings: files picked or a folder dropped (handed-in .json
+// files, .txt files of codes, an LMS's zip of everyone's submissions, zips inside it), and text
+// pasted (codes and handed-in files' JSON, among other text). Each hand-in keeps where it came from
+// (an LMS's folder often names the student: lmsName.js); everything that is not read is refused
+// with its name and the reason. Reading only finds data: gradeClass.js decides what it is.
+import { classCaps } from './classCaps.js';
+import { fileKind } from './fileKind.js';
+import { findHandIns } from './findHandIns.js';
+import { unzipBounded } from './unzipBounded.js';
+
+/**
+ * @typedef {{ source: string, data: unknown }} HandIn
+ * @typedef {{ source: string, reason: string }} Refusal
+ * @typedef {{ name: string, bytes: Uint8Array | ArrayBuffer }} PickedFile
+ */
+
+const megabytes = (n) => `${(n / (1024 * 1024)).toFixed(1)} MB`;
+
+/** Text from a file's bytes: UTF-8 (a byte-order mark dropped), or UTF-16 where its mark says so (Windows' "Unicode"). */
+export function decodeText(bytes) {
+  if (bytes[0] === 0xff && bytes[1] === 0xfe) return new TextDecoder('utf-16le').decode(bytes.subarray(2));
+  if (bytes[0] === 0xfe && bytes[1] === 0xff) return new TextDecoder('utf-16be').decode(bytes.subarray(2));
+  // Not fatal: codes are ASCII, so a stray byte elsewhere in a mail or a CSV export costs nothing.
+  return new TextDecoder('utf-8').decode(bytes); // drops a UTF-8 byte-order mark
+}
+
+/**
+ * Reads files and text into hand-ins. files: [{ name (its path), bytes }]; text: pasted text;
+ * caps: any of CLASS_CAPS replaced. Never throws on any input.
+ * @param {{ files?: PickedFile[], text?: string }} [input]
+ * @param {Partial<typeof import('./classCaps.js').CLASS_CAPS>} [capsGiven]
+ * @returns {{ handIns: HandIn[], refused: Refusal[] }}
+ */
+export function readClassHandIns({ files = [], text = '' } = {}, capsGiven = {}) {
+  const caps = classCaps(capsGiven);
+  /** @type {HandIn[]} */
+  const handIns = [];
+  /** @type {Refusal[]} */
+  const refused = [];
+  const budget = { entries: caps.maxEntries, bytes: caps.maxUnpackedBytes };
+  const left = () => caps.maxHandIns - handIns.length;
+
+  const readText = (content, source) => {
+    const found = findHandIns(content, source, { maxHandIns: Math.max(0, left()) });
+    handIns.push(...found.handIns);
+    refused.push(...found.refused);
+  };
+
+  /** A zip entry's size is decided from its directory, before it is unpacked. */
+  const admit = (path, claimed) => {
+    const kind = fileKind(path);
+    if (kind.reason) return kind.reason;
+    const max = kind.kind === 'zip' ? caps.maxNestedZipBytes : caps.maxFileBytes;
+    return claimed > max ? `its header says it unpacks to ${megabytes(claimed)}, more than the ${megabytes(max)} a ${kind.kind === 'zip' ? 'zip inside a zip' : 'file'} may have.` : null;
+  };
+
+  const readFile = (name, bytes, depth) => {
+    const kind = fileKind(name);
+    if (kind.reason) {
+      refused.push({ source: name, reason: kind.reason });
+    } else if (kind.kind === 'zip') {
+      const max = depth === 0 ? caps.maxZipBytes : caps.maxNestedZipBytes;
+      if (depth >= caps.maxDepth) refused.push({ source: name, reason: `a zip inside ${depth} others: zips are opened ${caps.maxDepth} deep at most.` });
+      else if (bytes.length > max) refused.push({ source: name, reason: `${megabytes(bytes.length)}: more than the ${megabytes(max)} a zip may have.` });
+      else {
+        const zip = unzipBounded(bytes, { name, admit, budget, maxEntries: caps.maxEntries });
+        refused.push(...zip.refused);
+        for (const file of zip.files) readFile(file.name, file.bytes, depth + 1);
+        if (!zip.files.length && !zip.refused.length) refused.push({ source: name, reason: 'an empty zip: it holds no files.' });
+      }
+    } else if (bytes.length > caps.maxFileBytes) {
+      refused.push({ source: name, reason: `${megabytes(bytes.length)}: more than the ${megabytes(caps.maxFileBytes)} a handed-in file or a text of codes may have.` });
+    } else {
+      const content = decodeText(bytes);
+      if (!content.trim()) refused.push({ source: name, reason: 'an empty file.' });
+      else readText(content, name);
+    }
+  };
+
+  const list = Array.isArray(files) ? files : [];
+  list.forEach((file, i) => {
+    const name = typeof file?.name === 'string' && file.name ? file.name : `file ${i + 1}`;
+    const bytes = file?.bytes instanceof Uint8Array ? file.bytes : file?.bytes instanceof ArrayBuffer ? new Uint8Array(file.bytes) : null;
+    try {
+      if (!bytes) refused.push({ source: name, reason: 'no content was given for this file.' });
+      else readFile(name, bytes, 0);
+    } catch (error) {
+      // Not expected (every reader refuses by name); if it happens, the file is still named.
+      refused.push({ source: name, reason: `could not be read: ${error?.message ?? 'an error'}.` });
+    }
+  });
+
+  if (typeof text === 'string' && text.trim()) {
+    if (text.length > caps.maxTextChars) refused.push({ source: 'pasted text', reason: `${text.length} characters: more than the ${caps.maxTextChars} read at once; paste it in parts or save it as a .txt file.` });
+    else readText(text, 'pasted text');
+  }
+  return { handIns, refused };
+}

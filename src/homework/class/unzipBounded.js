@@ -1,0 +1,227 @@
+// @ts-check
+// A zip from outside, opened without trusting its headers: an LMS's "download all submissions", or
+// a zip a student handed in (the LMS keeps it as it came). Every decision is made from the zip's
+// directory before anything is unpacked: too many entries, a name that is not read, a method or
+// encryption this reader does not know, a claimed size over its cap or over what is left of the
+// class's total. What is unpacked is then held to its claim.
+//
+// Why not fflate's unzipSync with a filter: it inflates each entry into a buffer of the claimed size,
+// which bounds memory, but a stream that expands past its claim runs on to its end with its output
+// dropped, and nothing tells it apart from an honest entry (a 200 KB stream claiming a few bytes
+// takes about a second; a 20 MB one, a minute and a half). Here the deflate stream goes through
+// fflate's Inflate a few kilobytes at a time and stops as soon as it passes its claim, so no entry
+// costs more than its claim plus one step's output (4 MB); the CRC-32 of what came out is checked.
+import { Inflate, inflateSync, strFromU8 } from 'fflate';
+
+const END = 0x06054b50; // end of central directory
+const END64 = 0x06064b50;
+const END64_LOCATOR = 0x07064b50;
+const CENTRAL = 0x02014b50;
+const LOCAL = 0x04034b50;
+const STEP = 4096; // compressed bytes per push: at most about 4 MB of output (deflate's limit is 1032:1)
+
+const u16 = (b, o) => b[o] | (b[o + 1] << 8);
+const u32 = (b, o) => (b[o] | (b[o + 1] << 8) | (b[o + 2] << 16) | (b[o + 3] << 24)) >>> 0;
+const u64 = (b, o) => u32(b, o) + u32(b, o + 4) * 2 ** 32;
+const megabytes = (n) => `${(n / (1024 * 1024)).toFixed(n < 1024 * 1024 ? 2 : 1)} MB`;
+
+/**
+ * @typedef {{ entries: number, bytes: number }} ZipBudget What is left of the class's caps (entries
+ *   and unpacked bytes), shared by a zip and the zips inside it; unzipBounded spends it.
+ * @typedef {{ name: string, bytes: Uint8Array }} ZipFile A file unpacked, named by its path in the zip.
+ * @typedef {{ source: string, reason: string }} Refusal
+ */
+
+let crcTable = null;
+/** CRC-32 (ISO 3309, as zip uses): a damaged entry, or one whose stream ended early, fails it. */
+function crc32(bytes) {
+  if (!crcTable) {
+    crcTable = new Int32Array(256);
+    for (let n = 0; n < 256; n += 1) {
+      let c = n;
+      for (let k = 0; k < 8; k += 1) c = c & 1 ? 0xedb88320 ^ (c >>> 1) : c >>> 1;
+      crcTable[n] = c;
+    }
+  }
+  let c = -1;
+  for (let i = 0; i < bytes.length; i += 1) c = crcTable[(c ^ bytes[i]) & 255] ^ (c >>> 8);
+  return (c ^ -1) >>> 0;
+}
+
+/** The end-of-directory record (zip64 where the plain one overflows): { count, offset } or null. */
+function findDirectory(b) {
+  for (let e = b.length - 22; e >= Math.max(0, b.length - 22 - 0xffff); e -= 1) {
+    if (u32(b, e) !== END) continue;
+    let count = u16(b, e + 10);
+    let offset = u32(b, e + 16);
+    if ((count === 0xffff || offset === 0xffffffff) && e >= 20 && u32(b, e - 20) === END64_LOCATOR) {
+      const at = u64(b, e - 12);
+      if (at + 56 <= b.length && u32(b, at) === END64) {
+        count = u64(b, at + 32);
+        offset = u64(b, at + 48);
+      }
+    }
+    return { count, offset };
+  }
+  return null;
+}
+
+/** An entry's name: UTF-8 where flagged or where it reads as UTF-8 (many tools never flag it), else Latin-1. */
+function entryName(bytes, utf8Flag) {
+  let name;
+  try {
+    name = new TextDecoder('utf-8', { fatal: !utf8Flag }).decode(bytes);
+  } catch {
+    name = strFromU8(bytes, true);
+  }
+  return name.replace(/\\/g, '/').replace(/^(\.?\/)+/, '');
+}
+
+/** The sizes and local offset of a central entry, zip64 extra field read where a field overflows. */
+function entrySizes(b, p, nameLength, extraLength) {
+  let size = u32(b, p + 20);
+  let claimed = u32(b, p + 24);
+  let local = u32(b, p + 42);
+  if (claimed === 0xffffffff || size === 0xffffffff || local === 0xffffffff) {
+    const end = p + 46 + nameLength + extraLength;
+    for (let x = p + 46 + nameLength; x + 4 <= end;) {
+      const id = u16(b, x);
+      const length = u16(b, x + 2);
+      if (id === 1) {
+        let f = x + 4;
+        if (claimed === 0xffffffff && f + 8 <= end) claimed = u64(b, f), f += 8;
+        if (size === 0xffffffff && f + 8 <= end) size = u64(b, f), f += 8;
+        if (local === 0xffffffff && f + 8 <= end) local = u64(b, f);
+        break;
+      }
+      x += 4 + length;
+    }
+  }
+  return { size, claimed, local };
+}
+
+const BOMB = (claimed) => ({ reason: `a zip bomb: it unpacks to more than the ${claimed} bytes its header claims, so unpacking stopped there.` });
+const DAMAGED = { reason: 'damaged: its compressed data does not unpack to what its header claims (was the zip cut short?).' };
+
+/**
+ * Inflates `input` to exactly `claimed` bytes, stopping as soon as it would pass them.
+ * @returns {{ bytes?: Uint8Array, reason?: string }}
+ */
+function inflateBounded(input, claimed) {
+  if (input.length <= STEP) {
+    // One step's input can only make one step's output, so it is inflated at once into a buffer one
+    // byte longer than its claim: a stream that fills that byte says more than it claimed. (A hand-in
+    // is a few kilobytes; the streaming inflater's buffers cost more than the inflating.)
+    let out;
+    try {
+      out = inflateSync(input, { out: new Uint8Array(claimed + 1) });
+    } catch {
+      return DAMAGED;
+    }
+    if (out.length > claimed) return BOMB(claimed);
+    return out.length === claimed ? { bytes: out.subarray(0, claimed) } : { reason: `damaged: it unpacks to ${out.length} bytes where its header claims ${claimed}.` };
+  }
+  const out = new Uint8Array(claimed);
+  let length = 0;
+  let over = false;
+  const inflater = new Inflate((chunk) => {
+    if (over || length + chunk.length > claimed) {
+      over = true;
+      return;
+    }
+    out.set(chunk, length);
+    length += chunk.length;
+  });
+  try {
+    if (input.length === 0) inflater.push(new Uint8Array(0), true);
+    for (let at = 0; at < input.length && !over; at += STEP) inflater.push(input.subarray(at, at + STEP), at + STEP >= input.length);
+  } catch {
+    if (!over) return DAMAGED;
+  }
+  if (over) return BOMB(claimed);
+  if (length !== claimed) return { reason: `damaged: it unpacks to ${length} bytes where its header claims ${claimed}.` };
+  return { bytes: out };
+}
+
+/**
+ * The files of a zip that `admit` lets in, each held to its claimed size.
+ * name: the zip's own name (its entries are named `${name}/${path}`); admit(path, claimedBytes):
+ * null to unpack that entry, or the reason it is refused (decided before unpacking); budget: what is
+ * left of the class's entries and bytes (spent here); maxEntries: the most entries a zip's directory
+ * may list. Never throws on any bytes.
+ * @param {Uint8Array} bytes
+ * @param {{ name: string, admit: (path: string, claimed: number) => string | null, budget: ZipBudget, maxEntries: number }} options
+ * @returns {{ files: ZipFile[], refused: Refusal[] }}
+ */
+export function unzipBounded(bytes, { name, admit, budget, maxEntries }) {
+  /** @type {ZipFile[]} */
+  const files = [];
+  /** @type {Refusal[]} */
+  const refused = [];
+  const refuse = (source, reason) => refused.push({ source, reason });
+  const b = bytes;
+  const directory = findDirectory(b);
+  if (!directory) {
+    refuse(name, 'not a zip that can be read: it has no zip directory at its end (damaged, cut short, or another kind of file).');
+    return { files, refused };
+  }
+  const { count } = directory;
+  if (count > maxEntries) {
+    refuse(name, `its directory lists ${count} entries, more than the ${maxEntries} read from one zip: refused before anything was unpacked (a zip bomb can list millions).`);
+    return { files, refused };
+  }
+  let p = directory.offset;
+  for (let i = 0; i < count; i += 1) {
+    if (p + 46 > b.length || u32(b, p) !== CENTRAL) {
+      refuse(name, `damaged: its directory breaks off after ${i} of the ${count} entries it lists; the rest are not read.`);
+      break;
+    }
+    const flags = u16(b, p + 8);
+    const method = u16(b, p + 10);
+    const crc = u32(b, p + 16);
+    const nameLength = u16(b, p + 28);
+    const extraLength = u16(b, p + 30);
+    const commentLength = u16(b, p + 32);
+    const path = entryName(b.subarray(p + 46, Math.min(b.length, p + 46 + nameLength)), (flags & 0x800) !== 0);
+    const { size, claimed, local } = entrySizes(b, p, nameLength, extraLength);
+    p += 46 + nameLength + extraLength + commentLength;
+    if (path === '' || path.endsWith('/')) continue; // a folder: its files are entries of their own
+    const source = `${name}/${path}`;
+    if (budget.entries <= 0) {
+      refuse(source, 'not read: the cap on files unpacked from zips in all is reached.');
+      continue;
+    }
+    budget.entries -= 1;
+    const refusal = admit(path, claimed);
+    if (refusal) refuse(source, refusal);
+    else if (flags & 1) refuse(source, 'encrypted: it cannot be read without its password.');
+    else if (method !== 0 && method !== 8) refuse(source, `packed with a method this reader does not know (${method}); only stored and deflated entries are read.`);
+    else if (claimed > budget.bytes) refuse(source, `not unpacked: its ${megabytes(claimed)} would pass what is left of the cap on bytes unpacked from zips in all (${megabytes(budget.bytes)}).`);
+    else {
+      const read = readEntry(b, { local, size, claimed, method, crc });
+      if (read.reason) refuse(source, read.reason);
+      else {
+        budget.bytes -= claimed;
+        files.push({ name: source, bytes: read.bytes });
+      }
+    }
+  }
+  return { files, refused };
+}
+
+/**
+ * One entry's data, from its local header.
+ * @returns {{ bytes?: Uint8Array, reason?: string }}
+ */
+function readEntry(b, { local, size, claimed, method, crc }) {
+  if (local + 30 > b.length || u32(b, local) !== LOCAL) return { reason: 'damaged: its data is not where the zip\'s directory says.' };
+  const start = local + 30 + u16(b, local + 26) + u16(b, local + 28);
+  if (start + size > b.length) return { reason: 'damaged: its data runs past the end of the zip (was it cut short?).' };
+  const data = b.subarray(start, start + size);
+  /** @type {{ bytes?: Uint8Array, reason?: string }} */
+  let read;
+  if (method === 0) read = size === claimed ? { bytes: data.slice() } : { reason: `damaged: it is stored unpacked, yet holds ${size} bytes where it claims ${claimed}.` };
+  else read = inflateBounded(data, claimed);
+  if (read.bytes && crc32(read.bytes) !== crc) return { reason: 'damaged: what it unpacks to does not match its checksum.' };
+  return read;
+}
