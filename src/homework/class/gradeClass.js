@@ -2,10 +2,13 @@
 // Grading a class: every hand-in against the sheet the lecturer set, each by gradeHandIn (answers
 // recomputed from the sheet, the seed and the answer; nothing a file says about its score is read).
 // A hand-in for another sheet, another class seed, or data that is no hand-in is refused with its
-// source and the reasons. The work is a generator that pauses between slices of about 40 ms, so a
-// page can grade on its own thread without a long task (gradeClass), or a worker can run it through
-// (classWorker.js); gradeClassSync runs it to its end (tests, Node).
+// source and the reasons. The work is a generator that pauses between slices of about 40 ms (the
+// slow first computations of each question are done one at a time first, so no slice holds several),
+// so a page can grade on its own thread without a long task (gradeClass), or a worker can run it
+// through (classWorker.js); gradeClassSync runs it to its end (tests, Node).
 import { gradeHandIn, sheetFingerprint } from '../gradeHandIn.js';
+import { expectedValue, questionParams, trueOption } from '../gradeAnswer.js';
+import { questionById } from '../questions.js';
 import { readSheet } from '../readSheet.js';
 import { HAND_IN_KIND } from '../sheetCodes.js';
 import { rawText } from '../../host/params.js';
@@ -34,6 +37,36 @@ function notAHandIn(data) {
 }
 
 /**
+ * The cold work of grading, a question at a time: the first time a question meets its parameters,
+ * its expected value (or the option that holds) is computed, and for a few that takes tens of
+ * milliseconds (the asphalt question bisects over the panel's scene; Schlick's worst error sweeps a
+ * scene): together well over 100 ms in a class's first hand-in. Done here once per question and
+ * parameters, with a step after each, a slice can end between them; grading then finds them
+ * remembered (gradeAnswer.js). Yields after each computation; hand-ins without a usable seed are
+ * left to gradeHandIn to refuse.
+ */
+function* primeQuestions(sheet, list) {
+  const questions = sheet.items.map((item) => /** @type {any} */ (questionById(item.question)));
+  const seen = new Set();
+  for (const item of list) {
+    const data = plainObject(item) ? own(item, 'data') : undefined;
+    const seed = plainObject(data) ? own(data, 'seed') : undefined;
+    if (typeof seed !== 'string' || seed.length === 0 || seed.length > 64) continue;
+    for (const question of questions) {
+      const params = questionParams(question, seed);
+      const key = `${question.id}\u0000${JSON.stringify(params)}`;
+      if (seen.has(key)) continue;
+      seen.add(key);
+      try {
+        if (question.kind !== 'choice') expectedValue(question, params);
+        else for (const option of [trueOption(question, params), ...question.options(params)]) option.why(params);
+      } catch { /* gradeHandIn meets it again and says so */ }
+      yield;
+    }
+  }
+}
+
+/**
  * The steps of grading: yields { done, total } after each slice of about `sliceMs` and returns the
  * class's grades. sheet: the sheet the lecturer set (its JSON, read here once; required).
  * @param {unknown} sheet
@@ -51,6 +84,14 @@ export function* gradeClassSteps(sheet, handIns, { sliceMs = SLICE_MS, now = () 
   /** @type {Refusal[]} */
   const refused = [];
   let sliceStart = now();
+  const due = () => now() - sliceStart >= sliceMs;
+  const priming = primeQuestions(expected, list);
+  while (!priming.next().done) {
+    if (due()) {
+      yield { done: 0, total: list.length };
+      sliceStart = now();
+    }
+  }
   for (let i = 0; i < list.length; i += 1) {
     const item = list[i];
     const source = plainObject(item) && typeof own(item, 'source') === 'string' ? item.source : `hand-in ${i + 1}`;
@@ -68,7 +109,7 @@ export function* gradeClassSteps(sheet, handIns, { sliceMs = SLICE_MS, now = () 
       if (result.ok) graded.push({ source, result: { ...result, sheet: expected } });
       else refused.push({ source, reason: result.problems.join(' ') });
     }
-    if (i + 1 < list.length && now() - sliceStart >= sliceMs) {
+    if (i + 1 < list.length && due()) {
       yield { done: i + 1, total: list.length };
       sliceStart = now();
     }

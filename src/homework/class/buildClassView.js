@@ -1,0 +1,58 @@
+// @ts-check
+// A class view from what the lecturer brings, in one call: the hand-ins read (readClassHandIns.js;
+// a saved class view, classFile.js, adds its hand-ins and gives the sheet), graded in slices
+// (gradeClass.js), the gradebook (buildGradebook.js) and what the class got wrong per question
+// (summarizeQuestions.js). Every input ends as a graded hand-in or a refusal with its source.
+// classWorker.js runs this in a worker; on the page's thread the grading yields between slices.
+import { readClassHandIns } from './readClassHandIns.js';
+import { readClassFile } from './classFile.js';
+import { gradeClass } from './gradeClass.js';
+import { buildGradebook } from './buildGradebook.js';
+import { summarizeQuestions } from './summarizeQuestions.js';
+
+/**
+ * @typedef {import('./readClassHandIns.js').HandIn} HandIn
+ * @typedef {import('./readClassHandIns.js').Refusal} Refusal
+ * @typedef {import('./readClassHandIns.js').PickedFile} PickedFile
+ * @typedef {{ phase: 'reading' | 'grading' | 'summarising', done?: number, total?: number }} ViewProgress
+ * @typedef {{ ok: true, sheet: any, fingerprint: string, handIns: HandIn[], graded: import('./gradeClass.js').Graded[],
+ *   refused: Refusal[], gradebook: import('./buildGradebook.js').Gradebook,
+ *   summary: import('./summarizeQuestions.js').QuestionSummary[] } | { ok: false, problems: string[] }} ClassView
+ */
+
+/**
+ * request: { sheet (the sheet set, its JSON), files?, text?, classFile? (a saved view's text or
+ * bytes: its sheet is used, and its hand-ins come first) }.
+ * @param {{ sheet?: unknown, files?: PickedFile[], text?: string, classFile?: string | Uint8Array }} request
+ * @param {{ caps?: object, onProgress?: (progress: ViewProgress) => void, signal?: AbortSignal, pause?: () => Promise<unknown>, sliceMs?: number }} [options]
+ * @returns {Promise<ClassView>}
+ */
+export async function buildClassView(request, { caps, onProgress, signal, pause, sliceMs } = {}) {
+  let sheet = request?.sheet;
+  /** @type {HandIn[]} */
+  const handIns = [];
+  /** @type {Refusal[]} */
+  const refused = [];
+  onProgress?.({ phase: 'reading' });
+  if (request?.classFile !== undefined) {
+    const saved = readClassFile(request.classFile, caps);
+    if (saved.ok === false) return saved;
+    sheet = saved.sheet;
+    handIns.push(...saved.handIns);
+    refused.push(...saved.refused);
+  }
+  if (sheet === undefined || sheet === null) return { ok: false, problems: ['Give the sheet you set: hand-ins are graded against it, and those for any other sheet are refused.'] };
+  const read = readClassHandIns({ files: request?.files, text: request?.text }, caps);
+  handIns.push(...read.handIns);
+  refused.push(...read.refused);
+  const grades = await gradeClass(sheet, handIns, {
+    sliceMs, signal, pause, onProgress: (p) => onProgress?.({ phase: 'grading', ...p }),
+  });
+  if (grades.ok === false) return grades;
+  onProgress?.({ phase: 'summarising' });
+  const gradebook = buildGradebook(grades);
+  return {
+    ok: true, sheet: grades.sheet, fingerprint: grades.fingerprint, handIns, graded: grades.graded,
+    refused: [...refused, ...grades.refused], gradebook, summary: summarizeQuestions(grades, gradebook),
+  };
+}

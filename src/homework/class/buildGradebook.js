@@ -1,0 +1,148 @@
+// @ts-check
+// The gradebook of a graded class: one row per hand-in, each marked whether it counts, with flags
+// for what a lecturer should look at before the grades go anywhere:
+//   superseded / resubmitted  the same student handed in more than once: the latest (by the time in
+//                             the hand-in) counts, the others stay as rows that do not count;
+//   shared-seed               one seed under two names (a sheet without a class seed gives each
+//                             student their own seed, so two names on one seed handed in one sheet);
+//   class-seed                a seed other than the class seed (gradeHandIn refuses those, so this
+//                             shows only for grades made some other way);
+//   copied                    the same wrong numbers to the same numbers: two students on one seed
+//                             with the same wrong answer to several numeric or predict questions;
+//   no-name                   the hand-in gives no name.
+// A student is their name as the file gives it (spaces and case aside), or the LMS's folder name when
+// the file gives none; hand-ins with neither are never taken for one another.
+import { questionById } from '../questions.js';
+import { lmsName } from './lmsName.js';
+
+/**
+ * @typedef {'right' | 'wrong' | 'unanswered'} Mark
+ * @typedef {{ kind: 'superseded' | 'resubmitted' | 'shared-seed' | 'class-seed' | 'copied' | 'no-name', text: string, others: number[] }} Flag
+ * @typedef {{ key: number, name: string, lmsName: string, seed: string, score: number, total: number, percent: number,
+ *   marks: Mark[], tries: (number | null)[], triesTotal: number | null, time: string | null, source: string,
+ *   counted: boolean, flags: Flag[] }} Row  key: the hand-in's index in grades.graded
+ * @typedef {{ title: string, fingerprint: string, classSeed: string | null, items: { question: string, kind: string }[],
+ *   rows: Row[], students: number, superseded: number }} Gradebook
+ */
+
+const COPIED_AT_LEAST = 3;
+const normalName = (text) => text.normalize('NFC').trim().replace(/\s+/g, ' ').toLocaleLowerCase();
+const shown = (row) => row.name || row.lmsName || row.source;
+const listed = (rows) => rows.map(shown).join(', ');
+const timeOf = (row) => (row.time === null ? -Infinity : Date.parse(row.time));
+
+/** The same student more than once: the latest counts (the later one in the list when the times agree). */
+function supersede(rows, identity) {
+  const byStudent = new Map();
+  for (const row of rows) {
+    const who = identity(row);
+    if (who === null) continue;
+    if (!byStudent.has(who)) byStudent.set(who, []);
+    byStudent.get(who).push(row);
+  }
+  for (const group of byStudent.values()) {
+    if (group.length < 2) continue;
+    group.sort((a, b) => timeOf(a) - timeOf(b) || a.key - b.key);
+    const latest = group[group.length - 1];
+    const earlier = group.slice(0, -1);
+    for (const row of earlier) {
+      row.counted = false;
+      row.flags.push({ kind: 'superseded', text: `Not counted: ${shown(latest)} handed in again later (${latest.time ?? 'no time given'}, ${latest.source}).`, others: [latest.key] });
+    }
+    latest.flags.push({ kind: 'resubmitted', text: `Handed in ${group.length} times; this one, the latest, counts.`, others: earlier.map((r) => r.key) });
+  }
+}
+
+/** One seed under more than one student (only where the sheet gives no class seed). */
+function sharedSeeds(rows, identity) {
+  const bySeed = new Map();
+  for (const row of rows) {
+    if (!bySeed.has(row.seed)) bySeed.set(row.seed, []);
+    bySeed.get(row.seed).push(row);
+  }
+  for (const group of bySeed.values()) {
+    const students = new Set(group.map((row) => identity(row) ?? `#${row.key}`));
+    if (students.size < 2) continue;
+    for (const row of group) {
+      const others = group.filter((r) => r !== row);
+      row.flags.push({ kind: 'shared-seed', text: `Seed ${row.seed} is also on the hand-in of ${listed(others)}: one sheet under ${students.size} names.`, others: others.map((r) => r.key) });
+    }
+  }
+}
+
+/**
+ * Pairs with the same wrong answers to the same numbers on `atLeast` numeric or predict questions.
+ * A wrong answer that many share (a common slip, such as R(0°) for R) says nothing about copying, so
+ * one shared by more than 5 % of the class (at least 4 students) is left out; this also keeps the
+ * pairs counted small.
+ */
+function copiedAnswers(rows, graded, items, identity, atLeast) {
+  const buckets = new Map();
+  for (const row of rows) {
+    graded[row.key].result.results.forEach((r, i) => {
+      if (!r.answered || r.correct || items[i].kind === 'choice') return;
+      const value = items[i].kind === 'numeric' ? r.value : r.answer;
+      const key = `${row.seed}\u0000${i}\u0000${value}`;
+      if (!buckets.has(key)) buckets.set(key, { item: i, rows: [] });
+      buckets.get(key).rows.push(row);
+    });
+  }
+  const common = Math.max(4, Math.ceil(0.05 * rows.length));
+  const pairs = new Map();
+  for (const { item, rows: same } of buckets.values()) {
+    if (same.length < 2 || same.length >= common) continue;
+    for (let a = 0; a < same.length; a += 1) {
+      for (let b = a + 1; b < same.length; b += 1) {
+        const [x, y] = [same[a], same[b]];
+        if (identity(x) !== null && identity(x) === identity(y)) continue;
+        const key = `${Math.min(x.key, y.key)}:${Math.max(x.key, y.key)}`;
+        if (!pairs.has(key)) pairs.set(key, { x, y, items: [] });
+        pairs.get(key).items.push(item);
+      }
+    }
+  }
+  for (const { x, y, items: shared } of pairs.values()) {
+    if (shared.length < atLeast) continue;
+    const questions = shared.sort((a, b) => a - b).map((i) => i + 1).join(', ');
+    for (const [row, other] of [[x, y], [y, x]]) {
+      row.flags.push({ kind: 'copied', text: `The same wrong answers as ${shown(other)} to the same numbers (seed ${row.seed}) on questions ${questions}: a copied sheet looks like that.`, others: [other.key] });
+    }
+  }
+}
+
+/**
+ * The gradebook of a class graded by gradeClass (its { ok: true, … } result). copiedAtLeast: how
+ * many identical wrong answers flag a pair (3).
+ * @param {{ sheet: any, fingerprint: string, graded: { source: string, result: any }[] }} grades
+ * @param {{ copiedAtLeast?: number }} [options]
+ * @returns {Gradebook}
+ */
+export function buildGradebook(grades, { copiedAtLeast = COPIED_AT_LEAST } = {}) {
+  const { sheet, graded } = grades;
+  const items = sheet.items.map((item) => ({ question: item.question, kind: /** @type {any} */ (questionById(item.question)).kind }));
+  /** @type {Row[]} */
+  const rows = graded.map(({ source, result }, key) => {
+    const tries = result.results.map((r) => r.attempts);
+    const known = tries.filter((t) => t !== null);
+    return {
+      key, name: result.name, lmsName: lmsName(source), seed: result.seed,
+      score: result.score, total: result.total, percent: result.total ? (100 * result.score) / result.total : 0,
+      marks: result.results.map((r) => (r.correct ? 'right' : r.answered ? 'wrong' : 'unanswered')),
+      tries, triesTotal: known.length ? known.reduce((a, b) => a + b, 0) : null,
+      time: result.time, source, counted: true, flags: [],
+    };
+  });
+  const identity = (row) => (row.name ? normalName(row.name) : row.lmsName ? normalName(row.lmsName) : null);
+  supersede(rows, identity);
+  const counted = rows.filter((row) => row.counted);
+  if (sheet.seed === undefined) sharedSeeds(counted, identity);
+  else for (const row of counted) if (row.seed !== sheet.seed) row.flags.push({ kind: 'class-seed', text: `Seed ${row.seed}, where the sheet gives everyone ${sheet.seed}.`, others: [] });
+  copiedAnswers(counted, graded, items, identity, copiedAtLeast);
+  for (const row of rows) {
+    if (!row.name) row.flags.push({ kind: 'no-name', text: row.lmsName ? `No name in the hand-in; the LMS's folder says ${row.lmsName}.` : 'No name in the hand-in.', others: [] });
+  }
+  return {
+    title: sheet.title, fingerprint: grades.fingerprint, classSeed: sheet.seed ?? null, items, rows,
+    students: counted.length, superseded: rows.length - counted.length,
+  };
+}
