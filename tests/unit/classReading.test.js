@@ -249,4 +249,22 @@ describe('codes and JSON in pasted text', () => {
     expect(read.refused).toHaveLength(1001);
     expect(read.refused[1000].reason).toMatch(/and 4000 more/);
   });
+
+  it('a paste built to be slow is read in about linear time (a megabyte of each: kinds, prefixes, broken codes, backslashes)', () => {
+    const M = 1024 * 1024;
+    const texts = [
+      '"fresnel-lab-hand-in"'.repeat(M / 21), '{"kind":"fresnel-lab-hand-in",'.repeat(M / 30), 'FLH1.a\n'.repeat(M / 7),
+      `FLH1.${'a\n'.repeat(M / 2)}`, `{${'\\'.repeat(M)}"fresnel-lab-hand-in"}`, ('\\'.repeat(999) + '"').repeat(M / 1000),
+      '""fresnel-lab-hand-in""'.repeat(M / 23),
+    ];
+    const start = performance.now();
+    for (const text of texts) {
+      const read = findHandIns(text, 'p');
+      expect(read.handIns).toEqual([]);
+      expect(read.refused.length).toBeGreaterThan(0);
+      expect(read.refused.length).toBeLessThanOrEqual(1001);
+    }
+    expect(performance.now() - start).toBeLessThan(3000); // quadratic, this would be minutes
+  });
 });
+

@@ -57,9 +57,11 @@ function endsInBrace(code) {
 
 /**
  * The code that starts after a prefix at `start`, read up to `limit`: { data, end } for the first end
- * at which it decodes to a JSON object, or { reason } why none does.
+ * at which it decodes to a JSON object, or { reason } why none does (worked out only when `explain`:
+ * decoding a damaged code throws inside sheetCodes.js, and a text of a million broken codes would
+ * spend half a minute on reasons that are counted, not listed).
  */
-function readCode(text, start, limit) {
+function readCode(text, start, limit, explain) {
   let code = '';
   const ends = []; // [length of code, position in text after it]
   let run = start;
@@ -97,6 +99,7 @@ function readCode(text, start, limit) {
     if (read.ok && read.data !== null && typeof read.data === 'object' && !Array.isArray(read.data)) return { data: read.data, end };
   }
   if (!ends.length) return { reason: `${HAND_IN_PREFIX} is followed by no code.` };
+  if (!explain) return { reason: 'This handed-in code cannot be read.' };
   const first = handInFromText(HAND_IN_PREFIX + code.slice(0, ends[0][0]));
   if (first.ok) return { reason: 'This handed-in code does not hold a hand-in (a JSON object).' };
   const reason = first.problems.join(' ');
@@ -158,7 +161,9 @@ function findJson(text) {
   let floor = 0;
   marks.forEach((m, k) => {
     if (m < floor) return; // inside a hand-in already read (a name that quotes the kind)
-    const start = objectStart(text, m, Math.max(floor, m - MAX_JSON_CHARS));
+    // A hand-in holds one kind (a name that quotes it has its quotes escaped), so the search for its
+    // "{" stops at the kind before it, as the search for its "}" stops at the kind after it.
+    const start = objectStart(text, m, Math.max(floor, m - MAX_JSON_CHARS, k > 0 ? marks[k - 1] + MARK.length : 0));
     if (start < 0) {
       found.push({ start: m, reason: 'A hand-in\'s JSON whose beginning is missing (its "{" is not there).' });
       return;
@@ -212,10 +217,13 @@ export function findHandIns(text, source, { maxHandIns = Infinity } = {}) {
   const found = findJson(scanned);
   const taken = found.filter((f) => f.end !== undefined);
   const inside = (i) => taken.some((f) => f.start <= i && i < f.end);
+  let failed = 0;
   for (let p = scanned.indexOf(HAND_IN_PREFIX); p !== -1;) {
     const next = scanned.indexOf(HAND_IN_PREFIX, p + HAND_IN_PREFIX.length);
     if (!inside(p)) {
-      const code = readCode(scanned, p + HAND_IN_PREFIX.length, next === -1 ? scanned.length : next);
+      // Only the first MAX_REFUSALS of them can be listed, so only they are explained.
+      const code = readCode(scanned, p + HAND_IN_PREFIX.length, next === -1 ? scanned.length : next, failed < MAX_REFUSALS);
+      if (code.reason) failed += 1;
       found.push({ start: p, ...code });
     }
     p = next;
