@@ -258,6 +258,11 @@ describe('a whole class view', () => {
     expect(phases).toContain('reading');
     expect(phases).toContain('summarising');
     expect(await buildClassView({ files: synthetic.files })).toEqual({ ok: false, problems: [expect.stringMatching(/Give the sheet you set/)] });
+    // A saved view's hand-ins count against the cap on hand-ins read in all.
+    const capped = await buildClassView({ classFile: saved, text: synthetic.codes }, { caps: { maxHandIns: 11 } });
+    expect(capped.ok && [capped.graded.length, capped.refused.length]).toEqual([11, 11]);
+    const full = await buildClassView({ classFile: saved, text: synthetic.codes }, { caps: { maxHandIns: 10 } });
+    expect(full.ok && full.refused).toEqual([{ source: 'files and text', reason: expect.stringMatching(/holds as many hand-ins/) }]);
   });
 
   it('the worker answers a request with progress, then a view that survives structured cloning; an error is posted, not thrown', async () => {

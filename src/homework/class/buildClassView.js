@@ -5,6 +5,7 @@
 // (summarizeQuestions.js). Every input ends as a graded hand-in or a refusal with its source.
 // classWorker.js runs this in a worker; on the page's thread the grading yields between slices.
 import { readClassHandIns } from './readClassHandIns.js';
+import { classCaps } from './classCaps.js';
 import { readClassFile } from './classFile.js';
 import { gradeClass } from './gradeClass.js';
 import { buildGradebook } from './buildGradebook.js';
@@ -42,7 +43,10 @@ export async function buildClassView(request, { caps, onProgress, signal, pause,
     refused.push(...saved.refused);
   }
   if (sheet === undefined || sheet === null) return { ok: false, problems: ['Give the sheet you set: hand-ins are graded against it, and those for any other sheet are refused.'] };
-  const read = readClassHandIns({ files: request?.files, text: request?.text }, caps);
+  // A saved view's hand-ins count against the cap on hand-ins read in all.
+  const left = classCaps(caps).maxHandIns - handIns.length;
+  const read = left > 0 ? readClassHandIns({ files: request?.files, text: request?.text }, { ...caps, maxHandIns: left })
+    : { handIns: [], refused: request?.files?.length || (typeof request?.text === 'string' && request.text.trim()) ? [{ source: 'files and text', reason: 'not read: the saved class view holds as many hand-ins as are read in all.' }] : [] };
   handIns.push(...read.handIns);
   refused.push(...read.refused);
   const grades = await gradeClass(sheet, handIns, {
