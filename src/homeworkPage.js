@@ -1,5 +1,5 @@
 // homework.html: with ?sheet=CODE (or a sheet written into the page, in a SCORM package), the sheet
-// a student works on (showSheet); without one, the lecturer's page: open a sheet file, compose a sheet, check handed-in files. A sheet that cannot
+// a student works on (showSheet); without one, the lecturer's page: open a sheet file, compose a sheet, check handed-in files, grade a class. A sheet that cannot
 // be read is refused with its reasons, and the lecturer's page is shown under them.
 import './styles.css';
 import './homework/page/homework.css';
@@ -12,6 +12,8 @@ import { sheetFromCode } from './homework/sheetCodes.js';
 import { showSheet } from './homework/page/showSheet.js';
 import { buildComposer, sheetUrl } from './homework/page/buildComposer.js';
 import { buildChecker } from './homework/page/buildChecker.js';
+import { buildClassSection } from './homework/page/classView/buildClassSection.js';
+import './homework/page/classView/classView.css';
 import { connectScorm } from './homework/page/connectScorm.js';
 import { readTextFile } from './homework/page/formParts.js';
 
@@ -51,7 +53,8 @@ function lecturerPage() {
   root.append(intro);
   const composer = buildComposer(root);
   const checker = buildChecker(root);
-  window.fresnelLab.homework = { composer, checker };
+  const classView = buildClassSection(root);
+  window.fresnelLab.homework = { composer, checker, classView };
 }
 
 // A SCORM package carries its sheet in the page (buildScormPackage.js), and then that sheet and

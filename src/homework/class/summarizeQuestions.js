@@ -13,11 +13,14 @@ import { questionSlips } from './questionSlips.js';
 const RATIO_STEP = 0.05; // a twentieth of a decade (×1.12): a rounded answer stays in its factor's bin
 const RATIO_DECADES = 3; // ×0.001 to ×1000
 const OFFSET_STEP = 5; // degrees
+// What a slip by each factor means depends on the answer's unit: ×100 is a percentage typed for a
+// fraction, not for an angle; ×57.3 is degrees for radians only where the answer is an angle.
 const FACTORS = [
   { factor: 2, text: '×2' }, { factor: 0.5, text: '×½' },
   { factor: 10, text: '×10: a decimal place' }, { factor: 0.1, text: '÷10: a decimal place' },
-  { factor: 100, text: '×100: a percentage for a fraction' }, { factor: 0.01, text: '÷100' },
-  { factor: 180 / Math.PI, text: '×57.3: degrees for radians' }, { factor: Math.PI / 180, text: '÷57.3: radians for degrees' },
+  { factor: 100, text: '×100', meaning: { fraction: 'a percentage for a fraction' } }, { factor: 0.01, text: '÷100' },
+  { factor: 180 / Math.PI, text: '×57.3', meaning: { deg: 'degrees for radians' } },
+  { factor: Math.PI / 180, text: '÷57.3', meaning: { deg: 'radians for degrees' } },
 ];
 
 /**
@@ -97,8 +100,9 @@ function numericSummary(question, entries) {
       }
     }
   }
-  ratio.labels = FACTORS.map(({ factor, text }) => {
+  ratio.labels = FACTORS.map(({ factor, text: short, meaning }) => {
     const at = Math.log10(factor);
+    const text = meaning?.[question.unit] ? `${short}: ${meaning[question.unit]}` : short;
     return { at, factor, text, count: logs.filter((x) => Math.abs(x - at) <= RATIO_STEP / 2).length };
   });
   // Every slip the question names, counted or not (a class with no hand-in has none to name).

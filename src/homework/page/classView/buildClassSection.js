@@ -1,0 +1,196 @@
+// "Grade a class": the lecturer gives the sheet they set, then the class's hand-ins as they arrive
+// (files, a folder, an LMS's zip, dropped or picked; codes pasted; a class view saved before). Every
+// hand-in is graded again from the sheet, the seed and the answers (in a worker: runClassView.js);
+// what cannot be used is listed with its name and reason. Out come a gradebook (a row per student,
+// sortable, CSV for a spreadsheet or an LMS), what the class got wrong per question (a card each,
+// one of which can be shown to the class with no name in it), and each student's report on demand.
+// Nothing leaves the browser.
+import { button, el } from '../../../ui/el.js';
+import { downloadText } from '../../../host/exporters.js';
+import { gradebookToCsv } from '../../class/gradebookToCsv.js';
+import { writeClassFile } from '../../class/classFile.js';
+import { field, titledSection } from '../formParts.js';
+import { readSetSheet } from '../readSetSheet.js';
+import { gradedReport, problemBox } from '../gradedReport.js';
+import { createClassRunner } from './runClassView.js';
+import { fromDrop, fromInput, readPicked } from './pickedFiles.js';
+import { createGradebookTable, shownName } from './gradebookTable.js';
+import { questionSummaries } from './questionSummaries.js';
+
+const PHASES = { reading: 'Reading the hand-ins…', summarising: 'Summarising…' };
+
+function fileInput({ accept = '', multiple = true, folder = false } = {}) {
+  const input = el('input');
+  input.type = 'file';
+  input.multiple = multiple;
+  if (accept) input.accept = accept;
+  if (folder) input.setAttribute('webkitdirectory', '');
+  return input;
+}
+
+/** A modal dialog with a heading, a body and Close (and Print where asked); returns { open(body, title, from) }. */
+function makeDialog(className, { print = false } = {}) {
+  const dialog = el('dialog', className);
+  const heading = el('h2');
+  heading.id = `${className}-title`;
+  dialog.setAttribute('aria-labelledby', heading.id);
+  const tools = el('div', 'hw-dialog-tools');
+  const close = button('Close');
+  if (print) {
+    const printButton = button('Print');
+    printButton.addEventListener('click', () => window.print());
+    tools.append(printButton);
+  }
+  tools.append(close);
+  const body = el('div', 'hw-dialog-body');
+  dialog.append(heading, body, tools);
+  let returnTo = null;
+  close.addEventListener('click', () => dialog.close());
+  dialog.addEventListener('close', () => { body.replaceChildren(); returnTo?.focus(); });
+  return {
+    dialog,
+    open(content, title, from) {
+      heading.textContent = title;
+      body.replaceChildren(content);
+      returnTo = from ?? null;
+      dialog.showModal();
+      close.focus();
+    },
+  };
+}
+
+export function buildClassSection(root) {
+  const { section, heading } = titledSection('hw-class', 'class-title', 'Grade a class');
+  const sheet = el('input');
+  sheet.type = 'text';
+  sheet.placeholder = 'the sheet’s link (or its JSON): required, hand-ins for any other sheet are refused';
+  const files = fileInput({ accept: '.json,.txt,.zip,application/json,application/zip,text/plain' });
+  const folder = fileInput({ folder: true });
+  const drop = el('div', 'hw-drop', 'Or drop files, folders or a zip here.');
+  const codes = el('textarea');
+  codes.rows = 4;
+  const saved = fileInput({ accept: '.json,application/json', multiple: false });
+  const grade = button('Grade the class', 'hw-primary');
+  const status = el('p', 'hw-class-status');
+  status.setAttribute('role', 'status');
+  const out = el('div', 'hw-class-out');
+  const details = makeDialog('hw-student-dialog', { print: true });
+  const showDialog = makeDialog('hw-show-dialog');
+  section.append(heading,
+    el('p', null, 'Bring everything the class handed in, as it came: handed-in files, a folder of them, the zip an LMS gives for “download all submissions”, or codes pasted from messages or an export. Every answer is computed again here; nothing leaves this browser.'),
+    field('The sheet you set', sheet),
+    field('Handed-in files, text files of codes, or zips', files), field('Or a whole folder', folder), drop,
+    field('Or paste codes (FLH1.…), one per line or among other text', codes),
+    field('Or open a class view saved before', saved),
+    grade, status, out, details.dialog, showDialog.dialog);
+  root.append(section);
+
+  const runner = createClassRunner();
+  let dropped = [];
+  let view = null;
+  const state = { runs: 0, busy: false, view: null, table: null };
+
+  async function run() {
+    const classFile = saved.files[0] ? new Uint8Array(await saved.files[0].arrayBuffer()) : undefined;
+    const expected = readSetSheet(sheet.value);
+    if (!expected.ok || (!expected.sheet && classFile === undefined)) {
+      out.replaceChildren(problemBox('The sheet to grade against cannot be used:', expected.ok ? ['Give the sheet you set (its link, code or JSON): the class is graded against it.'] : expected.problems));
+      status.textContent = '';
+      return;
+    }
+    state.busy = true;
+    grade.disabled = true;
+    const started = performance.now();
+    status.textContent = 'Reading the files…';
+    const picked = await readPicked([...fromInput(files.files), ...fromInput(folder.files), ...dropped]);
+    const request = { sheet: expected.sheet ?? undefined, files: picked.files, text: codes.value, classFile };
+    let result;
+    try {
+      result = await runner.run(request, (p) => {
+        status.textContent = p.phase === 'grading' && p.total ? `Grading ${p.done} of ${p.total} hand-ins…` : PHASES[p.phase] ?? status.textContent;
+      });
+    } catch (error) {
+      result = { ok: false, problems: [`Grading stopped: ${error.message}`] };
+    }
+    state.busy = false;
+    grade.disabled = false;
+    if (result === null) return; // a newer run took over
+    state.runs += 1;
+    if (!result.ok) {
+      view = null;
+      out.replaceChildren(problemBox('The class cannot be graded:', result.problems));
+      status.textContent = '';
+      return;
+    }
+    view = { ...result, refused: [...picked.refused, ...result.refused] };
+    state.view = view;
+    await showView(view, performance.now() - started);
+  }
+
+  async function showView(v, ms) {
+    const { gradebook } = v;
+    const seconds = (ms / 1000).toFixed(1);
+    status.textContent = `${gradebook.title}: ${gradebook.rows.length} hand-in${gradebook.rows.length === 1 ? '' : 's'} graded, ${gradebook.students} student${gradebook.students === 1 ? '' : 's'} counted`
+      + `${gradebook.superseded ? ` (${gradebook.superseded} earlier hand-in${gradebook.superseded === 1 ? '' : 's'} not counted)` : ''}`
+      + `${v.refused.length ? `; ${v.refused.length} could not be used (listed below)` : ''}. Graded in ${runner.where()} in ${seconds} s.`
+      + `${runner.problem() ? ` ${runner.problem()}` : ''}`;
+    const parts = [];
+    if (v.refused.length) {
+      const box = el('details', 'hw-refused');
+      box.open = v.refused.length <= 10;
+      box.append(el('summary', null, `${v.refused.length} could not be used`));
+      const list = el('ul');
+      for (const r of v.refused) list.append(el('li', null, `${r.source}: ${r.reason}`));
+      box.append(list);
+      parts.push(box);
+    }
+    const tools = el('div', 'hw-class-tools');
+    const csv = button('Export CSV');
+    const keep = button('Save the class view');
+    tools.append(csv, keep);
+    const table = createGradebookTable(gradebook, {
+      onDetails: (row, from) => {
+        const graded = v.graded[row.key].result;
+        const box = el('div');
+        const flags = el('ul', 'hw-flag-list');
+        for (const flag of row.flags) flags.append(el('li', null, flag.text));
+        box.append(el('p', 'hw-meta', `From ${row.source}.`));
+        if (row.flags.length) box.append(flags);
+        box.append(gradedReport(shownName(row), graded, { against: 'the sheet you set' }));
+        details.open(box, `Report: ${shownName(row)}`, from);
+      },
+    });
+    state.table = table;
+    csv.addEventListener('click', () => downloadText(`${slug(gradebook.title)}-gradebook.csv`, gradebookToCsv(gradebook, { includeSuperseded: true }), 'text/csv;charset=utf-8'));
+    keep.addEventListener('click', () => downloadText(`${slug(gradebook.title)}-class.json`, writeClassFile({ sheet: v.sheet, handIns: v.handIns }), 'application/json'));
+    const gradebookHeading = el('h3', null, 'Gradebook');
+    const questionsHeading = el('h3', null, 'What the class got wrong, and why');
+    const cards = questionSummaries(v, {
+      onShow: (card, i, from) => {
+        const copy = /** @type {HTMLElement} */ (card.cloneNode(true));
+        copy.querySelector('.hw-show-class')?.remove();
+        copy.querySelector('h4')?.removeAttribute('id');
+        copy.removeAttribute('aria-labelledby');
+        showDialog.open(copy, `${gradebook.title}: question ${i + 1}`, from);
+      },
+    });
+    parts.push(tools, gradebookHeading, table.element, questionsHeading, cards);
+    out.replaceChildren(...parts);
+    await table.ready;
+  }
+
+  grade.addEventListener('click', run);
+  for (const input of [files, folder, saved]) input.addEventListener('change', () => { if (sheet.value.trim() || saved.files.length) run(); });
+  drop.addEventListener('dragover', (event) => { event.preventDefault(); drop.classList.add('hw-drop-over'); });
+  drop.addEventListener('dragleave', () => drop.classList.remove('hw-drop-over'));
+  drop.addEventListener('drop', async (event) => {
+    event.preventDefault();
+    drop.classList.remove('hw-drop-over');
+    dropped = await fromDrop(event.dataTransfer);
+    drop.textContent = `${dropped.length} file${dropped.length === 1 ? '' : 's'} dropped; drop again to replace them.`;
+    if (sheet.value.trim()) run();
+  });
+  return state;
+}
+
+const slug = (title) => title.normalize('NFKD').replace(/[^\w\s-]/g, '').trim().replace(/\s+/g, '-').toLowerCase().slice(0, 60) || 'class';

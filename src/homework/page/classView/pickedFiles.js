@@ -1,0 +1,62 @@
+// What a lecturer picked or dropped, as [{ name (its path), bytes }] for the class view: files from
+// a picker, a folder (webkitdirectory gives each file its relative path), or items dropped, folders
+// walked. A file larger than its kind may be is refused here, by name, without being read into
+// memory; a kind that is never read is passed on empty and refused by name there (fileKind.js).
+import { CLASS_CAPS } from '../../class/classCaps.js';
+import { fileKind } from '../../class/fileKind.js';
+
+const megabytes = (n) => `${(n / (1024 * 1024)).toFixed(1)} MB`;
+const MAX_WALKED = CLASS_CAPS.maxEntries; // files taken from dropped folders, as from a zip
+
+/**
+ * @param {{ file: File, path: string }[]} entries
+ * @returns {Promise<{ files: { name: string, bytes: Uint8Array }[], refused: { source: string, reason: string }[] }>}
+ */
+export async function readPicked(entries) {
+  const files = [];
+  const refused = [];
+  for (const { file, path } of entries) {
+    const kind = fileKind(path);
+    if (kind.reason) {
+      files.push({ name: path, bytes: new Uint8Array(0) });
+      continue;
+    }
+    const max = kind.kind === 'zip' ? CLASS_CAPS.maxZipBytes : CLASS_CAPS.maxFileBytes;
+    if (file.size > max) {
+      refused.push({ source: path, reason: `${megabytes(file.size)}: more than the ${megabytes(max)} a ${kind.kind === 'zip' ? 'zip' : 'handed-in file or a text of codes'} may have.` });
+      continue;
+    }
+    try {
+      files.push({ name: path, bytes: new Uint8Array(await file.arrayBuffer()) });
+    } catch {
+      refused.push({ source: path, reason: 'the browser could not read it.' });
+    }
+  }
+  return { files, refused };
+}
+
+/** A picker's files, with the relative path a folder picker gives. */
+export const fromInput = (list) => [...list].map((file) => ({ file, path: file.webkitRelativePath || file.name }));
+
+/** Dropped items: files, and the files inside dropped folders (walked, up to MAX_WALKED). */
+export async function fromDrop(dataTransfer) {
+  const roots = [...dataTransfer.items].map((item) => item.webkitGetAsEntry?.()).filter(Boolean);
+  if (!roots.length) return fromInput(dataTransfer.files);
+  const out = [];
+  const walk = async (entry, path) => {
+    if (out.length >= MAX_WALKED) return;
+    if (entry.isFile) {
+      const file = await new Promise((resolve, reject) => { entry.file(resolve, reject); }).catch(() => null);
+      if (file) out.push({ file, path: `${path}${entry.name}` });
+    } else if (entry.isDirectory) {
+      const reader = entry.createReader();
+      for (;;) {
+        const batch = await new Promise((resolve) => { reader.readEntries(resolve, () => resolve([])); });
+        if (!batch.length) break;
+        for (const child of batch) await walk(child, `${path}${entry.name}/`);
+      }
+    }
+  };
+  for (const root of roots) await walk(root, '');
+  return out;
+}

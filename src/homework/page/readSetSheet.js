@@ -1,0 +1,28 @@
+// The sheet a lecturer set, as they give it to check hand-ins against: its link (?sheet=CODE), the
+// bare code, or the sheet file's JSON. Empty text is no sheet (ok, null).
+import { readSheet } from '../readSheet.js';
+import { sheetFromCode } from '../sheetCodes.js';
+
+/** The sheet to check against, from a link, a code or a sheet's JSON: { ok, sheet } or problems. */
+export function readSetSheet(text) {
+  const raw = text.trim();
+  if (!raw) return { ok: true, sheet: null };
+  let data;
+  if (raw.startsWith('{')) {
+    try {
+      data = JSON.parse(raw);
+    } catch {
+      return { ok: false, problems: ['The sheet to check against is not readable JSON.'] };
+    }
+  } else {
+    let code = raw;
+    try {
+      code = new URL(raw, window.location.href).searchParams.get('sheet') ?? raw;
+    } catch { /* not a link: a bare code */ }
+    const decoded = sheetFromCode(code);
+    if (!decoded.ok) return decoded;
+    data = decoded.data;
+  }
+  const read = readSheet(data);
+  return read.ok ? read : { ok: false, problems: read.problems.map((p) => `The sheet to check against: ${p}`) };
+}
