@@ -78,7 +78,7 @@ export function buildClassSection(root) {
   const showDialog = makeDialog('hw-show-dialog');
   section.append(heading,
     el('p', null, 'Bring everything the class handed in, as it came: handed-in files, a folder of them, the zip an LMS gives for “download all submissions”, or codes pasted from messages or an export. Every answer is computed again here; nothing leaves this browser.'),
-    field('The sheet you set', sheet),
+    field('The sheet the class answered', sheet),
     field('Handed-in files, text files of codes, or zips', files), field('Or a whole folder', folder), drop,
     field('Or paste codes (FLH1.…), one per line or among other text', codes),
     field('Or open a class view saved before', saved),

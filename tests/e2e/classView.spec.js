@@ -1,0 +1,115 @@
+// Grade a class, as a lecturer does after the deadline: the sheet they set, then everything the class
+// handed in at once (an LMS's zip with folders and a zip inside, loose files, pasted codes among
+// other text), with what cannot be used among it. One page: the gradebook, refusals named, sorting
+// and a report by keyboard, the CSV, a question shown to the class without names, the audit, markup
+// in a name kept as text, and the view saved and opened again.
+import { readFileSync } from 'node:fs';
+import { strToU8, zipSync } from 'fflate';
+import { test, expect } from './fixtures.js';
+import { seriousViolations } from './audit.js';
+
+const SHEET = { version: 1, title: 'Week 5', items: [{ question: 'brewster-predict' }, { question: 'exact-r' }, { question: 'metal-grazing' }] };
+const code = (data) => Buffer.from(JSON.stringify(data)).toString('base64url');
+const handIn = (name, seed, answers, time, sheet = SHEET) => ({
+  kind: 'fresnel-lab-hand-in', version: 1, sheet, seed, name, answers, attempts: answers.map(() => 1), time,
+});
+const MARKUP = '<img src=x onerror="window.__xss=1">';
+const students = Array.from({ length: 12 }, (_, i) => handIn(i === 5 ? MARKUP : `Student ${i + 1}`, `s${i + 1}`,
+  [40 + i, i % 2 ? '0.5' : null, ['keeps-colour', 'towards-white', 'dark'][i % 3]], `2026-11-${String(10 + i).padStart(2, '0')}T10:00:00Z`));
+
+test('a class handed in every way is graded at once: gradebook, refusals, report, CSV, the class view and saving it', async ({ page }) => {
+  test.setTimeout(120_000);
+  // An LMS's zip: a folder per student, one student's hand-in inside a zip of their own, a PDF.
+  const zip = zipSync({
+    ...Object.fromEntries(students.slice(0, 8).map((h, i) => [`Student ${i + 1}_${100 + i}_assignsubmission_file_/handin.json`, strToU8(JSON.stringify(h))])),
+    'Student 9_108_assignsubmission_file_/work.zip': zipSync({ 'handin.json': strToU8(JSON.stringify(students[8])) }),
+    'Student 10_109_assignsubmission_file_/notes.pdf': strToU8('%PDF-1.4'),
+  });
+  const later = handIn('Student 2', 's2', [50, '0.1', 'towards-white'], '2026-12-01T10:00:00Z'); // handed in again
+  const otherSheet = handIn('Student 11', 's11', [40, null, null], '2026-11-20T10:00:00Z', { ...SHEET, title: 'Week 4' });
+  const pasted = [
+    'Name,Submission', `"Student 12","FLH1.${code(students[11])}"`, `Student 10: FLH1.${code(students[9])}`,
+    `cut short: FLH1.${code(students[10]).slice(0, 40)}`,
+  ].join('\n');
+
+  await page.goto('homework.html');
+  await page.getByLabel('The sheet the class answered').fill(`homework.html?sheet=${code(SHEET)}`);
+  await page.getByLabel('Or paste codes (FLH1.…), one per line or among other text').fill(pasted);
+  await page.getByLabel('Handed-in files, text files of codes, or zips').setInputFiles([
+    { name: 'class.zip', mimeType: 'application/zip', buffer: Buffer.from(zip) },
+    { name: 'late.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify(later)) },
+    { name: 'week4.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify(otherSheet)) },
+  ]);
+  const status = page.locator('.hw-class-status');
+  await expect(status).toContainText('Graded in', { timeout: 60_000 });
+  await page.evaluate(() => window.fresnelLab.homework.classView.table.ready);
+  // 11 students (12 minus the one cut short) and Student 2's earlier hand-in, kept but not counted.
+  await expect(status).toContainText('12 hand-ins graded, 11 students counted (1 earlier hand-in not counted)');
+  await expect(status).toContainText('Graded in a worker'); // the page's thread only shows the result
+  const rows = page.locator('.hw-gradebook tbody tr');
+  await expect(rows).toHaveCount(12);
+  await expect(page.locator('.hw-superseded')).toHaveCount(1);
+  await expect(page.locator('.hw-superseded th')).toContainText('Student 2');
+  const refused = page.locator('.hw-refused');
+  await expect(refused).toContainText('notes.pdf');
+  await expect(refused).toContainText('week4.json');
+  await expect(refused).toContainText(/pasted text.*line 4/);
+  expect(await page.evaluate(() => window.__xss)).toBeUndefined();
+  await expect(page.locator('.hw-gradebook img')).toHaveCount(0);
+  await expect(page.locator('.hw-gradebook')).toContainText(MARKUP);
+
+  // Sorting and a report, from the keyboard.
+  await page.getByRole('button', { name: 'Score: sort' }).focus();
+  await page.keyboard.press('Enter');
+  await expect(page.locator('th[aria-sort="descending"]')).toContainText('Score');
+  const scores = await page.locator('.hw-gradebook tbody tr td:nth-child(3)').allTextContents();
+  const points = scores.map((s) => Number(s.split('/')[0]));
+  expect(points).toEqual([...points].sort((a, b) => b - a));
+  const report = page.getByRole('button', { name: 'Report of Student 3' });
+  await report.focus();
+  await page.keyboard.press('Enter');
+  const dialog = page.getByRole('dialog', { name: 'Report: Student 3' });
+  await expect(dialog).toBeVisible();
+  await expect(dialog.locator('.hw-report-table tbody tr')).toHaveCount(3);
+  expect(await seriousViolations(page), 'audit with a report open').toEqual([]);
+  await page.keyboard.press('Escape');
+  await expect(dialog).toBeHidden();
+  await expect(report).toBeFocused();
+  await expect(page.locator('.hw-report-table')).toHaveCount(0); // reports are made when opened
+
+  // The CSV: UTF-8 with a byte-order mark, a column per question, a row per hand-in.
+  const csvDownload = page.waitForEvent('download');
+  await page.getByRole('button', { name: 'Export CSV' }).click();
+  const csv = readFileSync(await (await csvDownload).path(), 'utf8');
+  expect(csv.startsWith('\ufeffName,')).toBe(true);
+  const lines = csv.trim().split('\r\n');
+  expect(lines[0]).toContain('Q1 brewster-predict');
+  expect(lines[0]).toContain('Q3 metal-grazing');
+  expect(lines).toHaveLength(13);
+
+  // One question shown to the class: its counts, no student's name.
+  await page.getByRole('button', { name: 'Show question 3 to the class (no names)' }).click();
+  const shown = page.getByRole('dialog', { name: 'Week 5: question 3' });
+  await expect(shown).toContainText('of 11 students');
+  const text = await shown.textContent();
+  for (const h of students) expect(text).not.toContain(h.name);
+  expect(await seriousViolations(page), 'audit with a question shown').toEqual([]);
+  await page.keyboard.press('Escape');
+
+  // Saved and opened again (the file holds no grade: everything is graded again).
+  const savedDownload = page.waitForEvent('download');
+  await page.getByRole('button', { name: 'Save the class view' }).click();
+  const saved = readFileSync(await (await savedDownload).path());
+  await page.reload();
+  await page.getByLabel('Or open a class view saved before').setInputFiles({ name: 'class.json', mimeType: 'application/json', buffer: saved });
+  await expect(status).toContainText('12 hand-ins graded, 11 students counted', { timeout: 60_000 });
+  await expect(rows).toHaveCount(12);
+});
+
+test('grading a class needs the sheet that was set, and says so', async ({ page }) => {
+  await page.goto('homework.html');
+  await page.getByLabel('Or paste codes (FLH1.…), one per line or among other text').fill(`FLH1.${code(students[0])}`);
+  await page.getByRole('button', { name: 'Grade the class' }).click();
+  await expect(page.locator('.hw-class-out [role="alert"]')).toContainText('Give the sheet you set');
+  await expect(page.locator('.hw-gradebook')).toHaveCount(0);
+});
