@@ -105,7 +105,11 @@ function choiceParts(summary) {
   for (const option of summary.options) {
     const wrongOnly = option.chosenWhenRight === 0 && option.chosen > 0;
     const item = barItem(option.text, option.chosen, answered, wrongOnly ? 'hw-bar-wrong' : option.chosenWhenRight ? 'hw-bar-right' : '');
-    if (option.chosenWhenWrong && option.why) item.append(el('span', 'hw-bar-why', `Why it is wrong: ${option.why}`));
+    if (option.chosenWhenWrong && option.why) {
+      const why = el('span', 'hw-bar-why');
+      setSubscripted(why, `Why it is wrong: ${option.why}`);
+      item.append(why);
+    }
     list.append(item);
   }
   return [list];
