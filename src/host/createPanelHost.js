@@ -172,6 +172,7 @@ export function createPanelHost(container, panel, {
   // the listeners follow once, with every key.
   let updating = false;
   let waiting = [];
+  let mounting = false;
 
   /** Values changed: controls, picture, description, URL, listeners. */
   function changed(keys, source) {
@@ -200,7 +201,9 @@ export function createPanelHost(container, panel, {
     refreshDescription();
     domFrameDrawn();
     writeUrl(values);
-    for (const listener of listeners) listener({ keys: [...all], source });
+    // A set during mount (code kept in this browser) is where the panel starts, not a change:
+    // listeners and a deck learn those values from ready.
+    if (!mounting) for (const listener of listeners) listener({ keys: [...all], source });
   }
 
   /**
@@ -246,6 +249,7 @@ export function createPanelHost(container, panel, {
     toolbar.hidden = false;
     controllers = Object.create(null);
     controlState.clear();
+    mounting = true;
     try {
       instance = checkInstance(panel.id, ownedBy(faults, () => mountPanel(content, ctx)));
     } catch (error) {
@@ -257,6 +261,8 @@ export function createPanelHost(container, panel, {
       content.replaceChildren();
       showNotice(noticeHost, `The ${panel.title} panel could not start.`, [error.message, 'The other panels are not affected; reload the page to try again.'], { kind: 'error' });
       throw error;
+    } finally {
+      mounting = false;
     }
     buttons.png.disabled = !instance.png;
     buttons.csv.disabled = !instance.csv;

@@ -40,7 +40,8 @@
  *   change values: validated, then controls, URL, picture and messages follow (update(keys) runs).
  *   refused: the change touched a control a deck has locked, and nothing of it was applied.
  *   Called inside update, the host runs update again with those keys once this one returns;
- *   called during mount (before mount returns), it sets the values and the link only.
+ *   called during mount (before mount returns), it sets the values, the controls and the link, and
+ *   tells no listener: where a panel starts is no change (a deck reads those values from ready).
  * @property {() => void} invalidate  something other than the values changed (a result arrived): update([]) and describe() again
  * @property {import('lil-gui').default} gui  this mount's lil-gui root
  * @property {(folder: import('lil-gui').default | null, keys: string[]) => Record<string, object>} bind

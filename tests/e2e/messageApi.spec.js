@@ -23,6 +23,19 @@ test('ready carries the API version; every change is announced with its source a
   expect((await api.all('fresnel-lab:state')).at(-1).params.viewAz).toBe(20);
 });
 
+test('code kept in this browser is where an embedded shader lab starts: ready carries it, and no change is announced', async ({ page, baseURL }) => {
+  const code = 'float fresnel(float c, float a, float b) { return 1.0; }';
+  await page.goto('./');
+  await page.evaluate((text) => localStorage.setItem('fresnel-lab:shader-lab:schlick', text), code);
+  const api = await embedInDeck(page, baseURL, 'panel=shader-lab');
+  expect((await api.waitFor('fresnel-lab:ready')).params.code).toBe(code);
+  await api.send({ type: 'fresnel-lab:get' });
+  await api.waitFor('fresnel-lab:state');
+  // The answer to get came after anything the load sent: no change among them.
+  expect(await api.all('fresnel-lab:changed')).toEqual([]);
+  await page.evaluate(() => localStorage.removeItem('fresnel-lab:shader-lab:schlick'));
+});
+
 test('reset returns to the link\'s values or to the defaults', async ({ page, baseURL }) => {
   const api = await embedInDeck(page, baseURL, 'panel=spheres&nT=1.7');
   await api.send({ type: 'fresnel-lab:set', params: { nT: 2.2, nI: 1.1 } });
