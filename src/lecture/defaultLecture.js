@@ -1,0 +1,11 @@
+// The lecture page as it stands, as a lecture: every panel of the manifest in its order, each from
+// its defaults, with its own heading and lede (the page writes those from the manifest, so the items
+// carry no text of their own). A composed lecture starts from it.
+import { PANELS } from '../panels/manifest.js';
+import { LECTURE_KIND, LECTURE_VERSION } from './readLecture.js';
+
+export const DEFAULT_TITLE = 'Fresnel Lab: mipmapping normal maps and Fresnel reflection'; // the lecture page's title
+
+export function defaultLecture() {
+  return { kind: LECTURE_KIND, version: LECTURE_VERSION, title: DEFAULT_TITLE, items: PANELS.map(({ id }) => ({ type: 'panel', panel: id })) };
+}
