@@ -1,8 +1,10 @@
 import { describe, expect, it } from 'vitest';
+import { deflateSync } from 'fflate';
 import { caseInputs, conductorCases, dielectricCases } from '../../src/panels/shader-lab/gradingCases.js';
 import { EXERCISES, criterion, exerciseMetal } from '../../src/panels/shader-lab/exercises.js';
 import { errorSummary, gradeCriterion } from '../../src/panels/shader-lab/gradeExercise.js';
 import { WRAPPER_LINE, checkStudentCode, readCompileLog, studentFragment } from '../../src/panels/shader-lab/studentShader.js';
+import { MAX_BYTES, decodeCode } from '../../src/panels/shader-lab/codeCodec.js';
 import { criticalAngle, fresnelConductor, fresnelExact } from '../../src/optics/fresnel.js';
 import { methodById } from '../../src/optics/methods.js';
 
@@ -104,7 +106,7 @@ describe('the student\'s code in the page\'s shader', () => {
 });
 
 describe('the code in the link', () => {
-  it('is compact, round-trips, and a damaged or oversized form is refused', async () => {
+  it('is compact, round-trips, and a link not of the compact form is refused', async () => {
     const { encodeCode, decodeCode, useDeflate } = await import('../../src/panels/shader-lab/codeCodec.js');
     const { deflateSync } = await import('fflate');
     expect(encodeCode('float x;')).toBe('float x;'); // before the panel gives deflate: plain text, which reads back
@@ -117,12 +119,42 @@ describe('the code in the link', () => {
     expect(new URLSearchParams({ c: compact }).toString().length).toBeLessThan(new URLSearchParams({ c: code }).toString().length / 1.5);
     expect(decodeCode(compact)).toBe(code);
     expect(decodeCode(code)).toBe(code); // plain text, from a message
-    expect(decodeCode('*AAAA$')).toBeNull();
+    expect(decodeCode('*AAAA$')).toBeNull(); // neither is of the form: no "." after the length
     expect(decodeCode(`*${'A'.repeat(20_000)}`)).toBeNull();
     expect(parseValue(schema.code, compact)).toEqual({ ok: true, value: code });
     expect(formatValue(schema.code, code)).toBe(compact);
     expect(parseValue(schema.code, '*garbage!')).toMatchObject({ ok: false });
     expect(parseValue(schema.code, 7)).toMatchObject({ ok: false });
     expect(parseValue(schema.code, 'x'.repeat(12_001))).toMatchObject({ ok: false, reason: expect.stringMatching(/longer than 12000/) });
+  });
+
+  // Codes of the right form, built here from fflate's raw DEFLATE with a length field of our choosing.
+  describe('of the right form but damaged or oversized', () => {
+    const utf8 = (text) => new TextEncoder().encode(text);
+    const compact = (stream, length) => `*${length.toString(36)}.${Buffer.from(stream).toString('base64url')}`;
+    const code = utf8(EXERCISES[1].reference);
+
+    it('reads back when nothing is altered, up to the length cap', () => {
+      expect(decodeCode(compact(deflateSync(code), code.length))).toBe(EXERCISES[1].reference);
+      const longest = utf8('x'.repeat(MAX_BYTES));
+      expect(decodeCode(compact(deflateSync(longest), MAX_BYTES))).toHaveLength(MAX_BYTES);
+    });
+    it('is refused past the length cap before it is inflated, and at a length of 0', () => {
+      // A valid stream of MAX_BYTES + 1 bytes, stated truly: about 90 characters of link.
+      const over = utf8('x'.repeat(MAX_BYTES + 1));
+      expect(decodeCode(compact(deflateSync(over), over.length))).toBeNull();
+      expect(decodeCode(compact(deflateSync(new Uint8Array(0)), 0))).toBeNull();
+    });
+    it('is refused when its stream runs past its stated length or stops short of it', () => {
+      const stream = deflateSync(code);
+      for (const length of [code.length - 1, code.length - 100, 1, code.length + 1]) expect(decodeCode(compact(stream, length)), `stated ${length}`).toBeNull();
+    });
+    it('is refused when its stream is bad: a reserved block type, cut short, or not UTF-8', () => {
+      const reserved = deflateSync(code);
+      reserved[0] |= 0b110; // BTYPE 11, reserved (RFC 1951 §3.2.3)
+      expect(decodeCode(compact(reserved, code.length))).toBeNull();
+      expect(decodeCode(compact(deflateSync(code).subarray(0, 20), code.length))).toBeNull();
+      expect(decodeCode(compact(deflateSync(new Uint8Array([0x66, 0xff, 0xfe])), 3))).toBeNull();
+    });
   });
 });

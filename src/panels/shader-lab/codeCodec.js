@@ -11,7 +11,7 @@ import { inflateSync } from 'fflate';
 import { MAX_CODE } from './exerciseTitles.js';
 
 const COMPACT = /^\*([0-9a-z]{1,6})\.([A-Za-z0-9_-]*)$/;
-const MAX_BYTES = 4 * MAX_CODE * 2; // UTF-8 of the longest code the schema takes, with room: larger is refused before inflating
+export const MAX_BYTES = 4 * MAX_CODE * 2; // UTF-8 of the longest code the schema takes, with room: larger is refused before inflating
 
 let deflate = null;
 
