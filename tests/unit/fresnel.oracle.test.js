@@ -108,9 +108,20 @@ const METALS = [
   ['iron', 2.911, 3.089],
 ];
 
+// n > k > 0 (weak absorbers: semiconductors, tinted glass), where a² comes from (S + t0)/2 and b²
+// from n²k²/a² (t0 = n² − k² − sin²θ ≥ 0), the branch no metal above reaches; n = 1.2, k = 0.8 has
+// t0 change sign at sin²θ = 0.8, so it takes each branch on either side of 63.4°.
+const WEAK_ABSORBERS = [
+  ['n > k > 0: n = 2.5, k = 0.5', 2.5, 0.5],
+  ['n > k > 0: n = 1.5, k = 0.1', 1.5, 0.1],
+  ['n > k > 0: n = 4.3, k = 0.07 (silicon-like)', 4.3, 0.07],
+  ['n > k > 0: n = 1.5, k = 1e-4', 1.5, 1e-4],
+  ['n > k > 0: n = 1.2, k = 0.8', 1.2, 0.8],
+];
+
 function buildConductorCases() {
   const cases = [];
-  for (const [group, n, k] of METALS) {
+  for (const [group, n, k] of [...METALS, ...WEAK_ABSORBERS]) {
     for (const ci of FIXED_COS) cases.push({ group, ci, n, k });
     for (let i = 0; i < 20; i++) cases.push({ group, ci: randomCos(), n, k });
   }
@@ -144,8 +155,11 @@ describe('fresnel.js (float64) against the 50-digit decimal.js oracle', () => {
     console.log(`[fresnel oracle] ${total} cases; worst |error|: ${parts.join('; ')}`);
   });
 
-  it('covers about 1,250 deterministic cases', () => {
-    expect(dielectricCases.length + conductorCases.length).toBeGreaterThanOrEqual(1200);
+  it('covers about 1,450 deterministic cases, conductors on both sides of t0 = n² − k² − sin²θ = 0', () => {
+    expect(dielectricCases.length + conductorCases.length).toBeGreaterThanOrEqual(1400);
+    const t0 = ({ ci, n, k }) => n * n - k * k - (1 - ci * ci);
+    expect(conductorCases.filter((c) => c.k > 0 && t0(c) >= 0).length).toBeGreaterThan(150);
+    expect(conductorCases.filter((c) => t0(c) < 0).length).toBeGreaterThan(250);
   });
 
   for (const [group, cases] of groupBy(dielectricCases)) {

@@ -62,6 +62,23 @@ export function dielectricR(cosThetaI, nI, nT) {
   return s.plus(p).div(2);
 }
 
+const PI = D.acos(-1);
+
+/** cos θ for θ in degrees (a double, taken as the decimal it is), as a Decimal. */
+export function cosOfDegrees(thetaDeg) {
+  return D.cos(dec(thetaDeg).times(PI).div(180));
+}
+
+/** Brewster angle in degrees, tan θB = nT/nI (Hecht, Optics §8.6.1). */
+export function brewsterDegrees(nI, nT) {
+  return D.atan(dec(nT).div(dec(nI))).times(180).div(PI);
+}
+
+/** Critical angle in degrees, sin θc = nT/nI for nI > nT (Hecht, Optics §4.7). */
+export function criticalDegrees(nI, nT) {
+  return D.asin(dec(nT).div(dec(nI))).times(180).div(PI);
+}
+
 // ---- A minimal complex type on Decimal, just enough for the conductor case. ----
 
 export class Complex {
