@@ -256,12 +256,12 @@ test('the error source comes from the URL; mediump on this GPU is measured and s
   const note = page.locator('.sa-gui-note');
   await expect(note).toBeVisible();
   await expect(note).toContainText(/mediump runs at (full|reduced) precision on this GPU: \d+ significand bits measured/);
-  // SwiftShader runs mediump as float32: then the exact form's read-back error is float32's
-  // (~2e-7), well below what float16 rounding alone gives (its half ulp at 1 is 2^-12 = 2.4e-4).
-  if ((await note.textContent()).includes('full precision')) {
-    expect(state.rows.find((r) => r.methodId === 'conductor-exact').max).toBeLessThan(1e-5);
-    await expect(page.locator('.panel-description')).toContainText('mediump runs at full precision on this GPU');
-  }
+  // The browser tests render with SwiftShader (playwright.config.js), which runs mediump as float32:
+  // then the exact form's read-back error is float32's (~2e-7), well below what float16 rounding
+  // alone gives (its half ulp at 1 is 2^-12 = 2.4e-4).
+  await expect(note).toContainText('mediump runs at full precision on this GPU: 24 significand bits measured');
+  expect(state.rows.find((r) => r.methodId === 'conductor-exact').max).toBeLessThan(1e-5);
+  await expect(page.locator('.panel-description')).toContainText('mediump runs at full precision on this GPU');
 });
 
 test('a bad error source in the link falls back to the JS emulation with a notice', async ({ page }) => {
