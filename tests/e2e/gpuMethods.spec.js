@@ -8,20 +8,23 @@ import { METHOD_INDEX } from '../../src/gl/methodIndex.js';
 import { metals } from './metalsData.js';
 
 const f = Math.fround;
+// Within NEAR rad of a critical angle a value is compared by angle (see compare); outside it, to 2e-6.
+const NEAR = 0.02;
+const PAIRS = [[1, 1.5], [1.5, 1], [1, 1.333], [1.333, 1], [2.417, 1], [1.31, 1.333], [1.333, 1.31], [1, 1], [1.5, 1.5], [0.4, 1], [2.5, 1]];
 
 // Dielectric rows (cos, nI, nT, 0): index pairs both ways, matched media, grazing and normal
-// incidence, cosines bracketing each critical angle, the out-of-range cosines that interpolated or
+// incidence, cosines bracketing each critical angle (inside NEAR, and just outside it at 1.25 and
+// 2 × NEAR, where R still climbs steeply), the out-of-range cosines that interpolated or
 // normal-mapped normals produce (an overshoot past 1, where pow(1 − c, 5) has a negative base, and
 // a negative cosine), and
 // NaN and Infinity inputs, which must come back through the RGBA32F read-back as NaN / ±Infinity.
 function dielectricRows() {
-  const pairs = [[1, 1.5], [1.5, 1], [1, 1.333], [1.333, 1], [2.417, 1], [1.31, 1.333], [1.333, 1.31], [1, 1], [1.5, 1.5], [0.4, 1], [2.5, 1]];
   const cosines = [0, 1, 1e-6, 1e-4, 1e-3, 0.01, 0.05, 0.999, 0.99999, ...Array.from({ length: 40 }, (_, i) => (i + 0.5) / 40)];
   const rows = [];
-  for (const [nI, nT] of pairs) {
+  for (const [nI, nT] of PAIRS) {
     const cs = [...cosines, 1 + 2 ** -23, 1.001, -0.05, NaN, Infinity];
     const critical = criticalAngle(nI, nT);
-    if (critical !== null) for (const d of [-1e-2, -1e-3, -1e-5, 0, 1e-5, 1e-3, 1e-2]) cs.push(Math.cos(critical + d));
+    if (critical !== null) for (const d of [-0.04, -0.025, -1e-2, -1e-3, -1e-5, 0, 1e-5, 1e-3, 1e-2, 0.025, 0.04]) cs.push(Math.cos(critical + d));
     for (const c of cs) rows.push([f(c), f(nI), f(nT), 0]);
   }
   return rows;
@@ -59,11 +62,12 @@ function undefinedInGlsl(methodId, [c]) {
 }
 
 /**
- * |gpu − js| ≤ 2e-6; NaN and ±Infinity exactly where the JS has them; within 0.02 rad of θc
+ * |gpu − js| ≤ 2e-6; NaN and ±Infinity exactly where the JS has them; within NEAR of θc
  * compared by angle (the GPU value is the JS value at an angle within 1e-5 rad). Cases GLSL
- * leaves undefined are collected in `undefinedSeen` instead.
+ * leaves undefined are collected in `undefinedSeen` instead; the index pairs with a row held to
+ * 2e-6 between NEAR and 2.5 NEAR below θc, in `strictBelow`.
  */
-function compare(methodId, rows, gpuValues, failures, undefinedSeen = []) {
+function compare(methodId, rows, gpuValues, failures, undefinedSeen = [], strictBelow = new Set()) {
   const method = methodById(methodId);
   let worst = 0;
   rows.forEach((row, i) => {
@@ -81,7 +85,7 @@ function compare(methodId, rows, gpuValues, failures, undefinedSeen = []) {
     }
     const critical = method.kind === 'dielectric' ? criticalAngle(a, b) : null;
     const theta = Math.acos(Math.min(1, Math.max(-1, c)));
-    if (critical !== null && c >= 0 && c <= 1 && Math.abs(theta - critical) < 0.02) {
+    if (critical !== null && c >= 0 && c <= 1 && Math.abs(theta - critical) < NEAR) {
       const near = [-1e-5, 0, 1e-5].map((dt) => method.evaluate('fp32', Math.cos(theta + dt), a, b));
       if (gpu < Math.min(...near) - 2e-6 || gpu > Math.max(...near) + 2e-6) {
         failures.push(`${where} near θc: gpu ${gpu} outside JS [${Math.min(...near)}, ${Math.max(...near)}]`);
@@ -90,6 +94,7 @@ function compare(methodId, rows, gpuValues, failures, undefinedSeen = []) {
     }
     const error = Math.abs(gpu - js);
     worst = Math.max(worst, error);
+    if (critical !== null && critical - theta >= NEAR && critical - theta < 2.5 * NEAR) strictBelow.add(`${a} → ${b}`);
     if (!(error <= 2e-6)) failures.push(`${where}: gpu ${gpu}, js ${js}, error ${error.toExponential(2)}`);
   });
   return worst;
@@ -106,10 +111,13 @@ test('every GLSL method in highp matches its JS float32 twin; NaN where the JS g
   const failures = [];
   const worst = {};
   const undefinedSeen = [];
-  jobs.forEach((job, k) => { worst[job.methodId] = compare(job.methodId, job.rows, results[k], failures, undefinedSeen); });
+  const strictBelow = new Set();
+  jobs.forEach((job, k) => { worst[job.methodId] = compare(job.methodId, job.rows, results[k], failures, undefinedSeen, strictBelow); });
   console.log(`[gpu methods] worst |gpu - js fp32|: ${JSON.stringify(Object.fromEntries(Object.entries(worst).map(([m, e]) => [m, e.toExponential(1)])))}`);
   console.log(`[gpu methods] undefined in GLSL, this GPU gives e.g. ${undefinedSeen.slice(0, 3).join('; ')}`);
   expect(failures.slice(0, 20)).toEqual([]);
+  const withCritical = PAIRS.filter(([nI, nT]) => nI > nT).map((pair) => pair.map(f).join(' → '));
+  expect([...strictBelow].sort(), 'every pair with a critical angle has rows just outside NEAR held to 2e-6').toEqual(withCritical.sort());
   // NaN and Infinity survive the read-back: a NaN cosine gives NaN, an infinite one -Infinity.
   const at = (id, pick) => results[METHOD_INDEX[id]][dielectric.findIndex(pick)];
   expect(at('exact-cg', ([c]) => Number.isNaN(c))).toBeNaN();
