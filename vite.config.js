@@ -3,32 +3,41 @@ import { readdirSync, existsSync, readFileSync } from 'node:fs';
 import { dirname, resolve } from 'node:path';
 import { createRequire } from 'node:module';
 import { viteSingleFile } from 'vite-plugin-singlefile';
-import { PANELS, SECTIONS_MARKER, manifestProblems, sectionHtml } from './src/panels/manifest.js';
+import { PANELS, PLACES_MARKER, SECTIONS_MARKER, manifestProblems, placesCss, sectionHtml } from './src/panels/manifest.js';
 import { contentSecurityPolicy, inlineTexts, withPolicyMeta } from './scripts/contentSecurityPolicy.js';
 
 const root = import.meta.dirname;
 
-/** Panel folders that hold a module (src/panels/<id>/index.js). */
-function panelFolders() {
+/** The panels' own files, as `<folder>/index.js` and `<folder>/schema.js` under src/panels. */
+function panelFiles() {
   const dir = resolve(root, 'src/panels');
-  return readdirSync(dir, { withFileTypes: true })
-    .filter((d) => d.isDirectory() && existsSync(resolve(dir, d.name, 'index.js')))
-    .map((d) => d.name);
+  return readdirSync(dir, { withFileTypes: true }).filter((d) => d.isDirectory())
+    .flatMap((d) => ['index.js', 'schema.js'].filter((file) => existsSync(resolve(dir, d.name, file))).map((file) => `${d.name}/${file}`));
 }
 
 /**
- * The lecture page's sections come from the panel manifest: written into index.html at build
- * (and dev) time, so the page is readable before any script runs. The build fails when the
- * manifest, the panel folders and the page disagree.
+ * The lecture page's sections and the places they keep come from the panel manifest: written
+ * into index.html and src/panelPlaces.css at build (and dev) time, so the page is readable and
+ * laid out before any script runs. The build fails when the manifest, the panel folders and the
+ * page disagree.
  */
 function panelManifest() {
+  const placesFile = resolve(root, 'src/panelPlaces.css');
   const check = () => {
-    const problems = manifestProblems(panelFolders(), readFileSync(resolve(root, 'index.html'), 'utf8'));
+    const problems = manifestProblems(panelFiles(), readFileSync(resolve(root, 'index.html'), 'utf8'));
     if (problems.length) throw new Error(`Panel manifest (src/panels/manifest.js):\n  ${problems.join('\n  ')}`);
   };
   return {
     name: 'fresnel-lab-panel-manifest',
     buildStart: check,
+    transform: {
+      order: 'pre', // before vite's CSS plugin reads it
+      handler(code, id) {
+        if (id.split('?')[0] !== placesFile) return null;
+        if (!code.includes(PLACES_MARKER)) throw new Error(`src/panelPlaces.css has no place for the panels' places (${PLACES_MARKER}).`);
+        return code.replace(PLACES_MARKER, placesCss());
+      },
+    },
     transformIndexHtml: {
       order: 'pre',
       handler(html, { filename }) {

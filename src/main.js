@@ -4,7 +4,7 @@
 import './styles.css';
 import './panelPlaces.css';
 import { PANEL_IDS, lecturePrefix, panelEntry } from './panels/manifest.js';
-import { missingModules, panelDefinition } from './panels/loadPanel.js';
+import { missingFiles, panelDefinition } from './panels/loadPanel.js';
 import { createPanelHost } from './host/createPanelHost.js';
 import { managePanels } from './host/managePanels.js';
 import { setupLectureMode } from './host/setupLectureMode.js';
@@ -67,7 +67,7 @@ const onPage = sections.map((s) => s.dataset.panel);
 const problems = [
   ...onPage.filter((id) => !panelEntry(id)).map((id) => `The section “${id}” is not a panel of the manifest.`),
   ...PANEL_IDS.filter((id) => !onPage.includes(id)).map((id) => `The panel “${id}” has no section on this page.`),
-  ...missingModules.map((id) => `The panel “${id}” has no module src/panels/${id}/index.js.`),
+  ...missingFiles,
 ];
 showNotice(main, 'This page does not match its panel manifest:', problems, { kind: 'error' });
 

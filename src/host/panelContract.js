@@ -1,8 +1,9 @@
 // @ts-check
 // The contract between the host and a panel, written down once. A panel is a folder
-// src/panels/<id>/ whose index.js exports `schema` and `mount`; everything else the page needs
-// (id, title, traits) is its entry in src/panels/manifest.js. tests/e2e/contract.spec.js checks
-// every panel of the manifest against this contract.
+// src/panels/<id>/ whose schema.js exports `schema` and whose index.js exports the same `schema` and
+// `mount`; everything else the page needs (id, title, traits, place) is its entry in
+// src/panels/manifest.js. tests/e2e/contract.spec.js checks every panel of the manifest against
+// this contract.
 
 /**
  * One parameter. The schema is the single source of truth for the panel's controls, its URL keys

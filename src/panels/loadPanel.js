@@ -9,8 +9,11 @@ import { panelSchema } from './panelSchema.js';
 const modules = /** @type {Record<string, () => Promise<PanelModule>>} */ (import.meta.glob('./*/index.js'));
 const moduleOf = (id) => (Object.hasOwn(modules, `./${id}/index.js`) ? modules[`./${id}/index.js`] : undefined);
 
-/** Manifest ids whose folder has no index.js or schema.js: a build or test failure, never a silent omission. */
-export const missingModules = PANELS.filter((p) => !moduleOf(p.id) || !panelSchema(p.id)).map((p) => p.id);
+/** What the manifest's panels lack, in words (the build stops on the same): said on the page, never a silent omission. */
+export const missingFiles = PANELS.flatMap(({ id }) => [
+  ...(moduleOf(id) ? [] : [`The panel “${id}” has no module src/panels/${id}/index.js.`]),
+  ...(panelSchema(id) ? [] : [`The panel “${id}” has no schema: src/panels/${id}/schema.js must export it.`]),
+]);
 
 /** The module's mount(), checked: the module must keep the contract and export the same schema. */
 async function loadMount(id) {
@@ -29,9 +32,9 @@ async function loadMount(id) {
 export function panelDefinition(id) {
   const entry = panelEntry(id);
   const schema = panelSchema(id);
-  if (!entry || !moduleOf(id) || !schema || typeof schema !== 'object') {
-    throw new Error(`There is no panel module src/panels/${id}/index.js with a schema.js in the manifest.`);
-  }
+  if (!entry) throw new Error(`There is no panel “${id}” in the manifest.`);
+  if (!moduleOf(id)) throw new Error(`The panel “${id}” has no module src/panels/${id}/index.js.`);
+  if (!schema || typeof schema !== 'object') throw new Error(`The panel “${id}” has no schema: src/panels/${id}/schema.js must export it.`);
   let loading = null;
   return Object.freeze({ ...entry, schema, load: () => (loading ??= loadMount(id)) });
 }

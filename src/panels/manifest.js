@@ -1,11 +1,24 @@
 // @ts-check
 // The panel manifest: every panel of the lecture, in the lecture's order, with what the page needs
-// to know before the panel's code loads. The lecture page's sections (vite.config.js writes them
-// into index.html), the embed page, the README's id list and the tests all come from this list or
-// are checked against it. Plain data with no imports, so Node (the build, the unit tests) reads it too.
+// to know before the panel's code loads. The lecture page's sections and the places they keep
+// (vite.config.js writes them into index.html and src/panelPlaces.css), the embed page and the
+// tests all come from this list or are checked against it. Plain data with no imports, so Node (the
+// build, the unit tests) reads it too.
 //
-// A panel is the folder src/panels/<id>/ with its module in index.js (schema and mount; see
-// src/host/panelContract.js). Adding a panel is adding its folder and one entry here.
+// A panel is the folder src/panels/<id>/ with its parameters in schema.js and its module in index.js
+// (the same schema and mount; see src/host/panelContract.js). Adding a panel is adding its folder
+// and one entry here (docs/panels.md).
+
+/**
+ * A panel's place on the lecture page before its module arrives, in px, per layout (PLACE_LAYOUTS):
+ * about 92 % of the panel's smallest mounted height over the window widths of that layout (measured
+ * in Chromium), since larger type in projector mode only makes a panel taller. The browser tests
+ * keep each one under the mounted height and above 40 % of it.
+ * @typedef {object} PanelPlace
+ * @property {number} narrow        one column: windows up to 1000 px wide (styles.css)
+ * @property {number} wide          two columns, from 1001 px
+ * @property {number} widest        from 1450 px
+ */
 
 /**
  * @typedef {object} PanelEntry
@@ -19,6 +32,7 @@
  * @property {string} [materialSelect] instead: a parameter that takes the material's id
  * @property {boolean} [hero]       the first, large panel: it owns the short URL keys (?nT=…)
  * @property {string} [animates]    the boolean parameter that runs its animation (off: it draws only on change)
+ * @property {PanelPlace} place     its place on the lecture page before it mounts, so that mounting moves nothing
  */
 
 /** @type {readonly PanelEntry[]} */
@@ -35,6 +49,7 @@ export const PANELS = Object.freeze([
     cite: 'Lecture: “Reflection Math”, “Fresnel Reflection in Lighting”.',
     webgl: true,
     material: 'nT',
+    place: { narrow: 1290, wide: 760, widest: 800 },
   },
   {
     id: 'normal-mips',
@@ -46,6 +61,7 @@ export const PANELS = Object.freeze([
     cite: 'Lecture agenda: “Mipmapping normal maps”; Toksvig 2005, Olano &amp; Baker 2010.',
     webgl: true,
     material: null,
+    place: { narrow: 2560, wide: 1780, widest: 1920 },
   },
   {
     id: 'asphalt',
@@ -60,6 +76,7 @@ export const PANELS = Object.freeze([
     cite: 'Lecture: “Specular”.',
     webgl: true,
     material: 'nT',
+    place: { narrow: 970, wide: 610, widest: 710 },
   },
   {
     id: 'changing-specular',
@@ -70,6 +87,7 @@ export const PANELS = Object.freeze([
     cite: 'Lecture: “Changing Specular”.',
     webgl: true,
     material: 'nT',
+    place: { narrow: 1190, wide: 850, widest: 860 },
   },
   {
     id: 'reflect-refract',
@@ -80,6 +98,7 @@ export const PANELS = Object.freeze([
     cite: 'Lecture: “Reflection vs. Refraction”.',
     webgl: true,
     material: 'nT',
+    place: { narrow: 1050, wide: 630, widest: 740 },
   },
   {
     id: 'refraction-waves',
@@ -92,6 +111,7 @@ export const PANELS = Object.freeze([
     webgl: true,
     material: 'nT',
     animates: 'play',
+    place: { narrow: 1160, wide: 760, widest: 880 },
   },
   {
     id: 'angle-ratio',
@@ -101,6 +121,7 @@ export const PANELS = Object.freeze([
     cite: 'Lecture: “Reflection vs. Refraction”.',
     webgl: false,
     material: 'nT',
+    place: { narrow: 930, wide: 650, widest: 740 },
   },
   {
     id: 'refractive-index',
@@ -114,6 +135,7 @@ export const PANELS = Object.freeze([
     webgl: false,
     material: null,
     materialSelect: 'selected',
+    place: { narrow: 1430, wide: 1260, widest: 810 },
   },
   {
     id: 'polarization',
@@ -123,6 +145,7 @@ export const PANELS = Object.freeze([
     cite: 'Beyond the slides; Hecht, <i>Optics</i>, §4.6.',
     webgl: false,
     material: 'nT',
+    place: { narrow: 950, wide: 650, widest: 590 },
   },
   {
     id: 'exact-fresnel',
@@ -132,6 +155,7 @@ export const PANELS = Object.freeze([
     cite: 'Lecture: “Reflection Math”.',
     webgl: false,
     material: 'nT',
+    place: { narrow: 1600, wide: 1350, widest: 780 },
   },
   {
     id: 'schlick',
@@ -141,6 +165,7 @@ export const PANELS = Object.freeze([
     cite: 'Lecture: “Reflection Math”.',
     webgl: false,
     material: 'nT',
+    place: { narrow: 1000, wide: 760, widest: 700 },
   },
   {
     id: 'r0-derivation',
@@ -151,6 +176,7 @@ export const PANELS = Object.freeze([
     cite: 'Lecture: “Reflection Math”, R(0°).',
     webgl: false,
     material: 'nT',
+    place: { narrow: 1430, wide: 1290, widest: 1210 },
   },
   {
     id: 'fresnel-lighting',
@@ -161,6 +187,7 @@ export const PANELS = Object.freeze([
     cite: 'Lecture: “Fresnel Reflection in Lighting”.',
     webgl: true,
     material: 'nT',
+    place: { narrow: 1390, wide: 880, widest: 1000 },
   },
   {
     id: 'metals',
@@ -173,6 +200,7 @@ export const PANELS = Object.freeze([
     cite: 'Lecture: “Fresnel Reflection and Materials”.',
     webgl: true,
     material: 'nT',
+    place: { narrow: 1440, wide: 1180, widest: 1200 },
   },
   {
     id: 'speed-accuracy',
@@ -182,6 +210,7 @@ export const PANELS = Object.freeze([
     cite: 'Beyond the slides: “model no more than a scene needs”.',
     webgl: false, // the chart is 2D; contexts live only while a benchmark or a read-back runs
     material: null,
+    place: { narrow: 1750, wide: 1570, widest: 1080 },
   },
   {
     id: 'stability',
@@ -191,6 +220,7 @@ export const PANELS = Object.freeze([
     cite: 'Beyond the slides.',
     webgl: true,
     material: null,
+    place: { narrow: 1040, wide: 810, widest: 820 },
   },
   {
     id: 'shader-lab',
@@ -202,6 +232,7 @@ export const PANELS = Object.freeze([
     cite: 'Lecture: “Fresnel Reflection in Lighting” (the shader code); beyond the slides.',
     webgl: true,
     material: null,
+    place: { narrow: 1640, wide: 1400, widest: 1430 },
   },
 ]);
 
@@ -234,26 +265,59 @@ export function sectionHtml(entry) {
 /** Where the lecture page's sections go in index.html. */
 export const SECTIONS_MARKER = '<!-- panel sections: written at build time from src/panels/manifest.js -->';
 
+/** The media query of each layout of a PanelPlace ('' for every window), narrowest first. */
+export const PLACE_LAYOUTS = Object.freeze({ narrow: '', wide: '(min-width: 1001px)', widest: '(min-width: 1450px)' });
+
+/** Where the rules that keep each panel's place go in src/panelPlaces.css. */
+export const PLACES_MARKER = '/* panel places: written at build time from src/panels/manifest.js */';
+
 /**
- * What is wrong between the manifest, the panel folders that have an index.js (`folders`, their
- * names) and the lecture page's source (`indexHtml`): each problem in words, [] when all agree.
- * The build fails on any (vite.config.js), and a unit test checks the same.
+ * The CSS that keeps each panel's place on the lecture page before it mounts, from the entries'
+ * `place`: the page reserves it before any script runs, under the page's style-src 'self'.
+ * @param {readonly PanelEntry[]} [panels]
  */
-export function manifestProblems(folders, indexHtml) {
+export function placesCss(panels = PANELS) {
+  return Object.entries(PLACE_LAYOUTS).map(([layout, media]) => {
+    const rules = panels.map((p) => `#${p.id} > .panel-mount { min-height: ${p.place[layout]}px; }`);
+    return media ? `@media ${media} {\n  ${rules.join('\n  ')}\n}` : rules.join('\n');
+  }).join('\n');
+}
+
+/**
+ * What is wrong between the manifest, the panels' files (`files`: each index.js and schema.js
+ * under src/panels, as `<folder>/<file>`) and the lecture page's source (`indexHtml`): each problem
+ * in words, [] when all agree. The build fails on any (vite.config.js), and a unit test checks the same.
+ * @param {string[]} files
+ * @param {string} [indexHtml]
+ * @param {readonly PanelEntry[]} [panels]
+ */
+export function manifestProblems(files, indexHtml, panels = PANELS) {
   const problems = [];
   const ids = new Set();
-  for (const entry of PANELS) {
-    if (ids.has(entry.id)) problems.push(`The id “${entry.id}” is in the manifest twice.`);
-    ids.add(entry.id);
-    if (!/^[a-z0-9]+(-[a-z0-9]+)*$/.test(entry.id)) problems.push(`The id “${entry.id}” is not lower-case words joined by hyphens.`);
-    if (!folders.includes(entry.id)) problems.push(`The panel “${entry.id}” has no module src/panels/${entry.id}/index.js.`);
-    for (const field of ['title', 'lede', 'cite']) {
-      if (typeof entry[field] !== 'string' || !entry[field].trim()) problems.push(`The panel “${entry.id}” has no ${field}.`);
+  for (const entry of panels) {
+    const { id } = entry;
+    if (ids.has(id)) problems.push(`The id “${id}” is in the manifest twice.`);
+    ids.add(id);
+    if (!/^[a-z0-9]+(-[a-z0-9]+)*$/.test(id)) problems.push(`The id “${id}” is not lower-case words joined by hyphens.`);
+    if (!files.includes(`${id}/index.js`)) problems.push(`The panel “${id}” has no module src/panels/${id}/index.js.`);
+    if (!files.includes(`${id}/schema.js`)) {
+      problems.push(`The panel “${id}” has no src/panels/${id}/schema.js: its parameters (export const schema) come with the page, apart from its module.`);
     }
-    if (typeof entry.webgl !== 'boolean') problems.push(`The panel “${entry.id}” does not say whether it uses WebGL.`);
+    for (const field of ['title', 'lede', 'cite']) {
+      if (typeof entry[field] !== 'string' || !entry[field].trim()) problems.push(`The panel “${id}” has no ${field}.`);
+    }
+    if (typeof entry.webgl !== 'boolean') problems.push(`The panel “${id}” does not say whether it uses WebGL.`);
+    for (const layout of Object.keys(PLACE_LAYOUTS)) {
+      const height = entry.place?.[layout];
+      if (!(Number.isFinite(height) && height > 0)) {
+        problems.push(`The panel “${id}” has no place.${layout}: the height in px the lecture page keeps for it before it mounts (docs/panels.md).`);
+      }
+    }
   }
-  for (const folder of folders) {
-    if (!ids.has(folder)) problems.push(`src/panels/${folder}/index.js is not in the manifest.`);
+  for (const folder of new Set(files.map((file) => file.split('/')[0]))) {
+    if (ids.has(folder)) continue;
+    const own = files.filter((f) => f.startsWith(`${folder}/`)).map((f) => f.slice(folder.length + 1));
+    problems.push(`src/panels/${folder}/ (${own.join(', ')}) is not in the manifest.`);
   }
   if (indexHtml !== undefined) {
     if (!indexHtml.includes(SECTIONS_MARKER)) problems.push('index.html has no place for the panel sections.');

@@ -1,42 +1,54 @@
 import { readFileSync, readdirSync, existsSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { describe, expect, it } from 'vitest';
-import { PANELS, PANEL_IDS, lecturePrefix, manifestProblems, sectionHtml } from '../../src/panels/manifest.js';
+import { PANELS, PANEL_IDS, PLACES_MARKER, lecturePrefix, manifestProblems, placesCss, sectionHtml } from '../../src/panels/manifest.js';
 import { defaults, parseValue, readParams } from '../../src/host/params.js';
+import { FIXED_PANEL_IDS } from './fixedPanelIds.js';
 
 const root = resolve(import.meta.dirname, '../..');
-const folders = readdirSync(resolve(root, 'src/panels'), { withFileTypes: true })
-  .filter((d) => d.isDirectory() && existsSync(resolve(root, 'src/panels', d.name, 'index.js'))).map((d) => d.name);
+const files = readdirSync(resolve(root, 'src/panels'), { withFileTypes: true }).filter((d) => d.isDirectory())
+  .flatMap((d) => ['index.js', 'schema.js'].filter((f) => existsSync(resolve(root, 'src/panels', d.name, f))).map((f) => `${d.name}/${f}`));
 const indexHtml = readFileSync(resolve(root, 'index.html'), 'utf8');
 const modules = Object.fromEntries(await Promise.all(PANEL_IDS.map(async (id) => [id, await import(`../../src/panels/${id}/index.js`)])));
+const schemas = Object.fromEntries(await Promise.all(PANEL_IDS.map(async (id) => [id, (await import(`../../src/panels/${id}/schema.js`)).schema])));
 
 describe('the panel manifest', () => {
   it('agrees with the panel folders and the lecture page', () => {
-    expect(manifestProblems(folders, indexHtml)).toEqual([]);
+    expect(manifestProblems(files, indexHtml)).toEqual([]);
   });
-  it('names what is wrong: a missing module, a stray folder, a hand-written section', () => {
-    const problems = manifestProblems([...folders.filter((f) => f !== 'metals'), 'stray'],
+  it('names what is wrong: a missing module or schema, a stray folder, a hand-written section', () => {
+    const problems = manifestProblems([...files.filter((f) => f !== 'metals/index.js' && f !== 'schlick/schema.js'), 'stray/index.js'],
       indexHtml.replace('<main>', '<main><section data-panel="metals"></section>'));
-    expect(problems).toEqual(expect.arrayContaining([
-      expect.stringContaining('“metals” has no module'),
-      expect.stringContaining('src/panels/stray/index.js is not in the manifest'),
-      expect.stringContaining('hand-written section “metals”'),
-    ]));
-    expect(manifestProblems(folders, '<main></main>')).toEqual(['index.html has no place for the panel sections.']);
-  });
-  it('keeps the fixed ids that links and embeds already use, in lecture order', () => {
-    // Renaming an id breaks every link and embed made with it: change this list only with aliases in place.
-    expect(PANEL_IDS).toEqual([
-      'spheres', 'normal-mips', 'asphalt', 'changing-specular', 'reflect-refract', 'refraction-waves',
-      'angle-ratio', 'refractive-index', 'polarization', 'exact-fresnel', 'schlick', 'r0-derivation',
-      'fresnel-lighting', 'metals', 'speed-accuracy', 'stability', 'shader-lab',
+    expect(problems).toEqual([
+      'The panel “schlick” has no src/panels/schlick/schema.js: its parameters (export const schema) come with the page, apart from its module.',
+      'The panel “metals” has no module src/panels/metals/index.js.',
+      'src/panels/stray/ (index.js) is not in the manifest.',
+      'index.html has a hand-written section “metals”: sections come from the manifest.',
     ]);
+    expect(manifestProblems(files, '<main></main>')).toEqual(['index.html has no place for the panel sections.']);
   });
-  it('the README lists the same ids in the same order', () => {
-    const readme = readFileSync(resolve(root, 'README.md'), 'utf8');
-    const line = readme.split('\n\n').find((p) => p.includes('Panel ids are fixed'));
-    expect(line, 'README: the paragraph with "Panel ids are fixed"').toBeDefined();
-    expect([...line.matchAll(/`([a-z0-9-]+)`/g)].map((m) => m[1])).toEqual(PANEL_IDS);
+  it('names a place the entry does not give', () => {
+    const { place, ...entry } = PANELS[0];
+    expect(manifestProblems(files.filter((f) => f.startsWith(`${entry.id}/`)), undefined, [{ ...entry, place: { ...place, wide: undefined } }])).toEqual([
+      `The panel “${entry.id}” has no place.wide: the height in px the lecture page keeps for it before it mounts (docs/panels.md).`,
+    ]);
+    expect(manifestProblems(files.filter((f) => f.startsWith(`${entry.id}/`)), undefined, [entry])).toHaveLength(3);
+  });
+  it('keeps every id that links and embeds already use', () => {
+    // Renaming or removing an id breaks every link and embed made with it; a new panel adds one.
+    expect(PANEL_IDS).toEqual(expect.arrayContaining([...FIXED_PANEL_IDS]));
+  });
+  it('writes the place of each panel for each layout, narrowest first, so that a wider layout overrides it', () => {
+    const [narrow, wide, widest, ...more] = placesCss().split('@media ');
+    expect(more).toEqual([]);
+    expect([wide, widest].map((block) => block.slice(0, block.indexOf(' {')))).toEqual(['(min-width: 1001px)', '(min-width: 1450px)']);
+    for (const { id, place } of PANELS) {
+      const rule = (px) => `#${id} > .panel-mount { min-height: ${px}px; }`;
+      expect(narrow).toContain(rule(place.narrow));
+      expect(wide).toContain(rule(place.wide));
+      expect(widest).toContain(rule(place.widest));
+    }
+    expect(readFileSync(resolve(root, 'src/panelPlaces.css'), 'utf8')).toContain(PLACES_MARKER);
   });
   it('the hero owns the short URL keys; other panels prefix theirs', () => {
     expect(PANELS.filter((p) => p.hero).map((p) => p.id)).toEqual(['spheres']);
@@ -59,6 +71,7 @@ describe.each(PANEL_IDS)('the %s module', (id) => {
   it('exports schema and mount, and leaves id, title and traits to the manifest', () => {
     expect(typeof module.mount).toBe('function');
     expect(module.schema).toBeTypeOf('object');
+    expect(module.schema, 'the schema of its schema.js (the loader refuses another)').toBe(schemas[id]);
     for (const name of ['id', 'title', 'usesWebGL', 'materialParam', 'materialSelectParam']) expect(module[name]).toBeUndefined();
   });
   it('has a schema whose defaults are valid values with labels', () => {
