@@ -19,7 +19,7 @@ const HOST_PATH = '__bench-host.html'; // a blank same-origin page for the ifram
 /** Errors any measured page logged (the run fails on them, as the panel benchmark does). */
 export const problems = [];
 
-async function freshContext(browser, viewport) {
+export async function freshContext(browser, viewport) {
   const context = await browser.newContext({ viewport });
   context.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
   context.on('weberror', (e) => problems.push(e.error().message));

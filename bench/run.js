@@ -9,7 +9,8 @@
 // 2. the pages (measurePages.js): the hero against the three.js peer per message-driven update,
 //    every WebGL panel's update at 1280×720, time to the first frame and gzipped JS per page,
 //    layout shift over a scroll of the lecture page, and Lighthouse on it (measureLighthouse.js;
-//    --no-lighthouse leaves it out).
+//    --no-lighthouse leaves it out); the homework page grading a synthetic class of 500 hand-ins of
+//    a 40-question sheet from its zip and from pasted codes (measureClassView.js; 50 × 10 with --tiny).
 // Prints the tables and writes results.json and results.png (the chart) to bench/ (or --out);
 // --pages-only runs part 2 alone and merges it into the results.json already there.
 import { chromium } from '@playwright/test';
@@ -23,6 +24,7 @@ import config from '../playwright.config.js';
 import { heroVsPeer, layoutShift, pageLoad, panelUpdateCosts, problems } from './measurePages.js';
 import { pagesTable } from './pagesTable.js';
 import { lighthouse } from './measureLighthouse.js';
+import { classView } from './measureClassView.js';
 import { PANEL_IDS } from '../src/panels/manifest.js';
 
 const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
@@ -157,9 +159,12 @@ try {
   }
   log('layout shift over a scroll of the lecture page');
   const shift = tiny ? null : await layoutShift(browser, base);
+  const classSize = tiny ? { students: 50, questions: 10, runs: 1, codeRuns: 1 } : { students: 500, questions: 40, runs: 5, codeRuns: 3 };
+  log(`grading a class of ${classSize.students} hand-ins of ${classSize.questions} questions on the homework page`);
+  const graded = await classView(browser, base, root, classSize);
   log('Lighthouse on the lecture page (desktop, 3 runs)');
   const audit = tiny || flag('no-lighthouse') ? null : await lighthouse(base, launchOptions);
-  results.pages = { hero, panels, loads, layoutShift: shift, lighthouse: audit };
+  results.pages = { hero, panels, loads, layoutShift: shift, classView: graded, lighthouse: audit };
   table = `${table}\n${pagesTable(results.pages)}`;
 
   results.config = { ...results.config, script: 'bench/run.js', wallSeconds: (Date.now() - started) / 1000, chromium: browser.version() };

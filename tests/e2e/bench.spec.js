@@ -1,7 +1,8 @@
 // `npm run bench -- --tiny` end to end on the site the browser tests already built (npm run
 // test:e2e builds dist/ with the benchmark's three.js peer page): it serves it, runs the
-// speed-accuracy benchmark in headless Chromium (launched as playwright.config.js does) and writes
-// results.json and results.png; here into a temporary folder, so bench/ keeps the committed run.
+// speed-accuracy benchmark and the pages' measurements (a class graded on the homework page among
+// them) in headless Chromium (launched as playwright.config.js does) and writes results.json and
+// results.png; here into a temporary folder, so bench/ keeps the committed run.
 import { test, expect } from '@playwright/test';
 import { execFile } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
@@ -16,11 +17,11 @@ const METHOD_IDS = [
 const isSpread = (s) => s && ['median', 'min', 'max'].every((k) => Number.isFinite(s[k])) && s.min <= s.median && s.median <= s.max;
 
 test('npm run bench -- --tiny writes a valid results.json and a chart PNG', async () => {
-  test.setTimeout(120_000);
+  test.setTimeout(150_000); // the class graded on the homework page adds about 10 s
   const out = mkdtempSync(join(tmpdir(), 'fresnel-lab-bench-test-'));
   try {
     const { code, stdout, stderr } = await new Promise((done) => {
-      execFile(process.execPath, ['bench/run.js', '--tiny', '--site', 'dist', '--out', out], { timeout: 110_000 }, (error, so, se) => {
+      execFile(process.execPath, ['bench/run.js', '--tiny', '--site', 'dist', '--out', out], { timeout: 140_000 }, (error, so, se) => {
         done({ code: error ? (error.code ?? 1) : 0, stdout: so, stderr: se });
       });
     });
@@ -69,6 +70,22 @@ test('npm run bench -- --tiny writes a valid results.json and a chart PNG', asyn
     expect(nm.truth.samples).toBeGreaterThanOrEqual(128); // the default cap, reached
     expect(Number.isFinite(nm.truth.longestTaskMs)).toBe(true);
     expect(stdout).toMatch(/normal-mips: all six chains of a 64² map in \d+ ms/);
+
+    // Grading a class on the homework page (50 hand-ins × 10 questions when tiny), from the zip and from pasted codes.
+    const cv = results.pages.classView;
+    expect([cv.students, cv.questions]).toEqual([50, 10]);
+    for (const run of [cv, cv.codes]) {
+      expect(isSpread(run.wallMs), `${run.source} wall`).toBe(true);
+      expect(run.rows, run.source).toBe(cv.students); // a row per hand-in
+      for (const key of ['longestTaskMs', 'longestScriptTaskMs', 'longestRenderMs', 'elementsPerStudent', 'elementsPerRow']) {
+        expect(Number.isFinite(run[key]) && run[key] >= 0, `${run.source} ${key}`).toBe(true);
+      }
+      expect(run.longestTaskMs).toBe(Math.max(run.longestScriptTaskMs, run.longestRenderMs));
+    }
+    expect(cv.source).toBe('zip');
+    expect(cv.codes.source).toBe('codes');
+    expect(cv.elementsPerRow).toBeGreaterThan(cv.questions); // a cell per question at least
+    expect(stdout).toMatch(/Grade a class, 50 hand-ins × 10 questions, from the zip to the whole gradebook/);
 
     const png = readFileSync(join(out, 'results.png'));
     expect(png.subarray(1, 4).toString()).toBe('PNG');
