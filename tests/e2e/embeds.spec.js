@@ -1,13 +1,14 @@
 // Every panel's embed, opened once on a desktop and once on a phone turned tablet, with every check
 // that reads the same page: on the desktop the accessibility audit, the panel contract
-// (panelContract.js), seeded keys and a seeded fuzz of the message door, markup from outside that
-// must stay text, and a valid `set` followed afterwards; on the phone (390×844, then 768×1024 in the
-// same page) the layout at both sizes and the audit on the phone. FUZZ_SEED=<n> replays the fuzz.
+// (panelContract.js), seeded keys (of which one at least must reach a control) and a seeded fuzz of
+// the message door, markup from outside that must stay text, and a valid `set` followed afterwards;
+// on the phone (390×844, then 768×1024 in the same page) the layout at both sizes and the audit on
+// the phone. FUZZ_SEED=<n> replays the fuzz.
 import { test, expect, openLab, settledFrames } from './fixtures.js';
 import { PANELS } from '../../src/panels/manifest.js';
 import { seriousViolations } from './audit.js';
 import { expectPanelContract, probeValue } from './panelContract.js';
-import { SEED, expectSound, fuzzKeys } from './keyFuzz.js';
+import { SEED, expectKeysReached, expectSound, focusPanel, fuzzKeys } from './keyFuzz.js';
 import { XSS, injected, randomMessages, sendMessages } from './doorFuzz.js';
 import { layoutProblems } from './layout.js';
 
@@ -35,8 +36,10 @@ for (const [n, entry] of PANELS.entries()) {
     expect(await seriousViolations(page), 'accessibility audit').toEqual([]);
     await expectPanelContract(page, entry);
 
+    await focusPanel(page);
     const pressed = await fuzzKeys(page, SEED + n + 1, 50);
     await expectSound(page, `${id} after ${pressed.join(' ')}`);
+    await expectKeysReached(page, `${id} after ${pressed.join(' ')}`);
 
     // The message door: what a deck's script might send, valid or not; errors answered, nothing thrown.
     await page.evaluate(() => {

@@ -1,7 +1,8 @@
 // Keyboard only, at random but reproducibly: seeded presses of Tab, Shift+Tab, the arrows, the Page
 // keys, Home, End, Space, Enter and the digits, and what must hold after them: no NaN or
-// "undefined" on screen or in an accessible name, no panel failed, and every value inside its
-// schema (checked here, not by the page's own code). FUZZ_SEED=<n> replays a run.
+// "undefined" on screen or in an accessible name, no panel failed, every value inside its schema
+// (checked here, not by the page's own code), and that the keys reached a control of the panel.
+// FUZZ_SEED=<n> replays a run.
 import { expect } from './fixtures.js';
 import { seededRandom } from '../../src/homework/seededRandom.js';
 
@@ -41,8 +42,45 @@ export const outsideSchema = (page) => page.evaluate(() => {
   return bad;
 });
 
-/** Presses `presses` seeded keys from wherever the focus is; returns them. */
+// A panel's own keyboard-operable controls: its form fields, sliders and focusable canvases, not
+// the toolbar's export buttons or a notice's Dismiss.
+const CONTROL = 'input, select, textarea, button, [role="slider"], [role="spinbutton"], [contenteditable="true"], [tabindex]:not([tabindex="-1"])';
+const PANEL_PART = '.panel-side, .panel-content';
+const NOT_PANEL = '.toolbar, .notice';
+
+/**
+ * Puts the focus on the first control of the panel (an embed's), as a reader's click into it would:
+ * from the page's start a seed with few Tabs may stay in the toolbar, and test nothing of the panel.
+ */
+export async function focusPanel(page) {
+  await page.locator(`:is(${PANEL_PART}) :is(${CONTROL}):not(:is(${NOT_PANEL}) *):visible`).first().focus();
+}
+
+/**
+ * Presses `presses` seeded keys from wherever the focus is; returns them. What they reach is
+ * recorded in the page for expectKeysReached: the first control of a panel they moved focus to,
+ * and how many presses changed a host's value.
+ */
 export async function fuzzKeys(page, seed, presses) {
+  await page.evaluate(([control, part, not]) => {
+    const values = () => JSON.stringify(Object.values(window.fresnelLab.hosts).map((h) => h.values));
+    const reached = { control: null, changes: 0, last: values() };
+    if (!window.__keysReached) {
+      document.addEventListener('focusin', ({ target }) => {
+        const seen = window.__keysReached;
+        if (!seen.control && target.matches?.(control) && target.closest(part) && !target.closest(not)) {
+          seen.control = target.getAttribute('aria-label') ?? target.closest('.lil-controller')?.textContent.trim() ?? target.tagName;
+        }
+      }, true);
+      // After each key's own handlers: a value changed by that press (or by one just before it).
+      document.addEventListener('keyup', () => {
+        const seen = window.__keysReached;
+        const now = values();
+        if (now !== seen.last) Object.assign(seen, { changes: seen.changes + 1, last: now });
+      }, true);
+    }
+    window.__keysReached = reached;
+  }, [CONTROL, PANEL_PART, NOT_PANEL]);
   const { next } = seededRandom(seed);
   const pressed = [];
   for (let i = 0; i < presses; i += 1) {
@@ -53,6 +91,21 @@ export async function fuzzKeys(page, seed, presses) {
     await page.keyboard.press(key);
   }
   return pressed;
+}
+
+/**
+ * The panels on the page have keyboard-operable controls, and the presses since fuzzKeys reached
+ * one: they moved focus onto one or changed a value (keys that never leave the page's chrome, or
+ * that a handler swallows, test nothing of the panel).
+ */
+export async function expectKeysReached(page, what) {
+  const { operable, control, changes } = await page.evaluate(([c, part, not]) => ({
+    operable: [...document.querySelectorAll(`:is(${part}) :is(${c})`)].filter((e) => !e.closest(not) && !e.disabled && e.checkVisibility()).length,
+    control: window.__keysReached.control,
+    changes: window.__keysReached.changes + (JSON.stringify(Object.values(window.fresnelLab.hosts).map((h) => h.values)) !== window.__keysReached.last),
+  }), [CONTROL, PANEL_PART, NOT_PANEL]);
+  expect(operable, `${what}: controls a key can reach`).toBeGreaterThan(0);
+  expect({ control, changes }, `${what}: no key reached a control`).not.toEqual({ control: null, changes: 0 });
 }
 
 /**
