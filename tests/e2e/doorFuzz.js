@@ -3,6 +3,7 @@
 // from a corpus of what breaks parsers and pages: names every object inherits, NaN spelled many
 // ways, huge and tiny numbers, long and odd Unicode, and markup that would run script if it ever
 // became HTML. FUZZ_SEED=<n> replays a run.
+import { deflateSync } from 'fflate';
 import { seededRandom } from '../../src/homework/seededRandom.js';
 
 /** Markup that runs `window.__xss = 1` if it is ever parsed as HTML (or followed as a link). */
@@ -63,12 +64,44 @@ export function randomMessages(seed, keys, count) {
   return list;
 }
 
-/** A link's query for a panel: every schema key and a few others, each with a value from the corpus. */
-export function randomQuery(seed, keys) {
+/**
+ * A value from the corpus that no spec of this type takes, by the type's own rules (docs/panels.md),
+ * judged here and not by the page's parser: for a number, no decimal or one outside its range; for
+ * an enum, none of its options; a colour not six hex digits; a boolean not true, false, 1 or 0; a
+ * text longer than its cap, or a compact form that does not decode.
+ */
+function badValue(rng, spec) {
+  const markup = rng.pick(XSS);
+  switch (spec.type) {
+    case 'number':
+      return rng.pick([markup, 'NaN', '+NaN', 'Infinity', '-Infinity', '1e999', '0x1', '1,5', '1_000', '', 'e\u0301\u0301', '𝟙𝟚𝟛',
+        String(spec.max + 1), String(spec.min - 1)]);
+    case 'enum': {
+      const options = Array.isArray(spec.options) ? spec.options.map(String) : Object.keys(spec.options);
+      return rng.pick([markup, ...PROTOTYPE_NAMES, 'NaN', 'undefined', 'null', '', '\u202eevil'].filter((v) => !options.includes(v)));
+    }
+    case 'color':
+      return rng.pick([markup, '#GGGGGG', '#12345', 'ff88001', 'red', '']);
+    case 'boolean':
+      return rng.pick([markup, 'TRUE', 'yes', '2', 'null', '']);
+    default: {
+      const long = markup.repeat(Math.ceil((spec.maxLength + 1) / markup.length));
+      if (!spec.decode) return long;
+      // The compact form (shader-lab/codeCodec.js; the plain text would pass a server's limit on a
+      // request line): the over-long text deflated, 12 bytes stated before a stream that is not
+      // base64, or an empty stream.
+      const bytes = new TextEncoder().encode(long);
+      return rng.pick([`*${bytes.length.toString(36)}.${Buffer.from(deflateSync(bytes)).toString('base64url')}`, '*c.A', '*1.']);
+    }
+  }
+}
+
+/** A link's query for a panel: every schema key with a bad value from the corpus, and a few keys that are not the panel's. */
+export function randomQuery(seed, schema) {
   const rng = seededRandom(seed);
   const search = new URLSearchParams();
   const text = (v) => (v !== null && typeof v === 'object' ? JSON.stringify(v) : String(v)); // a link holds only text
-  for (const key of keys) search.set(key, text(anyValue(rng)));
+  for (const [key, spec] of Object.entries(schema)) search.set(key, badValue(rng, spec));
   for (let i = 0; i < 3; i += 1) search.set(rng.pick([...PROTOTYPE_NAMES, ...XSS]), text(anyValue(rng)));
   return search.toString();
 }
