@@ -81,7 +81,7 @@ async function oneRun(browser, base, made, { prepare = async () => {}, bring }) 
     await page.evaluate(() => new Promise((resolve) => { setTimeout(resolve, 100); }));
     return await page.evaluate(({ start, end }) => {
       const state = window.fresnelLab.homework.classView;
-      const rows = document.querySelectorAll('.hw-gradebook tbody tr');
+      const rows = document.querySelectorAll('.hw-gradebook .hw-body [role="row"]');
       const inRows = [...rows].reduce((n, tr) => n + tr.getElementsByTagName('*').length + 1, 0);
       const meanwhile = (list) => list.filter((t) => t.start + t.duration >= start && t.start <= end);
       const longest = (list) => meanwhile(list).reduce((m, t) => Math.max(m, t.duration), 0);

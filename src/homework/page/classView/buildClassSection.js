@@ -165,7 +165,7 @@ export function buildClassSection(root) {
     keep.addEventListener('click', () => downloadText(`${slug(gradebook.title)}-class.json`, writeClassFile({ sheet: v.sheet, handIns: v.handIns }), 'application/json'));
     const gradebookHeading = el('h3', null, 'Gradebook');
     const questionsHeading = el('h3', null, 'What the class got wrong, and why');
-    const cards = questionSummaries(v, {
+    const questionCards = () => questionSummaries(v, {
       onShow: (card, i, from) => {
         const copy = /** @type {HTMLElement} */ (card.cloneNode(true));
         copy.querySelector('.hw-show-class')?.remove();
@@ -174,9 +174,11 @@ export function buildClassSection(root) {
         showDialog.open(copy, `${gradebook.title}: question ${i + 1}`, from);
       },
     });
-    parts.push(tools, gradebookHeading, table.element, questionsHeading, cards);
+    parts.push(tools, gradebookHeading, table.element, questionsHeading);
     out.replaceChildren(...parts);
     await table.ready;
+    // The cards after the rows, in tasks of their own.
+    out.append(await questionCards());
   }
 
   grade.addEventListener('click', run);

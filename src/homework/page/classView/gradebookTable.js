@@ -1,9 +1,11 @@
 // The class's gradebook as a table: a row per hand-in (one per student, with earlier hand-ins of the
 // same student kept as rows that do not count), sortable by any column from its header button
 // (aria-sort says how it is sorted), a mark per question, the flags a lecturer should look at, and
-// a button that opens that student's report. Rows are made in slices, so a class of 500 never
-// holds the page's thread for long, and sorting moves the rows that exist instead of making them
-// again. Text only (textContent), never markup.
+// a button that opens that student's report. It is a table to assistive technology (ARIA table
+// roles) laid out as rows of one grid each, and a row out of view is not rendered
+// (content-visibility): a <table> laid out and painted all its rows again as each slice arrived,
+// seconds for a class of 500. Rows are made in slices, and sorting moves the rows that exist
+// instead of making them again. Text only (textContent), never markup.
 import { button, el } from '../../../ui/el.js';
 import { sortRows } from '../../class/sortRows.js';
 import { KIND_NAMES } from '../../questions.js';
@@ -13,20 +15,30 @@ const FLAG_NAMES = {
   superseded: 'not counted', resubmitted: 'handed in again', 'shared-seed': 'shared seed', 'class-seed': 'other seed',
   copied: 'same wrong answers', 'no-name': 'no name',
 };
-const ROWS_PER_SLICE = 60;
+const ROWS_PER_SLICE = 50;
 const nextTask = () => new Promise((resolve) => { setTimeout(resolve, 0); });
+
+/** An element with an ARIA role: the table's parts are divs laid out as grids. */
+function part(role, className, text) {
+  const node = el('div', className ?? undefined, text);
+  node.setAttribute('role', role);
+  return node;
+}
 
 /** A cell whose symbol is seen and whose word is heard. */
 function markCell(mark) {
   const [symbol, word] = MARKS[mark];
-  const cell = el('td', `hw-mark hw-mark-${mark}`);
+  const cell = part('cell', `hw-mark hw-mark-${mark}`);
   const seen = el('span', null, symbol);
   seen.setAttribute('aria-hidden', 'true');
   cell.append(seen, el('span', 'sr-only', word));
   return cell;
 }
 
-const when = (time) => (time ? new Date(time).toLocaleString(undefined, { dateStyle: 'short', timeStyle: 'short' }) : '—');
+// One formatter for every row: toLocaleString with options builds a formatter per call, the
+// largest cost of making a row.
+const DATES = new Intl.DateTimeFormat(undefined, { dateStyle: 'short', timeStyle: 'short' });
+const when = (time) => (time ? DATES.format(new Date(time)) : '—');
 export const shownName = (row) => row.name || row.lmsName || '(no name)';
 
 /**
@@ -39,12 +51,18 @@ export function createGradebookTable(gradebook, { onDetails }) {
   wrap.tabIndex = 0;
   wrap.setAttribute('role', 'region');
   wrap.setAttribute('aria-label', 'Gradebook (scrolls sideways)');
-  const table = el('table', 'hw-gradebook');
-  table.append(el('caption', 'sr-only', `Gradebook of ${gradebook.title}: a row per hand-in; sort by any column with its header button.`));
-  const headRow = el('tr');
-  table.createTHead().append(headRow);
-  const body = table.createTBody();
-  wrap.append(table);
+  const table = part('table', 'hw-gradebook');
+  const caption = el('p', 'sr-only', `Gradebook of ${gradebook.title}: a row per hand-in; sort by any column with its header button.`);
+  caption.id = 'hw-gradebook-caption';
+  table.setAttribute('aria-labelledby', caption.id);
+  // Every row is a grid of the same columns (widths in classView.css), so a row lays out alone.
+  table.style.setProperty('--hw-marks', String(gradebook.items.length));
+  const headRow = part('row', 'hw-row hw-head');
+  const head = part('rowgroup', 'hw-rowgroup');
+  head.append(headRow);
+  const body = part('rowgroup', 'hw-rowgroup hw-body');
+  table.append(head, body);
+  wrap.append(caption, table);
 
   const columns = [
     { id: 'name', text: 'Name' }, { id: 'seed', text: 'Seed' }, { id: 'score', text: 'Score' }, { id: 'percent', text: '%' },
@@ -54,8 +72,7 @@ export function createGradebookTable(gradebook, { onDetails }) {
   const headers = new Map();
   let sorted = { column: null, descending: false };
   for (const column of columns) {
-    const th = el('th');
-    th.scope = 'col';
+    const th = part('columnheader');
     const sort = button(column.text, 'hw-sort');
     if (column.title) sort.title = column.title;
     sort.setAttribute('aria-label', `${column.title ? `${column.text}, ${column.title}` : column.text}: sort`);
@@ -64,18 +81,18 @@ export function createGradebookTable(gradebook, { onDetails }) {
     headers.set(column.id, th);
     headRow.append(th);
   }
-  headRow.append(el('th', null, 'Report'));
+  headRow.append(part('columnheader', null, 'Report'));
 
-  const made = new Map(); // row key → <tr>
+  const made = new Map(); // row key → its row
   function makeRow(row) {
-    const tr = el('tr', row.counted ? '' : 'hw-superseded');
-    const name = el('th', null, shownName(row));
-    name.scope = 'row';
+    const tr = part('row', `hw-row${row.counted ? '' : ' hw-superseded'}`);
+    const name = part('rowheader', 'hw-name', shownName(row));
     if (!row.counted) name.append(el('span', 'hw-not-counted', ' (not counted)'));
-    tr.append(name, el('td', 'hw-seed-cell', row.seed), el('td', 'hw-num', `${row.score} / ${row.total}`), el('td', 'hw-num', String(Math.round(row.percent))));
+    tr.append(name, part('cell', 'hw-seed-cell', row.seed), part('cell', 'hw-num hw-score', `${row.score} / ${row.total}`),
+      part('cell', 'hw-num', String(Math.round(row.percent))));
     for (const mark of row.marks) tr.append(markCell(mark));
-    tr.append(el('td', 'hw-num', row.triesTotal === null ? '—' : String(row.triesTotal)), el('td', null, when(row.time)));
-    const flags = el('td', 'hw-flags');
+    tr.append(part('cell', 'hw-num', row.triesTotal === null ? '—' : String(row.triesTotal)), part('cell', null, when(row.time)));
+    const flags = part('cell', 'hw-flags');
     for (const flag of row.flags) {
       const badge = el('span', `hw-flag hw-flag-${flag.kind}`, FLAG_NAMES[flag.kind] ?? flag.kind);
       badge.title = flag.text;
@@ -84,7 +101,7 @@ export function createGradebookTable(gradebook, { onDetails }) {
     const open = button('Report', 'hw-details');
     open.setAttribute('aria-label', `Report of ${shownName(row)}${row.counted ? '' : ' (not counted)'}`);
     open.addEventListener('click', () => onDetails(row, open));
-    const cell = el('td');
+    const cell = part('cell');
     cell.append(open);
     tr.append(flags, cell);
     made.set(row.key, tr);
@@ -108,9 +125,9 @@ export function createGradebookTable(gradebook, { onDetails }) {
 
   const ready = (async () => {
     for (let i = 0; i < gradebook.rows.length; i += ROWS_PER_SLICE) {
+      await nextTask(); // each slice a task of its own, the first too: the page shows what it has
       const slice = gradebook.rows.slice(i, i + ROWS_PER_SLICE).map(makeRow);
       if (sorted.column) applyOrder(); else body.append(...slice);
-      if (i + ROWS_PER_SLICE < gradebook.rows.length) await nextTask();
     }
   })();
 

@@ -10,6 +10,8 @@ import { setSubscripted } from '../../../ui/subscripts.js';
 import { KIND_NAMES, questionById } from '../../questions.js';
 import { panelEntry } from '../../../panels/manifest.js';
 
+const CARDS_PER_TASK = 8;
+const nextTask = () => new Promise((resolve) => { setTimeout(resolve, 0); });
 const percent = (share) => (share === null ? '—' : `${Math.round(100 * share)} %`);
 const students = (n) => `${n} student${n === 1 ? '' : 's'}`;
 
@@ -122,13 +124,14 @@ function promptText(question, params, sameForAll) {
 }
 
 /**
- * A card per question of the view (buildClassView's result). onShow(card, index): show one card
- * to the class. Returns the element holding the cards.
+ * A card per question of the view (buildClassView's result), made a few per task. onShow(card,
+ * index): show one card to the class. Resolves to the element holding the cards.
  */
-export function questionSummaries(view, { onShow }) {
+export async function questionSummaries(view, { onShow }) {
   const holder = el('div', 'hw-class-questions');
   const counted = view.gradebook.rows.filter((row) => row.counted);
-  view.summary.forEach((summary, i) => {
+  for (const [i, summary] of view.summary.entries()) {
+    if (i % CARDS_PER_TASK === 0) await nextTask();
     const question = questionById(summary.question);
     const card = el('section', 'hw-class-question');
     const heading = el('h4', 'hw-heading');
@@ -155,6 +158,6 @@ export function questionSummaries(view, { onShow }) {
     show.addEventListener('click', () => onShow(card, i, show));
     card.append(show);
     holder.append(card);
-  });
+  }
   return holder;
 }
