@@ -7,7 +7,8 @@ import { readSheet } from '../../src/homework/readSheet.js';
 import { gradeHandIn } from '../../src/homework/gradeHandIn.js';
 import { PANEL_IDS } from '../../src/panels/manifest.js';
 import { FIXED_PANEL_IDS } from './fixedPanelIds.js';
-import { brewsterAngle, criticalAngle, fresnelExact, normalIncidence } from '../../src/optics/fresnel.js';
+import { fresnelExact } from '../../src/optics/fresnel.js';
+import { absError, brewsterDegrees, cosOfDegrees, criticalDegrees, dielectricR } from './oracle/fresnelOracle.js';
 
 
 /** Every set of parameters a question can draw: each rng.pick tried with every entry in turn. */
@@ -88,16 +89,18 @@ describe('the questions', () => {
       }
     }
   });
-  it('numeric answers are the optics core\'s values', () => {
-    const at = (id, seed) => { const q = questionById(id); const p = questionParams(q, seed); return { p, value: q.expected(p) }; };
-    const r = at('exact-r', 'alice');
-    expect(r.value).toBe(fresnelExact(Math.cos((r.p.theta * Math.PI) / 180), 1, r.p.nT));
-    const b = at('brewster-exact', 'bob');
-    expect(b.value).toBeCloseTo((brewsterAngle(b.p.nI, b.p.nT) * 180) / Math.PI, 12);
-    const c = at('critical-angle', 'x7k2m9qp');
-    expect(c.value).toBeCloseTo((criticalAngle(c.p.nI, 1) * 180) / Math.PI, 12);
-    const r0 = at('r0-value', '42');
-    expect(r0.value).toBe(normalIncidence(1, r0.p.nT));
+  it('numeric answers are the physics\' values, against the 50-digit oracle for every parameter a question draws', () => {
+    const oracle = {
+      'exact-r': (p) => dielectricR(cosOfDegrees(p.theta), 1, p.nT),
+      'brewster-exact': (p) => brewsterDegrees(p.nI, p.nT),
+      'critical-angle': (p) => criticalDegrees(p.nI, 1),
+      'r0-value': (p) => dielectricR(1, 1, p.nT),
+    };
+    for (const [id, truth] of Object.entries(oracle)) {
+      const q = questionById(id);
+      // 1e-12: float64 rounding is ~1e-14 here (degrees up to 90), a wrong formula or unit far more.
+      for (const p of allParams(q)) expect(absError(q.expected(p), truth(p)), `${id} ${JSON.stringify(p)}`).toBeLessThan(1e-12);
+    }
     // A case worked by hand: glass (1.5) from air, head-on, is 0.04.
     expect(questionById('r0-value').expected({ nT: 1.5 })).toBeCloseTo(0.04, 15);
     for (const q of QUESTIONS.filter((x) => x.kind !== 'choice')) {

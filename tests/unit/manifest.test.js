@@ -2,7 +2,7 @@ import { readFileSync, readdirSync, existsSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { describe, expect, it } from 'vitest';
 import { PANELS, PANEL_IDS, PLACES_MARKER, lecturePrefix, manifestProblems, placesCss, sectionHtml } from '../../src/panels/manifest.js';
-import { defaults, parseValue, readParams } from '../../src/host/params.js';
+import { formatValue, parseValue, readParams } from '../../src/host/params.js';
 import { FIXED_PANEL_IDS } from './fixedPanelIds.js';
 
 const root = resolve(import.meta.dirname, '../..');
@@ -81,7 +81,20 @@ describe.each(PANEL_IDS)('the %s module', (id) => {
       expect(parseValue(spec, spec.default), `${id}.${key} default`).toEqual({ ok: true, value: spec.default });
       for (const alias of spec.aliases ?? []) expect(keys.has(alias), `${id}: alias ${alias} is also a key`).toBe(false);
     }
-    expect(readParams(module.schema, new URLSearchParams('')).values).toEqual(defaults(module.schema));
+  });
+  it('a link that states every default, keyed as on the lecture page, reads back as the defaults', () => {
+    // Written as a link writes it (a number to its step's decimals) and read as a link is read:
+    // a default its own text does not read back would be refused or moved by every link that says it.
+    const prefix = lecturePrefix(id);
+    const specs = Object.entries(module.schema);
+    const link = new URLSearchParams(specs.map(([key, spec]) => [prefix + key, formatValue(spec, spec.default)]));
+    const { values, problems } = readParams(module.schema, link, prefix);
+    expect(problems).toEqual([]);
+    for (const [key, spec] of specs) {
+      // (stability's tolerance defaults to the exact half step, 0.00445475…, off its 1e-7 grid.)
+      if (spec.type === 'number') expect(Math.abs(values[key] - spec.default), `${id}.${key}`).toBeLessThanOrEqual(spec.step / 2);
+      else expect(values[key], `${id}.${key}`).toBe(spec.default);
+    }
   });
   it('takes the page-wide material through a parameter it has', () => {
     if (entry.material) {
