@@ -1,39 +1,7 @@
-// A WebGL2 program for one full-screen triangle, with setters for its uniforms found by
-// introspection: a panel whose picture is analytic needs no scene graph, no buffers and no
-// three.js (the triangle's corners come from gl_VertexID).
-
-/** The vertex shader of a full-screen triangle: vUv runs 0..1 across the canvas. */
-export const TRIANGLE_VERTEX_GLSL = `#version 300 es
-out vec2 vUv;
-void main() {
-  vec2 p = vec2(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - 1.0);
-  vUv = p * 0.5 + 0.5;
-  gl_Position = vec4(p, 0.0, 1.0);
-}`;
-
-/** A shader did not compile or link; the message holds the driver's log with the source lines it names. */
-export class ShaderError extends Error {}
-
-/** The driver's log, each "ERROR: 0:LINE:" followed by that line of the source. */
-function explain(log, source) {
-  const lines = source.split('\n');
-  return log.trim().split('\n').map((entry) => {
-    const line = /^\s*ERROR:\s*\d+:(\d+):/.exec(entry)?.[1];
-    return line && lines[line - 1] !== undefined ? `${entry}\n    ${line}: ${lines[line - 1].trim()}` : entry;
-  }).join('\n');
-}
-
-function compile(gl, type, source) {
-  const shader = gl.createShader(type);
-  gl.shaderSource(shader, source);
-  gl.compileShader(shader);
-  if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS) && !gl.isContextLost()) {
-    const log = explain(gl.getShaderInfoLog(shader) ?? '', source);
-    gl.deleteShader(shader);
-    throw new ShaderError(`The ${type === gl.VERTEX_SHADER ? 'vertex' : 'fragment'} shader did not compile:\n${log}`);
-  }
-  return shader;
-}
+// A WebGL2 program for one full-screen triangle (compileProgram.js), with setters for its uniforms
+// found by introspection: a panel whose picture is analytic needs no scene graph, no buffers and no
+// three.js.
+import { compileProgram, createFullScreenTriangle } from './compileProgram.js';
 
 /** Floats of a uniform value: a number, a boolean, an array, a typed array, {r,g,b} or {x,y,z,w}. */
 export function uniformFloats(value, count) {
@@ -58,30 +26,18 @@ function typeInfo(gl, type) {
 
 /**
  * Compiles and links `fragment` (GLSL ES 3.00 without its #version line) with the full-screen
- * triangle. Returns { program, setUniforms(uniforms), draw(), dispose() }; uniforms are
- * { name: { value } } as three.js takes them, so panels keep one shape for both kinds of scene.
+ * triangle; throws ShaderError (shaderError.js) when the driver refuses it. Returns { program,
+ * setUniforms(uniforms), draw(), dispose() }; uniforms are { name: { value } } as three.js takes
+ * them, so panels keep one shape for both kinds of scene.
  */
 export function createProgram(gl, fragment) {
-  const fragmentSource = `#version 300 es\n${fragment}`;
-  const vertexShader = compile(gl, gl.VERTEX_SHADER, TRIANGLE_VERTEX_GLSL);
-  const fragmentShader = compile(gl, gl.FRAGMENT_SHADER, fragmentSource);
-  const program = gl.createProgram();
-  gl.attachShader(program, vertexShader);
-  gl.attachShader(program, fragmentShader);
-  gl.linkProgram(program);
-  gl.deleteShader(vertexShader);
-  gl.deleteShader(fragmentShader);
-  if (!gl.getProgramParameter(program, gl.LINK_STATUS) && !gl.isContextLost()) {
-    const log = gl.getProgramInfoLog(program);
-    gl.deleteProgram(program);
-    throw new ShaderError(`The shader program did not link:\n${log}`);
-  }
+  const program = compileProgram(gl, `#version 300 es\n${fragment}`);
   const setters = new Map();
   const count = gl.getProgramParameter(program, gl.ACTIVE_UNIFORMS) ?? 0;
   for (let i = 0; i < count; i += 1) {
     const info = gl.getActiveUniform(program, i);
     const kind = typeInfo(gl, info.type);
-    if (!kind) throw new ShaderError(`The uniform ${info.name} has a type this view does not set (only float, int and bool vectors and sampler2D).`);
+    if (!kind) throw new TypeError(`The uniform ${info.name} has a type this view does not set (only float, int and bool vectors and sampler2D).`);
     const [size, isInt] = kind;
     const location = gl.getUniformLocation(program, info.name);
     const name = info.name.replace(/\[0\]$/, '');
@@ -91,7 +47,7 @@ export function createProgram(gl, fragment) {
       gl[method](location, isInt ? Int32Array.from(floats, Math.round) : floats);
     });
   }
-  const vao = gl.createVertexArray(); // WebGL2 draws with no attributes from an empty VAO
+  const triangle = createFullScreenTriangle(gl);
   return {
     program,
     /** Sets every uniform the program uses from { name: { value } } (the others are ignored). */
@@ -104,12 +60,10 @@ export function createProgram(gl, fragment) {
     },
     draw() {
       gl.useProgram(program);
-      gl.bindVertexArray(vao);
-      gl.drawArrays(gl.TRIANGLES, 0, 3);
-      gl.bindVertexArray(null);
+      triangle.draw();
     },
     dispose() {
-      gl.deleteVertexArray(vao);
+      triangle.dispose();
       gl.deleteProgram(program);
     },
   };

@@ -7,27 +7,13 @@
 // GL state touched here (framebuffers, program, vertex array, viewport, texture units 0–1,
 // pixel-store and capability flags) is restored after each call; three.js users may still call
 // renderer.resetState() afterwards to be safe.
+import { compileProgram, createFullScreenTriangle } from './compileProgram.js';
 import { resolveIncludes } from './resolveIncludes.js';
 import { shaderChunks } from './shaderChunks.js';
 import { GPU_PRECISIONS, methodIndex } from './methodIndex.js';
 import { f82Coefficients, methodById } from '../optics/methods.js';
 
 export class GpuFloatUnavailable extends Error {}
-
-/** A shader did not compile or link; `log` holds the driver's own words. */
-export class ShaderCompileFailed extends Error {
-  constructor(message, log) {
-    super(message);
-    this.log = log;
-  }
-}
-
-/** A full-screen triangle from gl_VertexID: no buffers, works with any vertex array bound. */
-export const FULLSCREEN_VERTEX = `#version 300 es
-void main() {
-  vec2 p = vec2(gl_VertexID & 1, gl_VertexID >> 1) * 4.0 - 1.0;
-  gl_Position = vec4(p, 0.0, 1.0);
-}`;
 
 const MAX_WIDTH = 1024;
 
@@ -71,31 +57,6 @@ void main() {
   float sum = one + tiny;
   outColor = vec4(sum, 0.0, 0.0, 1.0);
 }`;
-}
-
-/** Compiles and links a program; throws with the info log on failure. */
-export function compileProgram(gl, vertexSource, fragmentSource) {
-  const shaders = [[gl.VERTEX_SHADER, vertexSource], [gl.FRAGMENT_SHADER, fragmentSource]].map(([type, src]) => {
-    const shader = gl.createShader(type);
-    gl.shaderSource(shader, src);
-    gl.compileShader(shader);
-    if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS) && !gl.isContextLost()) {
-      const log = gl.getShaderInfoLog(shader);
-      gl.deleteShader(shader);
-      throw new ShaderCompileFailed(`shader compile failed: ${log}`, log ?? '');
-    }
-    return shader;
-  });
-  const program = gl.createProgram();
-  for (const s of shaders) gl.attachShader(program, s);
-  gl.linkProgram(program);
-  for (const s of shaders) gl.deleteShader(s);
-  if (!gl.getProgramParameter(program, gl.LINK_STATUS) && !gl.isContextLost()) {
-    const log = gl.getProgramInfoLog(program);
-    gl.deleteProgram(program);
-    throw new ShaderCompileFailed(`program link failed: ${log}`, log ?? '');
-  }
-  return program;
 }
 
 const STORE = ['UNPACK_FLIP_Y_WEBGL', 'UNPACK_PREMULTIPLY_ALPHA_WEBGL', 'UNPACK_ALIGNMENT', 'UNPACK_ROW_LENGTH',
@@ -168,15 +129,16 @@ function extraFor(methodId, inputs, extra, count) {
 }
 
 /**
- * The evaluator of one WebGL2 context. Programs are compiled once per (method, precision).
- * Throws GpuFloatUnavailable when the context cannot render to RGBA32F.
+ * The evaluator of one WebGL2 context. Programs are compiled once per (method, precision) by
+ * compileProgram (a refusal throws ShaderError). Throws GpuFloatUnavailable when the context
+ * cannot render to RGBA32F.
  */
 export function createMethodsGpu(gl) {
   if (!gl.getExtension('EXT_color_buffer_float')) {
     throw new GpuFloatUnavailable('This GPU cannot render to float32 textures (no EXT_color_buffer_float).');
   }
   const programs = new Map();
-  const vao = gl.createVertexArray();
+  const triangle = createFullScreenTriangle(gl);
   const inputsTex = gl.createTexture();
   const extraTex = gl.createTexture();
   const target = gl.createTexture();
@@ -186,7 +148,7 @@ export function createMethodsGpu(gl) {
 
   function programFor(key, source) {
     if (!programs.has(key)) {
-      const program = compileProgram(gl, FULLSCREEN_VERTEX, source);
+      const program = compileProgram(gl, source);
       programs.set(key, { program, inputs: gl.getUniformLocation(program, 'uInputs'), extra: gl.getUniformLocation(program, 'uExtra') });
     }
     return programs.get(key);
@@ -218,9 +180,8 @@ export function createMethodsGpu(gl) {
       gl.useProgram(entry.program);
       gl.uniform1i(entry.inputs, 0);
       gl.uniform1i(entry.extra, 1);
-      gl.bindVertexArray(vao);
       gl.viewport(0, 0, width, height);
-      gl.drawArrays(gl.TRIANGLES, 0, 3);
+      triangle.draw();
       const out = new Float32Array(width * height * 4);
       gl.readPixels(0, 0, width, height, gl.RGBA, gl.FLOAT, out);
       gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, null, 0);
@@ -254,7 +215,7 @@ export function createMethodsGpu(gl) {
      * A fragment shader of the caller's (the shader lab's wrapper around a student's function,
      * reading uInputs and uExtra as methodFragmentSource's do) evaluated per sample: `channels`
      * floats per sample (1: red, 3: rgb). Compiled once per key (the caller keeps only its newest:
-     * forget); a failure throws ShaderCompileFailed with the driver's log.
+     * forget); a failure throws ShaderError (shaderError.js) with the driver's log.
      */
     evaluateSource({ key, source, inputs, extra = null, channels = 1 }) {
       if (!(inputs instanceof Float32Array) || inputs.length === 0 || inputs.length % 4 !== 0) {
@@ -299,7 +260,7 @@ export function createMethodsGpu(gl) {
       disposed = true;
       for (const { program } of programs.values()) gl.deleteProgram(program);
       programs.clear();
-      gl.deleteVertexArray(vao);
+      triangle.dispose();
       for (const t of [inputsTex, extraTex, target]) gl.deleteTexture(t);
       gl.deleteFramebuffer(framebuffer);
     },

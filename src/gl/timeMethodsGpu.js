@@ -14,6 +14,7 @@
 import { f82Coefficients, METHODS } from '../optics/methods.js';
 import { sceneById } from '../optics/scenes.js';
 import { spreadOf } from '../optics/timeMethodsCpu.js';
+import { checkProgram, compileProgram, createFullScreenTriangle } from './compileProgram.js';
 import { glslFunctionName, GPU_PRECISIONS } from './methodIndex.js';
 import { resolveIncludes } from './resolveIncludes.js';
 import { shaderChunks } from './shaderChunks.js';
@@ -21,12 +22,6 @@ import { shaderChunks } from './shaderChunks.js';
 export { GPU_PRECISIONS };
 export const TIMER_QUERY = 'EXT_disjoint_timer_query_webgl2';
 export const WALL_TIMER = 'wall clock around passes fenced by a 1-pixel readPixels';
-
-const VERTEX = `#version 300 es
-void main() {
-  vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
-  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-}`;
 
 /**
  * GLSL for one evaluation of a method on c and the per-pixel arguments v (vec4), calling its own
@@ -94,32 +89,6 @@ export function deviceInfo(gl) {
   return { renderer: String(renderer), vendor: String(vendor), version: String(gl.getParameter(gl.VERSION)) };
 }
 
-function compile(gl, type, source) {
-  const shader = gl.createShader(type);
-  gl.shaderSource(shader, source);
-  gl.compileShader(shader);
-  return shader;
-}
-
-function link(gl, fragment) {
-  const program = gl.createProgram();
-  const vs = compile(gl, gl.VERTEX_SHADER, VERTEX);
-  const fs = compile(gl, gl.FRAGMENT_SHADER, fragment);
-  gl.attachShader(program, vs);
-  gl.attachShader(program, fs);
-  gl.linkProgram(program);
-  gl.deleteShader(vs);
-  gl.deleteShader(fs);
-  return program;
-}
-
-function checkLinked(gl, program, name) {
-  if (gl.getProgramParameter(program, gl.LINK_STATUS)) return;
-  const shaders = gl.getAttachedShaders(program) ?? [];
-  const log = [gl.getProgramInfoLog(program), ...shaders.map((s) => gl.getShaderInfoLog(s))].filter(Boolean).join('\n');
-  throw new Error(`timing shader ${name} did not compile: ${log}`);
-}
-
 const pause = () => new Promise((resolve) => { setTimeout(resolve, 0); });
 
 /**
@@ -143,8 +112,7 @@ export async function timeMethodsGpu(gl, {
   const fbo = gl.createFramebuffer();
   gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
   gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, target, 0);
-  const vao = gl.createVertexArray();
-  gl.bindVertexArray(vao);
+  const triangle = createFullScreenTriangle(gl);
   gl.viewport(0, 0, size, size);
   gl.disable(gl.DEPTH_TEST);
   gl.disable(gl.BLEND);
@@ -157,14 +125,18 @@ export async function timeMethodsGpu(gl, {
   try {
     // Compile everything first (in parallel where the driver can), then check.
     const entries = [];
+    const start = (precision, id, kind, call) => {
+      const program = compileProgram(gl, timingFragment(call, precision, chunks), { check: false });
+      programs.push(program);
+      entries.push({ precision, id, kind, program });
+    };
     for (const precision of precisions) {
-      entries.push({ precision, id: 'baseline', kind: null, program: link(gl, timingFragment(null, precision, chunks)) });
-      for (const m of methods) {
-        entries.push({ precision, id: m.id, kind: m.kind, program: link(gl, timingFragment(methodCall(m), precision, chunks)) });
-      }
+      start(precision, 'baseline', null, null);
+      for (const m of methods) start(precision, m.id, m.kind, methodCall(m));
     }
-    programs.push(...entries.map((e) => e.program));
-    for (const e of entries) checkLinked(gl, e.program, `${e.id} (${e.precision})`);
+    for (const e of entries) checkProgram(gl, e.program, { label: `timing ${e.id}, ${e.precision}` });
+    // A lost context refuses nothing (checkProgram), but its timer query would never answer.
+    if (gl.isContextLost()) throw new Error('the WebGL context was lost');
     const find = (precision, id) => entries.find((e) => e.precision === precision && e.id === id);
 
     let loopCount = loops;
@@ -175,7 +147,7 @@ export async function timeMethodsGpu(gl, {
       gl.uniform2f(gl.getUniformLocation(entry.program, 'uSize'), size, size);
       gl.uniform4fv(gl.getUniformLocation(entry.program, 'uLo'), domain.lo);
       gl.uniform4fv(gl.getUniformLocation(entry.program, 'uHi'), domain.hi);
-      gl.drawArrays(gl.TRIANGLES, 0, 3);
+      triangle.draw();
     };
     /** ms for one pass (timer query) or for `passes` passes (wall clock). */
     const time = async (entry) => {
@@ -252,7 +224,6 @@ export async function timeMethodsGpu(gl, {
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
     gl.deleteFramebuffer(fbo);
     gl.deleteTexture(target);
-    gl.bindVertexArray(null);
-    gl.deleteVertexArray(vao);
+    triangle.dispose();
   }
 }

@@ -8,8 +8,8 @@
 // directives and line continuations first).
 import { WebGL2Unavailable } from '../../gl/contextBudget.js';
 import { createContext } from '../../gl/createContext.js';
-import { GpuFloatUnavailable, createMethodsGpu, ShaderCompileFailed } from '../../gl/evaluateMethodsGpu.js';
-import { ShaderError } from '../../gl/createProgram.js';
+import { GpuFloatUnavailable, createMethodsGpu } from '../../gl/evaluateMethodsGpu.js';
+import { ShaderError } from '../../gl/shaderError.js';
 import { classifyGrid, gridInputs } from '../../optics/classifyGrid.js';
 import { classify } from '../../optics/stabilityMap.js';
 import { drawMap } from '../shared/drawMap.js';
@@ -70,7 +70,7 @@ export function mount(root, ctx) {
       gpu = createMethodsGpu(context.gl);
       painter = createSpherePainter(context.gl);
     } catch (error) {
-      if (error instanceof ShaderError || error instanceof ShaderCompileFailed) { // the lab's own shaders, on an unusual driver
+      if (error instanceof ShaderError) { // the lab's own shaders, on an unusual driver
         console.error(error);
         gpu = null;
         painter = null;
@@ -147,7 +147,7 @@ export function mount(root, ctx) {
   let state = { results: [], summary: null, errors: [], values: {}, maps: { student: null, reference: null }, spheres: '' };
   let studentSource = '';
 
-  /** The exercise's function in `text` over `inputs` in one precision; throws ShaderCompileFailed. */
+  /** The exercise's function in `text` over `inputs` in one precision; throws ShaderError. */
   function evaluate(ex, text, role, precision, { inputs, extra = null }) {
     return gpu.evaluateSource({
       key: `${role}|${ex.kind}|${precision}|${text}`, // the source itself: no two codes share a program
@@ -187,7 +187,7 @@ export function mount(root, ctx) {
         };
       }
     } catch (error) {
-      if (error instanceof ShaderCompileFailed) {
+      if (error instanceof ShaderError) {
         state.errors = readCompileLog(error.log, ex.signature);
         if (!state.errors.length) state.errors = [{ line: null, message: error.message }];
         return;

@@ -62,7 +62,7 @@ void main() {
 
 /**
  * Paints both spheres for `code` into `target` (a 2D canvas, sized by its CSS box). The program
- * is compiled once per code; throws createProgram's ShaderError when it does not compile.
+ * is compiled once per code; throws ShaderError (shaderError.js) when it does not compile.
  */
 export function createSpherePainter(gl) {
   let program = null;

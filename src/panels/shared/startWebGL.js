@@ -2,7 +2,7 @@
 // WebGL2 (or it will not start), the stage says so in words in place of the picture, and the rest
 // of the panel (numbers, plots, formulas) goes on working.
 import { WebGL2Unavailable } from '../../gl/contextBudget.js';
-import { ShaderError } from '../../gl/createProgram.js';
+import { ShaderError } from '../../gl/shaderError.js';
 import { el } from '../../ui/el.js';
 
 /** Replaces what the stage shows with a message (its children stay in the DOM, out of sight). */

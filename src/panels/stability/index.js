@@ -7,7 +7,8 @@
 // got wrong (webglfundamentals "WebGL Precision Issues").
 import { WebGL2Unavailable } from '../../gl/contextBudget.js';
 import { createContext } from '../../gl/createContext.js';
-import { disposeMethodsGpu, GpuFloatUnavailable, gpuPrecisionInfo, methodsGpu, renewMethodsGpu, ShaderCompileFailed } from '../../gl/evaluateMethodsGpu.js';
+import { disposeMethodsGpu, GpuFloatUnavailable, gpuPrecisionInfo, methodsGpu, renewMethodsGpu } from '../../gl/evaluateMethodsGpu.js';
+import { ShaderError } from '../../gl/shaderError.js';
 import { cellAt, classifyGrid, criticalAngleDeg, gridInputs } from '../../optics/classifyGrid.js';
 import { methodById } from '../../optics/methods.js';
 import { contextFor } from '../../optics/rounding.js';
@@ -55,7 +56,7 @@ export function mount(root, ctx) {
     claimed = gpuPrecisionInfo(context.gl);
     ctx.frameDrawn();
   } catch (error) {
-    if (error instanceof ShaderCompileFailed) { // an unusual driver: the JavaScript map still stands
+    if (error instanceof ShaderError) { // an unusual driver: the JavaScript map still stands
       console.error(error);
       gpu = null;
       gpuProblem = `This GPU could not compile the evaluation shader, so there is no GPU map: ${error.log.trim().split('\n')[0] || error.message}. The JavaScript map still works.`;
