@@ -15,7 +15,9 @@ import { anyJson, anyText, anyValue, ownObject, PROTOTYPE_NAMES } from './fuzzAr
 import { check } from './fuzzConfig.js';
 
 const positive = fc.double({ min: 1e-3, max: 1e6, noNaN: true });
-const stats = fc.tuple(positive, positive, positive).map((v) => v.sort((a, b) => a - b)).map(([min, median, max]) => ({ median, min, max }));
+// A time less a baseline's may be below 0 on a software GPU.
+const time = fc.double({ min: -50, max: 1e6, noNaN: true });
+const stats = fc.tuple(time, time, time).map((v) => v.sort((a, b) => a - b)).map(([min, median, max]) => ({ median, min, max }));
 const timing = fc.record({ nsPerEval: stats, samples: fc.array(positive, { maxLength: 5 }) });
 const someOf = (arb) => fc.array(fc.option(arb, { nil: undefined }), { minLength: METHODS.length, maxLength: METHODS.length });
 const errorSummary = fc.record({
@@ -70,7 +72,7 @@ describe('the benchmark\'s results kept for the session', () => {
       if (results === null) return;
       expect(results.methods.map((m) => m.id)).toEqual(METHODS.map((m) => m.id));
       for (const scene of SCENES) for (const source of ['gpu', 'cpu']) {
-        for (const ns of Object.values(measuredCosts(results, scene, source))) expect(Number.isFinite(ns) && ns >= 0).toBe(true);
+        for (const ns of Object.values(measuredCosts(results, scene, source))) expect(Number.isFinite(ns)).toBe(true);
       }
       for (const row of results.methods) for (const e of Object.values(row.error).filter((x) => x && typeof x === 'object')) {
         expect(typeof e.max).toBe('number');

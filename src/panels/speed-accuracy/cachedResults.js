@@ -11,10 +11,13 @@ const own = (o, key) => (isObject(o) && Object.hasOwn(o, key) ? o[key] : undefin
 const text = (v) => (typeof v === 'string' ? v.slice(0, 300) : null);
 const finite = (v) => typeof v === 'number' && Number.isFinite(v);
 
-/** { median, min, max } of finite numbers ≥ 0, else undefined. */
+/**
+ * { median, min, max } of finite numbers, else undefined. A time may be below 0: a method's time is
+ * its pass's less the baseline pass's, and on a fast or software GPU the two are within noise.
+ */
 function stats(v) {
   const s = { median: own(v, 'median'), min: own(v, 'min'), max: own(v, 'max') };
-  return Object.values(s).every((x) => finite(x) && x >= 0) ? s : undefined;
+  return Object.values(s).every(finite) ? s : undefined;
 }
 
 const samples = (v) => (Array.isArray(v) && v.length <= MAX_SAMPLES && v.every(finite) ? v : []);
