@@ -62,7 +62,7 @@ test('a class handed in every way is graded at once: gradebook, refusals, report
   await page.getByRole('button', { name: 'Score: sort' }).focus();
   await page.keyboard.press('Enter');
   await expect(page.locator('[role="columnheader"][aria-sort="descending"]')).toContainText('Score');
-  const scores = await page.locator('.hw-gradebook .hw-body .hw-score').allTextContents();
+  const scores = await page.locator('.hw-gradebook .hw-body .hw-points').allTextContents();
   const points = scores.map((s) => Number(s.split('/')[0]));
   expect(points).toEqual([...points].sort((a, b) => b - a));
   const report = page.getByRole('button', { name: 'Report of Student 3' });

@@ -88,7 +88,7 @@ export function createGradebookTable(gradebook, { onDetails }) {
     const tr = part('row', `hw-row${row.counted ? '' : ' hw-superseded'}`);
     const name = part('rowheader', 'hw-name', shownName(row));
     if (!row.counted) name.append(el('span', 'hw-not-counted', ' (not counted)'));
-    tr.append(name, part('cell', 'hw-seed-cell', row.seed), part('cell', 'hw-num hw-score', `${row.score} / ${row.total}`),
+    tr.append(name, part('cell', 'hw-seed-cell', row.seed), part('cell', 'hw-num hw-points', `${row.score} / ${row.total}`),
       part('cell', 'hw-num', String(Math.round(row.percent))));
     for (const mark of row.marks) tr.append(markCell(mark));
     tr.append(part('cell', 'hw-num', row.triesTotal === null ? '—' : String(row.triesTotal)), part('cell', null, when(row.time)));
