@@ -3,7 +3,12 @@
 // may be a student's (an LMS stores an uploaded zip as it came), so nothing in them is trusted to be
 // small. Each cap refuses by name what passes it; none drops anything silently.
 
+import { fixed } from '../../ui/format.js';
+
 const MB = 1024 * 1024;
+
+/** A size in words for a refusal: megabytes, two decimals below one. */
+export const megabytes = (bytes) => `${fixed(bytes / MB, bytes < MB ? 2 : 1)} MB`;
 
 export const CLASS_CAPS = Object.freeze({
   /** A .json or .txt file, picked or unpacked: a hand-in is a few kilobytes (40 questions: about 3 KB);

@@ -5,7 +5,7 @@
 // The file is read as untrusted input: caps on its size and counts, own keys only (a key such as
 // constructor or __proto__ finds nothing inherited), and every part that cannot be used refused by
 // name while the rest is kept.
-import { classCaps } from './classCaps.js';
+import { classCaps, megabytes } from './classCaps.js';
 import { readSheet } from '../readSheet.js';
 import { rawText } from '../../host/params.js';
 
@@ -44,7 +44,7 @@ export function readClassFile(input, capsGiven = {}) {
   const caps = classCaps(capsGiven);
   const size = typeof input === 'string' ? input.length : input instanceof Uint8Array ? input.length : -1;
   if (size < 0) return { ok: false, problems: ['A class view is a file of text (JSON).'] };
-  if (size > caps.maxClassFileBytes) return { ok: false, problems: [`This file is ${(size / 2 ** 20).toFixed(1)} MB: more than the ${caps.maxClassFileBytes / 2 ** 20} MB a class view may have.`] };
+  if (size > caps.maxClassFileBytes) return { ok: false, problems: [`This file is ${megabytes(size)}: more than the ${megabytes(caps.maxClassFileBytes)} a class view may have.`] };
   let doc;
   try {
     doc = JSON.parse(typeof input === 'string' ? input : new TextDecoder().decode(input));

@@ -4,7 +4,7 @@
 // pasted (codes and handed-in files' JSON, among other text). Each hand-in keeps where it came from
 // (an LMS's folder often names the student: lmsName.js); everything that is not read is refused
 // with its name and the reason. Reading only finds data: gradeClass.js decides what it is.
-import { classCaps } from './classCaps.js';
+import { classCaps, megabytes } from './classCaps.js';
 import { fileKind } from './fileKind.js';
 import { findHandIns } from './findHandIns.js';
 import { unzipBounded } from './unzipBounded.js';
@@ -15,7 +15,6 @@ import { unzipBounded } from './unzipBounded.js';
  * @typedef {{ name: string, bytes: Uint8Array | ArrayBuffer }} PickedFile
  */
 
-const megabytes = (n) => `${(n / (1024 * 1024)).toFixed(1)} MB`;
 
 /** Text from a file's bytes: UTF-8 (a byte-order mark dropped), or UTF-16 where its mark says so (Windows' "Unicode"). */
 export function decodeText(bytes) {

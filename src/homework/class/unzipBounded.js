@@ -12,6 +12,7 @@
 // fflate's Inflate a few kilobytes at a time and stops as soon as it passes its claim, so no entry
 // costs more than its claim plus one step's output (4 MB); the CRC-32 of what came out is checked.
 import { Inflate, inflateSync, strFromU8 } from 'fflate';
+import { megabytes } from './classCaps.js';
 
 const END = 0x06054b50; // end of central directory
 const END64 = 0x06064b50;
@@ -23,7 +24,6 @@ const STEP = 4096; // compressed bytes per push: at most about 4 MB of output (d
 const u16 = (b, o) => b[o] | (b[o + 1] << 8);
 const u32 = (b, o) => (b[o] | (b[o + 1] << 8) | (b[o + 2] << 16) | (b[o + 3] << 24)) >>> 0;
 const u64 = (b, o) => u32(b, o) + u32(b, o + 4) * 2 ** 32;
-const megabytes = (n) => `${(n / (1024 * 1024)).toFixed(n < 1024 * 1024 ? 2 : 1)} MB`;
 
 /**
  * @typedef {{ entries: number, bytes: number }} ZipBudget What is left of the class's caps (entries

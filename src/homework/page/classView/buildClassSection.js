@@ -7,6 +7,7 @@
 // Nothing leaves the browser.
 import { button, el } from '../../../ui/el.js';
 import { downloadText } from '../../../host/exporters.js';
+import { fileSlug, fixed } from '../../../ui/format.js';
 import { gradebookToCsv } from '../../class/gradebookToCsv.js';
 import { writeClassFile } from '../../class/classFile.js';
 import { field, titledSection } from '../formParts.js';
@@ -129,7 +130,7 @@ export function buildClassSection(root) {
 
   async function showView(v, ms) {
     const { gradebook } = v;
-    const seconds = (ms / 1000).toFixed(1);
+    const seconds = fixed(ms / 1000, 1);
     status.textContent = `${gradebook.title}: ${gradebook.rows.length} hand-in${gradebook.rows.length === 1 ? '' : 's'} graded, ${gradebook.students} student${gradebook.students === 1 ? '' : 's'} counted`
       + `${gradebook.superseded ? ` (${gradebook.superseded} earlier hand-in${gradebook.superseded === 1 ? '' : 's'} not counted)` : ''}`
       + `${v.refused.length ? `; ${v.refused.length} could not be used (listed below)` : ''}. Graded in ${runner.where()} in ${seconds} s.`
@@ -161,8 +162,8 @@ export function buildClassSection(root) {
       },
     });
     state.table = table;
-    csv.addEventListener('click', () => downloadText(`${slug(gradebook.title)}-gradebook.csv`, gradebookToCsv(gradebook, { includeSuperseded: true }), 'text/csv;charset=utf-8'));
-    keep.addEventListener('click', () => downloadText(`${slug(gradebook.title)}-class.json`, writeClassFile({ sheet: v.sheet, handIns: v.handIns }), 'application/json'));
+    csv.addEventListener('click', () => downloadText(`${fileSlug(gradebook.title)}-gradebook.csv`, gradebookToCsv(gradebook, { includeSuperseded: true }), 'text/csv;charset=utf-8'));
+    keep.addEventListener('click', () => downloadText(`${fileSlug(gradebook.title)}-class.json`, writeClassFile({ sheet: v.sheet, handIns: v.handIns }), 'application/json'));
     const gradebookHeading = el('h3', null, 'Gradebook');
     const questionsHeading = el('h3', null, 'What the class got wrong, and why');
     const questionCards = () => questionSummaries(v, {
@@ -195,4 +196,3 @@ export function buildClassSection(root) {
   return state;
 }
 
-const slug = (title) => title.normalize('NFKD').replace(/[^\w\s-]/g, '').trim().replace(/\s+/g, '-').toLowerCase().slice(0, 60) || 'class';

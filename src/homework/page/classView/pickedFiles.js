@@ -2,10 +2,9 @@
 // a picker, a folder (webkitdirectory gives each file its relative path), or items dropped, folders
 // walked. A file larger than its kind may be is refused here, by name, without being read into
 // memory; a kind that is never read is passed on empty and refused by name there (fileKind.js).
-import { CLASS_CAPS } from '../../class/classCaps.js';
+import { CLASS_CAPS, megabytes } from '../../class/classCaps.js';
 import { fileKind } from '../../class/fileKind.js';
 
-const megabytes = (n) => `${(n / (1024 * 1024)).toFixed(1)} MB`;
 const MAX_WALKED = CLASS_CAPS.maxEntries; // files taken from dropped folders, as from a zip
 
 /**

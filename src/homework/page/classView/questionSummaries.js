@@ -6,6 +6,7 @@
 // count as text, in the page's colours, so they read on a projector and to a screen reader; no name
 // appears anywhere, so a card can be shown to the class as it is.
 import { button, el } from '../../../ui/el.js';
+import { fixed } from '../../../ui/format.js';
 import { setSubscripted } from '../../../ui/subscripts.js';
 import { KIND_NAMES, questionById } from '../../questions.js';
 import { panelEntry } from '../../../panels/manifest.js';
@@ -59,7 +60,8 @@ function columns(bins, { caption, binText, tick }) {
 
 const ratioText = (x) => {
   const q = 10 ** x;
-  return q >= 1 ? `×${q < 10 ? q.toFixed(2) : q.toPrecision(3)}` : `÷${(1 / q) < 10 ? (1 / q).toFixed(2) : (1 / q).toPrecision(3)}`;
+  const shown = (x) => (x < 10 ? fixed(x, 2) : x.toPrecision(3));
+  return q >= 1 ? `×${shown(q)}` : `÷${shown(1 / q)}`;
 };
 
 function numericParts(summary) {
