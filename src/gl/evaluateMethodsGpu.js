@@ -11,7 +11,7 @@ import { compileProgram, createFullScreenTriangle } from './compileProgram.js';
 import { resolveIncludes } from './resolveIncludes.js';
 import { shaderChunks } from './shaderChunks.js';
 import { GPU_PRECISIONS, methodIndex } from './methodIndex.js';
-import { f82Coefficients, methodById } from '../optics/methods.js';
+import { f82Coefficients, methodById } from '../methods/methods.js';
 
 export class GpuFloatUnavailable extends Error {}
 

@@ -1,7 +1,7 @@
 // Method ids ↔ the integer indices of fm_evaluate in shaders/fresnelMethods.glsl, and the GLSL
-// function of each method. The indices are the order of METHODS in src/optics/methods.js; the
+// function of each method. The indices are the order of METHODS in src/methods/methods.js; the
 // GLSL selector hard-codes them, and tests/unit/methodIndex.test.js checks the two agree.
-import { METHOD_IDS, methodById } from '../optics/methods.js';
+import { METHOD_IDS, methodById } from '../methods/methods.js';
 
 /** { 'exact-cg': 0, 'exact-cg-literal': 1, ..., 'conductor-f82': 9 } */
 export const METHOD_INDEX = Object.freeze(Object.fromEntries(METHOD_IDS.map((id, i) => [id, i])));

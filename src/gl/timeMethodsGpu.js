@@ -11,9 +11,9 @@
 // fastest of a few timings (other work on the machine only ever adds time), baseline and method
 // back to back. Reported: ns per evaluation { median, min, max } over repeats, and the timer used.
 // The method code is the shared GLSL twin, shaders/fresnelMethods.glsl (`#include <fresnelMethods>`).
-import { f82Coefficients, METHODS } from '../optics/methods.js';
-import { sceneById } from '../optics/scenes.js';
-import { spreadOf } from '../optics/timeMethodsCpu.js';
+import { f82Coefficients, METHODS } from '../methods/methods.js';
+import { sceneById } from '../methods/scenes.js';
+import { spreadOf } from '../methods/timeMethodsCpu.js';
 import { checkProgram, compileProgram, createFullScreenTriangle } from './compileProgram.js';
 import { glslFunctionName, GPU_PRECISIONS } from './methodIndex.js';
 import { resolveIncludes } from './resolveIncludes.js';

@@ -4,13 +4,13 @@
 // questions.js for the kinds.
 import { cosDeg, toDegrees as deg } from '../optics/angles.js';
 import { schlickErrorAt } from '../optics/curves.js';
-import { displayCodes } from '../optics/advisor.js';
+import { displayCodes } from '../methods/advisor.js';
 import { goldenMax } from '../optics/refinedMax.js';
 import { brewsterAngle, criticalAngle, fresnelConductor, fresnelExact, fresnelPolarized, fresnelSchlick, normalIncidence } from '../optics/fresnel.js';
 import { dielectricById, metalById, metals } from '../optics/materials.js';
-import { methodError } from '../optics/advisor.js';
-import { methodById } from '../optics/methods.js';
-import { sceneById } from '../optics/scenes.js';
+import { methodError } from '../methods/advisor.js';
+import { methodById } from '../methods/methods.js';
+import { sceneById } from '../methods/scenes.js';
 import { ANGLES, INDICES, fixed } from './questionParts.js';
 
 /** A hair above 1, as interpolated normals give; it survives rounding to float32 (1 + 2⁻²³). */

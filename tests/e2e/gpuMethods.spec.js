@@ -1,9 +1,9 @@
 // GPU twins of the Fresnel methods: every method of shaders/fresnelMethods.glsl, evaluated through
 // evaluateMethodsGpu (RGBA32F render, FLOAT read-back) on the stability panel's own context, must
-// match its JS twin (src/optics/methods.js) in float32, and give NaN exactly where the JS does.
+// match its JS twin (src/methods/methods.js) in float32, and give NaN exactly where the JS does.
 import { test, expect, openLab } from './fixtures.js';
 import { criticalAngle, conductorNormalIncidence } from '../../src/optics/fresnel.js';
-import { METHOD_IDS, methodById } from '../../src/optics/methods.js';
+import { METHOD_IDS, methodById } from '../../src/methods/methods.js';
 import { METHOD_INDEX } from '../../src/gl/methodIndex.js';
 import { metals } from './metalsData.js';
 

@@ -1,5 +1,5 @@
 import { test, expect, openLab } from './fixtures.js';
-import { thetaSamples } from '../../src/optics/errorMetrics.js';
+import { thetaSamples } from '../../src/methods/errorMetrics.js';
 import { fresnelExact } from '../../src/optics/fresnel.js';
 
 const PANEL = 'speed-accuracy';

@@ -1,6 +1,6 @@
 import { test, expect, openLab, expectIdle } from './fixtures.js';
 import { fresnelExact } from '../../src/optics/fresnel.js';
-import { methodsOfKind } from '../../src/optics/methods.js';
+import { methodsOfKind } from '../../src/methods/methods.js';
 
 const embed = (query = '') => `./embed.html?panel=stability${query}`;
 const CELLS = 181 * 106;

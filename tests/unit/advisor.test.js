@@ -1,9 +1,9 @@
 import { describe, expect, it } from 'vitest';
 import {
   displayCodes, HALF_STEP_CODES, invisibleThreshold, methodError, recommend, srgbDecode, srgbEncode,
-} from '../../src/optics/advisor.js';
-import { methodById } from '../../src/optics/methods.js';
-import { SCENES, sceneById } from '../../src/optics/scenes.js';
+} from '../../src/methods/advisor.js';
+import { methodById } from '../../src/methods/methods.js';
+import { SCENES, sceneById } from '../../src/methods/scenes.js';
 
 const DEG = Math.PI / 180;
 const SCHLICK = ['schlick-pow', 'schlick-mul', 'schlick-exp2', 'schlick-tir'];

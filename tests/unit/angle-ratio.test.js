@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { interfaceSplit, interfaceSplitCurve } from '../../src/optics/interfaceSplit.js';
+import { interfaceSplit, interfaceSplitCurve } from '../../src/panels/angle-ratio/interfaceSplit.js';
 import { cosDeg } from '../../src/optics/angles.js';
 import { fresnelExact } from '../../src/optics/fresnel.js';
 import { absError, cosOfDegrees, dielectricR } from './oracle/fresnelOracle.js';

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { cellAt, classifyGrid, columnCos, criticalAngleDeg, gridInputs } from '../../src/optics/classifyGrid.js';
-import { classify, FINE, NOT_FINITE, OUT_OF_RANGE } from '../../src/optics/stabilityMap.js';
-import { methodById } from '../../src/optics/methods.js';
+import { cellAt, classifyGrid, columnCos, criticalAngleDeg, gridInputs } from '../../src/methods/classifyGrid.js';
+import { classify, FINE, NOT_FINITE, OUT_OF_RANGE } from '../../src/methods/stabilityMap.js';
+import { methodById } from '../../src/methods/methods.js';
 import { fresnelExact } from '../../src/optics/fresnel.js';
 
 /** The values classify() would compute, cell by cell, through gridInputs (as the GPU gets them). */

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import {
   absoluteError, cosTheta, createAccumulator, errorStats, linspace, sweepDomain, thetaSamples,
-} from '../../src/optics/errorMetrics.js';
+} from '../../src/methods/errorMetrics.js';
 
 const HALF_PI = Math.PI / 2;
 

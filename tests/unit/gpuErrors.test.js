@@ -1,13 +1,13 @@
 import { describe, expect, it } from 'vitest';
-import { displayCodes, methodError, recommend } from '../../src/optics/advisor.js';
-import { meanDisplayCodes } from '../../src/optics/displayBudgets.js';
-import { thetaSamples } from '../../src/optics/errorMetrics.js';
+import { displayCodes, methodError, recommend } from '../../src/methods/advisor.js';
+import { meanDisplayCodes } from '../../src/methods/displayBudgets.js';
+import { thetaSamples } from '../../src/methods/errorMetrics.js';
 import {
   domainExtra, domainInputs, domainSize, errorsFromValues, recommendWithErrors,
-} from '../../src/optics/gpuErrors.js';
-import { f82Coefficients, methodById, methodsOfKind } from '../../src/optics/methods.js';
-import { contextFor } from '../../src/optics/rounding.js';
-import { referenceFor, sceneById, SCENES } from '../../src/optics/scenes.js';
+} from '../../src/methods/gpuErrors.js';
+import { f82Coefficients, methodById, methodsOfKind } from '../../src/methods/methods.js';
+import { contextFor } from '../../src/methods/rounding.js';
+import { referenceFor, sceneById, SCENES } from '../../src/methods/scenes.js';
 
 /** A small scene of the real shape: 2 index pairs × 5 angles, uniform in θ. */
 const tiny = Object.freeze({

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { metalCurves, metalCurveStats, schlickForF0, schlickIndexForF0 } from '../../src/optics/metalCurves.js';
+import { metalCurves, metalCurveStats, schlickForF0, schlickIndexForF0 } from '../../src/panels/metals/metalCurves.js';
 import { metalById } from '../../src/optics/materials.js';
 import { absError, conductorR, cosOfDegrees } from './oracle/fresnelOracle.js';
 

@@ -2,7 +2,7 @@ import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { GPU_PRECISIONS, glslFunctionName, JS_TWIN_OF, METHOD_INDEX, methodIdAt, methodIndex } from '../../src/gl/methodIndex.js';
 import { methodFragmentSource } from '../../src/gl/evaluateMethodsGpu.js';
-import { METHOD_IDS, methodById } from '../../src/optics/methods.js';
+import { METHOD_IDS, methodById } from '../../src/methods/methods.js';
 
 const glsl = readFileSync('shaders/fresnelMethods.glsl', 'utf8');
 

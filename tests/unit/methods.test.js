@@ -1,11 +1,11 @@
 import { describe, expect, it } from 'vitest';
-import { contextFor, f16round, fp16, fp32, fp64, PRECISION_IDS } from '../../src/optics/rounding.js';
-import { f82Coefficients, METHOD_IDS, methodById, methodsOfKind } from '../../src/optics/methods.js';
+import { contextFor, f16round, fp16, fp32, fp64, PRECISION_IDS } from '../../src/methods/rounding.js';
+import { f82Coefficients, METHOD_IDS, methodById, methodsOfKind } from '../../src/methods/methods.js';
 import {
   conductorNormalIncidence, criticalAngle, fresnelConductor, fresnelExact, fresnelSchlick,
   fresnelSchlickExp2, fresnelSchlickTIR,
 } from '../../src/optics/fresnel.js';
-import { linspace, sweepDomain } from '../../src/optics/errorMetrics.js';
+import { linspace, sweepDomain } from '../../src/methods/errorMetrics.js';
 import { absError, conductorR } from './oracle/fresnelOracle.js';
 
 const DEG = Math.PI / 180;

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { bandedRmse, toneMap } from '../../src/optics/bandedRmse.js';
+import { bandedRmse, toneMap } from '../../src/normals/bandedRmse.js';
 
 const px = (...values) => new Float32Array(values);
 

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { meanBrightnessChange } from '../../src/optics/shimmer.js';
-import { toneMap } from '../../src/optics/bandedRmse.js';
+import { meanBrightnessChange } from '../../src/normals/shimmer.js';
+import { toneMap } from '../../src/normals/bandedRmse.js';
 
 describe('meanBrightnessChange', () => {
   it('is 0 for a still picture', () => {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { SORT_KEYS, customRow, materialRows, sortMaterialRows } from '../../src/optics/materialRows.js';
+import { SORT_KEYS, customRow, materialRows, sortMaterialRows } from '../../src/panels/refractive-index/materialRows.js';
 import { SPEED_OF_LIGHT_KM_S } from '../../src/optics/waves.js';
 import { COLUMNS, formatIndex, formatKmS } from '../../src/panels/refractive-index/buildIndexTable.js';
 

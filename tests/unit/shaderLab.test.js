@@ -6,7 +6,7 @@ import { errorSummary, gradeCriterion } from '../../src/panels/shader-lab/gradeE
 import { WRAPPER_LINE, checkStudentCode, readCompileLog, studentFragment } from '../../src/panels/shader-lab/studentShader.js';
 import { MAX_BYTES, decodeCode } from '../../src/panels/shader-lab/codeCodec.js';
 import { criticalAngle, fresnelConductor, fresnelExact } from '../../src/optics/fresnel.js';
-import { methodById } from '../../src/optics/methods.js';
+import { methodById } from '../../src/methods/methods.js';
 
 const cases = dielectricCases();
 

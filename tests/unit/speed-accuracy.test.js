@@ -1,11 +1,11 @@
 import { describe, expect, it } from 'vitest';
-import { HALF_STEP_CODES, methodError } from '../../src/optics/advisor.js';
+import { HALF_STEP_CODES, methodError } from '../../src/methods/advisor.js';
 import {
   CRITERION, DEFAULT_BUDGET, DISPLAY_BUDGETS, displayBudget, meanDisplayCodes, recommendWithin,
-} from '../../src/optics/displayBudgets.js';
-import { methodById } from '../../src/optics/methods.js';
-import { paretoFront } from '../../src/optics/paretoFront.js';
-import { sceneById } from '../../src/optics/scenes.js';
+} from '../../src/methods/displayBudgets.js';
+import { methodById } from '../../src/methods/methods.js';
+import { paretoFront } from '../../src/methods/paretoFront.js';
+import { sceneById } from '../../src/methods/scenes.js';
 
 const SCHLICK = ['schlick-pow', 'schlick-mul', 'schlick-exp2', 'schlick-tir'];
 const TIR_AWARE = ['exact-cg', 'exact-cg-literal', 'exact-sp', 'schlick-tir'];

@@ -2,11 +2,11 @@ import { readdirSync, readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import {
   benchCsv, benchResults, benchTable, DEFAULT_DOMAIN, gpuPrecisionFor, measuredCosts,
-} from '../../src/optics/benchResults.js';
-import { methodError } from '../../src/optics/advisor.js';
-import { METHODS, methodsOfKind } from '../../src/optics/methods.js';
-import { sceneById, SCENES } from '../../src/optics/scenes.js';
-import { cpuInputs, spreadOf, timeMethodsCpu } from '../../src/optics/timeMethodsCpu.js';
+} from '../../src/methods/benchResults.js';
+import { methodError } from '../../src/methods/advisor.js';
+import { METHODS, methodsOfKind } from '../../src/methods/methods.js';
+import { sceneById, SCENES } from '../../src/methods/scenes.js';
+import { cpuInputs, spreadOf, timeMethodsCpu } from '../../src/methods/timeMethodsCpu.js';
 import { methodCall, timingDomain, timingFragment } from '../../src/gl/timeMethodsGpu.js';
 
 const chunks = Object.fromEntries(readdirSync('shaders').filter((f) => f.endsWith('.glsl'))

@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import {
   ABOVE_TOLERANCE, classify, classifyValue, FINE, NOT_FINITE, OUT_OF_RANGE,
-} from '../../src/optics/stabilityMap.js';
-import { invisibleThreshold } from '../../src/optics/advisor.js';
+} from '../../src/methods/stabilityMap.js';
+import { invisibleThreshold } from '../../src/methods/advisor.js';
 
 const DEG = Math.PI / 180;
 

@@ -5,9 +5,9 @@
 import { afterEach, describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { readCachedResults } from '../../src/panels/speed-accuracy/cachedResults.js';
-import { benchResults, DEFAULT_DOMAIN, measuredCosts } from '../../src/optics/benchResults.js';
-import { METHODS } from '../../src/optics/methods.js';
-import { SCENES, sceneById } from '../../src/optics/scenes.js';
+import { benchResults, DEFAULT_DOMAIN, measuredCosts } from '../../src/methods/benchResults.js';
+import { METHODS } from '../../src/methods/methods.js';
+import { SCENES, sceneById } from '../../src/methods/scenes.js';
 import { loadTheme } from '../../src/ui/theme.js';
 import { parseMessage } from '../../src/host/messageApi.js';
 import { EMBED_KEYS, readEmbedOptions } from '../../src/host/readEmbedOptions.js';

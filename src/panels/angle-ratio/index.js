@@ -1,8 +1,8 @@
 // @ts-check
 // Panel `angle-ratio`: one ray meets a flat interface and splits into a reflected part R and a
 // refracted part T = 1 − R; stroke widths carry the powers. Past the critical angle (n_i > n_t)
-// nothing goes through. Numbers from src/optics/interfaceSplit.js (which uses fresnel.js).
-import { interfaceSplit, interfaceSplitCurve } from '../../optics/interfaceSplit.js';
+// nothing goes through. Numbers from src/panels/angle-ratio/interfaceSplit.js (which uses fresnel.js).
+import { interfaceSplit, interfaceSplitCurve } from './interfaceSplit.js';
 import { el } from '../../ui/el.js';
 import { setSubscripted } from '../../ui/subscripts.js';
 import { cssVar } from '../../ui/theme.js';

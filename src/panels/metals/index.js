@@ -8,7 +8,7 @@
 import { cosDeg } from '../../optics/angles.js';
 import { fresnelConductor, fresnelExact, normalIncidence } from '../../optics/fresnel.js';
 import { metalById, metalF0, metals } from '../../optics/materials.js';
-import { CHANNELS, metalCurveStats, metalCurves, schlickForF0 } from '../../optics/metalCurves.js';
+import { CHANNELS, metalCurveStats, metalCurves, schlickForF0 } from './metalCurves.js';
 import { createAudioTrace } from '../../ui/createAudioTrace.js';
 import { createLinePlot } from '../../ui/createLinePlot.js';
 import { createTwinStage } from '../shared/createTwinStage.js';

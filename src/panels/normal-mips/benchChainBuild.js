@@ -5,7 +5,7 @@
 // main-thread task (Long Tasks API: tasks over 50 ms) over the same stretch shows what input
 // would have waited for. The first build warms the worker and is not counted.
 import { createChainBuilder } from '../../normals/createChainBuilder.js';
-import { spreadOf } from '../../optics/timeMethodsCpu.js';
+import { spreadOf } from '../../methods/timeMethodsCpu.js';
 
 /** Runs fn while recording long tasks; resolves to { value, longestTaskMs } (0: none over 50 ms). */
 export async function watchLongTasks(fn) {

@@ -15,8 +15,8 @@ import { onDemand } from '../../gl/onDemand.js';
 import fragment from './normal-mips.frag.glsl?raw';
 import { TECHNIQUES } from '../../normals/techniqueLayout.js';
 import { uploadLevels } from '../../normals/uploadLevels.js';
-import { bandedRmse } from '../../optics/bandedRmse.js';
-import { meanBrightnessChange } from '../../optics/shimmer.js';
+import { bandedRmse } from '../../normals/bandedRmse.js';
+import { meanBrightnessChange } from '../../normals/shimmer.js';
 
 // Small batches keep each frame short on slow (software) GPUs while the truth accumulates.
 export const SAMPLES_PER_FRAME = 8;

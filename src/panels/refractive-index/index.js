@@ -1,8 +1,8 @@
 // @ts-check
 // Panel `refractive-index`: the dielectrics of src/optics/materials.js in a sortable table (n,
 // speed c/n, R0 from air, critical angle to air, source), plus a live "Custom" row. "Use" applies
-// a material's n to every panel of the page. Rows come from src/optics/materialRows.js.
-import { customRow, materialRows, sortMaterialRows } from '../../optics/materialRows.js';
+// a material's n to every panel of the page. Rows come from src/panels/refractive-index/materialRows.js.
+import { customRow, materialRows, sortMaterialRows } from './materialRows.js';
 import { buildIndexTable } from './buildIndexTable.js';
 import './styles.css';
 import { schema } from './schema.js';

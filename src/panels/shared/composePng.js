@@ -1,7 +1,7 @@
 // Export PNG for the stability panel: both maps side by side on one image, each with its title
 // and counts, so the file makes sense away from the page.
 import { cssVar } from '../../ui/theme.js';
-import { CLASS_NAMES } from '../../optics/stabilityMap.js';
+import { CLASS_NAMES } from '../../methods/stabilityMap.js';
 import { CLASS_LABELS } from './createMapFigure.js';
 import { CLASS_COLORS } from './drawMap.js';
 

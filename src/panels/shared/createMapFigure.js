@@ -2,7 +2,7 @@
 // cells per class), as the stability panel and the shader lab show them; drawn by drawMap.js.
 import { el } from '../../ui/el.js';
 import { context2d } from '../../ui/context2d.js';
-import { CLASS_NAMES } from '../../optics/stabilityMap.js';
+import { CLASS_NAMES } from '../../methods/stabilityMap.js';
 import { CLASS_COLORS } from './drawMap.js';
 import './stabilityMaps.css';
 

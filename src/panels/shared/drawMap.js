@@ -3,8 +3,8 @@
 // dot on a projector), and the probed cell. Colours come from the theme's CSS variables.
 import { cssVar, lineScale } from '../../ui/theme.js';
 import { context2d } from '../../ui/context2d.js';
-import { criticalAngleDeg } from '../../optics/classifyGrid.js';
-import { FINE } from '../../optics/stabilityMap.js';
+import { criticalAngleDeg } from '../../methods/classifyGrid.js';
+import { FINE } from '../../methods/stabilityMap.js';
 
 /** Class index → theme colour: fine is a quiet neutral so every failure stands out. */
 export const CLASS_COLORS = Object.freeze(['--border', '--c-schlick', '--c-error', '--c-red']);

@@ -2,8 +2,8 @@
 // older page may have written another shape, and anyone can edit storage. Only measurements are
 // taken from it, each checked for its type; what the code computes (the errors in JS emulation,
 // the recommendations) is computed again, so a stored claim never reaches the panel.
-import { benchResults, RESULTS_VERSION } from '../../optics/benchResults.js';
-import { METHODS } from '../../optics/methods.js';
+import { benchResults, RESULTS_VERSION } from '../../methods/benchResults.js';
+import { METHODS } from '../../methods/methods.js';
 
 const MAX_SAMPLES = 1000;
 const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);

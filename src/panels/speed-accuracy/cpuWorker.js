@@ -3,7 +3,7 @@
 // program that computes in float64 would; on the page the same code has also run the float32 and
 // float16 emulations for the error figures, which makes its calls polymorphic and several times
 // slower. Messages: { config } in; { progress: [done, total] } and then { result } or { error } out.
-import { timeMethodsCpu } from '../../optics/timeMethodsCpu.js';
+import { timeMethodsCpu } from '../../methods/timeMethodsCpu.js';
 
 self.onmessage = async ({ data: { config } }) => {
   try {

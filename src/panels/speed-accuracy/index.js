@@ -7,15 +7,15 @@
 // Errors come from the JS emulation at the scene's precision, or ("Error measured by") from this
 // GPU in highp or mediump: every sample rendered and read back (measureGpuErrors.js, gpuErrors.js).
 // ?bench=normal|tiny runs the benchmark on load (npm run bench uses it).
-import { benchCsv, benchResults, benchTable, gpuPrecisionFor, measuredCosts } from '../../optics/benchResults.js';
+import { benchCsv, benchResults, benchTable, gpuPrecisionFor, measuredCosts } from '../../methods/benchResults.js';
 import {
   CRITERION, displayBudget, meanDisplayCodes, recommendWithin,
-} from '../../optics/displayBudgets.js';
-import { recommendWithErrors } from '../../optics/gpuErrors.js';
+} from '../../methods/displayBudgets.js';
+import { recommendWithErrors } from '../../methods/gpuErrors.js';
 import { toDegrees } from '../../optics/angles.js';
-import { methodById } from '../../optics/methods.js';
-import { paretoFront } from '../../optics/paretoFront.js';
-import { sceneById } from '../../optics/scenes.js';
+import { methodById } from '../../methods/methods.js';
+import { paretoFront } from '../../methods/paretoFront.js';
+import { sceneById } from '../../methods/scenes.js';
 import { downloadText } from '../../host/exporters.js';
 import { createVisibilityGate } from '../../ui/createVisibilityGate.js';
 import { BENCH_SIZES, loadCachedResults, runBenchmark, saveCachedResults } from './runBenchmark.js';

@@ -7,8 +7,8 @@ import { WebGL2Unavailable } from '../../gl/contextBudget.js';
 import { createContext } from '../../gl/createContext.js';
 import { createMethodsGpu, GpuFloatUnavailable, gpuPrecisionInfo } from '../../gl/evaluateMethodsGpu.js';
 import { deviceInfo } from '../../gl/timeMethodsGpu.js';
-import { domainExtra, domainInputs, errorsFromValues } from '../../optics/gpuErrors.js';
-import { methodsOfKind } from '../../optics/methods.js';
+import { domainExtra, domainInputs, errorsFromValues } from '../../methods/gpuErrors.js';
+import { methodsOfKind } from '../../methods/methods.js';
 
 const yieldToPage = () => new Promise((resolve) => { setTimeout(resolve, 0); });
 

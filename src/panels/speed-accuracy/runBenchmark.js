@@ -6,8 +6,8 @@
 import { WebGL2Unavailable } from '../../gl/contextBudget.js';
 import { createContext } from '../../gl/createContext.js';
 import { deviceInfo, timeMethodsGpu } from '../../gl/timeMethodsGpu.js';
-import { benchResults, DEFAULT_DOMAIN, GPU_ERROR_KEYS } from '../../optics/benchResults.js';
-import { sceneById } from '../../optics/scenes.js';
+import { benchResults, DEFAULT_DOMAIN, GPU_ERROR_KEYS } from '../../methods/benchResults.js';
+import { sceneById } from '../../methods/scenes.js';
 import { timeCpu } from './timeCpu.js';
 import { readCachedResults } from './cachedResults.js';
 import { timeFrames } from './timeFrames.js';

@@ -1,7 +1,7 @@
 // Parameters of the `speed-accuracy` panel: controls, URL keys and messages all use them. Pure data
 // (no DOM), loaded with the page so the panel's link and state work before its module arrives.
-import { DEFAULT_BUDGET, DISPLAY_BUDGETS } from '../../optics/displayBudgets.js';
-import { SCENES } from '../../optics/scenes.js';
+import { DEFAULT_BUDGET, DISPLAY_BUDGETS } from '../../methods/displayBudgets.js';
+import { SCENES } from '../../methods/scenes.js';
 import { ERROR_SOURCES } from './errorSources.js';
 
 export const schema = {

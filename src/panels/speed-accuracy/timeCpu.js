@@ -1,7 +1,7 @@
 // CPU timing for the benchmark, in a worker of its own (cpuWorker.js) where only the
 // float64 arithmetic runs; where workers are unavailable, on the page as before. Resolves to
 // timeMethodsCpu's result plus `where` ('worker' or 'page').
-import { timeMethodsCpu } from '../../optics/timeMethodsCpu.js';
+import { timeMethodsCpu } from '../../methods/timeMethodsCpu.js';
 import CpuWorker from './cpuWorker.js?worker';
 
 export function timeCpu({ signal, onProgress, ...config }) {

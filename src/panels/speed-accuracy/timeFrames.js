@@ -9,7 +9,7 @@
 import { createSphereTrio } from '../spheres/createSphereTrio.js';
 import { directionFromAngles } from '../../gl/directionFromAngles.js';
 import { TIMER_QUERY, WALL_TIMER } from '../../gl/timeMethodsGpu.js';
-import { spreadOf } from '../../optics/timeMethodsCpu.js';
+import { spreadOf } from '../../methods/timeMethodsCpu.js';
 import { schema as heroSchema } from '../spheres/schema.js';
 import { defaults as defaultValues } from '../../host/params.js';
 

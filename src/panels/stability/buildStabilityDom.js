@@ -1,7 +1,7 @@
 // The DOM of the stability panel: a note on what mediump really is here, the class legend, the
 // two maps (GPU and JavaScript) each with its counts, and the probe readout.
 import { el } from '../../ui/el.js';
-import { CLASS_NAMES } from '../../optics/stabilityMap.js';
+import { CLASS_NAMES } from '../../methods/stabilityMap.js';
 import { CLASS_LABELS, createMapFigure, swatch } from '../shared/createMapFigure.js';
 
 export function buildStabilityDom(host) {

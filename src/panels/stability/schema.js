@@ -1,7 +1,7 @@
 // Parameters of the `stability` panel: controls, URL keys and messages all use them. Pure data
 // (no DOM), loaded with the page so the panel's link and state work before its module arrives.
-import { invisibleThreshold } from '../../optics/advisor.js';
-import { methodsOfKind } from '../../optics/methods.js';
+import { invisibleThreshold } from '../../methods/advisor.js';
+import { methodsOfKind } from '../../methods/methods.js';
 
 export const DIELECTRICS = methodsOfKind('dielectric');
 

@@ -14,7 +14,7 @@ import { sweepDomain } from './errorMetrics.js';
 import { methodsOfKind } from './methods.js';
 import { contextFor } from './rounding.js';
 import { referenceFor } from './scenes.js';
-import { toDegrees } from './angles.js';
+import { toDegrees } from '../optics/angles.js';
 
 /** 8-bit codes of half a step: the visibility line. */
 export const HALF_STEP_CODES = 0.5;

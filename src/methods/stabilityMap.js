@@ -3,8 +3,8 @@
 // [0, 1], error above a tolerance, or fine. This is where the numerical failures show:
 // the slide's 1 + c² − m² at matched media near grazing, Schlick past the critical angle, and the
 // exact forms in float16 near the critical angle.
-import { DEG } from './angles.js';
-import { fresnelExact } from './fresnel.js';
+import { DEG } from '../optics/angles.js';
+import { fresnelExact } from '../optics/fresnel.js';
 import { cosTheta, linspace } from './errorMetrics.js';
 import { methodById } from './methods.js';
 import { contextFor } from './rounding.js';

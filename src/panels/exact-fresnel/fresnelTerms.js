@@ -4,8 +4,8 @@
 // evaluates the slide's formula exactly as written, to show what the safe ordering fixes.
 // Source: lecture "Reflection Math" (Cook & Torrance 1982, after Sparrow & Cess):
 //   R = ½((g−c)/(g+c))²(1 + ((c(g+c) − m²)/(c(g−c) + m²))²), c = m cos θ, g = √(1 + c² − m²), m = nI/nT.
-import { cosTransmittedSq } from './fresnel.js';
-import { checkCos, checkIndex, unit } from './validate.js';
+import { cosTransmittedSq } from '../../optics/fresnel.js';
+import { checkCos, checkIndex, unit } from '../../optics/validate.js';
 
 /**
  * g² = cos²θt = (1 − m²) + c², from fresnel.js's cosTransmittedSq: (nT² − nI² + (nI·cosθ)²)/nT²

@@ -1,8 +1,8 @@
 // Rows of the refractive-index table: each dielectric of materials.js seen from air (n = 1),
 // plus an optional custom index, and a stable sort by any column. Pure data, no DOM.
-import { toDegrees } from './angles.js';
-import { dielectrics, dielectricSummary } from './materials.js';
-import { SPEED_OF_LIGHT_KM_S } from './waves.js';
+import { toDegrees } from '../../optics/angles.js';
+import { dielectrics, dielectricSummary } from '../../optics/materials.js';
+import { SPEED_OF_LIGHT_KM_S } from '../../optics/waves.js';
 
 export const SORT_KEYS = ['name', 'n', 'speed', 'r0', 'critical', 'source'];
 

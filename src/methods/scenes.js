@@ -3,9 +3,9 @@
 // material classes each scene stands for; the indices are refractiveindex.info values (Polyanskiy,
 // Scientific Data 11, 94 (2024)) at 589 nm, rounded: water 1.333 (Daimon & Masumura, Appl. Opt.
 // 46, 3811 (2007)), ice 1.31 (Warren & Brandt, JGR 113, D14220 (2008)); metals from materials.json.
-import { fresnelConductor, fresnelExact } from './fresnel.js';
+import { fresnelConductor, fresnelExact } from '../optics/fresnel.js';
 import { linspace } from './errorMetrics.js';
-import { metalById, metalF0 } from './materials.js';
+import { metalById, metalF0 } from '../optics/materials.js';
 
 // Cosine weighting (2 cosθ sinθ): the share of an object's pixels seen at view angle θ, right for
 // an opaque object looked at from outside. Uniform θ for the "from inside" scenes: a viewer under

@@ -7,7 +7,7 @@
 // named at each method; cost hints: static SPIR-V instruction counts (computed: each method's
 // GLSL through glslangValidator -V and spirv-opt -O, fp arithmetic, ext-inst, compare, select and
 // branch instructions counted), with a rough ALU + SFU estimate alongside.
-import { conductorNormalIncidence, fresnelConductor } from './fresnel.js';
+import { conductorNormalIncidence, fresnelConductor } from '../optics/fresnel.js';
 import { contextFor } from './rounding.js';
 
 /** g² = cos²θt in fresnel.glsl's safe order: ((nT − nI)/nT)((nT + nI)/nT) + c², c = nI·ci/nT. */

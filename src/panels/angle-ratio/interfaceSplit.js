@@ -1,8 +1,8 @@
 // How one interface splits a ray's power: R reflected, T = 1 − R transmitted (energy is conserved
 // in a lossless dielectric), and where the refracted ray goes. All values come from fresnel.js.
-import { brewsterAngle, criticalAngle, fresnelExact, snellCosT } from './fresnel.js';
-import { sampleAngles } from './curves.js';
-import { cosDeg, DEG } from './angles.js';
+import { brewsterAngle, criticalAngle, fresnelExact, snellCosT } from '../../optics/fresnel.js';
+import { sampleAngles } from '../../optics/curves.js';
+import { cosDeg, DEG } from '../../optics/angles.js';
 
 
 /**

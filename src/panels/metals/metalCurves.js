@@ -2,9 +2,9 @@
 // incidence: exact conductor Fresnel beside Schlick's approximation with the channel's own F0,
 // their largest difference, and the dip of the exact curve below F0 near grazing, which Schlick
 // (rising from F0 to 1 monotonically) cannot show. Every value comes from fresnel.js.
-import { conductorNormalIncidence, fresnelConductor, fresnelConductorPolarized, fresnelSchlick } from './fresnel.js';
-import { cosDeg } from './angles.js';
-import { refinedMax } from './refinedMax.js';
+import { conductorNormalIncidence, fresnelConductor, fresnelConductorPolarized, fresnelSchlick } from '../../optics/fresnel.js';
+import { cosDeg } from '../../optics/angles.js';
+import { refinedMax } from '../../optics/refinedMax.js';
 
 export const CHANNELS = Object.freeze(['red', 'green', 'blue']);
 

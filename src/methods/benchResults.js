@@ -9,7 +9,7 @@ import { recommendWithin } from './displayBudgets.js';
 import { METHODS } from './methods.js';
 import { PRECISION_IDS } from './rounding.js';
 import { SCENES, sceneById } from './scenes.js';
-import { toDegrees } from './angles.js';
+import { toDegrees } from '../optics/angles.js';
 
 export const RESULTS_VERSION = 1;
 export const DEFAULT_DOMAIN = Object.freeze({ dielectric: 'plastic', conductor: 'metal' });

@@ -1,9 +1,9 @@
 // Exact Fresnel against Schlick's approximation on cos θi and on cos θt, sampled over θ for a
 // plot, a CSV and the largest error. Pure float64 math from fresnel.js, no DOM.
-import { criticalAngle, fresnelExact, fresnelSchlick, fresnelSchlickTIR } from './fresnel.js';
-import { sampleAngles, schlickErrorAt } from './curves.js';
-import { cosDeg, DEG } from './angles.js';
-import { refinedMax } from './refinedMax.js';
+import { criticalAngle, fresnelExact, fresnelSchlick, fresnelSchlickTIR } from '../../optics/fresnel.js';
+import { sampleAngles, schlickErrorAt } from '../../optics/curves.js';
+import { cosDeg, DEG } from '../../optics/angles.js';
+import { refinedMax } from '../../optics/refinedMax.js';
 
 
 /**

@@ -2,10 +2,10 @@
 // in the layout of stabilityMap.classify(), and the classification of values read back against
 // the same float64 reference with the same classifyValue, so a GPU map and a JS map of one
 // method differ only where the arithmetic differs.
-import { criticalAngle, fresnelExact } from './fresnel.js';
+import { criticalAngle, fresnelExact } from '../optics/fresnel.js';
 import { cosTheta } from './errorMetrics.js';
 import { classifyValue, CLASS_NAMES } from './stabilityMap.js';
-import { DEG } from './angles.js';
+import { DEG } from '../optics/angles.js';
 
 
 /** cos θ of a column, exactly as classify() computes it (cos 90° = 0). */
