@@ -1,0 +1,137 @@
+// @ts-check
+// The composer's lecture while it is written: a title and an ordered list of items, each with a
+// key of its own (so the page can keep an item's editor and its focus while the list is reordered)
+// and every field present, empty or not. Pure functions that return a new draft; the lecture a
+// draft gives is read back by readLecture, so what the composer offers as a link or a file is
+// exactly what the lecture page accepts, and whatever it would leave out is named by position.
+import { LECTURE_CAPS, LECTURE_KIND, LECTURE_VERSION, readLecture } from '../lecture/readLecture.js';
+import { panelEntry } from '../panels/manifest.js';
+import { questionById } from '../homework/questions.js';
+
+/**
+ * @typedef {{ key: string, type: 'panel', panel: string, state: Record<string, unknown>, lock: string[], hide: string[],
+ *   heading: string, text: string }} PanelDraft
+ * @typedef {{ key: string, type: 'text', heading: string, text: string }} TextDraft
+ * @typedef {{ key: string, type: 'question', question: string, seed: string, heading: string, text: string }} QuestionDraft
+ * @typedef {PanelDraft | TextDraft | QuestionDraft} ItemDraft
+ * @typedef {{ title: string, items: ItemDraft[], nextKey: number }} Draft
+ */
+
+export const DEFAULT_TITLE = 'My lecture';
+
+/** @returns {Draft} */
+export function emptyDraft(title = DEFAULT_TITLE) {
+  return { title, items: [], nextKey: 1 };
+}
+
+/** A new panel item (no key yet: addItem gives it one). */
+export const panelItem = (panel) => ({ type: 'panel', panel, state: {}, lock: [], hide: [], heading: '', text: '' });
+export const textItem = (heading = '', text = '') => ({ type: 'text', heading, text });
+export const questionItem = (question, seed = '') => ({ type: 'question', question, seed, heading: '', text: '' });
+
+/** The same item with its own copies of the state and key lists. */
+function copyItem(item) {
+  return item.type === 'panel' ? { ...item, state: { ...item.state }, lock: [...item.lock], hide: [...item.hide] } : { ...item };
+}
+
+const at = (draft, key) => draft.items.findIndex((item) => item.key === key);
+
+/**
+ * The draft with `item` added at `index` (the end by default). Returns { draft, key }. Beyond the
+ * lecture's cap of items nothing is added (key null): the lecture page would read only the first.
+ * @param {Draft} draft
+ */
+export function addItem(draft, item, index = draft.items.length) {
+  if (draft.items.length >= LECTURE_CAPS.items) return { draft, key: null };
+  const key = `item-${draft.nextKey}`;
+  const items = [...draft.items];
+  items.splice(Math.max(0, Math.min(index, items.length)), 0, /** @type {ItemDraft} */ ({ ...copyItem(item), key }));
+  return { draft: { ...draft, items, nextKey: draft.nextKey + 1 }, key };
+}
+
+/** The draft with item `key` moved to position `index` (clamped to the list). @param {Draft} draft */
+export function moveItemTo(draft, key, index) {
+  const from = at(draft, key);
+  if (from < 0) return draft;
+  const to = Math.max(0, Math.min(Math.trunc(index) || 0, draft.items.length - 1));
+  if (to === from) return draft;
+  const items = [...draft.items];
+  const [item] = items.splice(from, 1);
+  items.splice(to, 0, item);
+  return { ...draft, items };
+}
+
+/** The draft with item `key` moved `delta` places (−1: up one). @param {Draft} draft */
+export const moveItem = (draft, key, delta) => moveItemTo(draft, key, at(draft, key) + delta);
+
+/** The draft with a copy of item `key` right after it: { draft, key } (key: the copy's, or null). @param {Draft} draft */
+export function duplicateItem(draft, key) {
+  const i = at(draft, key);
+  return i < 0 ? { draft, key: null } : addItem(draft, draft.items[i], i + 1);
+}
+
+/** @param {Draft} draft */
+export function removeItem(draft, key) {
+  return { ...draft, items: draft.items.filter((item) => item.key !== key) };
+}
+
+/** The draft with fields of item `key` replaced (its key and type stay). @param {Draft} draft */
+export function updateItem(draft, key, patch) {
+  return {
+    ...draft,
+    items: draft.items.map((item) => (item.key === key ? /** @type {ItemDraft} */ ({ ...item, ...patch, key, type: item.type }) : item)),
+  };
+}
+
+/** @param {Draft} draft */
+export const setTitle = (draft, title) => ({ ...draft, title });
+
+/** The position (0-based) of item `key`, or −1. @param {Draft} draft */
+export const itemIndex = (draft, key) => at(draft, key);
+
+/** The lecture's data as the draft holds it, before it is read: empty fields left out. @param {Draft} draft */
+export function draftData(draft) {
+  const items = draft.items.map((item) => {
+    const out = {};
+    for (const [name, value] of Object.entries(item)) {
+      if (name === 'key') continue;
+      const empty = typeof value === 'string' ? !value.trim() : Array.isArray(value) ? !value.length
+        : value !== null && typeof value === 'object' ? !Object.keys(value).length : value === undefined;
+      if (!empty) out[name] = value;
+    }
+    return out;
+  });
+  return { kind: LECTURE_KIND, version: LECTURE_VERSION, title: draft.title, items };
+}
+
+/**
+ * The lecture the draft gives, as readLecture reads it, and what readLecture would leave out
+ * (named "Item N" by the item's place in the list).
+ * @param {Draft} draft
+ * @returns {{ lecture: any, problems: string[] }}
+ */
+export function draftToLecture(draft) {
+  const read = readLecture(draftData(draft));
+  // A draft is always a lecture's shape, so readLecture refuses none outright; be safe regardless.
+  return read.ok ? { lecture: read.lecture, problems: read.problems } : { lecture: null, problems: read.problems };
+}
+
+/** A draft to edit a lecture (as readLecture gives it). @returns {Draft} */
+export function draftFromLecture(lecture) {
+  let draft = emptyDraft(lecture.title);
+  for (const item of lecture.items) {
+    const fresh = item.type === 'panel' ? panelItem(item.panel) : item.type === 'question' ? questionItem(item.question) : textItem();
+    draft = addItem(draft, { ...fresh, ...item }).draft;
+  }
+  return draft;
+}
+
+/** A short plain-text name of an item, for the list and what a screen reader is told. @param {ItemDraft} item */
+export function itemName(item) {
+  if (item.type === 'panel') return item.heading.trim() || panelEntry(item.panel)?.title || item.panel;
+  if (item.type === 'question') return item.heading.trim() || `Question on “${panelEntry(questionById(item.question)?.panel)?.title ?? '?'}”`;
+  return item.heading.trim() || item.text.trim().split('\n', 1)[0].slice(0, 60) || 'Text';
+}
+
+/** What kind of item it is, in words. */
+export const KIND_LABELS = Object.freeze({ panel: 'Panel', text: 'Text', question: 'Question to the room' });

@@ -1,0 +1,105 @@
+// @ts-check
+// A start state for a panel item from a link the lecturer copied: the panel's "Copy link" on the
+// lecture page (index.html?spheres.nT=…#spheres: the hero's keys unprefixed, every other panel's
+// as <id>.<key>), its "Copy embed code" or embed link (embed.html?panel=<id>&nT=…&lock=…), a
+// composed lecture's link (index.html?lecture=L1.…: the first item of this panel), or the pairs
+// alone (nT=1.5&kd=ff0000). The text comes from anyone's clipboard: it is read with the host's own
+// readers (params.js, readEmbedOptions.js, lectureLink.js), every value must pass the panel's
+// schema, and every key refused is named. Never throws.
+import { applyParams, defaults, describeProblem, rawText } from '../host/params.js';
+import { EMBED_KEYS, readEmbedOptions } from '../host/readEmbedOptions.js';
+import { lecturePrefix, panelEntry } from '../panels/manifest.js';
+import { panelSchema } from '../panels/panelSchema.js';
+import { lectureFromCode } from '../lecture/lectureLink.js';
+
+export const MAX_PASTED = 120_000; // characters: a shader lab link with its code is a few kilobytes
+const MAX_PAIRS = 200;
+
+const titleOf = (id) => panelEntry(id)?.title ?? rawText(id);
+
+/**
+ * The query of a pasted text: a whole link, a relative one, an <iframe> snippet, or bare pairs.
+ * @returns {URLSearchParams | null}
+ */
+function searchOf(text) {
+  let raw = text;
+  const src = /<iframe\b[^>]*?\ssrc\s*=\s*"([^"]*)"/i.exec(raw);
+  // The embed snippet escapes & as &amp; in its src attribute.
+  if (src) raw = src[1].replace(/&quot;/g, '"').replace(/&lt;/g, '<').replace(/&amp;/g, '&');
+  try {
+    if (/^[a-z][a-z0-9+.-]*:/i.test(raw)) return new URL(raw).searchParams;
+    const query = raw.includes('?') ? raw.slice(raw.indexOf('?') + 1) : raw;
+    return new URLSearchParams(query.replace(/#.*$/s, ''));
+  } catch {
+    return null;
+  }
+}
+
+/**
+ * { ok: true, state, lock, hide, problems, source } — the values, locked and hidden controls the
+ * link gives this panel (values checked by its schema; keys and values refused are named in
+ * problems) — or { ok: false, problems } when the text is no link of this panel at all.
+ * source says what kind of link it was: 'embed', 'lecture', 'composed' or 'pairs'.
+ * @param {unknown} text
+ * @param {string} panelId
+ */
+export function readPastedLink(text, panelId) {
+  const schema = panelSchema(panelId);
+  if (!schema || !panelEntry(panelId)) return { ok: false, problems: [`${rawText(panelId)} is no panel of the lab.`] };
+  if (typeof text !== 'string' || !text.trim()) return { ok: false, problems: ['Paste a link copied from the panel.'] };
+  if (text.length > MAX_PASTED) return { ok: false, problems: [`The pasted text has ${text.length} characters, more than the ${MAX_PASTED} a link of a panel has.`] };
+  const search = searchOf(text.trim());
+  if (!search) return { ok: false, problems: ['This is neither a link nor key=value pairs.'] };
+  const pairs = [...search].slice(0, MAX_PAIRS);
+  const problems = [];
+  if ([...search].length > MAX_PAIRS) problems.push(`The link has more than ${MAX_PAIRS} values; the first ${MAX_PAIRS} are read.`);
+
+  if (search.has('lecture')) return fromComposed(search.get('lecture') ?? '', panelId);
+
+  const embedPanel = search.get('panel');
+  if (embedPanel !== null && embedPanel !== panelId) {
+    return { ok: false, problems: [`This link is for “${titleOf(embedPanel)}”, not “${titleOf(panelId)}”.`] };
+  }
+  const prefix = lecturePrefix(panelId);
+  // A link without panel= is the lecture page's (its #hash names the panel it was copied from).
+  const isLink = /^[a-z][a-z0-9+.-]*:|\?|<iframe/i.test(text.trim());
+  const source = embedPanel !== null ? 'embed' : isLink ? 'lecture' : 'pairs';
+  const hash = /#([a-z0-9-]+)\s*$/.exec(text.trim())?.[1];
+  if (source === 'lecture' && hash && hash !== panelId && panelEntry(hash)) {
+    return { ok: false, problems: [`This link is for “${titleOf(hash)}”, not “${titleOf(panelId)}”.`] };
+  }
+  // A lecture link holds every panel's values: this panel's are its prefixed keys (the hero's, the
+  // keys without a dot), the rest belong to other panels and are passed over without a word.
+  const own = pairs.filter(([key]) => (source === 'lecture' ? (prefix ? key.startsWith(prefix) : !key.includes('.'))
+    : !EMBED_KEYS.includes(key)));
+  if (source === 'lecture' && !own.length && hash !== panelId) {
+    return { ok: false, problems: [`This lecture link holds no values of “${titleOf(panelId)}”: copy the link from that panel.`] };
+  }
+  const update = Object.fromEntries(own.map(([key, value]) => [source === 'lecture' ? key.slice(prefix.length) : key, value]));
+  const { applied, rejected } = applyParams(schema, defaults(schema), update);
+  for (const r of rejected) problems.push(describeProblem(r));
+
+  let lock = [];
+  let hide = [];
+  if (source === 'embed') {
+    const { options, problems: optionProblems } = readEmbedOptions(search);
+    for (const p of optionProblems) if (p.key !== 'parentOrigin') problems.push(describeProblem(p));
+    const keys = (names, what) => names.filter((name) => {
+      if (Object.hasOwn(schema, name)) return true;
+      problems.push(`${what}=${rawText(name)} is no control of this panel; ignored.`);
+      return false;
+    });
+    lock = keys(options.lock, 'lock');
+    hide = keys(options.hide, 'hide');
+  }
+  return { ok: true, state: applied, lock, hide, problems, source };
+}
+
+/** The first item of this panel in a composed lecture's link. */
+function fromComposed(code, panelId) {
+  const read = lectureFromCode(code);
+  if (!read.ok) return { ok: false, problems: read.problems };
+  const item = read.lecture.items.find((i) => i.type === 'panel' && i.panel === panelId);
+  if (!item) return { ok: false, problems: [`This lecture has no “${titleOf(panelId)}” panel.`] };
+  return { ok: true, state: { ...item.state }, lock: [...(item.lock ?? [])], hide: [...(item.hide ?? [])], problems: read.problems, source: 'composed' };
+}
