@@ -1,9 +1,10 @@
 // Texel inspector of the normal-mips panel: for texel (i, j) of a mip level, the level-0 slopes
 // b = (n_x/n_z, n_y/n_z) its footprint covers (a 2D scatter, the true NDF in slope space) and the
 // one lobe each technique fits to them, as its 1-σ contour: centre = the shading normal's slope,
-// per-axis σ = α′/√2 for the isotropic lobes (v = α′²/2, the per-axis slope variance of a Beckmann lobe) and LEAN's covariance
-// ellipse (leanCovariance, base lobe included). Lobes come from texelLobe (effectiveRoughness.js).
+// per-axis σ = α′/√2 for the isotropic lobes (v = α′²/2, the per-axis slope variance of a Beckmann
+// lobe) and LEAN's covariance ellipse (leanCovariance, base lobe included). Lobes come from texelLobe (effectiveRoughness.js).
 import { el } from '../../ui/el.js';
+import { fixed } from '../../ui/format.js';
 import { context2d } from '../../ui/context2d.js';
 import { createLobe, texelLobe } from '../../normals/effectiveRoughness.js';
 import { TECHNIQUE_NAMES, TECHNIQUES } from '../../normals/techniqueLayout.js';
@@ -36,7 +37,8 @@ export function buildInspector(host) {
   canvas.height = SIZE;
   const g = context2d(canvas); // claimed now: see context2d.js
   canvas.setAttribute('role', 'img');
-  canvas.setAttribute('aria-label', 'Slope scatter of one texel’s normals with each technique’s fitted lobe, drawn once the mip chains are built.');
+  canvas.setAttribute('aria-label',
+    'Slope scatter of one texel’s normals with each technique’s fitted lobe, drawn once the mip chains are built.');
   const side = el('div', 'nm-inspector-side');
   const keyList = el('ul', 'nm-inspector-key');
   const verdict = el('p', 'nm-inspector-verdict');
@@ -115,16 +117,20 @@ export function buildInspector(host) {
       keyList.replaceChildren(
         el('li', 'nm-key-points', `${points.length} level-0 slopes under texel (${i}, ${j}) of level ${level}`),
         ...TECHNIQUES.map((t) => {
-          const item = el('li', '', `${TECHNIQUE_NAMES[t]}: α′ = ${lobes[t].alpha.toFixed(3)}`);
+          const item = el('li', '', `${TECHNIQUE_NAMES[t]}: α′ = ${fixed(lobes[t].alpha, 3)}`);
           item.style.borderLeftColor = `var(${TECHNIQUE_STYLES[t].stroke})`;
           return item;
         }),
       );
       verdict.textContent = bimodal
-        ? 'Two spikes, one blob: the true normals under this texel form two separate clusters (the facets), but every single-lobe method fits one blob centred between them, where no facet points. Only several lobes or supersampling can represent this.'
+        ? 'Two spikes, one blob: the true normals under this texel form two separate clusters (the facets), but every '
+          + 'single-lobe method fits one blob centred between them, where no facet points. Only several lobes or supersampling '
+          + 'can represent this.'
         : spread < 1e-3 ? 'All normals under this texel agree: every technique keeps the base lobe.'
-          : 'The normals under this texel form one spread-out cloud; the variance-keeping techniques widen the lobe to cover it, naive and renormalized do not.';
-      canvas.setAttribute('aria-label', `Slope scatter of texel (${i}, ${j}) at level ${level} with each technique's fitted lobe. ${verdict.textContent}`);
+          : 'The normals under this texel form one spread-out cloud; the variance-keeping techniques widen the lobe to cover it, '
+            + 'naive and renormalized do not.';
+      canvas.setAttribute('aria-label',
+        `Slope scatter of texel (${i}, ${j}) at level ${level} with each technique's fitted lobe. ${verdict.textContent}`);
       return { points, lobes, bimodal };
     },
     dispose() {

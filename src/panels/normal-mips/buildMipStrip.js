@@ -6,6 +6,7 @@
 // and the storage cost of every technique's chain (storageCost.js). Heat colours: src/ui/colormap.js.
 import { colormap, colormapGradient } from '../../ui/colormap.js';
 import { el } from '../../ui/el.js';
+import { fixed } from '../../ui/format.js';
 import { context2d } from '../../ui/context2d.js';
 import { createLobe, texelLobe } from '../../normals/effectiveRoughness.js';
 import { reconstructZ } from '../../normals/lobeFormulas.js';
@@ -132,14 +133,15 @@ export function buildMipStrip(host, { onPick } = {}) {
         paint(cells[2][l], size, (t) => heat(texelLobe(chains[technique], l, t, base, lobe).alpha));
         meanLength.push(meanStoredLength(naive, l));
       });
-      costs.replaceChildren(el('caption', '', `Storage of each technique's whole chain (${naive.size}², ${precisionName}, ${channels} channels)`));
+      const caption = `Storage of each technique's whole chain (${naive.size}², ${precisionName}, ${channels} channels)`;
+      costs.replaceChildren(el('caption', '', caption));
       const head = el('tr');
       head.append(el('th', '', 'Technique'), el('th', '', 'KiB'), el('th', '', 'scalars / texel'), el('th', '', 'keeps the spread'));
       costs.append(head);
       for (const t of TECHNIQUES) {
         const cost = storageCost({ technique: t, precision, channels, size: naive.size });
         const row = el('tr', t === technique ? 'nm-current' : '');
-        row.append(el('th', '', TECHNIQUE_NAMES[t]), el('td', '', (cost.bytes / 1024).toFixed(1)), el('td', '', String(cost.components)),
+        row.append(el('th', '', TECHNIQUE_NAMES[t]), el('td', '', fixed(cost.bytes / 1024, 1)), el('td', '', String(cost.components)),
           el('td', '', cost.varianceKept ? 'yes' : 'no'));
         costs.append(row);
       }

@@ -3,10 +3,11 @@
 // (RMSE per technique, overall and per mip-level band). Styles: styles.css (under .nm-panel).
 import { colormapGradient } from '../../ui/colormap.js';
 import { el } from '../../ui/el.js';
+import { fixed } from '../../ui/format.js';
 import { TECHNIQUE_NAMES } from '../../normals/techniqueLayout.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
 
-const fmt = (x) => (Number.isFinite(x) ? x.toFixed(4) : '–');
+const fmt = (x) => (Number.isFinite(x) ? fixed(x, 4) : '–');
 
 let titles = 0; // ids for the error tables' titles (a page may mount the panel more than once)
 
@@ -16,7 +17,8 @@ export function buildNormalMipsDom(host) {
   const canvas = el('canvas', 'nm-canvas');
   canvas.setAttribute('role', 'img');
   canvas.setAttribute('aria-label',
-    'A bumpy plane receding to the horizon under a low point light: on the left the highlight from the chosen mip technique, on the right the supersampled ground truth.');
+    'A bumpy plane receding to the horizon under a low point light: on the left the highlight from the chosen mip technique, '
+    + 'on the right the supersampled ground truth.');
   const leftCap = el('div', 'nm-cap nm-cap-left');
   const rightCap = el('div', 'nm-cap nm-cap-right');
   leftCap.hidden = true; // until setCaptions: an empty caption that fills in would grow in place
@@ -38,7 +40,8 @@ export function buildNormalMipsDom(host) {
 
   // The table's title sits outside its scrolling box, so it wraps to the column instead of
   // scrolling away with a wide table; aria-labelledby keeps it the table's name.
-  const title = el('p', 'nm-errors-title', 'RMSE of each technique against the ground truth (tone-mapped RGB), over the plane and per mip-level band');
+  const title = el('p', 'nm-errors-title',
+    'RMSE of each technique against the ground truth (tone-mapped RGB), over the plane and per mip-level band');
   title.id = `nm-errors-title-${++titles}`;
   const table = el('table', 'nm-errors');
   table.setAttribute('aria-labelledby', title.id);
@@ -64,7 +67,10 @@ export function buildNormalMipsDom(host) {
       leftCap.hidden = !left;
       rightCap.hidden = !right;
     },
-    /** results: { technique: mean |Δ brightness| } or null (not measured for these settings, or measuring); stopped: why a measurement ended without results. */
+    /**
+     * results: { technique: mean |Δ brightness| } or null (not measured for these settings, or measuring);
+     * stopped: why a measurement ended without results.
+     */
     setShimmer(results, measuring = false, stopped = '') {
       if (measuring) {
         shimmer.textContent = 'Shimmer meter: measuring every technique under four sub-pixel camera moves…';
@@ -72,8 +78,9 @@ export function buildNormalMipsDom(host) {
       }
       shimmer.textContent = results
         ? `Shimmer (mean brightness change per pixel under a sub-pixel camera move, lower is steadier): ${
-          Object.entries(results).sort((a, b) => a[1] - b[1]).map(([t, v]) => `${TECHNIQUE_NAMES[t]} ${v.toFixed(4)}`).join(', ')}.`
-        : stopped || 'Shimmer meter: press “Measure shimmer” to compare how much each technique flickers when the camera moves by less than a pixel.';
+          Object.entries(results).sort((a, b) => a[1] - b[1]).map(([t, v]) => `${TECHNIQUE_NAMES[t]} ${fixed(v, 4)}`).join(', ')}.`
+        : stopped || 'Shimmer meter: press “Measure shimmer” to compare how much each technique flickers when the camera moves '
+          + 'by less than a pixel.';
     },
     /** A line over the stage while the chains build ('' hides it). */
     setBusy(text) {
@@ -106,7 +113,8 @@ export function buildNormalMipsDom(host) {
       for (const [technique, e] of order) {
         const row = el('tr', technique === current ? 'nm-current' : '');
         row.dataset.technique = technique;
-        row.append(el('th', '', TECHNIQUE_NAMES[technique]), el('td', '', fmt(e.rmse)), ...used.map((b) => el('td', '', fmt(e.bands[b.level].rmse))));
+        const bands = used.map((b) => el('td', '', fmt(e.bands[b.level].rmse)));
+        row.append(el('th', '', TECHNIQUE_NAMES[technique]), el('td', '', fmt(e.rmse)), ...bands);
         tbody.append(row);
       }
     },

@@ -39,7 +39,9 @@ export function createErrorDistancePlot(host) {
     // from 0, so that a gap between techniques reads at its true size
     xRange: (_u, min, max) => [min - 0.25, max + 0.25],
     yRange: (_u, _min, max) => [0, Math.max(1e-3, max * 1.15)],
-    series: TECHNIQUES.map((t) => ({ label: TECHNIQUE_NAMES[t], width: t === 'naive' || t === 'renormalized' ? 3 : 2.5, ...TECHNIQUE_STYLES[t] })),
+    series: TECHNIQUES.map((t) => ({
+      label: TECHNIQUE_NAMES[t], width: t === 'naive' || t === 'renormalized' ? 3 : 2.5, ...TECHNIQUE_STYLES[t],
+    })),
   });
   let shown; // the errors object and technique drawn last
   let shownTechnique;

@@ -12,6 +12,7 @@ import { createMipTexture, maxAnisotropy, setAnisotropy } from '../../gl/createM
 import { createProgram } from '../../gl/createProgram.js';
 import { assembleShader } from '../../gl/shaderChunks.js';
 import { onDemand } from '../../gl/onDemand.js';
+import { createRunGate } from '../shared/createRunGate.js';
 import fragment from './normal-mips.frag.glsl?raw';
 import { TECHNIQUES } from '../../normals/techniqueLayout.js';
 import { uploadLevels } from '../../normals/uploadLevels.js';
@@ -49,7 +50,14 @@ function enableExtensions(gl) {
   gl.getExtension('EXT_texture_filter_anisotropic');
 }
 
-export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onConverged, maxPixels = 120_000 }) {
+/**
+ * The scene on a canvas. uniforms: the shader's first values; onFrame: after each frame drawn;
+ * onConverged(errors): the errors of every technique against a converged truth; onContextLost:
+ * the context went away (a running measurement is stale); maxPixels: the drawing buffer's cap.
+ */
+export function createNormalMipsScene(canvas, {
+  uniforms: initial, onFrame, onConverged, onContextLost, maxPixels = 120_000,
+}) {
   const context = startContext(canvas);
   const { gl } = context;
   const source = assembleShader(fragment);
@@ -70,7 +78,8 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
   let uploads = {}; // technique → packed chains, kept to upload again after a lost context
   let textures = {}; // technique → [{ tex, scale, offset }]
   const state = {
-    technique: 'naive', channels: 3, samples: 0, cap: 256, truthOn: true, onScreen: false, errors: null, measuring: false, frame: 0, anisotropy: 1,
+    technique: 'naive', channels: 3, samples: 0, cap: 256, truthOn: true, onScreen: false, errors: null, measuring: false, frame: 0,
+    anisotropy: 1,
   };
   let cur = 0;
   const bound = { uTexA: null, uTexB: null };
@@ -122,19 +131,18 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
   // The error of every technique against the converged truth. Each technique is drawn into its own
   // target and read back asynchronously (a pixel-pack buffer and a fence), so the page never waits
   // for the GPU: on a slow GPU six synchronous read-backs would freeze it for seconds. The previous
-  // errors stay in state.errors until the new set is complete; a restart, a newer measurement or a
-  // lost context makes a running one stale.
-  let measureId = 0;
+  // errors stay in state.errors until the new set is complete; a restart, a newer measurement, a
+  // lost context or dispose makes a running one stale (its gate).
+  const measureGate = createRunGate();
   const owner = currentOwner(); // the panel an error of a measurement, which runs outside its code, belongs to
   let measured = []; // resolvers of whenMeasured()
   let disposed = false;
 
   function startMeasure() {
-    measureId += 1;
-    const id = measureId;
+    const run = measureGate.begin();
     state.measuring = true;
-    runMeasure(id).catch((error) => {
-      if (id !== measureId || disposed) return; // a read-back of a context already given up
+    runMeasure(run).catch((error) => {
+      if (!run.live) return; // a read-back of a context already given up
       stopMeasure();
       // Lost before its event arrived: the restore starts the truth, and the measurement, again.
       if (error instanceof ContextLostError) return;
@@ -143,17 +151,16 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
     });
   }
 
-  async function runMeasure(id) {
-    const stale = () => id !== measureId || disposed;
+  async function runMeasure(run) {
     const truth = await rtTruth[cur].readAsync();
-    if (stale()) return;
+    if (!run.live) return;
     const errors = {};
     for (const technique of TECHNIQUES) {
       bindTechnique(technique);
       pass(0, rtMeasure);
       bindTechnique(state.technique);
       const image = await rtMeasure.readAsync();
-      if (stale()) return;
+      if (!run.live) return;
       errors[technique] = bandedRmse(image, truth, { bands: u.uMaxLevel.value + 1 });
     }
     state.errors = errors;
@@ -161,8 +168,9 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
     onConverged?.(errors);
   }
 
+  /** Ends the running measurement (its result, if any, is dropped) and wakes whenMeasured(). */
   function stopMeasure() {
-    measureId += 1;
+    measureGate.cancel('The measurement ended');
     state.measuring = false;
     const waiting = measured;
     measured = [];
@@ -241,6 +249,7 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
     event.preventDefault();
     frames.cancel();
     if (state.measuring) stopMeasure();
+    onContextLost?.();
   };
   const onRestored = () => {
     enableExtensions(gl);
@@ -310,9 +319,10 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
     /**
      * Shimmer meter: mean |Δ brightness| per pixel of each technique's picture under sub-pixel
      * camera moves. Asynchronous read-backs, as for the errors; resolves null if disposed or the
-     * context was lost meanwhile.
+     * context was lost meanwhile, and rejects with the signal's reason once it is aborted.
+     * @param {{ signal?: AbortSignal }} [options]
      */
-    async measureShimmer() {
+    async measureShimmer({ signal } = {}) {
       const offsets = [[0.5, 0], [0, 0.5], [0.5, 0.5], [0.25, 0.75]];
       const drawMoved = (technique, jitter) => {
         bindTechnique(technique);
@@ -325,11 +335,13 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
       const result = {};
       try {
         for (const technique of TECHNIQUES) {
+          signal?.throwIfAborted();
           const still = await drawMoved(technique, [0, 0]);
           let sum = 0;
           for (const offset of offsets) {
             const moved = await drawMoved(technique, offset);
             if (disposed) return null;
+            signal?.throwIfAborted(); // a newer measurement or a change of settings: stop drawing
             sum += meanBrightnessChange(still, moved);
           }
           result[technique] = sum / offsets.length;
@@ -354,6 +366,7 @@ export function createNormalMipsScene(canvas, { uniforms: initial, onFrame, onCo
       frames.cancel();
       disposed = true;
       if (state.measuring) stopMeasure();
+      measureGate.dispose();
       resizeObserver.disconnect();
       visibility.disconnect();
       canvas.removeEventListener('webglcontextlost', onLost);

@@ -12,7 +12,9 @@ export const schema = {
   size: { type: 'enum', default: '256', options: ['64', '128', '256', '512', '1024'], label: 'Texture size' },
   technique: { type: 'enum', default: 'toksvig', options: TECHNIQUE_NAMES, label: 'Technique' },
   alpha: { type: 'number', default: 0.2, min: 0.02, max: 1, step: 0.005, label: 'Base roughness α' },
-  precision: { type: 'enum', default: 'f16', options: { u8: '8-bit unorm', f16: '16-bit float', f32: '32-bit float' }, label: 'Storage precision' },
+  precision: {
+    type: 'enum', default: 'f16', options: { u8: '8-bit unorm', f16: '16-bit float', f32: '32-bit float' }, label: 'Storage precision',
+  },
   channels: { type: 'enum', default: '3', options: ['3', '2'], label: 'Channels (2: z rebuilt)' },
   level: { type: 'number', integer: true, default: -1, min: -1, max: 10, step: 1, label: 'Mip level (−1: auto)' },
   anisotropy: { type: 'enum', default: '1', options: ['1', '2', '4', '8', '16'], label: 'Anisotropic taps (1 = off)' },
@@ -25,7 +27,9 @@ export const schema = {
   lightEl: { type: 'number', default: 6, min: 1, max: 60, step: 0.5, label: 'Light elevation °' },
   lightAz: { type: 'number', default: 0, min: -90, max: 90, step: 1, label: 'Light azimuth ° (0 = ahead)' },
   lightDist: { type: 'number', default: 30, min: 3, max: 300, step: 1, label: 'Light distance (tiles)' },
-  fresnel: { type: 'enum', default: 'exact', options: { exact: 'Exact', schlick: 'Schlick', off: 'Off (F = R0)' }, label: 'Fresnel (n = 1.5)' },
+  fresnel: {
+    type: 'enum', default: 'exact', options: { exact: 'Exact', schlick: 'Schlick', off: 'Off (F = R0)' }, label: 'Fresnel (n = 1.5)',
+  },
   texelLevel: { type: 'number', integer: true, default: 4, min: 0, max: 10, step: 1, label: 'Inspected level (or click the strip)' },
   texelX: { type: 'number', integer: true, default: 0, min: 0, max: 1023, step: 1, label: 'Inspected texel i' },
   texelY: { type: 'number', integer: true, default: 0, min: 0, max: 1023, step: 1, label: 'Inspected texel j' },
