@@ -1,6 +1,7 @@
 // The lecture page: one section per panel of the manifest, in lecture order (vite.config.js
 // writes them into index.html), each mounted as it approaches the screen; the page controls and
-// lecture-mode keys.
+// lecture-mode keys. A composed lecture (?lecture=CODE, or a data element in the page) takes the
+// place of those sections with its own items (src/lecture/mountLecture.js), with all of the rest.
 import './styles.css';
 import './panelPlaces.css';
 import { PANEL_IDS, lecturePrefix, panelEntry } from './panels/manifest.js';
@@ -12,7 +13,11 @@ import { setupPageControls } from './host/setupPageControls.js';
 import { showNotice } from './host/showNotice.js';
 import { installPageFaults } from './host/panelFaults.js';
 import { contextStats, MAX_LIVE_CONTEXTS } from './gl/contextBudget.js';
-import { describeProblem, readParams } from './host/params.js';
+import { describeProblem, readParams, withDefaults } from './host/params.js';
+import { itemLectureUrl } from './host/shareLinks.js';
+import { LECTURE_ELEMENT_ID, itemKeys, openLecture } from './lecture/openLecture.js';
+import { lectureToCode } from './lecture/lectureLink.js';
+import { mountLecture } from './lecture/mountLecture.js';
 import { texReady } from './ui/tex.js';
 import { audioTraceOn, installAudioKey, onAudioTrace, setAudioTrace, traceLog } from './ui/createAudioTrace.js';
 
@@ -60,26 +65,70 @@ onAudioTrace((on) => {
   window.history.replaceState(window.history.state, '', url);
 });
 
-// The page and the manifest must agree: a section without a panel, or a panel without its section
-// or its module, is said on the page (and fails the tests), never dropped in silence.
-const sections = [...document.querySelectorAll('section[data-panel]')];
-const onPage = sections.map((s) => s.dataset.panel);
-const problems = [
-  ...onPage.filter((id) => !panelEntry(id)).map((id) => `The section “${id}” is not a panel of the manifest.`),
-  ...PANEL_IDS.filter((id) => !onPage.includes(id)).map((id) => `The panel “${id}” has no section on this page.`),
-  ...missingFiles,
-];
-showNotice(main, 'This page does not match its panel manifest:', problems, { kind: 'error' });
+// A composed lecture, from the link or the page; what it holds that cannot be used is named, and
+// the rest opens. One that cannot be read at all is named, and the lab's own lecture is shown.
+const element = document.getElementById(LECTURE_ELEMENT_ID);
+const carried = element instanceof HTMLScriptElement && element.type === 'application/json' ? element.textContent : null;
+const opened = openLecture(new URLSearchParams(window.location.search), carried);
+if (opened.refused) {
+  const what = opened.given === 'link' ? 'This lecture link' : 'The lecture in this page';
+  showNotice(main, `${what} cannot be opened, so the lab’s own lecture is shown:`, opened.problems, { kind: 'error' });
+} else {
+  showNotice(main, 'Parts of this lecture could not be used, so they are left out:', opened.problems);
+}
+const composed = opened.lecture ? mountLecture(main, opened.lecture, itemKeys(opened.lecture.items, lecturePrefix)) : null;
+const lectureCode = opened.lecture ? lectureToCode(opened.lecture) : null;
+window.fresnelLab.lecture = { source: opened.source, title: opened.lecture?.title ?? null, code: lectureCode };
+const composeLink = document.querySelector('a.compose-link');
+if (composeLink instanceof HTMLAnchorElement && lectureCode) composeLink.href = `./compose.html?lecture=${lectureCode}`;
+
+/** The lab's own lecture: its panels, each in the section the build wrote for it. */
+function ownPanels() {
+  // The page and the manifest must agree: a section without a panel, or a panel without its section
+  // or its module, is said on the page (and fails the tests), never dropped in silence.
+  const sections = [...document.querySelectorAll('section[data-panel]')];
+  const onPage = sections.map((s) => s.dataset.panel);
+  const problems = [
+    ...onPage.filter((id) => !panelEntry(id)).map((id) => `The section “${id}” is not a panel of the manifest.`),
+    ...PANEL_IDS.filter((id) => !onPage.includes(id)).map((id) => `The panel “${id}” has no section on this page.`),
+    ...missingFiles,
+  ];
+  showNotice(main, 'This page does not match its panel manifest:', problems, { kind: 'error' });
+  return { sections, panels: sections.map((section) => ({ section, key: section.dataset.panel, item: null, prefix: lecturePrefix(section.dataset.panel) })) };
+}
+
+/**
+ * A panel item's host options: it starts from the item's state, its link keeps the lecture (its
+ * code, or this page where the page holds it) with this item's state, and its embed code the
+ * item's locks and hidden controls.
+ */
+function itemOptions({ item, key, prefix }, schema) {
+  if (!item) return {};
+  const start = item.state ?? {};
+  const page = opened.source === 'data' ? window.location.href : './index.html';
+  const code = opened.source === 'data' ? null : lectureCode;
+  return {
+    start,
+    lectureLink: (values) => itemLectureUrl({ page, code, schema: withDefaults(schema, start), prefix, key }, values),
+    embedOptions: { lock: item.lock ?? [], hide: item.hide ?? [] },
+  };
+}
+
+const { sections, panels } = composed ?? ownPanels();
 
 // Every panel's host (values, link, messages) at once; each panel's module when it comes near.
 window.fresnelLab.ready = (async () => {
-  const entries = sections.map((section) => {
+  const entries = panels.map((placed) => {
+    const { section, key } = placed;
     const id = section.dataset.panel;
     try {
-      hosts[id] = createPanelHost(section.querySelector('.panel-mount'), panelDefinition(id), {
-        prefix: lecturePrefix(id), noticeHost: section, applyMaterial,
+      const definition = panelDefinition(id);
+      hosts[key] = createPanelHost(section.querySelector('.panel-mount'), definition, {
+        prefix: placed.prefix, noticeHost: section, applyMaterial, ...itemOptions(placed, definition.schema),
       });
-      return { section, host: hosts[id] };
+      if (placed.item?.lock) hosts[key].controls('lock', placed.item.lock);
+      if (placed.item?.hide) hosts[key].controls('hide', placed.item.hide);
+      return { section, host: hosts[key] };
     } catch (error) {
       showNotice(section, `The ${panelEntry(id)?.title ?? id} panel could not load.`, [error.message], { kind: 'error' });
       return null;
@@ -95,5 +144,5 @@ window.fresnelLab.ready = (async () => {
   await new Promise((resolve) => { requestAnimationFrame(() => setTimeout(resolve, 0)); });
   // KaTeX too: the page's formulas are typeset as their panels mount, not after (which would
   // change their height under the reader).
-  await Promise.allSettled([texReady(), ...entries.filter(Boolean).map((e) => e.host.load())]); // a failure is shown in its panel
+  await Promise.allSettled([texReady(), composed?.ready, ...entries.filter(Boolean).map((e) => e.host.load())]); // a failure is shown in its panel
 })();

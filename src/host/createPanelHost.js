@@ -8,7 +8,7 @@
 import { warmGpu } from '../gl/warmGpu.js';
 import { ownedBy } from '../gl/faultOwner.js';
 import { createPanelFaults, watchInputs } from './panelFaults.js';
-import { applyParams, defaults, describeProblem, resolveKey } from './params.js';
+import { applyParams, defaults, describeProblem, resolveKey, withDefaults } from './params.js';
 import { createControlState } from './createControlState.js';
 import { bindGui, createPanelGui } from './bindGui.js';
 import { readUrlState, urlWriter } from './urlState.js';
@@ -37,17 +37,22 @@ function readOnly(values, id) {
  * panel's own headings are h3, one level below 2, and are said one level below the title.
  * @param {HTMLElement} container
  * @param {import('./panelContract.js').PanelDefinition} panel
+ * start: where the panel starts when the link says nothing (a composed lecture's item; else its defaults);
+ * lectureLink(values): the Copy link's address (else the lecture page's); embedOptions: lock and hide for the embed code.
  * @param {{ prefix?: string, noticeHost?: HTMLElement, onFrame?: (frame: number) => void, titleLevel?: number,
- *   applyMaterial?: (material: { id?: string, name?: string, n: number }) => void }} [options]
+ *   applyMaterial?: (material: { id?: string, name?: string, n: number }) => void, start?: Record<string, unknown>,
+ *   lectureLink?: (values: Record<string, unknown>) => string, embedOptions?: { lock?: string[], hide?: string[] } }} [options]
  */
 export function createPanelHost(container, panel, {
   prefix = '', noticeHost = container, onFrame = () => {}, applyMaterial = () => {}, titleLevel = 2,
+  start: itemStart = {}, lectureLink = (v) => lectureUrl(panel, v), embedOptions = {},
 } = {}) {
   const { schema } = panel;
-  const { values, problems } = readUrlState(schema, prefix);
+  const urlSchema = withDefaults(schema, itemStart); // the link says what differs from where the panel starts
+  const { values, problems } = readUrlState(urlSchema, prefix);
   const start = { ...values }; // what the link asked for: `reset` returns here
   showNotice(noticeHost, 'Some values in the link were not usable:', problems.map(describeProblem));
-  const writeUrl = urlWriter(schema, prefix);
+  const writeUrl = urlWriter(urlSchema, prefix);
   const view = readOnly(values, panel.id);
   const draft = { ...values }; // what the controls edit; the host writes it back after each change
   const listeners = new Set();
@@ -133,8 +138,8 @@ export function createPanelHost(container, panel, {
       say('Press Ctrl+C to copy');
     }
   };
-  buttons.link.addEventListener('click', () => copy(buttons.link, lectureUrl(panel, values), 'Link copied', 'Link to this view'));
-  buttons.embed.addEventListener('click', () => copy(buttons.embed, embedCode(panel, values), 'Embed code copied', 'Embed code'));
+  buttons.link.addEventListener('click', () => copy(buttons.link, lectureLink(values), 'Link copied', 'Link to this view'));
+  buttons.embed.addEventListener('click', () => copy(buttons.embed, embedCode(panel, values, embedOptions), 'Embed code copied', 'Embed code'));
   buttons.png.addEventListener('click', () => {
     const url = instance?.png?.();
     if (url) downloadUrl(`fresnel-lab-${panel.id}.png`, url);
@@ -157,7 +162,7 @@ export function createPanelHost(container, panel, {
     return makePoster({
       picture,
       title: `Fresnel Lab: ${panel.title.replace(/_([it])\b/g, (_, c) => ({ i: 'ᵢ', t: 'ₜ' })[c])}`,
-      link: lectureUrl(panel, values),
+      link: lectureLink(values),
       colours: { background: cssVar('--bg', '#0d1117'), text: cssVar('--text', '#f0f3f6'), muted: cssVar('--muted', '#c2cad3') },
     });
   }
@@ -357,7 +362,7 @@ export function createPanelHost(container, panel, {
       listeners.add(listener);
       return () => listeners.delete(listener);
     },
-    links: () => ({ lecture: lectureUrl(panel, values), embed: embedUrl(panel, values) }),
+    links: () => ({ lecture: lectureLink(values), embed: embedUrl(panel, values, embedOptions) }),
     /** The keys the link set to something other than their default. */
     urlKeys: Object.keys(schema).filter((key) => start[key] !== schema[key].default),
     /** Back to the link's values ('start') or the schema's defaults ('defaults'), as a change made by the API. */

@@ -118,6 +118,15 @@ export function defaults(schema) {
   return Object.fromEntries(Object.entries(schema).map(([key, spec]) => [key, spec.default]));
 }
 
+/**
+ * The schema with other defaults: `start` (values already checked against it) where it has them.
+ * Read and written with it, a link carries only what differs from that start, as a lecture's panel
+ * that starts elsewhere than the panel's defaults needs (a key left out means the item's value).
+ */
+export function withDefaults(schema, start) {
+  return Object.fromEntries(Object.entries(schema).map(([key, spec]) => [key, Object.hasOwn(start, key) ? { ...spec, default: start[key] } : spec]));
+}
+
 /** The schema key a name or one of its aliases stands for, or undefined. */
 export function resolveKey(schema, name) {
   if (Object.hasOwn(schema, name)) return name;

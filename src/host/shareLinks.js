@@ -13,16 +13,38 @@ export function lectureUrl(panel, values) {
   return url.toString();
 }
 
-export function embedUrl(panel, values) {
+/** options: the embed page's lock= and hide= (lists of keys), as a lecture's item has them. */
+export function embedUrl(panel, values, { lock = [], hide = [] } = {}) {
   const url = pageUrl('./embed.html');
   url.searchParams.set('panel', panel.id);
   writeParams(panel.schema, values, url.searchParams);
+  if (lock.length) url.searchParams.set('lock', lock.join(','));
+  if (hide.length) url.searchParams.set('hide', hide.join(','));
   return url.toString();
 }
 
-/** An <iframe> snippet; attribute values are escaped, so no state can break out of the tag. */
-export function embedCode(panel, values, { width = 960, height = 720 } = {}) {
+/**
+ * An <iframe> snippet; attribute values are escaped, so no state can break out of the tag.
+ * @param {{ id: string, title: string, schema: object }} panel
+ * @param {object} values
+ * @param {{ width?: number, height?: number, lock?: string[], hide?: string[] }} [options]
+ */
+export function embedCode(panel, values, { width = 960, height = 720, ...options } = {}) {
   const escape = (s) => String(s).replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;');
-  return `<iframe src="${escape(embedUrl(panel, values))}" width="${width}" height="${height}" `
+  return `<iframe src="${escape(embedUrl(panel, values, options))}" width="${width}" height="${height}" `
     + `style="border:0" loading="lazy" title="${escape(`Fresnel Lab: ${panel.title}`)}" allow="fullscreen; clipboard-write"></iframe>`;
+}
+
+/**
+ * A panel of a composed lecture: the lecture page with the lecture (`code`, or none where the page
+ * itself holds it: `page` is then that page's address), this item's state under its own prefix (what
+ * differs from the item's start, `schema` holding that start as its defaults), and the item in the hash.
+ */
+export function itemLectureUrl({ page = './index.html', code = null, schema, prefix, key }, values) {
+  const url = pageUrl(page);
+  url.search = '';
+  if (code) url.searchParams.set('lecture', code);
+  writeParams(schema, values, url.searchParams, prefix);
+  url.hash = key;
+  return url.toString();
 }

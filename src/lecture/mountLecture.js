@@ -1,0 +1,99 @@
+// A composed lecture on the lecture page: its title in the page's header, then one section per
+// item in its order, in place of the sections the build wrote for the lab's own lecture. A panel's
+// section is the one the build writes (sectionHtml: heading, lede, citation, its place) with the
+// lecturer's heading and text above it; a text item is its heading and text; a question item is a
+// homework question asked of the room (questionItem.js, loaded only for a lecture that has one).
+import { PLACE_LAYOUTS, panelEntry, sectionHtml } from '../panels/manifest.js';
+import { el } from '../ui/el.js';
+import { lectureTextFragment } from './lectureTextDom.js';
+
+/** The lecturer's own heading and text for an item (nothing when it has neither). */
+function ownText(item, key, className) {
+  const parts = [];
+  if (item.heading) {
+    const heading = el('h2', 'lecture-own-heading', item.heading);
+    heading.id = `${key}-own`;
+    parts.push(heading);
+  }
+  if (item.text) {
+    const text = el('div', 'lecture-text');
+    text.append(lectureTextFragment(item.text));
+    parts.push(text);
+  }
+  if (!parts.length) return null;
+  const box = el('div', className);
+  box.append(...parts);
+  return box;
+}
+
+/** The manifest's section for a panel (trusted markup from this repository), keyed for this item. */
+function panelSection(item, key) {
+  const entry = panelEntry(item.panel);
+  const template = document.createElement('template');
+  template.innerHTML = sectionHtml(entry);
+  const section = /** @type {HTMLElement} */ (template.content.firstElementChild);
+  section.id = key;
+  section.dataset.item = key;
+  section.querySelector('h2').id = `${key}-title`;
+  // The place the build keeps for #<panel id> (panelPlaces.css), for every item of this panel: styles.css reads these.
+  for (const layout of Object.keys(PLACE_LAYOUTS)) section.style.setProperty(`--place-${layout}`, `${entry.place[layout]}px`);
+  const own = ownText(item, key, 'lecture-own');
+  if (own) {
+    section.prepend(own);
+    if (item.heading) section.setAttribute('aria-labelledby', `${key}-own ${key}-title`);
+  }
+  return section;
+}
+
+/** A section of the lecturer's text, or of a question (filled when its module arrives). */
+function plainSection(item, key, className, label) {
+  const section = el('section', `panel ${className}`);
+  section.id = key;
+  section.dataset.item = key;
+  section.tabIndex = -1;
+  const own = ownText(item, key, 'lecture-own');
+  if (own) section.append(own);
+  if (item.heading) section.setAttribute('aria-labelledby', `${key}-own`);
+  else section.setAttribute('aria-label', label);
+  return section;
+}
+
+/**
+ * Shows `lecture` in `main` (the lab's own sections go), its title in the header. keys: from
+ * itemKeys. Returns { sections: every item's section in order, panels: [{ section, item, key,
+ * prefix }], ready: resolves once the questions are on the page }.
+ * @param {HTMLElement} main
+ * @param {{ title: string, items: any[] }} lecture
+ * @param {{ key: string, prefix: string | null }[]} keys
+ */
+export function mountLecture(main, lecture, keys) {
+  for (const section of main.querySelectorAll('section[data-panel]')) section.remove();
+  document.title = `${lecture.title}: Fresnel Lab`;
+  const title = document.querySelector('.site-title h1');
+  if (title) title.textContent = lecture.title;
+  const intro = document.querySelector('.site-title p');
+  if (intro) intro.textContent = 'A lecture composed from Fresnel Lab’s panels, in its lecturer’s order and words.';
+
+  const sections = [];
+  const panels = [];
+  const questions = [];
+  lecture.items.forEach((item, i) => {
+    const { key, prefix } = keys[i];
+    let section;
+    if (item.type === 'panel') {
+      section = panelSection(item, key);
+      panels.push({ section, item, key, prefix });
+    } else if (item.type === 'question') {
+      section = plainSection(item, key, 'lecture-question hw-lecture-mode', `Question ${questions.length + 1}`);
+      questions.push({ section, item, number: questions.length + 1 });
+    } else {
+      section = plainSection(item, key, 'lecture-text-item', 'Text');
+    }
+    sections.push(section);
+  });
+  main.append(...sections);
+  const ready = questions.length
+    ? import('./questionItem.js').then(({ askQuestions }) => askQuestions(questions))
+    : Promise.resolve();
+  return { sections, panels, ready };
+}

@@ -1,0 +1,53 @@
+// A question of a composed lecture, asked of the room as the homework page's lecture mode asks it:
+// the card of the homework page (buildQuestionCard) judges nothing until the lecturer reveals it; a
+// prediction's panel appears with the truth. Loaded only by a lecture that has a question, with the
+// homework page's styles for its card.
+import '../homework/page/homework.css';
+import { questionById } from '../homework/questions.js';
+import { questionParams } from '../homework/gradeAnswer.js';
+import { buildQuestionCard } from '../homework/page/buildQuestionCard.js';
+import { button } from '../ui/el.js';
+
+// Without a seed of its own a question draws its numbers from this one: the same on every screen.
+const ROOM_SEED = 'lecture';
+
+/** Each { section, item, number } gets its card and a "Reveal the answer" button. Returns the cards. */
+export function askQuestions(questions) {
+  const frames = new Set(); // the panels' frames, each fitted to the height it reports
+  const cards = questions.map(({ section, item, number }) => {
+    const question = questionById(item.question);
+    let card = null;
+    card = buildQuestionCard({
+      number,
+      item: {},
+      question,
+      params: questionParams(question, item.seed ?? ROOM_SEED),
+      saved: null,
+      lecture: () => true,
+      // A prediction's panel would give the answer away: it waits for this question's reveal.
+      panelsAllowed: () => question.kind !== 'predict' || Boolean(card?.revealed()),
+      onAnswer: () => {},
+      onFrame: (frame) => frames.add(frame),
+    });
+    const reveal = button('Reveal the answer', 'hw-reveal');
+    reveal.addEventListener('click', () => { card.reveal(); reveal.disabled = true; });
+    card.element.append(reveal);
+    section.append(card.element);
+    return card;
+  });
+  window.addEventListener('message', (event) => {
+    // Looked up when the message comes: a card makes its frame before it is on the page, without a window yet.
+    const frame = [...frames].find((f) => f.contentWindow === event.source);
+    if (!frame || event.data?.type !== 'fresnel-lab:size') return;
+    const height = Number(event.data.height);
+    if (Number.isFinite(height)) frame.style.height = `${Math.min(3000, Math.max(160, Math.ceil(height) + 2))}px`;
+  });
+  // The page's theme and projector mode reach the panels in their frames.
+  window.addEventListener('fresnel-lab:theme', ({ detail }) => {
+    for (const frame of frames) {
+      frame.contentWindow?.postMessage({ type: 'fresnel-lab:theme', theme: detail.scheme }, '*');
+      frame.contentWindow?.postMessage({ type: 'fresnel-lab:projector', on: detail.projector }, '*');
+    }
+  });
+  return cards;
+}
