@@ -104,6 +104,8 @@ const pages = {
   index: resolve(root, 'index.html'),
   embed: resolve(root, 'embed.html'),
   homework: resolve(root, 'homework.html'),
+  // The lecture composer (src/compose/): a lecture of one's own from the panels, as a link.
+  compose: resolve(root, 'compose.html'),
   // An example reveal.js deck with embedded panels (examples/deck.html), shipped with the site.
   deck: resolve(root, 'examples/deck.html'),
   // npm run bench also builds the three.js peer the hero is measured against (not shipped).

@@ -3,9 +3,11 @@
 // manifest's ledes are HTML written for the lecture page; the composer shows them as text only),
 // and every question of the homework bank by its prompt, with the example numbers its seed gives.
 import { PANELS, panelEntry } from '../panels/manifest.js';
-import { KIND_NAMES, QUESTIONS } from '../homework/questions.js';
+import { KIND_NAMES, QUESTIONS as BANK } from '../homework/questions.js';
 import { questionParams } from '../homework/gradeAnswer.js';
 
+/** The bank's questions (plain objects the homework modules describe). */
+const QUESTIONS = /** @type {any[]} */ (BANK);
 const ENTITIES = { amp: '&', lt: '<', gt: '>', quot: '"', apos: "'", nbsp: '\u00a0' };
 
 /** The text of an HTML fragment: tags dropped (a <sub> kept as _ so the page can subscript it), entities read, spaces collapsed. */
@@ -26,7 +28,7 @@ export function plainText(html) {
 export function shortText(text, max = 220) {
   if (text.length <= max) return text;
   const cut = text.slice(0, max);
-  const end = Math.max(cut.lastIndexOf('. '), cut.lastIndexOf('? '), cut.lastIndexOf(': '));
+  const end = Math.max(cut.lastIndexOf('. '), cut.lastIndexOf('? '));
   return end > max / 3 ? cut.slice(0, end + 1) : `${cut.slice(0, cut.lastIndexOf(' ')).trimEnd()}…`;
 }
 

@@ -50,9 +50,12 @@ export function readPastedLink(text, panelId) {
   if (text.length > MAX_PASTED) return { ok: false, problems: [`The pasted text has ${text.length} characters, more than the ${MAX_PASTED} a link of a panel has.`] };
   const search = searchOf(text.trim());
   if (!search) return { ok: false, problems: ['This is neither a link nor key=value pairs.'] };
-  const pairs = [...search].slice(0, MAX_PAIRS);
+  /** @type {[string, string][]} */
+  const all = [];
+  search.forEach((value, key) => { all.push([key, value]); });
+  const pairs = all.slice(0, MAX_PAIRS);
   const problems = [];
-  if ([...search].length > MAX_PAIRS) problems.push(`The link has more than ${MAX_PAIRS} values; the first ${MAX_PAIRS} are read.`);
+  if (all.length > MAX_PAIRS) problems.push(`The link has more than ${MAX_PAIRS} values; the first ${MAX_PAIRS} are read.`);
 
   if (search.has('lecture')) return fromComposed(search.get('lecture') ?? '', panelId);
 
@@ -77,13 +80,13 @@ export function readPastedLink(text, panelId) {
   }
   const update = Object.fromEntries(own.map(([key, value]) => [source === 'lecture' ? key.slice(prefix.length) : key, value]));
   const { applied, rejected } = applyParams(schema, defaults(schema), update);
-  for (const r of rejected) problems.push(describeProblem(r));
+  for (const r of rejected) problems.push(describeProblem({ ...r, fallback: undefined }));
 
   let lock = [];
   let hide = [];
   if (source === 'embed') {
     const { options, problems: optionProblems } = readEmbedOptions(search);
-    for (const p of optionProblems) if (p.key !== 'parentOrigin') problems.push(describeProblem(p));
+    for (const p of optionProblems) if (p.key !== 'parentOrigin') problems.push(describeProblem({ ...p, fallback: undefined }));
     const keys = (names, what) => names.filter((name) => {
       if (Object.hasOwn(schema, name)) return true;
       problems.push(`${what}=${rawText(name)} is no control of this panel; ignored.`);

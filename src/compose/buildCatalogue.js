@@ -1,0 +1,51 @@
+// What can be added to the lecture: every panel by its title and what it shows (plain text), a
+// question from the homework bank, and a text item. Each "Add" keeps the focus, so a panel can be
+// added twice with two presses; the list says what was added.
+import { button, el } from '../ui/el.js';
+import { setSubscripted } from '../ui/subscripts.js';
+import { field, titledSection } from '../homework/page/formParts.js';
+import { panelCatalogue, questionCatalogue } from './catalogue.js';
+
+/** onAdd: { panel(id), question(id), text() }. */
+export function buildCatalogue(onAdd) {
+  const { section, heading } = titledSection('cp-catalogue', 'cp-catalogue-title', 'Add to the lecture');
+
+  const texts = el('div', 'cp-add-row');
+  const addText = button('Add a text (an agenda, references)');
+  addText.addEventListener('click', () => onAdd.text());
+  texts.append(addText);
+
+  const questionBox = el('div', 'cp-add-question');
+  const select = /** @type {HTMLSelectElement} */ (el('select'));
+  for (const group of questionCatalogue()) {
+    const optgroup = /** @type {HTMLOptGroupElement} */ (el('optgroup'));
+    optgroup.label = group.title;
+    for (const q of group.questions) optgroup.append(new Option(`${q.kind}: ${q.prompt.length > 110 ? `${q.prompt.slice(0, 110)}…` : q.prompt}`, q.id));
+    select.append(optgroup);
+  }
+  const addQuestion = button('Add the question');
+  addQuestion.addEventListener('click', () => onAdd.question(select.value));
+  questionBox.append(field('A question to the room, from the homework bank', select), addQuestion);
+
+  const panelsHeading = el('h3', 'cp-sub', 'Panels');
+  panelsHeading.id = 'cp-panels-title';
+  const panels = el('ul', 'cp-panels');
+  panels.setAttribute('aria-labelledby', panelsHeading.id);
+  for (const panel of panelCatalogue()) {
+    const row = el('li', 'cp-panel');
+    const name = el('h4', 'cp-panel-title');
+    name.id = `cp-panel-${panel.id}`;
+    setSubscripted(name, panel.title);
+    const lede = el('p', 'cp-panel-lede');
+    setSubscripted(lede, panel.lede);
+    const add = button('Add');
+    add.dataset.panel = panel.id;
+    add.setAttribute('aria-describedby', name.id);
+    add.setAttribute('aria-label', `Add “${panel.title}”`);
+    add.addEventListener('click', () => onAdd.panel(panel.id));
+    row.append(name, lede, add);
+    panels.append(row);
+  }
+  section.append(heading, texts, questionBox, panelsHeading, panels);
+  return section;
+}

@@ -1,0 +1,96 @@
+// The fields of one item: a panel's heading, text and start (buildPanelStart.js), a text item's
+// heading and text, a question's choice from the bank and its seed. The lecturer's text is the
+// lecture's small Markdown, shown beside the field as the lecture page will show it
+// (lectureTextFragment: elements and text nodes only, math by KaTeX).
+import { el } from '../ui/el.js';
+import { setSubscripted } from '../ui/subscripts.js';
+import { field } from '../homework/page/formParts.js';
+import { lectureTextFragment } from '../lecture/lectureTextDom.js';
+import { LECTURE_CAPS } from '../lecture/readLecture.js';
+import { panelEntry } from '../panels/manifest.js';
+import { questionCatalogue, questionPrompt } from './catalogue.js';
+import { buildPanelStart } from './buildPanelStart.js';
+
+const TEXT_HINT = 'Markdown: a blank line between paragraphs, *emphasis*, **strong**, - lists, [a link](https://…), $n_1 \\sin θ_1$ and $$display math$$.';
+
+function textInput(value, max, placeholder) {
+  const input = /** @type {HTMLInputElement} */ (el('input'));
+  input.type = 'text';
+  input.value = value;
+  input.maxLength = max;
+  if (placeholder) input.placeholder = placeholder;
+  return input;
+}
+
+/** A Markdown field and its preview, kept in step as the lecturer types. */
+function markdownField(item, patch, placeholder) {
+  const area = /** @type {HTMLTextAreaElement} */ (el('textarea', 'cp-markdown'));
+  area.value = item.text;
+  area.rows = 4;
+  area.maxLength = LECTURE_CAPS.text;
+  if (placeholder) area.placeholder = placeholder;
+  const hint = el('span', 'cp-hint', TEXT_HINT);
+  hint.id = `cp-hint-${item.key}`;
+  area.setAttribute('aria-describedby', hint.id);
+  const preview = el('div', 'cp-preview lecture-text');
+  preview.setAttribute('aria-label', 'Preview of the text');
+  preview.setAttribute('role', 'region');
+  let timer = 0;
+  const show = () => {
+    preview.replaceChildren(area.value.trim() ? lectureTextFragment(area.value) : el('p', 'cp-muted', placeholder || 'No text.'));
+  };
+  area.addEventListener('input', () => {
+    patch({ text: area.value });
+    clearTimeout(timer);
+    timer = setTimeout(show, 150);
+  });
+  show();
+  const box = el('div', 'cp-text-box');
+  box.append(field('Text', area), hint, preview);
+  return box;
+}
+
+function headingField(item, patch, placeholder) {
+  const heading = textInput(item.heading, LECTURE_CAPS.heading, placeholder);
+  heading.addEventListener('input', () => patch({ heading: heading.value }));
+  return field('Heading', heading);
+}
+
+function questionFields(item, patch) {
+  const select = /** @type {HTMLSelectElement} */ (el('select'));
+  for (const group of questionCatalogue()) {
+    const optgroup = /** @type {HTMLOptGroupElement} */ (el('optgroup'));
+    optgroup.label = group.title;
+    for (const q of group.questions) optgroup.append(new Option(`${q.kind}: ${q.prompt.length > 110 ? `${q.prompt.slice(0, 110)}…` : q.prompt}`, q.id));
+    select.append(optgroup);
+  }
+  select.value = item.question;
+  const seed = textInput(item.seed, LECTURE_CAPS.seed, 'empty: the example numbers');
+  const prompt = el('p', 'cp-prompt');
+  prompt.setAttribute('aria-live', 'polite');
+  const where = el('p', 'cp-muted');
+  const show = () => {
+    setSubscripted(prompt, questionPrompt(select.value, seed.value));
+    const { panel } = questionCatalogue().flatMap((g) => g.questions.map((q) => ({ ...q, panel: g.panel }))).find((q) => q.id === select.value) ?? {};
+    where.textContent = panel ? `On the panel “${panelEntry(panel).title}”; the room predicts or answers, then you reveal.` : '';
+  };
+  select.addEventListener('change', () => { patch({ question: select.value }); show(); });
+  seed.addEventListener('input', () => { patch({ seed: seed.value }); show(); });
+  show();
+  return [field('Question', select), field('Seed (the numbers the room gets)', seed), prompt, where];
+}
+
+/** The editor of one item. patch(fields): the item's fields changed. */
+export function buildItemEditor(item, { patch }) {
+  const box = el('div', 'cp-item-body');
+  if (item.type === 'panel') {
+    const entry = panelEntry(item.panel);
+    box.append(headingField(item, patch, `the panel’s own: ${entry?.title ?? item.panel}`),
+      markdownField(item, patch, 'the panel’s own paragraph'), buildPanelStart(item, { patch }));
+  } else if (item.type === 'question') {
+    box.append(...questionFields(item, patch), headingField(item, patch, 'optional'), markdownField(item, patch, 'optional: what you say before asking'));
+  } else {
+    box.append(headingField(item, patch, 'optional, e.g. Agenda'), markdownField(item, patch, ''));
+  }
+  return box;
+}

@@ -1,0 +1,184 @@
+// Where a panel item starts and what the room may change in it: a start state from a pasted link
+// (pastedLink.js) or from the panel's current view in a preview beside the fields (the embed page
+// in a frame, asked for its state through the message API: fresnel-lab:get → fresnel-lab:state),
+// and each control free, locked or hidden, as the embed options have them. Values from the frame
+// are checked by the panel's schema like any message.
+import { button, el } from '../ui/el.js';
+import { setSubscripted } from '../ui/subscripts.js';
+import { fixed } from '../ui/format.js';
+import { field } from '../homework/page/formParts.js';
+import { applyParams, defaults, describeProblem, formatValue, optionLabel, writeParams } from '../host/params.js';
+import { loadTheme } from '../ui/theme.js';
+import { panelEntry } from '../panels/manifest.js';
+import { panelSchema } from '../panels/panelSchema.js';
+import { readPastedLink } from './pastedLink.js';
+
+const ANSWER_MS = 5000;
+const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
+
+/** A value as the panel's controls would show it (numbers through ui/format.js, to the link's decimals). */
+export function shownValue(spec, value) {
+  if (spec.type === 'number') return fixed(value, formatValue(spec, value).split('.')[1]?.length ?? 0);
+  if (spec.type === 'enum') return optionLabel(spec, value);
+  if (spec.type === 'boolean') return value ? 'on' : 'off';
+  if (spec.type === 'text') return `a text of ${fixed(String(value).length, 0)} characters`;
+  return String(value);
+}
+
+/** Only the values that differ from the panel's defaults (the lecture stores no others). */
+function changedValues(schema, values) {
+  const start = defaults(schema);
+  return Object.fromEntries(Object.entries(values).filter(([key, value]) => !Object.is(value, start[key])));
+}
+
+/** The embed page's address for an item: its state, locks and hidden controls, this page's theme. */
+function embedAddress(item) {
+  const url = new URL('./embed.html', window.location.href);
+  url.searchParams.set('panel', item.panel);
+  writeParams(panelSchema(item.panel), { ...defaults(panelSchema(item.panel)), ...item.state }, url.searchParams);
+  if (item.lock.length) url.searchParams.set('lock', item.lock.join(','));
+  if (item.hide.length) url.searchParams.set('hide', item.hide.join(','));
+  url.searchParams.set('theme', loadTheme().scheme);
+  return url.toString();
+}
+
+export function buildPanelStart(initial, { patch }) {
+  const item = { ...initial, state: { ...initial.state }, lock: [...initial.lock], hide: [...initial.hide] };
+  const schema = panelSchema(item.panel) ?? {};
+  const title = panelEntry(item.panel)?.title ?? item.panel;
+  const box = el('div', 'cp-start');
+  const summary = el('p', 'cp-start-summary');
+  const result = el('div', 'cp-start-result');
+  result.setAttribute('role', 'status');
+
+  const say = (lines, kind = 'ok') => result.replaceChildren(...lines.map((line) => el('p', kind === 'ok' ? 'cp-ok' : 'cp-problem', line)));
+  const showSummary = () => {
+    const keys = Object.keys(item.state);
+    summary.replaceChildren();
+    if (!keys.length) summary.textContent = 'Starts from the panel’s defaults.';
+    else {
+      summary.append('Starts from: ');
+      keys.forEach((key, i) => {
+        const part = el('span', 'cp-value');
+        setSubscripted(part, `${schema[key]?.label ?? key} = ${schema[key] ? shownValue(schema[key], item.state[key]) : ''}`);
+        summary.append(part, i < keys.length - 1 ? '; ' : '.');
+      });
+    }
+  };
+  const setStart = (state, extra = {}) => {
+    item.state = changedValues(schema, state);
+    Object.assign(item, extra);
+    patch({ state: { ...item.state }, ...extra });
+    showSummary();
+    refreshControls();
+    if (frame) frame.src = embedAddress(item);
+  };
+
+  // A pasted link.
+  const paste = /** @type {HTMLInputElement} */ (el('input'));
+  paste.type = 'text';
+  paste.placeholder = 'https://…/embed.html?panel=… or the lecture page’s link of the panel';
+  const use = button('Use the link');
+  const useLink = () => {
+    const read = readPastedLink(paste.value, item.panel);
+    if (!read.ok) return say(read.problems, 'problem');
+    const locks = read.source === 'embed' || read.source === 'composed' ? { lock: read.lock, hide: read.hide } : {};
+    setStart(read.state, locks);
+    const taken = Object.keys(item.state).length;
+    say([`Taken from the link: ${taken ? `${fixed(taken, 0)} value${taken === 1 ? '' : 's'}` : 'the defaults'}${locks.lock ? ', and its locked and hidden controls' : ''}.`]);
+    if (read.problems.length) result.append(...read.problems.map((p) => el('p', 'cp-problem', `Refused: ${p}`)));
+  };
+  use.addEventListener('click', useLink);
+  paste.addEventListener('keydown', (event) => { if (event.key === 'Enter') { event.preventDefault(); useLink(); } });
+  const reset = button('Back to the defaults');
+  reset.addEventListener('click', () => { setStart({}); say(['The panel starts from its defaults.']); });
+  const pasteRow = el('div', 'cp-row');
+  pasteRow.append(field(`Start state: paste a link copied from “${title}”`, paste), use, reset);
+
+  // The preview, and its current view.
+  let frame = null;
+  let pending = null;
+  const preview = el('div', 'cp-preview-frame');
+  const toggle = button('Show the panel');
+  toggle.setAttribute('aria-expanded', 'false');
+  const take = button('Take the panel’s current view');
+  take.disabled = true;
+  const onMessage = (event) => {
+    if (!frame || event.source !== frame.contentWindow || event.origin !== window.location.origin || !isObject(event.data)) return;
+    const { type } = event.data;
+    if (type === 'fresnel-lab:ready') take.disabled = false;
+    else if (type === 'fresnel-lab:size' && Number.isFinite(event.data.height)) {
+      frame.style.height = `${Math.min(2400, Math.max(200, Math.ceil(event.data.height) + 2))}px`;
+    } else if (type === 'fresnel-lab:state' && pending && event.data.panel === item.panel) {
+      clearTimeout(pending);
+      pending = null;
+      const params = isObject(event.data.params) ? event.data.params : {};
+      const { applied, rejected } = applyParams(schema, defaults(schema), params);
+      setStart(applied);
+      say([`Taken from the panel: ${Object.keys(item.state).length ? 'its current view' : 'its defaults (nothing was changed)'}.`,
+        ...rejected.map((r) => `Refused: ${describeProblem({ ...r, fallback: undefined })}`)]);
+    }
+  };
+  toggle.addEventListener('click', () => {
+    if (frame) {
+      frame.remove();
+      frame = null;
+      window.removeEventListener('message', onMessage);
+      take.disabled = true;
+      toggle.textContent = 'Show the panel';
+      toggle.setAttribute('aria-expanded', 'false');
+      return;
+    }
+    frame = /** @type {HTMLIFrameElement} */ (el('iframe', 'cp-frame'));
+    frame.title = `Preview: ${title}`;
+    frame.allow = 'fullscreen; clipboard-write';
+    frame.src = embedAddress(item);
+    window.addEventListener('message', onMessage);
+    preview.append(frame);
+    toggle.textContent = 'Hide the panel';
+    toggle.setAttribute('aria-expanded', 'true');
+  });
+  take.addEventListener('click', () => {
+    if (!frame?.contentWindow) return;
+    clearTimeout(pending);
+    pending = setTimeout(() => { pending = null; say(['The panel did not answer: is it still loading?'], 'problem'); }, ANSWER_MS);
+    frame.contentWindow.postMessage({ type: 'fresnel-lab:get' }, window.location.origin);
+  });
+  const previewRow = el('div', 'cp-row');
+  previewRow.append(toggle, take);
+
+  // Each control: free, locked (shown, fixed) or hidden.
+  const controls = el('details', 'cp-controls');
+  const legend = el('summary', null, 'Controls the room may change');
+  const grid = el('div', 'cp-control-grid');
+  controls.append(legend, grid);
+  const selects = new Map();
+  for (const [key, spec] of Object.entries(schema)) {
+    const select = /** @type {HTMLSelectElement} */ (el('select'));
+    for (const [value, text] of [['free', 'free'], ['lock', 'locked (shown, fixed)'], ['hide', 'hidden']]) select.add(new Option(text, value));
+    const label = el('label', 'cp-control');
+    const name = el('span');
+    setSubscripted(name, spec.label ?? key);
+    label.append(name, select);
+    grid.append(label);
+    selects.set(key, select);
+    select.addEventListener('change', () => {
+      item.lock = item.lock.filter((k) => k !== key);
+      item.hide = item.hide.filter((k) => k !== key);
+      if (select.value === 'lock') item.lock.push(key);
+      if (select.value === 'hide') item.hide.push(key);
+      patch({ lock: [...item.lock], hide: [...item.hide] });
+      refreshControls();
+      if (frame) frame.src = embedAddress(item);
+    });
+  }
+  function refreshControls() {
+    for (const [key, select] of selects) select.value = item.hide.includes(key) ? 'hide' : item.lock.includes(key) ? 'lock' : 'free';
+    const n = item.lock.length + item.hide.length;
+    legend.textContent = `Controls the room may change${n ? ` (${fixed(item.lock.length, 0)} locked, ${fixed(item.hide.length, 0)} hidden)` : ''}`;
+  }
+  showSummary();
+  refreshControls();
+  box.append(summary, pasteRow, result, previewRow, preview, controls);
+  return box;
+}
