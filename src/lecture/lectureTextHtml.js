@@ -1,0 +1,67 @@
+// The lecturer's text as HTML text, for files the lab writes (the reveal.js deck): the node tree
+// of lectureText.js serialised with every text and attribute escaped, so no markup from a lecture
+// reaches the file; only the tree's own tags are written, and links are those lectureText.js let
+// through (http:, https:, mailto:). Math is typeset by KaTeX as MathML (output: 'mathml'), which
+// browsers draw with their own fonts: a file carried on a stick then needs neither KaTeX's CSS nor
+// its fonts. KaTeX escapes the TeX it quotes, and with trust off (its default) it refuses \href,
+// \url and \html… commands; a formula it cannot read is shown as its source, in red.
+import katex from 'katex';
+import { lectureTextTree } from './lectureText.js';
+
+const ENTITIES = { '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' };
+
+/** Text for an element's content or a quoted attribute value: & < > " ' written as entities. */
+export function escapeHtml(text) {
+  return String(text).replace(/[&<>"']/g, (c) => ENTITIES[c]);
+}
+
+// The lecture's notation, as ui/subscripts.js writes it on the page: n_t is n with a subscript t.
+const SUBSCRIPT = /([A-Za-zθλv])_([A-Za-z0-9]+)/g;
+
+/** Plain text (a question's prompt, a panel's title) as HTML, escaped, with x_y written as x<sub>y</sub>. */
+export function subscriptedHtml(text) {
+  let html = '';
+  let last = 0;
+  for (const match of String(text).matchAll(SUBSCRIPT)) {
+    html += `${escapeHtml(text.slice(last, match.index + match[1].length))}<sub>${escapeHtml(match[2])}</sub>`;
+    last = match.index + match[0].length;
+  }
+  return html + escapeHtml(String(text).slice(last));
+}
+
+/** TeX as MathML in KaTeX's wrapper; never throws. */
+export function mathHtml(tex, display) {
+  try {
+    return katex.renderToString(tex, { displayMode: display, output: 'mathml', throwOnError: false, trust: false, strict: 'ignore' });
+  } catch {
+    return `<code>${escapeHtml(tex)}</code>`; // KaTeX's own limits (maxExpand) throw even without throwOnError
+  }
+}
+
+/** One node of the tree (lectureText.js's TextNode) as HTML. */
+function nodeHtml(node) {
+  if ('text' in node) return escapeHtml(node.text);
+  if ('math' in node) {
+    const tag = node.display ? 'div' : 'span';
+    return `<${tag} class="${node.display ? 'lecture-math-display' : 'lecture-math'}">${mathHtml(node.math, node.display)}</${tag}>`;
+  }
+  const inner = node.children.map(nodeHtml).join('');
+  switch (node.tag) {
+    case 'br':
+      return '<br>';
+    case 'a':
+      // Opened in a new tab without the opener, as on the lecture page (lectureTextDom.js).
+      return `<a href="${escapeHtml(node.href)}" target="_blank" rel="noopener noreferrer">${inner}</a>`;
+    case 'ol':
+      return node.start ? `<ol start="${Number(node.start)}">${inner}</ol>` : `<ol>${inner}</ol>`;
+    case 'p': case 'ul': case 'li': case 'em': case 'strong': case 'code':
+      return `<${node.tag}>${inner}</${node.tag}>`;
+    default:
+      return inner; // no other tag is ever in the tree; were one there, its text alone would be kept
+  }
+}
+
+/** The lecturer's Markdown (lectureText.js's subset) as HTML text. Never throws on any string. */
+export function lectureTextHtml(source) {
+  return lectureTextTree(source).map(nodeHtml).join('');
+}

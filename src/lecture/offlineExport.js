@@ -1,0 +1,71 @@
+// A composed lecture as one file that opens from disk: the single-file lecture page that the build
+// writes (dist/offline/index.html, scripts/buildOffline.js) with the lecture in it as a data element,
+//   <script type="application/json" id="fresnel-lab-lecture">…</script>,
+// which the lecture page reads when its link has no ?lecture= (the contract of issue 28).
+// The JSON has every < written as \u003c (the same string to JSON.parse), so no text of the lecture
+// can close the element or open a comment in it. The page's Content-Security-Policy meta needs no
+// change: a script of type application/json is data, never run, so script-src does not govern it
+// (and inlineTexts in scripts/contentSecurityPolicy.js leaves such blocks out of the hashes);
+// reading its text is no fetch. Nothing else in the page depends on the lecture, but its <title>,
+// which is set to the lecture's so the file's tab is named before any script runs.
+import { readLecture } from './readLecture.js';
+import { escapeHtml } from './lectureTextHtml.js';
+
+export const LECTURE_ELEMENT_ID = 'fresnel-lab-lecture';
+
+/** The lecture's JSON as the text of a data element: every < as \u003c. */
+export function lectureDataJson(lecture) {
+  return JSON.stringify(lecture).replace(/</g, '\\u003c');
+}
+
+/**
+ * The page's script elements in order, as [start, end, openTag]: under the HTML rules a script's
+ * text ends at the first </script, which the built page's inlined bundles keep to.
+ */
+function scriptElements(html) {
+  const found = [];
+  const open = /<script\b[^>]*>/gi;
+  let match;
+  while ((match = open.exec(html))) {
+    const close = html.slice(open.lastIndex).search(/<\/script\s*>/i);
+    if (close < 0) break;
+    const end = open.lastIndex + close + html.slice(open.lastIndex + close).indexOf('>') + 1;
+    found.push([match.index, end, match[0]]);
+    open.lastIndex = end;
+  }
+  return found;
+}
+
+const isLectureElement = (openTag) => new RegExp(`\\sid\\s*=\\s*["']?${LECTURE_ELEMENT_ID}["'\\s>]`, 'i').test(openTag);
+
+/**
+ * The offline lecture page (the text of dist/offline/index.html) holding `lecture`: read by
+ * readLecture first (what the page would refuse is not written; a lecture with nothing usable
+ * throws), its data element placed before the page's first script, any such element already there
+ * replaced. Pure: the page's text in, the new text out.
+ * @param {string} offlineIndexHtml
+ * @param {unknown} lecture
+ * @returns {string}
+ */
+export function offlineLectureHtml(offlineIndexHtml, lecture) {
+  if (typeof offlineIndexHtml !== 'string' || !/<head[\s>]/i.test(offlineIndexHtml)) throw new TypeError('The offline lecture page is not an HTML page.');
+  const read = readLecture(lecture);
+  if (!read.ok) throw new TypeError(`This is no lecture: ${read.problems.join(' ')}`);
+  let html = offlineIndexHtml;
+  for (const [start, end, openTag] of scriptElements(html).reverse()) {
+    if (isLectureElement(openTag)) html = html.slice(0, start).replace(/[ \t]*$/, '') + html.slice(end).replace(/^\r?\n/, '');
+  }
+  const element = `<script type="application/json" id="${LECTURE_ELEMENT_ID}">${lectureDataJson(read.lecture)}</script>`;
+  const first = scriptElements(html)[0];
+  const head = html.search(/<\/head\s*>/i);
+  const at = first && (head < 0 || first[0] < head) ? first[0] : head;
+  if (at < 0) throw new TypeError('The offline lecture page has no <head> to hold the lecture.');
+  const indent = /[ \t]*$/.exec(html.slice(0, at))[0];
+  html = `${html.slice(0, at)}${element}\n${indent}${html.slice(at)}`;
+  // The first <title> is the page's own (it comes before any script); the lecture's title, escaped.
+  const title = /<title>[^<]*<\/title>/i.exec(html);
+  if (title && (!first || title.index < first[0])) {
+    html = `${html.slice(0, title.index)}<title>${escapeHtml(read.lecture.title)}</title>${html.slice(title.index + title[0].length)}`;
+  }
+  return html;
+}
