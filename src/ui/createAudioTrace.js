@@ -4,6 +4,7 @@
 // one switch for the page (the A key, the button under any plot, ?audio=1, or a message), so a
 // student who turned it on hears every plot.
 import { el, button } from './el.js';
+import { angle } from './format.js';
 import { cuesBetween, inTir, pitchHz, stepCursor, sweepPlan, traceReadout } from './audioTraceMath.js';
 import { createTraceSound } from './traceSound.js';
 
@@ -64,7 +65,8 @@ let ids = 0;
  * drawn on it); curves(): [{ label, at(deg) }] with the panel's values now, each computed
  * exactly; landmarks(): { brewster, critical } in degrees (null where there is none).
  * @param {HTMLElement} plotHost
- * @param {{ plot: { setCursor: (deg: number | null, label?: string) => void }, curves: () => { label: string, at: (deg: number) => number }[],
+ * @param {{ plot: { setCursor: (deg: number | null, label?: string) => void },
+ *   curves: () => { label: string, at: (deg: number) => number }[],
  *   landmarks: () => import('./audioTraceMath.js').Landmarks }} options
  */
 export function createAudioTrace(plotHost, { plot, curves, landmarks }) {
@@ -90,7 +92,9 @@ export function createAudioTrace(plotHost, { plot, curves, landmarks }) {
   const readout = el('p', 'trace-readout');
   readout.setAttribute('role', 'status');
   readout.setAttribute('aria-live', 'polite');
-  const help = el('p', 'trace-help', 'Pitch follows the curve: high is R near 1. Arrows move θ by 1° (with Shift 0.1°), Page keys by 10°, Home and End to 0° and 90°; Space or Enter plays 0° to 90°. Two high blips: the Brewster angle. A falling knock: the critical angle. A buzz: total internal reflection.');
+  const help = el('p', 'trace-help', 'Pitch follows the curve: high is R near 1. Arrows move θ by 1° (with Shift 0.1°), '
+    + 'Page keys by 10°, Home and End to 0° and 90°; Space or Enter plays 0° to 90°. Two high blips: the Brewster angle. '
+    + 'A falling knock: the critical angle. A buzz: total internal reflection.');
   body.append(curveLabel, cursorLabel, cursor, sweepButton, readout, help);
   root.append(toggle, keyHint, body);
   plotHost.after(root);
@@ -113,10 +117,10 @@ export function createAudioTrace(plotHost, { plot, curves, landmarks }) {
     const curve = traced();
     const value = curve.at(deg);
     cursor.setAttribute('aria-valuenow', String(deg));
-    cursor.setAttribute('aria-valuetext', `${deg.toFixed(1)}°`);
-    cursor.textContent = `${deg.toFixed(1)}°`;
+    cursor.setAttribute('aria-valuetext', angle(deg, 1));
+    cursor.textContent = angle(deg, 1);
     readout.textContent = traceReadout(deg, [{ label: curve.label, value }], { ...landmarks(), cues });
-    plot.setCursor(on ? deg : null, `Trace θ ${deg.toFixed(1)}°`);
+    plot.setCursor(on ? deg : null, `Trace θ ${angle(deg, 1)}`);
     return value;
   }
 
@@ -131,7 +135,8 @@ export function createAudioTrace(plotHost, { plot, curves, landmarks }) {
   function sweep() {
     const plan = sweepPlan(traced().at, landmarks());
     sharedSound().sweep(plan);
-    readout.textContent = `Playing ${traced().label} from 0° to 90° in ${plan.seconds} s${plan.cues.length ? `; ${plan.cues.map((c) => `${c.kind === 'brewster' ? 'Brewster' : 'critical'} angle at ${c.deg.toFixed(2)}°`).join(', ')}` : ''}.`;
+    const cues = plan.cues.map((c) => `${c.kind === 'brewster' ? 'Brewster' : 'critical'} angle at ${angle(c.deg)}`);
+    readout.textContent = `Playing ${traced().label} from 0° to 90° in ${plan.seconds} s${cues.length ? `; ${cues.join(', ')}` : ''}.`;
   }
 
   function apply() {

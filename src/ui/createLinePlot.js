@@ -5,7 +5,7 @@ import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
 import { cssVar, lineScale } from './theme.js';
 import { quietestSpot } from './quietestSpot.js';
-import { tickDecimals } from './format.js';
+import { fixed, tickLabel } from './format.js';
 
 /** Colours may name a CSS custom property ('--c-exact') so they follow the theme. */
 export function resolveColor(color) {
@@ -52,20 +52,22 @@ function textWidth(u, text) {
 }
 
 function fmt(v, digits) {
-  return v == null || Number.isNaN(v) ? '–' : v.toFixed(digits);
+  return v == null || Number.isNaN(v) ? '–' : fixed(v, digits);
 }
 
 /**
- * options: xLabel, xShort (the x title on a narrow plot; else compactLabel(xLabel)), yLabel, xRange ([min, max] or null), yRange ([min, max] or null for auto),
- * xUnit ('°' or ''), xStep (ticks on multiples of it only, e.g. 1 for whole levels), series
- * [{ label, stroke, width, dash }], height, digits (legend decimals).
+ * options: xLabel, xShort (the x title on a narrow plot; else compactLabel(xLabel)), yLabel,
+ * xRange ([min, max] or null), yRange ([min, max] or null for auto), xUnit ('°' or ''), xStep (ticks
+ * on multiples of it only, e.g. 1 for whole levels), series [{ label, stroke, width, dash }], height,
+ * digits (legend decimals).
  * Markers set with setMarks([{ x, color, label, short, shadeTo }]) are drawn over the curves (short:
  * the label where the plot is too narrow for it), and the
  * audio trace's cursor with setCursor(x, label).
  */
 export function createLinePlot(container, options) {
   const {
-    xLabel, xShort = compactLabel(xLabel), yLabel, xRange = [0, 90], yRange = [0, 1], xUnit = '°', xStep = null, series, height = 320, digits = 4,
+    xLabel, xShort = compactLabel(xLabel), yLabel, xRange = [0, 90], yRange = [0, 1], xUnit = '°', xStep = null,
+    series, height = 320, digits = 4,
   } = options;
   let data = [[], ...series.map(() => [])];
   let marks = [];
@@ -80,7 +82,7 @@ export function createLinePlot(container, options) {
     labelFont: `bold ${Math.round(16 * lineScale())}px system-ui, sans-serif`,
     grid: { stroke: () => cssVar('--grid'), width: 1 },
     ticks: { stroke: () => cssVar('--grid') },
-    values: (_u, ticks, _axis, _space, incr) => ticks.map((t) => `${+t.toFixed(tickDecimals(incr))}${unit}`),
+    values: (_u, ticks, _axis, _space, incr) => ticks.map((t) => `${tickLabel(t, incr)}${unit}`),
     // Room for the tick labels, which grow with the type in projector mode: their width (y axis)
     // grows in full, and more where the labels are long (0.0008), so they never reach the axis
     // title; the height of a line of text (x axis) grows less.
@@ -99,7 +101,7 @@ export function createLinePlot(container, options) {
       scales: { x: { time: false, range: xRange ?? undefined }, y: { range: yRange ?? undefined } },
       axes: [{ ...axis(xLabel, xUnit), ...(xStep ? { incrs: [1, 2, 5, 10].map((k) => k * xStep) } : {}) }, axis(yLabel, '', true)],
       series: [
-        { label: (options.xShort ?? xLabel).split(',')[0], value: (_u, v) => (v == null ? '–' : `${v.toFixed(2)}${xUnit}`) },
+        { label: (options.xShort ?? xLabel).split(',')[0], value: (_u, v) => (v == null ? '–' : `${fixed(v, 2)}${xUnit}`) },
         ...series.map((s) => ({
           label: s.label, stroke: resolveColor(s.stroke), dash: s.dash, width: (s.width ?? 2.5) * scale,
           value: (_u, v) => fmt(v, digits), points: { show: false },
@@ -192,7 +194,9 @@ function curvePixels(u, spacing) {
       const p = [xs[j], u.valToPos(y, 'y', true)];
       if (last) {
         const steps = Math.ceil(Math.hypot(p[0] - last[0], p[1] - last[1]) / spacing);
-        for (let k = 1; k < steps; k += 1) points.push([last[0] + ((p[0] - last[0]) * k) / steps, last[1] + ((p[1] - last[1]) * k) / steps]);
+        for (let k = 1; k < steps; k += 1) {
+          points.push([last[0] + ((p[0] - last[0]) * k) / steps, last[1] + ((p[1] - last[1]) * k) / steps]);
+        }
       }
       points.push(p);
       last = p;
@@ -220,7 +224,8 @@ function drawMarks(u, marks) {
   const points = curvePixels(u, 3 * ratio);
   const labelH = (19 * lineScale() + 2) * ratio;
   const step = 12 * ratio;
-  const tops = Array.from({ length: Math.max(1, Math.floor((height - labelH - 12 * ratio) / step) + 1) }, (_, i) => top + 4 * ratio + i * step);
+  const rows = Math.max(1, Math.floor((height - labelH - 12 * ratio) / step) + 1);
+  const tops = Array.from({ length: rows }, (_, i) => top + 4 * ratio + i * step);
   const taken = [];
   // Every line first, then the labels over them, so no line runs through another mark's name.
   ctx.lineWidth = 2 * ratio * lineScale();

@@ -21,7 +21,8 @@ export function angle(deg, digits = 2) {
 }
 
 /** A piece of a file name: lower-case letters, digits and dashes (accents dropped). */
-export const fileSlug = (text) => String(text).toLowerCase().normalize('NFKD').replace(/[^a-z0-9]+/g, '-').replace(/^-|-$/g, '').slice(0, 40) || 'sheet';
+export const fileSlug = (text) => String(text).toLowerCase().normalize('NFKD')
+  .replace(/[^a-z0-9]+/g, '-').replace(/^-|-$/g, '').slice(0, 40) || 'sheet';
 
 /**
  * Decimals that tell ticks `incr` apart: as many as the step itself has (0.25 → 2, 2e-4 → 4).
@@ -32,4 +33,9 @@ export function tickDecimals(incr) {
   let k = 0;
   while (k < 12 && Math.abs(+incr.toFixed(k) - incr) > incr * 1e-6) k += 1;
   return k;
+}
+
+/** A tick label on an axis of step `incr`: the decimals the step needs, trailing zeros dropped (0.5, 1, 1.5), real minus sign. */
+export function tickLabel(value, incr) {
+  return String(+value.toFixed(tickDecimals(incr))).replaceAll('-', MINUS);
 }

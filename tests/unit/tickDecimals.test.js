@@ -1,5 +1,5 @@
 import { describe, it, expect } from 'vitest';
-import { tickDecimals } from '../../src/ui/format.js';
+import { tickDecimals, tickLabel } from '../../src/ui/format.js';
 
 describe('tickDecimals', () => {
   it('gives as many decimals as the tick step has', () => {
@@ -21,5 +21,14 @@ describe('tickDecimals', () => {
   it('reads a step with rounding noise as the step it means', () => {
     expect(tickDecimals(0.1 + 0.2 - 0.2)).toBe(1);
     expect(tickDecimals(0)).toBe(0);
+  });
+});
+
+describe('tickLabel', () => {
+  it('drops the zeros a step does not need and writes a real minus sign', () => {
+    expect([0, 0.5, 1, 1.5].map((t) => tickLabel(t, 0.5))).toEqual(['0', '0.5', '1', '1.5']);
+    expect(tickLabel(-0.0004, 0.0002)).toBe('\u22120.0004');
+    expect(tickLabel(0.1 + 0.2, 0.1)).toBe('0.3');
+    expect(tickLabel(-1e-9, 0.25)).toBe('0');
   });
 });
