@@ -11,6 +11,7 @@ import { EMBED_KEYS, readEmbedOptions } from '../host/readEmbedOptions.js';
 import { lecturePrefix, panelEntry } from '../panels/manifest.js';
 import { panelSchema } from '../panels/panelSchema.js';
 import { lectureFromCode } from '../lecture/lectureLink.js';
+import { itemKeys } from '../lecture/openLecture.js';
 
 export const MAX_PASTED = 120_000; // characters: a shader lab link with its code is a few kilobytes
 const MAX_PAIRS = 200;
@@ -57,7 +58,8 @@ export function readPastedLink(text, panelId) {
   const problems = [];
   if (all.length > MAX_PAIRS) problems.push(`The link has more than ${MAX_PAIRS} values; the first ${MAX_PAIRS} are read.`);
 
-  if (search.has('lecture')) return fromComposed(search.get('lecture') ?? '', panelId);
+  const hash = /#([A-Za-z0-9-]+)\s*$/.exec(text.trim())?.[1];
+  if (search.has('lecture')) return fromComposed(search.get('lecture') ?? '', panelId, hash, pairs, problems);
 
   const embedPanel = search.get('panel');
   if (embedPanel !== null && embedPanel !== panelId) {
@@ -67,7 +69,6 @@ export function readPastedLink(text, panelId) {
   // A link without panel= is the lecture page's (its #hash names the panel it was copied from).
   const isLink = /^[a-z][a-z0-9+.-]*:|\?|<iframe/i.test(text.trim());
   const source = embedPanel !== null ? 'embed' : isLink ? 'lecture' : 'pairs';
-  const hash = /#([a-z0-9-]+)\s*$/.exec(text.trim())?.[1];
   if (source === 'lecture' && hash && hash !== panelId && panelEntry(hash)) {
     return { ok: false, problems: [`This link is for “${titleOf(hash)}”, not “${titleOf(panelId)}”.`] };
   }
@@ -98,11 +99,32 @@ export function readPastedLink(text, panelId) {
   return { ok: true, state: applied, lock, hide, problems, source };
 }
 
-/** The first item of this panel in a composed lecture's link. */
-function fromComposed(code, panelId) {
+/**
+ * A panel of a composed lecture's link: the item its #hash names (else the lecture's first of this
+ * panel), started where the lecture starts it, with the values the link carries under that item's
+ * prefix (the lecture page's keys, openLecture.js's itemKeys) on top.
+ */
+function fromComposed(code, panelId, hash, pairs, problems) {
   const read = lectureFromCode(code);
   if (!read.ok) return { ok: false, problems: read.problems };
-  const item = read.lecture.items.find((i) => i.type === 'panel' && i.panel === panelId);
-  if (!item) return { ok: false, problems: [`This lecture has no “${titleOf(panelId)}” panel.`] };
-  return { ok: true, state: { ...item.state }, lock: [...(item.lock ?? [])], hide: [...(item.hide ?? [])], problems: read.problems, source: 'composed' };
+  const items = read.lecture.items;
+  const keys = itemKeys(items, lecturePrefix);
+  let at = hash ? keys.findIndex((k) => k.key === hash) : -1;
+  if (at >= 0 && (items[at].type !== 'panel' || items[at].panel !== panelId)) {
+    const other = items[at].type === 'panel' ? `“${titleOf(items[at].panel)}”` : `a ${items[at].type} item`;
+    return { ok: false, problems: [`This link is for ${other} of the lecture, not “${titleOf(panelId)}”.`] };
+  }
+  if (at < 0) at = items.findIndex((i) => i.type === 'panel' && i.panel === panelId);
+  if (at < 0) return { ok: false, problems: [`This lecture has no “${titleOf(panelId)}” panel.`] };
+  const item = items[at];
+  const schema = panelSchema(panelId) ?? {};
+  const { prefix } = keys[at];
+  const own = pairs.filter(([key]) => key !== 'lecture' && (prefix ? key.startsWith(prefix) : !key.includes('.')));
+  const update = Object.fromEntries(own.map(([key, value]) => [key.slice((prefix ?? '').length), value]));
+  const { applied, rejected } = applyParams(schema, { ...defaults(schema), ...item.state }, update);
+  for (const r of rejected) problems.push(describeProblem({ ...r, fallback: undefined }));
+  return {
+    ok: true, state: { ...item.state, ...applied }, lock: [...(item.lock ?? [])], hide: [...(item.hide ?? [])],
+    problems: [...read.problems, ...problems], source: 'composed',
+  };
 }

@@ -156,6 +156,21 @@ describe('a link pasted as a panel’s start state', () => {
     expect(readPastedLink(`index.html?lecture=${lectureToCode(lecture)}`, 'spheres').ok).toBe(false);
   });
 
+  it('reads a composed lecture’s panel link: the item its hash names, with the values under that item’s keys', () => {
+    const lecture = {
+      kind: 'fresnel-lab-lecture', version: 1, title: 'T',
+      items: [{ type: 'panel', panel: 'spheres', state: { nT: 2 } }, { type: 'text', text: 'x' },
+        { type: 'panel', panel: 'spheres', state: { nI: 1.5, nT: 1 }, lock: ['nI'] }],
+    };
+    const code = lectureToCode(lecture);
+    // The second hero's link: its keys under spheres--2., the first hero's unprefixed ones passed over.
+    const second = readPastedLink(`https://x/index.html?lecture=${code}&nT=2.2&spheres--2.kd=00ff00&spheres--2.nope=1#spheres--2`, 'spheres');
+    expect(second).toMatchObject({ ok: true, state: { nI: 1.5, nT: 1, kd: '#00ff00' }, lock: ['nI'] });
+    expect(second.problems.join('\n')).toContain('nope');
+    expect(readPastedLink(`index.html?lecture=${code}&nT=2.2#spheres`, 'spheres')).toMatchObject({ ok: true, state: { nT: 2.2 } });
+    expect(readPastedLink(`index.html?lecture=${code}#text--2`, 'spheres')).toMatchObject({ ok: false, problems: [expect.stringContaining('text item')] });
+  });
+
   it('reads bare pairs and refuses what is not a link', () => {
     expect(readPastedLink('nT=1.7', 'schlick')).toMatchObject({ ok: true, state: { nT: 1.7 } });
     expect(readPastedLink('', 'schlick').ok).toBe(false);

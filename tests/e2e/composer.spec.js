@@ -1,0 +1,148 @@
+// The lecture composer, from the keys alone: a panel added twice, a text and a question, the list
+// reordered with Alt+↑ and the Move buttons (the focus stays on what moved, and each move is said),
+// a start state pasted with a key the panel refuses named, and the lecture's link, which must give
+// back exactly the lecture composed (inflated here, apart from the lab's code) and,
+// where the lecture page reads ?lecture=, open it there with its items in order. Then what comes
+// from outside: a damaged link and a file that is no lecture are refused in words on a working page.
+import { readFileSync } from 'node:fs';
+import { test, expect } from './fixtures.js';
+import { inflateRawSync } from 'node:zlib';
+
+/** A lecture link's lecture, read apart from the lab: L1. + base64url of the raw DEFLATE of its JSON. */
+function lectureOf(link) {
+  const code = new URL(link).searchParams.get('lecture');
+  expect(code.startsWith('L1.')).toBe(true);
+  return JSON.parse(inflateRawSync(Buffer.from(code.slice(3), 'base64url')).toString('utf8'));
+}
+
+/** Presses Tab until the focused element matches `selector` (at most `limit` presses). */
+async function tabTo(page, selector, limit = 200) {
+  for (let i = 0; i < limit; i += 1) {
+    if (await page.evaluate((s) => document.activeElement?.matches(s) ?? false, selector)) return;
+    await page.keyboard.press('Tab');
+  }
+  throw new Error(`Tab never reached ${selector}`);
+}
+const focusedKey = (page) => page.evaluate(() => document.activeElement?.closest('.cp-item')?.getAttribute('data-key') ?? null);
+
+async function openEmpty(page) {
+  await page.goto('compose.html');
+  await page.evaluate(() => localStorage.removeItem('fresnel-lab:composer'));
+  await page.reload();
+  await expect(page.locator('.cp-empty')).toBeVisible();
+}
+
+test('a lecture composed by keyboard alone gives a link that holds it, in order', async ({ page }) => {
+  test.setTimeout(60_000);
+  await openEmpty(page);
+  const status = page.locator('.cp-status');
+
+  // The hero twice (Enter, then Space on the same button: the focus stays on Add), then Schlick.
+  await page.locator('.cp-catalogue').getByRole('button', { name: 'Add “Exact Fresnel vs Schlick\'s approximation”' }).focus();
+  await page.keyboard.press('Enter');
+  await page.keyboard.press('Space');
+  await expect(status).toHaveText(/as item 2 of 2/);
+  await tabTo(page, 'button[data-panel="schlick"]');
+  await page.keyboard.press('Enter');
+  // A question to the room: the select by its arrow keys, then its Add button.
+  await page.getByLabel('A question to the room, from the homework bank').focus();
+  await page.keyboard.press('Home');
+  await page.keyboard.press('ArrowDown');
+  const question = await page.getByLabel('A question to the room, from the homework bank').inputValue();
+  await page.keyboard.press('Tab');
+  await page.keyboard.press('Enter');
+  await expect(status).toHaveText(/as item 4 of 4/);
+  // A text item, written in its own fields.
+  await page.getByRole('button', { name: 'Add a text (an agenda, references)' }).focus();
+  await page.keyboard.press('Enter');
+  await expect(page.locator('.cp-item')).toHaveCount(5);
+  const textCard = page.locator('.cp-item').nth(4);
+  await textCard.getByLabel('Heading').focus();
+  await page.keyboard.type('Agenda');
+  await page.keyboard.press('Tab');
+  await page.keyboard.type('- Exact against *Schlick*\n- The critical angle, $\\theta_c$');
+  await expect(textCard.locator('.cp-preview li')).toHaveCount(2);
+  await expect(textCard.locator('.cp-preview em')).toHaveText('Schlick');
+
+  // The text first: Alt+↑ four times from its card, the focus kept on it and each move said.
+  const textKey = await textCard.getAttribute('data-key');
+  await textCard.focus();
+  for (let i = 0; i < 4; i += 1) await page.keyboard.press('Alt+ArrowUp');
+  await expect(status).toHaveText('Moved “Agenda” to position 1 of 5.');
+  expect(await focusedKey(page)).toBe(textKey);
+  await page.keyboard.press('Alt+ArrowUp');
+  await expect(status).toHaveText('“Agenda” is already first.');
+  // The question up one with its Move up button: the focus stays on that button.
+  const questionCard = page.locator('.cp-item-question');
+  const questionKey = await questionCard.getAttribute('data-key');
+  await questionCard.getByRole('button', { name: 'Move up' }).focus();
+  await page.keyboard.press('Enter');
+  await expect(status).toHaveText(/to position 4 of 5/);
+  expect(await page.evaluate(() => document.activeElement?.textContent)).toBe('Move up');
+  expect(await focusedKey(page)).toBe(questionKey);
+  expect(await page.locator('.cp-item').evaluateAll((els) => els.map((e) => /cp-item-(\w+)/.exec(e.className)[1])))
+    .toEqual(['text', 'panel', 'panel', 'question', 'panel']);
+
+  // The second hero: glass to air from a pasted embed link; the key it does not have is named.
+  const second = page.locator('.cp-item').nth(2);
+  await second.getByLabel('Heading').focus();
+  await page.keyboard.type('Glass to air');
+  await second.getByLabel(/Start state: paste a link/).focus();
+  await page.keyboard.type('embed.html?panel=spheres&nI=1.5&nT=1&lock=nI&bogus=2');
+  await page.keyboard.press('Enter');
+  await expect(second.locator('.cp-start-result')).toContainText('Refused: bogus=2 is not a parameter of this panel');
+  await expect(second.locator('.cp-start-summary')).toContainText('n');
+  await page.getByLabel('Title of the lecture').focus();
+  await page.keyboard.press('Control+A');
+  await page.keyboard.type('Optics, my way');
+
+  const link = await page.getByLabel('Lecture link').inputValue();
+  expect(link).toMatch(/\/index\.html\?lecture=L1\./);
+  const lecture = lectureOf(link);
+  expect(lecture).toMatchObject({ kind: 'fresnel-lab-lecture', version: 1, title: 'Optics, my way' });
+  expect(lecture.items).toEqual([
+    { type: 'text', heading: 'Agenda', text: '- Exact against *Schlick*\n- The critical angle, $\\theta_c$' },
+    { type: 'panel', panel: 'spheres' },
+    { type: 'panel', panel: 'spheres', heading: 'Glass to air', state: { nI: 1.5, nT: 1 }, lock: ['nI'] },
+    { type: 'question', question },
+    { type: 'panel', panel: 'schlick' },
+  ]);
+  // Kept in the browser: a reload brings the same lecture back.
+  await page.reload();
+  await expect(page.getByLabel('Lecture link')).toHaveValue(link);
+
+  // The lecture page: where it reads ?lecture=, the composed items in their order.
+  if (readFileSync(new URL('../../src/main.js', import.meta.url), 'utf8').includes('openLecture')) {
+    await page.goto(link);
+    await expect(page.locator('main')).toContainText('Agenda');
+    await expect.poll(() => page.locator('main [data-panel]').evaluateAll((els) => els.map((e) => e.getAttribute('data-panel'))))
+      .toEqual(['spheres', 'spheres', 'schlick']);
+    await expect(page.locator('main')).toContainText('Glass to air');
+  }
+});
+
+test('a damaged link and a file that is no lecture are refused in words; the page keeps working', async ({ page }) => {
+  await page.goto('compose.html?lecture=L1.not-a-lecture');
+  await expect(page.getByRole('alert')).toContainText('This lecture link cannot be opened');
+  await page.locator('button[data-panel="metals"]').click();
+  await expect(page.locator('.cp-item')).not.toHaveCount(0);
+  await page.getByLabel('Open a lecture file').setInputFiles({ name: 'x.json', mimeType: 'application/json', buffer: Buffer.from('{"kind":"fresnel-lab-lecture","version":9}') });
+  await expect(page.locator('.cp-message')).toContainText('x.json is not a lecture the lab can open');
+  await expect(page.locator('.cp-message')).toContainText('version 9');
+  // A lecture file with a panel that does not exist: opened, the panel named, the rest kept.
+  const lecture = { kind: 'fresnel-lab-lecture', version: 1, title: 'From a file', items: [{ type: 'panel', panel: 'nope' }, { type: 'text', text: 'Kept' }] };
+  await page.getByLabel('Open a lecture file').setInputFiles({ name: 'y.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify(lecture)) });
+  await expect(page.locator('.cp-notices')).toContainText('nope is no panel of the lab');
+  await expect(page.locator('.cp-item')).toHaveCount(1);
+  await expect(page.getByLabel('Title of the lecture')).toHaveValue('From a file');
+  // Dragged by its handle: the text goes below a panel added after it.
+  await page.locator('button[data-panel="schlick"]').click();
+  const handle = page.locator('.cp-item').first().locator('.cp-handle');
+  const target = await page.locator('.cp-item').nth(1).boundingBox();
+  await handle.hover();
+  await page.mouse.down();
+  await page.mouse.move(target.x + 20, target.y + target.height - 5, { steps: 5 });
+  await page.mouse.up();
+  await expect(page.locator('.cp-item').first()).toHaveClass(/cp-item-panel/);
+  await expect(page.locator('.cp-status')).toHaveText(/Moved “Kept” to position 2 of 2/);
+});
