@@ -1,0 +1,116 @@
+// The slides of a lecture's reveal.js deck (deckExport.js), as HTML text: one <section> per item.
+// Everything that comes from the lecture is escaped (lectureTextHtml.js); a panel's frame is the
+// embed page with the item's start state, locks and hidden controls as embed options
+// (src/host/readEmbedOptions.js, README "Embed options in the link").
+//
+// At most two live WebGL contexts: a WebGL panel's frame has data-src alone, so reveal.js loads it
+// when its slide is shown and unloads it (after posting 'slide:stop') when the slide is left; one
+// such frame is live at a time, and a second only while the one left is being torn down. A frame
+// that reveal.js preloads off screen starts drawing before any message can reach it (the embed
+// mounts as soon as its module runs and pauses off screen only after a second), so only plot-only
+// panels, which hold no context, get data-preload and show at once.
+import { panelEntry } from '../panels/manifest.js';
+import { panelSchema } from '../panels/panelSchema.js';
+import { defaults, writeParams } from '../host/params.js';
+import { KIND_NAMES, questionById } from '../homework/questions.js';
+import { expectedValue, questionParams, trueOption } from '../homework/gradeAnswer.js';
+import { formatTolerance, formatValue } from '../homework/formatAnswer.js';
+import { escapeHtml, lectureTextHtml, subscriptedHtml } from './lectureTextHtml.js';
+
+/** The seed of a question item that names none: the same numbers in every copy of the deck. */
+export const DEFAULT_QUESTION_SEED = 'lecture';
+
+/**
+ * The embed page's link for a panel: `base?panel=ID`, the values that differ from the panel's
+ * defaults (written as a share link writes them), then lock, hide, theme and projector.
+ * @param {string} base  embed.html's address, relative (offline/embed.html) or absolute
+ * @param {string} id
+ * @param {{ state?: Record<string, unknown>, lock?: string[], hide?: string[], theme?: string | null, projector?: boolean }} [options]
+ */
+export function embedSource(base, id, { state = {}, lock = [], hide = [], theme = null, projector = false } = {}) {
+  const schema = panelSchema(id);
+  const search = new URLSearchParams({ panel: id });
+  writeParams(schema, { ...defaults(schema), ...state }, search);
+  if (lock.length) search.set('lock', lock.join(','));
+  if (hide.length) search.set('hide', hide.join(','));
+  if (theme) search.set('theme', theme);
+  if (projector) search.set('projector', '1');
+  return `${base}${base.includes('?') ? '&' : '?'}${search.toString().replace(/%2C/g, ',')}`;
+}
+
+/** A panel's frame on a slide (see the note at the top on data-preload). */
+function frameHtml(src, id, { short }) {
+  const entry = panelEntry(id);
+  const preload = entry.webgl ? '' : ' data-preload';
+  return `<iframe class="fl-embed${short ? ' fl-short' : ''}"${preload} data-src="${escapeHtml(src)}" `
+    + `title="${escapeHtml(`Fresnel Lab: ${entry.title}`)}" allow="fullscreen; clipboard-write"></iframe>`;
+}
+
+const textHtml = (text) => (text ? `\n  <div class="fl-text">${lectureTextHtml(text)}</div>` : '');
+
+function panelSlide(item, n, frame) {
+  const entry = panelEntry(item.panel);
+  const heading = item.heading ? escapeHtml(item.heading) : subscriptedHtml(entry.title);
+  const src = embedSource(frame.embedUrl, item.panel, { ...item, theme: frame.theme, projector: frame.projector });
+  return `<section class="fl-panel" data-item="${n}" data-item-type="panel" data-panel="${escapeHtml(item.panel)}">
+  <h2>${heading}</h2>${textHtml(item.text)}
+  ${frameHtml(src, item.panel, { short: Boolean(item.text) })}
+</section>`;
+}
+
+function textSlide(item, n) {
+  return `<section class="fl-textslide" data-item="${n}" data-item-type="text">
+  ${item.heading ? `<h2>${escapeHtml(item.heading)}</h2>` : ''}${textHtml(item.text)}
+</section>`;
+}
+
+/** The answer in words, as the homework page says it when the lecturer reveals it. */
+function answerHtml(question, params) {
+  if (question.kind === 'choice') {
+    const right = trueOption(question, params);
+    return `<p class="fl-prompt"><strong>${subscriptedHtml(right.text(params))}</strong></p>\n    <p class="fl-why">${subscriptedHtml(right.why(params))}</p>`;
+  }
+  const expected = expectedValue(question, params);
+  return `<p class="fl-prompt">The computed answer is <strong>${escapeHtml(formatValue(question, expected))}</strong> `
+    + `(checked within ${escapeHtml(formatTolerance(question))}).</p>`;
+}
+
+/**
+ * A question to the room: a vertical stack of the question (the lecturer's heading and text, the
+ * prompt, the options of a choice) and below it the answer with the question's panel in the state
+ * the question sets, so the deck reveals it as the homework page's lecture mode does.
+ */
+function questionSlide(item, n, frame) {
+  const question = questionById(item.question);
+  const params = questionParams(question, item.seed ?? DEFAULT_QUESTION_SEED);
+  const entry = panelEntry(question.panel);
+  const options = question.kind === 'choice'
+    ? `\n    <ol class="fl-options" type="A">${question.options(params).map((o) => `<li>${subscriptedHtml(o.text(params))}</li>`).join('')}</ol>`
+    : '';
+  const src = embedSource(frame.embedUrl, question.panel, { state: question.state(params), theme: frame.theme, projector: frame.projector });
+  return `<section data-item="${n}" data-item-type="question" data-question="${escapeHtml(question.id)}">
+  <section class="fl-question">
+    <h2>${item.heading ? escapeHtml(item.heading) : 'A question for the room'}</h2>${textHtml(item.text)}
+    <p class="fl-kind">${escapeHtml(KIND_NAMES[question.kind])} · ${subscriptedHtml(entry.title)}</p>
+    <p class="fl-prompt">${subscriptedHtml(question.prompt(params))}</p>${options}
+  </section>
+  <section class="fl-answer" data-item-type="answer">
+    <h2>The answer</h2>
+    ${answerHtml(question, params)}
+    ${frameHtml(src, question.panel, { short: true })}
+  </section>
+</section>`;
+}
+
+/**
+ * Every item's slide, in order, as HTML text (the lecture as readLecture gives it).
+ * @param {{ items: object[] }} lecture
+ * @param {{ embedUrl: string, theme: string | null, projector: boolean }} frame  how panel frames are written
+ */
+export function lectureSlidesHtml(lecture, frame) {
+  return lecture.items.map((item, i) => {
+    if (item.type === 'panel') return panelSlide(item, i + 1, frame);
+    if (item.type === 'question') return questionSlide(item, i + 1, frame);
+    return textSlide(item, i + 1);
+  }).join('\n');
+}
