@@ -1,16 +1,14 @@
 // Sharing and carrying the composed lecture: its link (index.html?lecture=CODE) to copy or to
 // present from, the lecture as a JSON file and back, and the two exports: one offline HTML file
 // (the single-file lecture page with the lecture written in) and a reveal.js deck. The exports are
-// loaded only when asked for.
+// loaded only when asked for (a dynamic import each: reveal.js travels only with the deck's).
 import { button, el } from '../ui/el.js';
 import { fixed, fileSlug } from '../ui/format.js';
 import { copyText, downloadText } from '../host/exporters.js';
 import { field, readTextFile, titledSection } from '../homework/page/formParts.js';
 import { lectureToCode } from '../lecture/lectureLink.js';
 import { readLecture } from '../lecture/readLecture.js';
-
-// Loaded on demand; a glob, so a copy of the lab without one of them still builds and says so.
-const EXPORTS = import.meta.glob(['../lecture/offlineExport.js', '../lecture/deckExport.js']);
+import { loadTheme } from '../ui/theme.js';
 
 /** The lecture page's address for a lecture. */
 export function lectureAddress(lecture) {
@@ -19,12 +17,6 @@ export function lectureAddress(lecture) {
   url.hash = '';
   url.searchParams.set('lecture', lectureToCode(lecture));
   return url.toString();
-}
-
-async function loadExport(name) {
-  const load = EXPORTS[`../lecture/${name}.js`];
-  if (!load) throw new Error(`This copy of the lab has no ${name}.js, so it cannot make this file.`);
-  return /** @type {any} */ (await load());
 }
 
 /** onOpen(lecture, problems, fileName): a lecture file was read. Returns { element, update({ lecture, problems }) }. */
@@ -51,13 +43,18 @@ export function buildShare({ onOpen }) {
   file.accept = '.json,application/json';
   const offline = button('Download offline lecture (one HTML file)');
   const deck = button('Download reveal.js deck');
+  // The deck's panels: this site's embed page (a deck used online), or offline/embed.html beside
+  // the deck (a deck put next to the lab's offline folder, opened from disk or a USB stick).
+  const deckPanels = /** @type {HTMLSelectElement} */ (el('select'));
+  deckPanels.add(new Option('from this site (the deck needs the network)', 'site'));
+  deckPanels.add(new Option('from offline/embed.html beside the deck (a USB stick)', 'offline'));
 
   const linkRow = el('div', 'cp-row');
   linkRow.append(field('Lecture link', link, 'hw-field cp-link'), copy, present);
   const fileRow = el('div', 'cp-row');
   fileRow.append(save, field('Open a lecture file', file));
   const exportRow = el('div', 'cp-row');
-  exportRow.append(offline, deck);
+  exportRow.append(offline, deck, field('The deck’s panels come', deckPanels));
   section.append(heading, problems, linkRow, size, fileRow, exportRow, message);
 
   let current = null;
@@ -119,7 +116,7 @@ export function buildShare({ onOpen }) {
       return say('offline/index.html here is not the single-file lecture page (the development server has none): build the site (npm run build) and open the composer from it.', 'problem');
     }
     try {
-      const { offlineLectureHtml } = await loadExport('offlineExport');
+      const { offlineLectureHtml } = await import('../lecture/offlineExport.js');
       downloadText(`${fileSlug(lecture.title)}.html`, offlineLectureHtml(page, lecture), 'text/html');
       say('The offline lecture is saved: one HTML file that opens from a USB stick, with no server.');
     } catch (error) {
@@ -131,10 +128,13 @@ export function buildShare({ onOpen }) {
     if (!current) return;
     const lecture = current;
     try {
-      const { lectureDeckHtml } = await loadExport('deckExport');
-      const options = { embedUrl: new URL('./embed.html', window.location.href).toString() };
+      const { lectureDeckHtml } = await import('../lecture/deckExport.js');
+      const { scheme, projector } = loadTheme();
+      const embedUrl = deckPanels.value === 'site' ? new URL('./embed.html', window.location.href).toString() : 'offline/embed.html';
+      const options = { embedUrl, theme: scheme, projector };
       downloadText(`${fileSlug(lecture.title)}.deck.html`, lectureDeckHtml(lecture, options), 'text/html');
-      say('The reveal.js deck is saved: one slide per item, the panels as embeds.');
+      say(deckPanels.value === 'site' ? 'The reveal.js deck is saved: one slide per item, the panels as embeds of this site.'
+        : 'The reveal.js deck is saved: put it next to the lab’s offline folder (dist/offline from npm run build); it opens from disk.');
     } catch (error) {
       say(error instanceof Error ? error.message : String(error), 'problem');
     }

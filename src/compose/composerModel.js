@@ -130,7 +130,7 @@ export function draftFromLecture(lecture) {
 export function itemName(item) {
   if (item.type === 'panel') return item.heading.trim() || panelEntry(item.panel)?.title || item.panel;
   if (item.type === 'question') return item.heading.trim() || `Question on “${panelEntry(/** @type {any} */ (questionById(item.question))?.panel)?.title ?? '?'}”`;
-  return item.heading.trim() || item.text.trim().split('\n', 1)[0].slice(0, 60) || 'Text';
+  return item.heading.trim() || item.text.trim().split('\n', 1)[0].slice(0, 60) || '(no text yet)';
 }
 
 /** What kind of item it is, in words. */

@@ -6,6 +6,7 @@
 // from outside: a damaged link and a file that is no lecture are refused in words on a working page.
 import { readFileSync } from 'node:fs';
 import { test, expect } from './fixtures.js';
+import { seriousViolations } from './audit.js';
 import { inflateRawSync } from 'node:zlib';
 
 /** A lecture link's lecture, read apart from the lab: L1. + base64url of the raw DEFLATE of its JSON. */
@@ -145,4 +146,43 @@ test('a damaged link and a file that is no lecture are refused in words; the pag
   await page.mouse.up();
   await expect(page.locator('.cp-item').first()).toHaveClass(/cp-item-panel/);
   await expect(page.locator('.cp-status')).toHaveText(/Moved “Kept” to position 2 of 2/);
+});
+
+test('a panel’s current view taken from its preview, the exports, and the audit in both themes', async ({ page }) => {
+  test.setTimeout(60_000);
+  await openEmpty(page);
+  await page.locator('button[data-panel="schlick"]').click();
+  await page.getByRole('button', { name: 'Add a text (an agenda, references)' }).click();
+  await page.locator('.cp-item-text').getByLabel('Text', { exact: true }).fill('Read *this*: $R_0$');
+  const item = page.locator('.cp-item-panel');
+  await item.getByRole('button', { name: 'Show the panel' }).click();
+  const take = item.getByRole('button', { name: 'Take the panel’s current view' });
+  await expect(take).toBeEnabled(); // the embed said fresnel-lab:ready
+  // The view changed inside the panel (here by a message of its own page), then taken.
+  const frame = page.frame({ url: /embed\.html\?panel=schlick/ });
+  await frame.evaluate(() => window.postMessage({ type: 'fresnel-lab:set', params: { nT: 2.4 } }, '*'));
+  await take.click();
+  await expect(item.locator('.cp-start-result')).toContainText('Taken from the panel: its current view');
+  await expect(item.locator('.cp-start-summary')).toContainText('2.4');
+  await expect.poll(async () => lectureOf(await page.getByLabel('Lecture link').inputValue()).items[0]).toEqual({ type: 'panel', panel: 'schlick', state: { nT: 2.4 } });
+
+  // The deck: one file, a slide per item, the panel as this site's embed with its state.
+  const [deck] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Download reveal.js deck' }).click()]);
+  const deckHtml = readFileSync(await deck.path(), 'utf8');
+  expect(deckHtml).toMatch(/<iframe[^>]+embed\.html\?panel=schlick[^"]*nT=2\.4/);
+  expect(deckHtml).toContain('Read <em>this</em>');
+  // The offline lecture: made from the built single-file page; the development server has none, and says so.
+  const offline = page.getByRole('button', { name: 'Download offline lecture (one HTML file)' });
+  if (process.env.FRESNEL_LAB_DEV) {
+    await offline.click();
+    await expect(page.locator('.cp-message')).toContainText('not the single-file lecture page');
+  } else {
+    const [file] = await Promise.all([page.waitForEvent('download'), offline.click()]);
+    expect(readFileSync(await file.path(), 'utf8')).toContain('<script type="application/json" id="fresnel-lab-lecture">');
+  }
+
+  expect(await seriousViolations(page), 'dark').toEqual([]);
+  await page.locator('.page-controls select').first().selectOption('light');
+  await expect(page.locator('html')).toHaveAttribute('data-theme', 'light');
+  expect(await seriousViolations(page), 'light').toEqual([]);
 });
