@@ -95,6 +95,13 @@ test('a composed lecture opens from its link as composed, steps item by item, an
   expect(await values(page, 'spheres')).toMatchObject({ nI: 1, nT: 1.7 });
   expect(await values(page, 'spheres--2')).toMatchObject({ nI: 1.5, nT: 1.2 });
   await expect.poll(() => page.locator('#spheres--2').evaluate((s) => Math.abs(s.getBoundingClientRect().top))).toBeLessThan(40);
+
+  // The page's own settings reach every item: projector mode, and one material for every panel.
+  await page.locator('.page-controls input[type="checkbox"]').check();
+  await expect(page.locator('html')).toHaveClass(/projector/);
+  await page.locator('.page-controls select').nth(1).selectOption('water');
+  await expect.poll(async () => (await values(page, 'spheres')).nT).toBeCloseTo(1.3333, 4);
+  for (const key of ['spheres--2', 'r0-derivation']) expect((await values(page, key)).nT, key).toBeCloseTo(1.3333, 4);
 });
 
 test('a damaged lecture names what it refuses and opens the rest; an unreadable one falls back to the lab’s own', async ({ page }) => {
