@@ -8,7 +8,8 @@
 // such frame is live at a time, and a second only while the one left is being torn down. A frame
 // that reveal.js preloads off screen starts drawing before any message can reach it (the embed
 // mounts as soon as its module runs and pauses off screen only after a second), so only plot-only
-// panels, which hold no context, get data-preload and show at once.
+// panels, which hold no context, get data-preload and show at once; not speed-accuracy, whose GPU
+// read-back holds one while it runs (manifest.js).
 import { panelEntry } from '../panels/manifest.js';
 import { panelSchema } from '../panels/panelSchema.js';
 import { defaults, writeParams } from '../host/params.js';
@@ -16,6 +17,9 @@ import { KIND_NAMES, questionById } from '../homework/questions.js';
 import { expectedValue, questionParams, trueOption } from '../homework/gradeAnswer.js';
 import { formatTolerance, formatValue } from '../homework/formatAnswer.js';
 import { escapeHtml, lectureTextHtml, subscriptedHtml } from './lectureTextHtml.js';
+
+/** Plot-only panels that create a WebGL context for a while (the manifest's webgl is false). */
+const HOLDS_CONTEXT_AT_TIMES = ['speed-accuracy'];
 
 /** The seed of a question item that names none: the same numbers in every copy of the deck. */
 export const DEFAULT_QUESTION_SEED = 'lecture';
@@ -41,7 +45,7 @@ export function embedSource(base, id, { state = {}, lock = [], hide = [], theme 
 /** A panel's frame on a slide (see the note at the top on data-preload). */
 function frameHtml(src, id, { short }) {
   const entry = panelEntry(id);
-  const preload = entry.webgl ? '' : ' data-preload';
+  const preload = entry.webgl || HOLDS_CONTEXT_AT_TIMES.includes(id) ? '' : ' data-preload';
   return `<iframe class="fl-embed${short ? ' fl-short' : ''}"${preload} data-src="${escapeHtml(src)}" `
     + `title="${escapeHtml(`Fresnel Lab: ${entry.title}`)}" allow="fullscreen; clipboard-write"></iframe>`;
 }

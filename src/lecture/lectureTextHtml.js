@@ -4,7 +4,7 @@
 // through (http:, https:, mailto:). Math is typeset by KaTeX as MathML (output: 'mathml'), which
 // browsers draw with their own fonts: a file carried on a stick then needs neither KaTeX's CSS nor
 // its fonts. KaTeX escapes the TeX it quotes, and with trust off (its default) it refuses \href,
-// \url and \html… commands; a formula it cannot read is shown as its source, in red.
+// \url and \html… commands; a formula it cannot read is shown as its source.
 import katex from 'katex';
 import { lectureTextTree } from './lectureText.js';
 
@@ -29,12 +29,12 @@ export function subscriptedHtml(text) {
   return html + escapeHtml(String(text).slice(last));
 }
 
-/** TeX as MathML in KaTeX's wrapper; never throws. */
+/** TeX as MathML in KaTeX's wrapper, or (TeX KaTeX cannot read) its source as code; never throws. */
 export function mathHtml(tex, display) {
   try {
-    return katex.renderToString(tex, { displayMode: display, output: 'mathml', throwOnError: false, trust: false, strict: 'ignore' });
+    return katex.renderToString(tex, { displayMode: display, output: 'mathml', throwOnError: true, trust: false, strict: 'ignore' });
   } catch {
-    return `<code>${escapeHtml(tex)}</code>`; // KaTeX's own limits (maxExpand) throw even without throwOnError
+    return `<code class="lecture-math-error">${escapeHtml(tex)}</code>`;
   }
 }
 

@@ -7,11 +7,14 @@
 // change: a script of type application/json is data, never run, so script-src does not govern it
 // (and inlineTexts in scripts/contentSecurityPolicy.js leaves such blocks out of the hashes);
 // reading its text is no fetch. Nothing else in the page depends on the lecture, but its <title>,
-// which is set to the lecture's so the file's tab is named before any script runs.
+// which is set as the lecture page sets it (mountLecture.js) so the file's tab is named before any
+// script runs. A question item's panel is a frame of ./embed.html: the file belongs in the offline
+// folder, beside embed.html.
 import { readLecture } from './readLecture.js';
+import { LECTURE_ELEMENT_ID } from './openLecture.js';
 import { escapeHtml } from './lectureTextHtml.js';
 
-export const LECTURE_ELEMENT_ID = 'fresnel-lab-lecture';
+export { LECTURE_ELEMENT_ID };
 
 /** The lecture's JSON as the text of a data element: every < as \u003c. */
 export function lectureDataJson(lecture) {
@@ -65,7 +68,7 @@ export function offlineLectureHtml(offlineIndexHtml, lecture) {
   // The first <title> is the page's own (it comes before any script); the lecture's title, escaped.
   const title = /<title>[^<]*<\/title>/i.exec(html);
   if (title && (!first || title.index < first[0])) {
-    html = `${html.slice(0, title.index)}<title>${escapeHtml(read.lecture.title)}</title>${html.slice(title.index + title[0].length)}`;
+    html = `${html.slice(0, title.index)}<title>${escapeHtml(`${read.lecture.title}: Fresnel Lab`)}</title>${html.slice(title.index + title[0].length)}`;
   }
   return html;
 }

@@ -84,7 +84,7 @@ describe('the offline lecture page', () => {
       const html = offlineLectureHtml(PAGE, data);
       expect(readBack(html)).toEqual(readLecture(data).lecture);
       expect(inlineTexts(html).scripts).toEqual([bundle]); // no script was opened by the text
-      expect(html).toContain(`<title>${readLecture(data).lecture.title.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;').replace(/'/g, '&#39;')}</title>`);
+      expect(html).toContain(`<title>${`${readLecture(data).lecture.title}: Fresnel Lab`.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;').replace(/'/g, '&#39;')}</title>`);
     }
   });
 
