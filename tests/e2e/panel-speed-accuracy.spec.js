@@ -90,7 +90,8 @@ test('the scene and the budget change the recommendation, as the advisor reasons
   await expect(page.locator('.sa-criterion')).toContainText('worst pixel');
   expect((await view(page)).rows.find((r) => r.id === 'schlick-mul').y).toBeCloseTo(12.07, 1);
   // The reason also names what the lenient budget would pick, with its measured error.
-  await expect(page.locator('.sa-reason')).toContainText(/If a visible error of up to 5 % .* Schlick, pow\(1 − c, 5\) would do: 12\.1 codes at worst/);
+  await expect(page.locator('.sa-reason'))
+    .toContainText(/If a visible error of up to 5 % .* Schlick, pow\(1 − c, 5\) would do: 12\.1 codes at worst/);
   // The documented "acceptable" budget (5 % of the range): a Schlick variant for opaque plastic...
   await choose(page, 'Error budget', 'Acceptable: 5 % of the range (12.75 codes)');
   await expect(page.locator('.sa-pick-method')).toContainText('Schlick');
@@ -183,7 +184,9 @@ test('a running benchmark pauses while the panel is off screen and goes on when 
     document.body.prepend(spacer); // the panel is now far below the window
   });
   // The run's promise rejects when it is cancelled below; kept here, so that is no unhandled rejection.
-  await page.evaluate((id) => { window.benchDone = window.fresnelLab.panels[id].run('tiny').then(() => 'done', (error) => error.message); }, PANEL);
+  await page.evaluate((id) => {
+    window.benchDone = window.fresnelLab.panels[id].run('tiny').then(() => 'done', (error) => error.message);
+  }, PANEL);
   await expect(page.locator('.sa-status')).toContainText('Paused while the panel is off screen');
   const paused = await page.locator('.sa-progress').evaluate((p) => p.value);
   await page.waitForTimeout(1000); // a window in which a paused run must not move
@@ -288,4 +291,26 @@ test('without float render targets the GPU source says why and falls back to the
   await expect(sourceOption(page)).toHaveText('JS emulation');
   await expect(page.locator('.sa-reason')).toContainText('JavaScript emulation');
   await expect(page).not.toHaveURL(/errors=/);
+});
+
+test('a shader this GPU refuses is named as the cause, not float render targets', async ({ page }) => {
+  await page.addInitScript(() => {
+    const status = WebGL2RenderingContext.prototype.getShaderParameter;
+    WebGL2RenderingContext.prototype.getShaderParameter = function getShaderParameter(shader, name) {
+      return name === this.COMPILE_STATUS && this.getShaderSource(shader).includes('fm_evaluate') ? false : status.call(this, shader, name);
+    };
+    const log = WebGL2RenderingContext.prototype.getShaderInfoLog;
+    WebGL2RenderingContext.prototype.getShaderInfoLog = function getShaderInfoLog(shader) {
+      const refused = this.getShaderSource(shader).includes('fm_evaluate');
+      return refused ? 'ERROR: 0:7: \'fm_evaluate\' : stand-in refusal\n' : log.call(this, shader);
+    };
+  });
+  await openLab(page, `./embed.html?panel=${PANEL}&errors=gpu-highp`);
+  const source = page.locator('.sa-source');
+  await expect(source).toBeVisible();
+  await expect(source).toHaveText('This GPU could not compile the shader that evaluates a method, so the errors shown are the JavaScript '
+    + 'emulation. The driver said: ERROR: 0:7: \'fm_evaluate\' : stand-in refusal');
+  await expect(source).toHaveClass(/sa-source-warning/);
+  expect(await page.evaluate((id) => window.fresnelLab.panels[id].view.source, PANEL)).toBe('js');
+  await expect(sourceOption(page)).toHaveText('JS emulation');
 });

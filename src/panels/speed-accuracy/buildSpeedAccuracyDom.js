@@ -4,19 +4,8 @@
 import { button, el } from '../../ui/el.js';
 import { toDegrees } from '../../optics/angles.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
-
-/** Codes to a short string: small values in scientific notation, NaN/∞ as words. */
-export function formatCodes(v) {
-  if (v === Infinity || Number.isNaN(v)) return 'NaN/∞';
-  if (v === 0) return '0';
-  return v < 0.01 ? v.toExponential(1) : v < 10 ? v.toFixed(2) : v.toFixed(1);
-}
-
-export function formatNs(spread) {
-  if (!spread || !Number.isFinite(spread.median)) return '–';
-  const f = (v) => (Math.abs(v) >= 100 ? v.toFixed(0) : Math.abs(v) >= 1 ? v.toFixed(2) : v.toPrecision(2));
-  return `${f(spread.median)} ns [${f(spread.min)}, ${f(spread.max)}]`;
-}
+import { angle, sci } from '../../ui/format.js';
+import { formatCodes } from './formatMeasures.js';
 
 export function buildSpeedAccuracyDom(host, { onRun, onCancel, onJson }) {
   const root = el('div', 'sa-panel');
@@ -110,10 +99,10 @@ export function buildSpeedAccuracyDom(host, { onRun, onCancel, onJson }) {
         const name = el('th', '', r.label);
         name.scope = 'row';
         const where = r.nanCount > 0 ? `NaN at ${r.nanCount} samples`
-          : r.thetaAtMax === null ? '–' : `${toDegrees(r.thetaAtMax).toFixed(1)}°, ${r.caseText}`;
+          : r.thetaAtMax === null ? '–' : `${angle(toDegrees(r.thetaAtMax), 1)}, ${r.caseText}`;
         const verdict = `${r.passes ? 'within' : 'over'} ${budgetCodes} codes${r.onFront ? ', on the front' : ''}`;
         tr.append(name, ...[r.costText, formatCodes(r.maxCodes), where, formatCodes(r.meanCodes),
-          Number.isFinite(r.max) ? r.max.toExponential(2) : 'NaN/∞', verdict].map((t) => el('td', '', t)));
+          Number.isFinite(r.max) ? sci(r.max, 2) : 'NaN/∞', verdict].map((t) => el('td', '', t)));
         return tr;
       }));
     },

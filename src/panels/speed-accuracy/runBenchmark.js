@@ -29,7 +29,10 @@ export const BENCH_SIZES = Object.freeze({
 
 const PHASES = { gpu: [0, 0.5], errors: [0.5, 0.6], cpu: [0.6, 0.8], frames: [0.8, 1] }; // share of the progress bar
 // What the progress line says during a phase whose steps carry no label of their own.
-const PHASE_NAMES = { gpu: 'Timing every method on this GPU…', errors: 'Reading errors back from this GPU…', cpu: 'Timing every method in JavaScript…', frames: 'Timing frames…' };
+const PHASE_NAMES = {
+  gpu: 'Timing every method on this GPU…', errors: 'Reading errors back from this GPU…', cpu: 'Timing every method in JavaScript…',
+  frames: 'Timing frames…',
+};
 const CACHE_KEY = 'fresnel-lab:speed-accuracy:results';
 
 /**
@@ -40,7 +43,8 @@ const CACHE_KEY = 'fresnel-lab:speed-accuracy:results';
  * a GPU timing that fails (a shader the driver rejects) is reported in device.gpuError, a read-back
  * that fails (no float render targets) in device.gpuReadbackError.
  * @param {HTMLElement} host
- * @param {{ size?: string, onProgress?: (fraction: number, label: string) => void, signal?: AbortSignal, whenVisible?: () => Promise<void> }} [options]
+ * @param {{ size?: string, onProgress?: (fraction: number, label: string) => void, signal?: AbortSignal,
+ *   whenVisible?: () => Promise<void> }} [options]
  */
 export async function runBenchmark(host, { size = 'normal', onProgress, signal, whenVisible } = {}) {
   const config = BENCH_SIZES[size];
@@ -75,7 +79,8 @@ export async function runBenchmark(host, { size = 'normal', onProgress, signal, 
       try {
         // The errors the GPU itself makes over the default domains, on the same context.
         const scenes = [...new Set(Object.values(DEFAULT_DOMAIN))].map(sceneById);
-        const readBack = await gpuErrorsOn(context.gl, scenes, Object.keys(GPU_ERROR_KEYS), { signal, whenVisible, onProgress: report('errors') });
+        const options = { signal, whenVisible, onProgress: report('errors') };
+        const readBack = await gpuErrorsOn(context.gl, scenes, Object.keys(GPU_ERROR_KEYS), options);
         gpuErrors = readBack.errors;
         rememberGpuErrors(readBack); // the panel's "Error measured by" needs no second read-back
       } catch (error) {

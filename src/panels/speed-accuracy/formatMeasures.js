@@ -1,0 +1,25 @@
+// @ts-check
+// The speed-accuracy panel's numbers as it shows them: display errors in 8-bit codes and timings
+// as a median with its spread. Through ui/format.js, so a negative time (a method's pass less the
+// baseline's, within noise) and a small exponent carry a real minus sign.
+import { fixed, MINUS, sci } from '../../ui/format.js';
+
+/** Codes to a short string: small values in scientific notation, NaN/∞ as words. */
+export function formatCodes(/** @type {number} */ v) {
+  if (v === Infinity || Number.isNaN(v)) return 'NaN/∞';
+  if (v === 0) return '0';
+  return v < 0.01 ? sci(v, 1) : v < 10 ? fixed(v, 2) : fixed(v, 1);
+}
+
+/** Two significant digits, as toPrecision writes them, with a real minus sign. */
+const twoDigits = (/** @type {number} */ v) => v.toPrecision(2).replace('e+', 'e').replaceAll('-', MINUS);
+
+/** A spread { median, min, max } of nanoseconds as "median ns [min, max]", '–' when there is none. */
+export function formatNs(/** @type {{ median: number, min: number, max: number } | null | undefined} */ spread) {
+  if (!spread || !Number.isFinite(spread.median)) return '–';
+  const f = (/** @type {number} */ v) => (Math.abs(v) >= 100 ? fixed(v, 0) : Math.abs(v) >= 1 ? fixed(v, 2) : twoDigits(v));
+  return `${f(spread.median)} ns [${f(spread.min)}, ${f(spread.max)}]`;
+}
+
+/** A number with at most three decimals and no trailing zeros (an index of refraction: 1.333, 1.5). */
+export const shortDecimal = (/** @type {number} */ v) => fixed(v, 3).replace(/\.?0+$/, '');

@@ -1,0 +1,145 @@
+// @ts-check
+// The state and the runs of the speed-accuracy panel, apart from its DOM: the benchmark's results
+// (kept for the session), a benchmark under way, the GPU read-back of a scene's errors and why it
+// failed, and the view computed from them (speedAccuracyView.js). index.js draws it. Both runs go
+// stale through run gates: the benchmark when it is cancelled or the panel disposed, a read-back
+// when another scene or precision is asked for or the panel disposed, so a late result is dropped.
+import { benchResults } from '../../methods/benchResults.js';
+import { sceneById } from '../../methods/scenes.js';
+import { fixed } from '../../ui/format.js';
+import { createRunGate, isStaleRun } from '../shared/createRunGate.js';
+import { glslOf } from './errorSources.js';
+import { readBackProblem } from './readBackProblem.js';
+import { describeView, speedAccuracyView, viewCsv } from './speedAccuracyView.js';
+
+/**
+ * The GPU read-back as the model uses it (measureGpuErrors.js), so a stand-in can take its place.
+ * @typedef {object} ReadBack
+ * @property {(scene: any, precision: string) => any} cached  the session's measurement, or null
+ * @property {(scene: any, precision: string) => Promise<any>} measure  measures (once per session)
+ * @property {() => any} probe  what mediump is on this GPU, once anything was measured (or null)
+ */
+
+/**
+ * What the view does when the model changes.
+ * @typedef {object} SpeedAccuracyHooks
+ * @property {() => void} invalidate  a result arrived: draw and describe again
+ * @property {() => void} useEmulation  the read-back cannot be had here: set the error source to the JS emulation
+ * @property {(running: boolean) => void} running  a benchmark started or ended
+ * @property {(fraction: number, label: string) => void} progress  the benchmark's progress
+ * @property {(text: string) => void} status  the benchmark's status line
+ */
+
+/**
+ * @param {{
+ *   values: any,
+ *   readBack: ReadBack,
+ *   benchmark: (options: { size: string, signal: AbortSignal, onProgress: (fraction: number, label: string) => void }) => Promise<any>,
+ *   storage: { load: () => any, save: (results: any) => void },
+ *   hooks: SpeedAccuracyHooks,
+ *   now?: () => number,
+ * }} options  values: the host's live values; benchmark: runBenchmark on the panel's stage; storage: the session's results
+ */
+export function createSpeedAccuracyModel({
+  values, readBack, benchmark, storage, hooks, now = () => performance.now(),
+}) {
+  const benchGate = createRunGate();
+  const readGate = createRunGate();
+  let results = storage.load();
+  /** @type {Promise<any> | null} */
+  let running = null;
+  /** @type {{ key: string, promise: Promise<void> } | null} the GPU read-back under way */
+  let measuring = null;
+  let problem = ''; // why the GPU read-back failed here, once it has
+  /** @type {any} the last view computed, for describe() and csv() */
+  let view = null;
+  let disposed = false;
+
+  /** Starts reading a scene's errors back from the GPU (once per scene and precision per session). */
+  function startMeasuring(scene, glsl) {
+    const key = `${scene.id}|${glsl}`;
+    if (measuring?.key === key) return;
+    const run = readGate.begin();
+    const promise = readBack.measure(scene, glsl).then(() => {
+      if (!run.live) return; // another scene or precision was asked for meanwhile, or the panel is gone
+      measuring = null;
+      problem = '';
+      hooks.invalidate();
+    }, (error) => {
+      if (!run.live) return;
+      measuring = null;
+      problem = readBackProblem(error);
+      if (glslOf(values.errors)) hooks.useEmulation();
+      else hooks.invalidate();
+    });
+    measuring = { key, promise };
+  }
+
+  /** The errors to plot: { source, glsl, measured (the GPU's, or null for JS), waiting }. */
+  function errorSource(scene) {
+    const glsl = glslOf(values.errors);
+    if (!glsl) return { source: 'js', glsl: null, measured: null, waiting: null };
+    const measured = readBack.cached(scene, glsl);
+    if (measured) return { source: values.errors, glsl, measured, waiting: null };
+    startMeasuring(scene, glsl);
+    return { source: 'js', glsl: null, measured: null, waiting: glsl };
+  }
+
+  async function runOnce(/** @type {string} */ size) {
+    const run = benchGate.begin();
+    hooks.running(true);
+    const started = now();
+    await null; // run() keeps this promise as the one under way before anything below can end it
+    try {
+      /** @type {(fraction: number, label: string) => void} */
+      const onProgress = (fraction, label) => { if (run.live) hooks.progress(fraction, label); };
+      const next = await benchmark({ size, signal: run.signal, onProgress });
+      run.throwIfStale(); // cancelled as it ended: dropped as any cancelled run
+      results = next;
+      storage.save(next);
+      hooks.status(`Done in ${fixed((now() - started) / 1000, 1)} s`);
+      hooks.invalidate(); // redraws and refreshes the description
+      return next;
+    } catch (error) {
+      const stale = isStaleRun(error);
+      if (!disposed) hooks.status(stale ? 'Cancelled' : `Benchmark failed: ${error?.message ?? error}`);
+      if (!stale) console.warn(error);
+      throw error;
+    } finally {
+      if (!disposed) hooks.running(false);
+      running = null;
+    }
+  }
+
+  return {
+    /** The benchmark's results (this run's or the session's), or null. */
+    get results() { return results; },
+    /** The last view computed (speedAccuracyView), or null before the first update. */
+    get view() { return view; },
+    /** The GPU read-back under way, or null. */
+    get measurement() { return measuring?.promise ?? null; },
+    /** Why the GPU read-back failed here ('' when it has not). */
+    get problem() { return problem; },
+    /** Computes the view for the values (starting the GPU read-back they ask for, if it is not there yet). */
+    update() {
+      const source = errorSource(sceneById(values.scene));
+      view = speedAccuracyView(values, { source, results, problem, probe: readBack.probe() });
+      return view;
+    },
+    /** Runs the benchmark at a size of BENCH_SIZES; while one runs, the same run. Rejects when it is cancelled. */
+    run(/** @type {string} */ size) {
+      running ??= runOnce(size);
+      return running;
+    },
+    cancel() { benchGate.cancel('Benchmark cancelled'); },
+    /** Results to export: the last run, or errors and static costs only. */
+    currentResults() { return results ?? benchResults({ meta: { date: new Date().toISOString() } }); },
+    describe: () => describeView(view, readBack.probe()),
+    csv: () => viewCsv(view),
+    dispose() {
+      disposed = true;
+      benchGate.dispose();
+      readGate.dispose();
+    },
+  };
+}
