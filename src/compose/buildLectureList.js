@@ -1,5 +1,5 @@
 // The lecture's items as an ordered list (<ol>) of cards. Each card is focusable and is moved by
-// its Move up / Move down buttons, by Alt+↑ / Alt+↓ anywhere in it, or by dragging its handle with
+// its Move up / Move down buttons, by Alt+↑ / Alt+↓ anywhere in it (but in a select), or by dragging its handle with
 // a pointer; ↑ and ↓ on a card itself go to the card above or below. A move keeps the focus where
 // it was (on the card or the button), and a polite live region says where the item went. The cards
 // are kept per item key, so an editor being typed in is never rebuilt by a move.
@@ -56,7 +56,8 @@ export function buildLectureList({ actions, editor }) {
     copy.addEventListener('click', () => actions.duplicate(item.key));
     remove.addEventListener('click', () => actions.remove(item.key));
     card.addEventListener('keydown', (event) => {
-      if (event.altKey && (event.key === 'ArrowUp' || event.key === 'ArrowDown')) {
+      // Alt+↓ opens a select's list on some systems: that key stays the select's.
+      if (event.altKey && (event.key === 'ArrowUp' || event.key === 'ArrowDown') && !(event.target instanceof HTMLSelectElement)) {
         event.preventDefault();
         actions.move(item.key, event.key === 'ArrowUp' ? -1 : 1);
       } else if (event.target === card && !event.altKey && (event.key === 'ArrowUp' || event.key === 'ArrowDown')) {

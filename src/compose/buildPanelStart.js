@@ -104,6 +104,10 @@ export function buildPanelStart(initial, { patch }) {
   const take = button('Take the panel’s current view');
   take.disabled = true;
   const onMessage = (event) => {
+    if (frame && !frame.isConnected) { // the item was removed with its preview open
+      window.removeEventListener('message', onMessage);
+      return;
+    }
     if (!frame || event.source !== frame.contentWindow || event.origin !== window.location.origin || !isObject(event.data)) return;
     const { type } = event.data;
     if (type === 'fresnel-lab:ready') take.disabled = false;

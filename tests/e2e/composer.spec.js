@@ -7,7 +7,7 @@
 import { readFileSync } from 'node:fs';
 import { test, expect } from './fixtures.js';
 import { seriousViolations } from './audit.js';
-import { inflateRawSync } from 'node:zlib';
+import { deflateRawSync, inflateRawSync } from 'node:zlib';
 
 /** A lecture link's lecture, read apart from the lab: L1. + base64url of the raw DEFLATE of its JSON. */
 function lectureOf(link) {
@@ -122,7 +122,14 @@ test('a lecture composed by keyboard alone gives a link that holds it, in order'
   }
 });
 
-test('a damaged link and a file that is no lecture are refused in words; the page keeps working', async ({ page }) => {
+test('a lecture link opens for editing; a damaged link and a file that is no lecture are refused in words', async ({ page }) => {
+  const shared = { kind: 'fresnel-lab-lecture', version: 1, title: 'Shared', items: [{ type: 'panel', panel: 'metals' }, { type: 'panel', panel: 'bogus' }] };
+  const code = `L1.${deflateRawSync(Buffer.from(JSON.stringify(shared))).toString('base64url')}`;
+  await page.goto(`compose.html?lecture=${code}`);
+  await expect(page.getByLabel('Title of the lecture')).toHaveValue('Shared');
+  await expect(page.locator('.cp-item')).toHaveCount(1);
+  await expect(page.locator('.cp-notices')).toContainText('bogus is no panel of the lab');
+
   await page.goto('compose.html?lecture=L1.not-a-lecture');
   await expect(page.getByRole('alert')).toContainText('This lecture link cannot be opened');
   await page.locator('button[data-panel="metals"]').click();
