@@ -85,8 +85,9 @@ export function buildItemEditor(item, { patch }) {
   const box = el('div', 'cp-item-body');
   if (item.type === 'panel') {
     const entry = panelEntry(item.panel);
-    box.append(headingField(item, patch, `the panel’s own: ${entry?.title ?? item.panel}`),
-      markdownField(item, patch, 'the panel’s own paragraph'), buildPanelStart(item, { patch }));
+    // The lecture page shows the panel's own title and paragraph always; these come above them.
+    box.append(headingField(item, patch, `optional: yours, above “${entry?.title ?? item.panel}”`),
+      markdownField(item, patch, 'optional: your words before the panel'), buildPanelStart(item, { patch }));
   } else if (item.type === 'question') {
     box.append(...questionFields(item, patch), headingField(item, patch, 'optional'), markdownField(item, patch, 'optional: what you say before asking'));
   } else {
