@@ -37,6 +37,7 @@ const startDefault = button('Start from the lab’s own lecture');
 const starts = el('div', 'cp-row');
 starts.append(startEmpty, startDefault);
 intro.append(starts, notices);
+root.append(intro); // first, so that a fault while the rest is built is said on the page
 
 // The draft, where it comes from: the link, else what this browser kept.
 const search = new URLSearchParams(window.location.search);
@@ -144,7 +145,7 @@ title.addEventListener('input', () => commit(setTitle(draft, title.value)));
 lectureSection.append(lectureHeading, field('Title of the lecture', title), list.element);
 const columns = el('div', 'cp-columns');
 columns.append(catalogue, lectureSection);
-root.append(intro, columns, share.element);
+root.append(columns, share.element);
 
 const confirmReplace = () => !draft.items.length || window.confirm(`Replace the ${draft.items.length} items of this lecture?`);
 startEmpty.addEventListener('click', () => { if (confirmReplace()) { clearDraft(); replace(emptyDraft()); list.announce('An empty lecture.'); } });
