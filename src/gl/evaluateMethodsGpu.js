@@ -200,8 +200,9 @@ export function createMethodsGpu(gl) {
      * result per sample. inputs: Float32Array, 4 floats per sample: (cos θ, nI, nT, unused) for
      * dielectrics, (cos θ, n, k, f0) for conductors. extra: optional Float32Array, 4 per sample or
      * 4 for all; extra.x is F82's b (computed from n, k, f0 when omitted for conductor-f82).
+     * @param {{ methodId: string, precision?: string, inputs: Float32Array, extra?: Float32Array | null }} options
      */
-    evaluate({ methodId, precision = 'highp', inputs, extra } = {}) {
+    evaluate({ methodId, precision = 'highp', inputs, extra }) {
       methodById(methodId);
       checkPrecision(precision);
       if (!(inputs instanceof Float32Array) || inputs.length === 0 || inputs.length % 4 !== 0) {

@@ -2,13 +2,51 @@
 // panel's picture, the method evaluator, the timing passes or a student's code. Pure (no WebGL),
 // so the wording and the line mapping are tested in Node.
 
-/** The driver's log, each "ERROR: 0:LINE:" (ANGLE's form) followed by that line of the source. */
+// A #line directive: "#line line" or "#line line source-string-number" (GLSL ES 3.00 §3.4).
+const LINE_DIRECTIVE = /^\s*#\s*line\s+(\d+)(?:\s+(\d+))?\s*(?:\/\/.*)?$/;
+
+/**
+ * The index (0-based) in `source` of the line the driver calls line `line` of source string
+ * `string`, or -1. After "#line L" the next line is line L (GLSL ES 3.00 §3.4), so a source that
+ * restarts its count (the shader lab's `#line 1` before the student's code) can hold a line number
+ * twice: the last #line whose stretch reaches it wins, as the code after a directive is the code
+ * the directive was written for.
+ */
+export function sourceLineIndex(source, line, string = 0) {
+  const lines = String(source ?? '').split('\n');
+  const stretches = [{ start: 0, first: 1, string: 0 }];
+  lines.forEach((text, i) => {
+    const m = LINE_DIRECTIVE.exec(text);
+    if (m) stretches.push({ start: i + 1, first: Number(m[1]), string: m[2] === undefined ? stretches.at(-1).string : Number(m[2]) });
+  });
+  for (let k = stretches.length - 1; k >= 0; k -= 1) {
+    const { start, first, string: s } = stretches[k];
+    const end = k + 1 < stretches.length ? stretches[k + 1].start - 1 : lines.length; // the next directive's own line ends it
+    const index = start + line - first;
+    if (s === string && line >= first && index < end) return index;
+  }
+  return -1;
+}
+
+/** The driver's log, each "ERROR: S:LINE:" (ANGLE's form) followed by that line of the source. */
 export function explainLog(log, source) {
   const lines = String(source ?? '').split('\n');
   return String(log ?? '').trim().split('\n').map((entry) => {
-    const line = /^\s*ERROR:\s*\d+:(\d+):/.exec(entry)?.[1];
-    return line && lines[line - 1] !== undefined ? `${entry}\n    ${line}: ${lines[line - 1].trim()}` : entry;
+    const m = /^\s*ERROR:\s*(\d+):(\d+):/.exec(entry);
+    if (!m) return entry;
+    const index = sourceLineIndex(source, Number(m[2]), Number(m[1]));
+    return index >= 0 ? `${entry}\n    ${m[2]}: ${lines[index].trim()}` : entry;
   }).join('\n');
+}
+
+/**
+ * The driver's words on a refused shader in one line, for a sentence on the page: the first line
+ * of its log that says error, else its first line; '' when the driver gave no log.
+ */
+export function refusalLine(error) {
+  // eslint-disable-next-line no-control-regex
+  const lines = String(error?.log ?? '').split('\n').map((l) => l.replace(/[\u0000-\u001f\u007f]/g, '').trim()).filter(Boolean);
+  return lines.find((l) => /\berror\b/i.test(l)) ?? lines[0] ?? '';
 }
 
 /**

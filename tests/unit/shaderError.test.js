@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { explainLog, ShaderError, shaderErrorMessage } from '../../src/gl/shaderError.js';
+import { explainLog, refusalLine, ShaderError, shaderErrorMessage, sourceLineIndex } from '../../src/gl/shaderError.js';
+import { studentFragment, WRAPPER_LINE } from '../../src/panels/shader-lab/studentShader.js';
 
 const SOURCE = ['#version 300 es', 'precision highp float;', 'out vec4 color;', 'void main() {', '  color = vec4(x);', '}'].join('\n');
 const LOG = "ERROR: 0:5: 'x' : undeclared identifier\nERROR: 0:5: 'constructor' : not enough data provided for construction\n";
@@ -19,6 +20,47 @@ describe('explainLog', () => {
       .toBe('WARNING: 0:2: unused\nERROR: 0:99: far away\nsomething else');
     expect(explainLog(null, SOURCE)).toBe('');
     expect(explainLog('  \n', SOURCE)).toBe('');
+  });
+});
+
+describe('lines after #line directives', () => {
+  // The shader lab's wrapper: eight lines of its own, then `#line 1` and the student's code, then
+  // `#line 10000` and its main(). The driver counts from each directive (GLSL ES 3.00 §3.4).
+  const student = 'float fresnel(float c, float a, float b) {\n  float m = a / b;\n  return m * q;\n}';
+  const wrapped = studentFragment(student);
+
+  it('maps a log line through the last #line before it, not the raw line of the source', () => {
+    const log = "ERROR: 0:3: 'q' : undeclared identifier";
+    expect(explainLog(log, wrapped)).toBe(`${log}\n    3: return m * q;`);
+    // Line 3 of the source as written is the wrapper's "precision highp int;": the old mapping.
+    expect(wrapped.split('\n')[2]).toBe('precision highp int;');
+    expect(explainLog("ERROR: 0:2: 'x' : y", wrapped)).toBe("ERROR: 0:2: 'x' : y\n    2: float m = a / b;");
+  });
+
+  it('finds the wrapper\'s own lines after the second directive, and none past the source', () => {
+    const at = sourceLineIndex(wrapped, WRAPPER_LINE + 3);
+    expect(wrapped.split('\n')[at].trim()).toBe(wrapped.split('\n').find((l) => l.includes('outColor =')).trim());
+    expect(sourceLineIndex(wrapped, WRAPPER_LINE + 50)).toBe(-1);
+    expect(sourceLineIndex(wrapped, 5)).toBe(wrapped.split('\n').indexOf('precision highp sampler2D;') + 1); // before #line 1: the wrapper's line 5
+    expect(explainLog(`ERROR: 0:${WRAPPER_LINE + 60}: far`, wrapped)).toBe(`ERROR: 0:${WRAPPER_LINE + 60}: far`);
+  });
+
+  it('keeps the source-string number a directive sets apart', () => {
+    const source = ['#version 300 es', 'precision highp float;', '#line 20 3', 'out vec4 color;', 'void main() { color = z; }'].join('\n');
+    expect(sourceLineIndex(source, 21, 3)).toBe(4);
+    expect(sourceLineIndex(source, 21, 0)).toBe(-1);
+    expect(sourceLineIndex(source, 2, 0)).toBe(1);
+    expect(explainLog("ERROR: 3:21: 'z' : undeclared identifier", source)).toBe("ERROR: 3:21: 'z' : undeclared identifier\n    21: void main() { color = z; }");
+  });
+});
+
+describe('refusalLine', () => {
+  it('is the first line of the log that says error, trimmed, or else its first line', () => {
+    expect(refusalLine(new ShaderError({ stage: 'fragment', log: `WARNING: 0:1: unused\n${LOG}`, source: SOURCE })))
+      .toBe("ERROR: 0:5: 'x' : undeclared identifier");
+    expect(refusalLine({ log: '0(12) : error C1008: undefined variable "q"\u0000' })).toBe('0(12) : error C1008: undefined variable "q"');
+    expect(refusalLine({ log: '  Compile failed.\n' })).toBe('Compile failed.');
+    expect(refusalLine(new ShaderError({ stage: 'link', log: null }))).toBe('');
   });
 });
 
