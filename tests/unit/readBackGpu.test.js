@@ -46,7 +46,8 @@ describe('createReadBackGpu', () => {
 
   it('words a refused shader of its own with the driver\'s first error line, and logs the whole error', () => {
     const log = vi.spyOn(console, 'error').mockImplementation(() => {});
-    const refusal = new ShaderError({ stage: 'fragment', log: "WARNING: 0:2: unused\nERROR: 0:7: 'q' : undeclared identifier\n", source: 'x' });
+    const driverLog = "WARNING: 0:2: unused\nERROR: 0:7: 'q' : undeclared identifier\n";
+    const refusal = new ShaderError({ stage: 'fragment', log: driverLog, source: 'x' });
     const fake = fakeGpu({ probeError: refusal });
     const gpu = createReadBackGpu({ words: WORDS, ...fake.options() });
     expect(gpu.problem).toBe("Refused: ERROR: 0:7: 'q' : undeclared identifier.");

@@ -41,7 +41,8 @@ describe('lines after #line directives', () => {
     const at = sourceLineIndex(wrapped, WRAPPER_LINE + 3);
     expect(wrapped.split('\n')[at].trim()).toBe(wrapped.split('\n').find((l) => l.includes('outColor =')).trim());
     expect(sourceLineIndex(wrapped, WRAPPER_LINE + 50)).toBe(-1);
-    expect(sourceLineIndex(wrapped, 5)).toBe(wrapped.split('\n').indexOf('precision highp sampler2D;') + 1); // before #line 1: the wrapper's line 5
+    // Past the student's four lines, line 5 is the wrapper's own, before #line 1.
+    expect(sourceLineIndex(wrapped, 5)).toBe(wrapped.split('\n').indexOf('precision highp sampler2D;') + 1);
     expect(explainLog(`ERROR: 0:${WRAPPER_LINE + 60}: far`, wrapped)).toBe(`ERROR: 0:${WRAPPER_LINE + 60}: far`);
   });
 
@@ -50,7 +51,8 @@ describe('lines after #line directives', () => {
     expect(sourceLineIndex(source, 21, 3)).toBe(4);
     expect(sourceLineIndex(source, 21, 0)).toBe(-1);
     expect(sourceLineIndex(source, 2, 0)).toBe(1);
-    expect(explainLog("ERROR: 3:21: 'z' : undeclared identifier", source)).toBe("ERROR: 3:21: 'z' : undeclared identifier\n    21: void main() { color = z; }");
+    expect(explainLog("ERROR: 3:21: 'z' : undeclared identifier", source))
+      .toBe("ERROR: 3:21: 'z' : undeclared identifier\n    21: void main() { color = z; }");
   });
 });
 

@@ -66,7 +66,8 @@ function wordProblem(error, words) {
  * @param {ReadBackOptions<P>} options
  */
 export function createReadBackGpu({
-  words, prepare = () => /** @type {P} */ (null), onChange = () => {}, canvas, makeContext = createContext, makeEvaluator = createMethodsGpu,
+  words, prepare = () => /** @type {P} */ (null), onChange = () => {}, canvas,
+  makeContext = createContext, makeEvaluator = createMethodsGpu,
 }) {
   /** @type {{ gl: WebGL2RenderingContext, dispose: () => void } | null} */
   let context = null;

@@ -1,0 +1,183 @@
+// @ts-check
+// The stability panel's state apart from its DOM: which two maps a precision shows, the JavaScript
+// map (stabilityMap.classify), the GPU map read back once per method and precision (the values do
+// not depend on the tolerance, so only the classes are redone when it moves), the probed cell, and
+// every sentence the panel says. The GPU is a read-back GPU (createReadBackGpu.js); in Node a
+// stand-in. Whether mediump really is half precision here is measured by rendering 1 + 2^-f, not
+// taken from the driver, whose answer Safari/iOS has got wrong (webglfundamentals "WebGL Precision
+// Issues").
+import { cellAt, classifyGrid, criticalAngleDeg, gridInputs } from '../../methods/classifyGrid.js';
+import { methodById } from '../../methods/methods.js';
+import { contextFor } from '../../methods/rounding.js';
+import { classify, classifyValue, CLASS_NAMES } from '../../methods/stabilityMap.js';
+import { fixed } from '../../ui/format.js';
+import { CLASS_LABELS } from '../shared/createMapFigure.js';
+import { isStaleRun } from '../shared/createRunGate.js';
+
+/** @typedef {import('../shared/createReadBackGpu.js').ReadBackGpu} ReadBackGpu */
+/** @typedef {'gpu' | 'js'} Side */
+/** @typedef {{ i: number, j: number }} Cell */
+
+/** What the panel says about its GPU (createReadBackGpu's words). */
+export const readBackWords = Object.freeze({
+  unavailable: 'The GPU map needs WebGL2 with float render targets; the JavaScript map still works.',
+  refused: (/** @type {string} */ line) => 'This GPU could not compile the evaluation shader, so there is no GPU map: '
+    + `${line}. The JavaScript map still works.`,
+  lost: 'The graphics context was lost; the GPU map comes back when it is restored.',
+  restartFailed: (/** @type {Error} */ error) => `The GPU evaluator could not start again: ${error.message}`,
+});
+
+/** The two maps a precision shows: the GPU qualifier, the JS context, and which one was chosen. */
+export function pairFor(precision) {
+  const half = precision === 'fp16' || precision === 'mediump';
+  return {
+    gpu: half ? 'mediump' : 'highp',
+    js: precision === 'fp64' ? 'fp64' : half ? 'fp16' : 'fp32',
+    selected: precision === 'highp' || precision === 'mediump' ? 'gpu' : 'js',
+  };
+}
+
+// Six significant digits: a value beside the exact R, NaN and ±Infinity as JavaScript names them.
+const precise = (v) => (Number.isFinite(v) ? v.toPrecision(6) : String(v));
+const failing = (map) => map.width * map.height - map.counts.fine;
+
+/**
+ * values: the panel's values, read at each update ({ method, precision, tolerance }); gpu: the
+ * panel's read-back GPU, which the model owns from here (dispose frees it); onRead: after each
+ * read-back (the panel's frameDrawn).
+ * @param {{ values: { method: string, precision: string, tolerance: number }, gpu: ReadBackGpu, onRead?: () => void }} options
+ */
+export function createStabilityModel({ values, gpu, onRead = () => {} }) {
+  const reading = gpu.gate(); // one GPU map at a time: a loss or dispose makes it stale
+  const gpuValues = new Map(); // 'method|qualifier' → Float32Array (independent of the tolerance)
+  /** @type {{ gpu: any, js: any }} */
+  let maps = { gpu: null, js: null };
+  let pair = pairFor(values.precision);
+  /** @type {Cell | null} */
+  let probeCell = null;
+  let gpuProblem = gpu.problem; // why there is no GPU map, when there is none
+  if (gpu.evaluator) onRead(); // the precision probe was read back
+
+  /** The GPU map of the current method and qualifier over `grid`, read back once; null, and why, when there is none. */
+  function gpuMap(grid) {
+    if (!gpu.evaluator) {
+      gpuProblem = gpu.problem;
+      return null;
+    }
+    const key = `${values.method}|${pair.gpu}`;
+    if (!gpuValues.has(key)) {
+      if (!gpu.ready) { // lost: the maps already read back still stand
+        gpuProblem = gpu.problem;
+        return null;
+      }
+      try {
+        const inputs = gridInputs(grid);
+        const read = (evaluator) => evaluator.evaluate({ methodId: values.method, precision: pair.gpu, inputs });
+        gpuValues.set(key, gpu.read(reading.begin(), read));
+      } catch (error) { // the JavaScript map still stands
+        gpuProblem = isStaleRun(error) ? gpu.problem : `The GPU evaluation failed: ${error.message}`;
+        return null;
+      }
+      onRead();
+    }
+    return { ...classifyGrid(gpuValues.get(key), grid, { methodId: values.method, precision: pair.gpu }), values: gpuValues.get(key) };
+  }
+
+  const probe = () => gpu.precision?.probe ?? null;
+  const fullMediump = () => Boolean(probe()?.mediumpIsFullPrecision && pair.gpu === 'mediump');
+  const sideTitle = (/** @type {Side} */ side) => (side === 'gpu'
+    ? `On this GPU · ${pair.gpu}`
+    : `JavaScript · ${contextFor(pair.js).name}`);
+
+  return {
+    get maps() { return maps; },
+    get pair() { return pair; },
+    get probeCell() { return probeCell; },
+    /** What mediump and highp are on this GPU (probePrecision), or null. */
+    get precisionProbe() { return probe(); },
+    /** The values changed: both maps for the current method, precision and tolerance. */
+    update() {
+      pair = pairFor(values.precision);
+      const js = classify(values.method, pair.js, { tolerance: values.tolerance });
+      maps = { js, gpu: gpuMap(js) };
+    },
+    /** The note above the maps: what mediump is here, or why there is no GPU map. */
+    note() {
+      if (!maps.gpu) return gpuProblem;
+      const { probe: measured, claimed } = /** @type {import('../shared/createReadBackGpu.js').PrecisionFacts} */ (gpu.precision);
+      const claim = claimed?.mediump ? ` (the driver claims ${claimed.mediump.precision + 1} bits; not trusted, measured instead)` : '';
+      if (measured.mediumpIsFullPrecision) {
+        return `mediump runs at full precision on this GPU: 1 + 2⁻¹² ≠ 1, ${measured.mediumpBits} significand bits${claim}. `
+          + 'Its map matches highp; the JavaScript float16 map shows what a phone GPU with true half precision does.';
+      }
+      return `mediump runs at reduced precision on this GPU: ${measured.mediumpBits} significand bits (float16 has 11)${claim}.`;
+    },
+    /** The message in place of the GPU map ('' when there is one). */
+    gpuMessage: () => (maps.gpu ? '' : gpuProblem),
+    fullMediump,
+    sideTitle,
+    /** A map's accessible name, or null when the side has no map. */
+    mapLabel(/** @type {Side} */ side) {
+      const map = maps[side];
+      if (!map) return null;
+      return `Stability map of ${methodById(values.method).label}, ${sideTitle(side)}: `
+        + `${failing(map)} of ${map.width * map.height} cells fail. Arrow keys move the probe.`;
+    },
+    setProbe(/** @type {Cell | null} */ cell) { probeCell = cell; },
+    /**
+     * A key on a map moves the probe (arrows, Shift for 10 cells, Home and End to the row's ends);
+     * true when the key was one of them. From no probe, the move starts at the middle.
+     */
+    moveProbe(/** @type {string} */ key, shift = false) {
+      const map = maps.js;
+      const step = shift ? 10 : 1;
+      const moves = {
+        ArrowLeft: [-step, 0], ArrowRight: [step, 0], ArrowDown: [0, -step], ArrowUp: [0, step], Home: [-map.width, 0], End: [map.width, 0],
+      };
+      if (!Object.hasOwn(moves, key)) return false;
+      const cell = probeCell ?? { i: Math.floor(map.width / 2), j: Math.floor(map.height / 2) };
+      const [di, dj] = moves[key];
+      probeCell = { i: Math.min(map.width - 1, Math.max(0, cell.i + di)), j: Math.min(map.height - 1, Math.max(0, cell.j + dj)) };
+      return true;
+    },
+    /** The probed cell in words: θ, n_i/n_t, θc, the exact R and each map's value and class ('' without a probe). */
+    readout() {
+      if (!probeCell || !maps.js) return '';
+      const cell = cellAt(maps.js, probeCell.i, probeCell.j);
+      const method = methodById(values.method);
+      const critical = criticalAngleDeg(cell.ratio);
+      const parts = [`θ = ${fixed(cell.thetaDeg, 2)}°, n_i/n_t = ${fixed(cell.ratio, 3)}`
+        + `${critical === null ? '' : ` (θc = ${fixed(critical, 2)}°)`}`, `exact R = ${precise(cell.reference)}`];
+      const k = cell.j * maps.js.width + cell.i;
+      if (maps.gpu) parts.push(`GPU ${pair.gpu}: ${precise(maps.gpu.values[k])} (${CLASS_LABELS[CLASS_NAMES[maps.gpu.cells[k]]]})`);
+      const jsValue = method.evaluate(pair.js, cell.cos, cell.ratio, 1);
+      const jsClass = CLASS_NAMES[classifyValue(jsValue, cell.reference, values.tolerance)];
+      parts.push(`JS ${contextFor(pair.js).label}: ${precise(jsValue)} (${CLASS_LABELS[jsClass]})`);
+      return parts.join(' · ');
+    },
+    describe() {
+      const method = methodById(values.method);
+      const words = (map) => `${map.counts.fine} fine, ${map.counts.aboveTolerance} with error above ${values.tolerance.toPrecision(3)}, `
+        + `${map.counts.outOfRange} outside [0, 1] and ${map.counts.notFinite} NaN or infinite`;
+      const gpuText = maps.gpu ? `on this GPU in ${pair.gpu}: ${words(maps.gpu)}` : 'no GPU map (no float render targets)';
+      const mediump = fullMediump() ? ' mediump runs at full precision on this GPU.' : '';
+      return `${method.label} over ${maps.js.width} angles × ${maps.js.height} index ratios: ${gpuText}; `
+        + `in JavaScript ${contextFor(pair.js).label}: ${words(maps.js)}.${mediump}`;
+    },
+    csv() {
+      /** @type {Record<string, Array<number | string>>} */
+      const columns = { class: [...CLASS_NAMES] };
+      if (maps.gpu) columns[`gpu_${pair.gpu}`] = CLASS_NAMES.map((c) => maps.gpu.counts[c]);
+      columns[`js_${pair.js}`] = CLASS_NAMES.map((c) => maps.js.counts[c]);
+      return { filename: `stability-${values.method}-${values.precision}.csv`, columns };
+    },
+    /** The caption of the exported picture. */
+    pngCaption: () => `${methodById(values.method).label}${fullMediump() ? ' (mediump runs at full precision on this GPU)' : ''}`,
+    /** Frees the GPU (its runs, evaluator and context) and the values read back. */
+    dispose() {
+      gpu.dispose();
+      gpuValues.clear();
+      maps = { gpu: null, js: null };
+    },
+  };
+}
