@@ -7,7 +7,7 @@ import { dirname, join, resolve } from 'node:path';
 
 const root = resolve(import.meta.dirname, '../..');
 /** What `npm run build` and the unit tests read (the benchmark's peer page is built only for it). */
-const PROJECT = ['index.html', 'embed.html', 'homework.html', 'vite.config.js', 'package.json', 'jsconfig.json',
+const PROJECT = ['index.html', 'embed.html', 'homework.html', 'compose.html', 'vite.config.js', 'package.json', 'jsconfig.json',
   'README.md', 'docs', 'src', 'shaders', 'public', 'examples', 'scripts', 'tests/unit'];
 
 /**
