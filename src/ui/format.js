@@ -39,3 +39,16 @@ export function tickDecimals(incr) {
 export function tickLabel(value, incr) {
   return String(+value.toFixed(tickDecimals(incr))).replaceAll('-', MINUS);
 }
+
+/** `value` rounded to `digits` decimals as a number (a control's step), as toFixed rounds: 0.0400 → 0.04. */
+export function rounded(value, digits) {
+  return Number(value.toFixed(digits));
+}
+
+/**
+ * A number that a parser reads, not a person (SVG path data and coordinates, CSS lengths,
+ * aria-valuenow): fixed decimals with the ASCII hyphen-minus those grammars require.
+ */
+export function markupNumber(value, digits) {
+  return value.toFixed(digits);
+}

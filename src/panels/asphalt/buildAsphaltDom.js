@@ -3,6 +3,7 @@
 import { texElement } from '../../ui/tex.js';
 import './styles.css';
 import { el } from '../../ui/el.js';
+import { definitionList } from '../../ui/definitionList.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
 
 export function buildAsphaltDom(host) {
@@ -18,13 +19,13 @@ export function buildAsphaltDom(host) {
 
   const readout = el('p', 'asphalt-readout');
   readout.setAttribute('aria-live', 'polite');
-  const summary = el('dl', 'asphalt-summary');
+  const summary = definitionList('asphalt-summary');
   const formula = texElement(
     'L_\\text{spec} = \\frac{D(\\mathbf h)\\,G_2(\\mathbf l,\\mathbf v)\\,F(\\theta_d)}{4\\,\\cos\\theta_v}\\,E_\\text{sun},'
     + '\\qquad \\cos\\theta_d = \\mathbf l\\cdot\\mathbf h',
     { className: 'asphalt-formula' },
   );
-  root.append(stage, readout, summary, makeScrollBox(formula, 'The specular formula'));
+  root.append(stage, readout, summary.element, makeScrollBox(formula, 'The specular formula'));
   host.append(root);
 
   return {
@@ -37,12 +38,9 @@ export function buildAsphaltDom(host) {
     setReadout(text) {
       readout.textContent = text;
     },
+    /** pairs: [term, value, strong]; a strong row is one of the key numbers. */
     setSummary(pairs) {
-      summary.replaceChildren(...pairs.map(([term, value, strong]) => {
-        const wrap = el('div', strong ? 'is-key' : '');
-        wrap.append(el('dt', '', term), el('dd', '', value));
-        return wrap;
-      }));
+      summary.set(pairs.map(([term, value, strong]) => [term, value, strong ? 'is-key' : '']));
     },
   };
 }

@@ -51,8 +51,9 @@ export function fresnelTerms(cosThetaI, nI, nT) {
  * The slide's formula evaluated literally, left to right, with g² in one of two orders:
  * 'lecture' 1 + c² − m² (as on the slide) or 'safe' (1 − m)(1 + m) + c² (the factorisation
  * shaders/fresnel.glsl uses, here in m; fresnel.js forms g² exactly instead); like fresnel.js,
- * it adds c² to an index term that is exactly 0 for m = 1. With m = 1 and c below about 1e-8, c² is under half an ulp of 1 (1.1e-16), so 1 + c² rounds
- * to 1, the lecture order gives g² = 0, g = 0 and R = 1 instead of 0; the safe order keeps c².
+ * it adds c² to an index term that is exactly 0 for m = 1. With m = 1 and c below about 1e-8, c² is
+ * under half an ulp of 1 (1.1e-16), so 1 + c² rounds to 1, the lecture order gives g² = 0, g = 0
+ * and R = 1 instead of 0; the safe order keeps c².
  * g² < 0 takes the total-internal-reflection branch (R = 1), as any implementation must.
  */
 export function fresnelLiteral(cosThetaI, nI, nT, order = 'lecture') {

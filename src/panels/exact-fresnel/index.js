@@ -9,7 +9,8 @@ import { criticalAngle, fresnelExact, fresnelPolarized } from '../../optics/fres
 import { fresnelLiteral, fresnelTerms } from './fresnelTerms.js';
 import { createLinePlot } from '../../ui/createLinePlot.js';
 import { el } from '../../ui/el.js';
-import { fixed as fixedTo, sci } from '../../ui/format.js';
+import { angle, fixed as fixedTo, sci } from '../../ui/format.js';
+import { definitionList } from '../../ui/definitionList.js';
 import { criticalMark, thetaMark } from '../../ui/plotMarks.js';
 import { texElement } from '../../ui/tex.js';
 import { addSwap } from '../shared/indexPair.js';
@@ -21,7 +22,8 @@ import { makeScrollBox, scrollBox } from '../../ui/scrollBox.js';
 export { schema };
 
 // The slide's formula (lecture "Reflection Math"; Cook & Torrance 1982).
-const FORMULA = String.raw`R(\theta) = \frac{1}{2}\left(\frac{g-c}{g+c}\right)^{2}\left(1+\left(\frac{c(g+c)-m^{2}}{c(g-c)+m^{2}}\right)^{2}\right)`;
+const FORMULA = String.raw`R(\theta) = \frac{1}{2}\left(\frac{g-c}{g+c}\right)^{2}`
+  + String.raw`\left(1+\left(\frac{c(g+c)-m^{2}}{c(g-c)+m^{2}}\right)^{2}\right)`;
 const DEFINITIONS = String.raw`c = m\cos\theta,\qquad g = \sqrt{1 + c^{2} - m^{2}},\qquad m = \frac{n_i}{n_t}`;
 
 // One row per quantity: TeX, what it is, and how to show its value.
@@ -71,13 +73,8 @@ export function mount(root, ctx) {
     table.append(tr);
   }
 
-  const checks = el('dl', 'xf-checks');
-  const check = (label, key) => {
-    const dd = el('dd', 'xf-value');
-    dd.dataset.check = key;
-    checks.append(el('dt', '', label), dd);
-    return dd;
-  };
+  const checks = definitionList('xf-checks', { valueClass: 'xf-value' });
+  const check = (label, key) => checks.add(label, { check: key });
   const exactOut = check('fresnelExact(cos θ, n_i, n_t)', 'exact');
   const polarOut = check('(Rs + Rp)/2 from fresnelPolarized', 'polarized');
   const diffOut = check('|R above − fresnelExact|', 'difference');
@@ -113,7 +110,7 @@ export function mount(root, ctx) {
   plotHost.setAttribute('role', 'img');
   plotHost.setAttribute('aria-label', 'Exact reflectance R against the angle θ, with the current θ marked');
   const left = el('div', 'xf-left');
-  left.append(scrollBox(table, 'Each quantity at the current θ, n_i and n_t'), checks, status);
+  left.append(scrollBox(table, 'Each quantity at the current θ, n_i and n_t'), checks.element, status);
   const right = el('div', 'xf-right');
   right.append(why, plotHost);
   const body = el('div', 'xf-body');
@@ -131,7 +128,8 @@ export function mount(root, ctx) {
   ctx.bind(gui, ['theta', 'nI', 'nT']);
   addSwap(ctx, gui);
   ctx.tie(gui.add({ tir: () => ctx.set({ nI: 1.5, nT: 1, theta: 50 }) }, 'tir').name('Glass → air at 50° (TIR)'), ['nI', 'nT', 'theta']);
-  ctx.tie(gui.add({ cancel: () => ctx.set({ nT: values.nI, theta: 90 }) }, 'cancel').name('n_t = n_i at 90° (cancellation)'), ['nT', 'theta']);
+  ctx.tie(gui.add({ cancel: () => ctx.set({ nT: values.nI, theta: 90 }) }, 'cancel')
+    .name('n_t = n_i at 90° (cancellation)'), ['nT', 'theta']);
 
   let curvesKey = '';
   let curves = null;
@@ -187,7 +185,7 @@ export function mount(root, ctx) {
     const critical = criticalAngle(nI, nT);
     plot.setMarks([
       criticalMark(critical === null ? null : critical / DEG),
-      thetaMark(theta, `θ ${theta.toFixed(2)}°: R ${fixed(exact, 4)}`),
+      thetaMark(theta, `θ ${angle(theta)}: R ${fixed(exact, 4)}`),
     ]);
   }
   update();
@@ -198,7 +196,7 @@ export function mount(root, ctx) {
     get terms() { return terms; },
     describe() {
       const { theta, nI, nT } = values;
-      const at = `At θ = ${theta.toFixed(2)}° from n_i = ${nI} into n_t = ${nT}: m = ${fixed(terms.m, 4)}, c = ${fixed(terms.c, 4)}, `
+      const at = `At θ = ${angle(theta)} from n_i = ${nI} into n_t = ${nT}: m = ${fixed(terms.m, 4)}, c = ${fixed(terms.c, 4)}, `
         + `g² = ${fixed(terms.g2, 4)}`;
       if (terms.tir) return `${at}, negative, so g would be imaginary: total internal reflection, and R = 1.`;
       return `${at}, g = ${fixed(terms.g, 4)}; first factor ${fixed(terms.factor1, 4)}, second factor `

@@ -21,7 +21,8 @@ import { schema } from './schema.js';
 import { addDielectricTrace } from '../shared/dielectricTrace.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
 import { lectureNote } from '../../ui/lectureNote.js';
-import { fixed } from '../../ui/format.js';
+import { fixed, rounded } from '../../ui/format.js';
+import { definitionList } from '../../ui/definitionList.js';
 import { luminance } from '../../optics/luminance.js';
 import { coatConstants, diffuseShares } from './model.js';
 
@@ -81,7 +82,7 @@ export function mount(root, ctx) {
     fallback: 'The spheres need WebGL2; the numbers and the GLSL below still apply.',
   });
 
-  const summary = el('dl', 'fl-summary');
+  const summary = definitionList('fl-summary');
   const plotHost = el('div', 'fl-plot');
   plotHost.setAttribute('aria-label', 'Weight of ks against the view angle θ: Fresnel and constant');
   const codeHead = el('div', 'fl-code-head');
@@ -96,7 +97,7 @@ export function mount(root, ctx) {
   lines.forEach((line, i) => code.append(...(i ? ['\n', line] : [line])));
   pre.append(code);
   const note = lectureNote(panel);
-  panel.append(summary, plotHost, codeHead, pre);
+  panel.append(summary.element, plotHost, codeHead, pre);
 
   const plot = createLinePlot(plotHost, {
     xLabel: 'θ, the view angle between N and V', yLabel: 'Weight of ks', height: 260,
@@ -106,7 +107,8 @@ export function mount(root, ctx) {
       { label: 'Constant w', stroke: '--c-marker' },
     ],
   });
-  const trace = addDielectricTrace(plotHost, plot, () => ({ nI: 1, nT: values.nT }), ['exact', 'schlick'], { exact: 'F exact', schlick: 'F Schlick' });
+  const trace = addDielectricTrace(plotHost, plot, () => ({ nI: 1, nT: values.nT }), ['exact', 'schlick'],
+    { exact: 'F exact', schlick: 'F Schlick' });
 
   const onCopy = async () => {
     copyStatus.textContent = await copyCode(MIX_GLSL, code);
@@ -115,7 +117,7 @@ export function mount(root, ctx) {
 
   const coat = ctx.gui.addFolder('Coat and comparison');
   ctx.bind(coat, ['nT', 'method', 'weight']);
-  ctx.tie(coat.add({ match: () => ctx.set({ weight: Number(normalIncidence(1, values.nT).toFixed(3)) }) }, 'match')
+  ctx.tie(coat.add({ match: () => ctx.set({ weight: rounded(normalIncidence(1, values.nT), 3) }) }, 'match')
     .name('Set w = F(0°) (centres match)'), ['weight']);
   ctx.bind(ctx.gui.addFolder('Colours and light'), ['kd', 'ks', 'lightAz', 'lightEl']);
 
@@ -139,12 +141,14 @@ export function mount(root, ctx) {
       + `spread over a wider cone (1/n²), and the coat's underside sends ${fixed(layers.ri, 2)} of that diffuse light back `
       + `to the base. Head-on, under an overhead sun, the lecture's model lets out ${fixed(shares.lecture, 2)} of this kd's `
       + `diffuse light, the layered coat ${fixed(shares.layered, 2)}`
-      + `${shares.layered < shares.lecture ? ': the coated surface looks darker' : ' (light bouncing under the coat makes up for the losses on a bright base)'}. `
+      + `${shares.layered < shares.lecture
+        ? ': the coated surface looks darker'
+        : ' (light bouncing under the coat makes up for the losses on a bright base)'}. `
       + `"Layered coat" shows it on the same sphere.`, COAT_SOURCE);
     plot.setData([curves.theta, curves.exact, curves.schlick, curves.theta.map(() => weight)]);
     plot.setMarks([thetaMark(RIM_DEG, `${RIM_DEG}°`)]);
     const rim = weightAt(RIM_DEG, nT, method);
-    summary.replaceChildren(...[
+    summary.set([
       ['F(0°) = R0', fixed(normalIncidence(1, nT), 4)],
       [`F(${RIM_DEG}°) ${method === 'schlick' ? 'Schlick' : 'exact'}`, fixed(rim, 4)],
       ['Constant w', `${fixed(weight, 3)} at every angle`],
@@ -152,11 +156,7 @@ export function mount(root, ctx) {
         ['Coat underside reflects', `${fixed(layers.ri, 4)} of diffuse light`],
         ['Diffuse let out head-on', `${fixed(shares.layered, 3)} (lecture: ${fixed(shares.lecture, 3)})`],
       ] : []),
-    ].map(([term, value]) => {
-      const wrap = el('div');
-      wrap.append(el('dt', '', term), el('dd', '', value));
-      return wrap;
-    }));
+    ]);
     const live = { exact: ['vec3 kExact '], schlick: ['vec3 kSchlick '], layered: ['float fV ', 'vec3 kLayered ', '  * albedo'] }[method];
     for (const line of lines) {
       line.classList.toggle('fl-live', [...live, 'vec3 kConstant '].some((start) => line.textContent.startsWith(start)));
@@ -190,7 +190,8 @@ export function mount(root, ctx) {
           + `the coat's underside reflecting ${fixed(layers.ri, 3)} of the diffuse light back)`
         : `k = mix(kd, ks, F), with F by ${METHOD_NAMES[method]} at the view angle N·V for a coat of n_t = ${nT}`;
       return `Fresnel sphere (first): ${model}: `
-        + `F is ${fixed(weightAt(0, nT, method), 4)} at 0° and ${fixed(weightAt(RIM_DEG, nT, method), 4)} at ${RIM_DEG}°, so its rim turns toward ks. `
+        + `F is ${fixed(weightAt(0, nT, method), 4)} at 0° and ${fixed(weightAt(RIM_DEG, nT, method), 4)} at ${RIM_DEG}°, `
+        + 'so its rim turns toward ks. '
         + `Other sphere (second): a constant weight w = ${fixed(weight, 3)} at every angle, so its rim keeps the same mix as its centre.`;
     },
     csv() {

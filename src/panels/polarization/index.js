@@ -7,6 +7,8 @@ import { cosDeg, DEG } from '../../optics/angles.js';
 import { reflectanceCurves } from '../../optics/curves.js';
 import { createLinePlot } from '../../ui/createLinePlot.js';
 import { el } from '../../ui/el.js';
+import { definitionList } from '../../ui/definitionList.js';
+import { angle, fixed } from '../../ui/format.js';
 import { brewsterMark, criticalMark, thetaMark } from '../../ui/plotMarks.js';
 import { addSwap } from '../shared/indexPair.js';
 import './styles.css';
@@ -28,13 +30,6 @@ function at(thetaDeg, nI, nT) {
   return { s, p, mean: fresnelExact(c, nI, nT) };
 }
 
-function summaryItem(term) {
-  const wrap = el('div');
-  const dd = el('dd');
-  wrap.append(el('dt', '', term), dd);
-  return { wrap, dd };
-}
-
 /**
  * @param {HTMLElement} root
  * @param {import('../../host/panelContract.js').PanelContext} ctx
@@ -43,13 +38,12 @@ function summaryItem(term) {
 export function mount(root, ctx) {
   const { values } = ctx;
   const panel = el('div', 'polarization-panel');
-  const summary = el('dl', 'pol-summary');
+  const summary = definitionList('pol-summary');
   const items = {
-    brewster: summaryItem('Brewster angle'),
-    atBrewster: summaryItem('At Brewster'),
-    critical: summaryItem('Critical angle'),
+    brewster: summary.add('Brewster angle'),
+    atBrewster: summary.add('At Brewster'),
+    critical: summary.add('Critical angle'),
   };
-  summary.append(...Object.values(items).map((i) => i.wrap));
   const plotHost = el('div', 'pol-plot');
   plotHost.setAttribute('role', 'img');
   plotHost.setAttribute('aria-label', 'Rs, Rp and their mean against the angle of incidence θ');
@@ -65,7 +59,7 @@ export function mount(root, ctx) {
     + 'Rs-only number reads too high at oblique angles. ');
   const noteNumbers = el('strong', 'pol-note-numbers');
   note.append(noteNumbers);
-  panel.append(summary, plotHost, readout, note);
+  panel.append(summary.element, plotHost, readout, note);
   root.append(panel);
 
   const plot = createLinePlot(plotHost, {
@@ -100,14 +94,14 @@ export function mount(root, ctx) {
       const c = criticalAngle(nI, nT);
       critical = c === null ? null : c / DEG;
       const b = at(brewster, nI, nT);
-      items.brewster.dd.textContent = `${brewster.toFixed(2)}°`;
-      items.atBrewster.dd.textContent = `Rp = ${b.p.toFixed(4)}, Rs = ${b.s.toFixed(4)}`;
-      items.critical.dd.textContent = critical === null ? 'none (n_i ≤ n_t)' : `${critical.toFixed(2)}°`;
+      items.brewster.textContent = angle(brewster);
+      items.atBrewster.textContent = `Rp = ${fixed(b.p, 4)}, Rs = ${fixed(b.s, 4)}`;
+      items.critical.textContent = critical === null ? 'none (n_i ≤ n_t)' : angle(critical);
     }
-    plot.setMarks([brewsterMark(brewster, ' (Rp = 0)'), criticalMark(critical), thetaMark(theta, `θ = ${theta.toFixed(2)}°`)]);
+    plot.setMarks([brewsterMark(brewster, ' (Rp = 0)'), criticalMark(critical), thetaMark(theta, `θ = ${angle(theta)}`)]);
     point = at(theta, nI, nT);
-    readout.textContent = `At θ = ${theta.toFixed(2)}°   Rs = ${point.s.toFixed(4)}   Rp = ${point.p.toFixed(4)}   `
-      + `unpolarized mean = ${point.mean.toFixed(4)}`;
+    readout.textContent = `At θ = ${angle(theta)}   Rs = ${fixed(point.s, 4)}   Rp = ${fixed(point.p, 4)}   `
+      + `unpolarized mean = ${fixed(point.mean, 4)}`;
     noteNumbers.textContent = explain(point, theta, nI, nT);
   }
 
@@ -115,11 +109,11 @@ export function mount(root, ctx) {
   function explain({ s, p, mean }, theta, nI, nT) {
     if (nI === nT) return 'Here n_i = n_t: there is no interface and nothing reflects.';
     if (s - mean < 5e-5) {
-      return `At ${theta.toFixed(2)}° the two agree (Rs = ${s.toFixed(4)}, mean = ${mean.toFixed(4)}): `
+      return `At ${angle(theta)} the two agree (Rs = ${fixed(s, 4)}, mean = ${fixed(mean, 4)}): `
         + (p > 0.9999 ? 'everything is reflected.' : 's and p reflect alike there.');
     }
-    return `At ${theta.toFixed(2)}°: Rs = ${s.toFixed(4)} against the unpolarized ${mean.toFixed(4)}, `
-      + `${(s / mean).toFixed(2)} times too high (Rp = ${p.toFixed(4)}).`;
+    return `At ${angle(theta)}: Rs = ${fixed(s, 4)} against the unpolarized ${fixed(mean, 4)}, `
+      + `${fixed(s / mean, 2)} times too high (Rp = ${fixed(p, 4)}).`;
   }
   update();
 
@@ -129,10 +123,10 @@ export function mount(root, ctx) {
     update,
     describe() {
       const { nI, nT, theta } = values;
-      return `From n_i = ${nI} into n_t = ${nT}: at ${theta.toFixed(2)}° Rs = ${point.s.toFixed(4)}, `
-        + `Rp = ${point.p.toFixed(4)} and their mean, the unpolarized R, is ${point.mean.toFixed(4)}; `
-        + `Rp is 0 at the Brewster angle ${brewster.toFixed(2)}°`
-        + (critical === null ? '.' : `; past the critical angle ${critical.toFixed(2)}° both are 1.`);
+      return `From n_i = ${nI} into n_t = ${nT}: at ${angle(theta)} Rs = ${fixed(point.s, 4)}, `
+        + `Rp = ${fixed(point.p, 4)} and their mean, the unpolarized R, is ${fixed(point.mean, 4)}; `
+        + `Rp is 0 at the Brewster angle ${angle(brewster)}`
+        + (critical === null ? '.' : `; past the critical angle ${angle(critical)} both are 1.`);
     },
     csv() {
       return {

@@ -6,7 +6,8 @@ import { fresnelExact, normalIncidence } from '../../optics/fresnel.js';
 import { maxSpread, r0Steps } from './r0Steps.js';
 import { el } from '../../ui/el.js';
 import { fixed as fixedTo, sci } from '../../ui/format.js';
-import { renderTex, texElement } from '../../ui/tex.js';
+import { renderTex, texElement, texNumber } from '../../ui/tex.js';
+import { definitionList } from '../../ui/definitionList.js';
 import { addSwap } from '../shared/indexPair.js';
 import './styles.css';
 import { schema } from './schema.js';
@@ -71,19 +72,12 @@ export function mount(root, ctx) {
 
   const check = el('div', 'r0-check');
   const verdict = el('p', 'r0-verdict');
-  const refs = el('dl', 'r0-refs');
-  const ref = (label) => {
-    const wrap = el('div');
-    const dd = el('dd', 'r0-value');
-    wrap.append(el('dt', '', label), dd);
-    refs.append(wrap);
-    return dd;
-  };
-  const spreadOut = ref('Largest difference between the lines');
-  const normalOut = ref('normalIncidence(n_i, n_t)');
-  const exactOut = ref('fresnelExact(cos 0° = 1, n_i, n_t)');
+  const refs = definitionList('r0-refs', { valueClass: 'r0-value' });
+  const spreadOut = refs.add('Largest difference between the lines');
+  const normalOut = refs.add('normalIncidence(n_i, n_t)');
+  const exactOut = refs.add('fresnelExact(cos 0° = 1, n_i, n_t)');
   const numbers = makeScrollBox(el('div', 'r0-numbers'), 'R(0°) with these indices');
-  check.append(verdict, refs, numbers);
+  check.append(verdict, refs.element, numbers);
 
   panel.append(setupHead, scrollBox(setup, 'The setting θ = 0°'), scrollBox(lines, 'The derivation, line by line'), check);
   root.append(panel);
@@ -105,13 +99,14 @@ export function mount(root, ctx) {
     const exact = fresnelExact(1, nI, nT);
     const agree = spread < 1e-12 && Math.abs(all.at(-1) - normal) < 1e-12 && Math.abs(all.at(-1) - exact) < 1e-12;
     verdict.textContent = agree
-      ? `✓ All ${all.length} lines agree: R(0°) = ${fixed(all.at(-1))} for n_i = ${nI.toFixed(4)}, n_t = ${nT.toFixed(4)}.`
+      ? `✓ All ${all.length} lines agree: R(0°) = ${fixed(all.at(-1))} for n_i = ${fixedTo(nI, 4)}, n_t = ${fixedTo(nT, 4)}.`
       : `✗ The lines disagree (spread ${tiny(spread)}).`;
     panel.classList.toggle('r0-bad', !agree);
     spreadOut.textContent = `${tiny(spread)}  (float64 rounding)`;
     normalOut.textContent = fixed(normal);
     exactOut.textContent = fixed(exact);
-    renderTex(numbers, String.raw`R(0^\circ) = \left(\frac{${nT.toFixed(4)} - ${nI.toFixed(4)}}{${nT.toFixed(4)} + ${nI.toFixed(4)}}\right)^{2}
+    const [t, i] = [texNumber(nT), texNumber(nI)];
+    renderTex(numbers, String.raw`R(0^\circ) = \left(\frac{${t} - ${i}}{${t} + ${i}}\right)^{2}
       = \left(\frac{${fixed(nT - nI)}}{${fixed(nT + nI)}}\right)^{2} = ${fixed(all.at(-1))}`);
   }
   update();

@@ -4,6 +4,8 @@
 import { renderTex, texNumber } from '../../ui/tex.js';
 import { REFLECTION_BANDS } from './model.js';
 import { el } from '../../ui/el.js';
+import { definitionList } from '../../ui/definitionList.js';
+import { angle, fixed } from '../../ui/format.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
 
 export function buildReflectRefractDom(host) {
@@ -12,7 +14,8 @@ export function buildReflectRefractDom(host) {
   const canvas = el('canvas', 'rr-canvas');
   canvas.setAttribute('role', 'img');
   canvas.setAttribute('aria-label',
-    'A flat water surface seen from above: the reflected sky and the refracted tiled pool floor, blended by Fresnel reflectance. The ring marks the centre ray.');
+    'A flat water surface seen from above: the reflected sky and the refracted tiled pool floor, blended by Fresnel reflectance. '
+    + 'The ring marks the centre ray.');
   const mark = el('div', 'rr-mark');
   mark.setAttribute('aria-hidden', 'true');
   const caption = el('div', 'rr-caption');
@@ -34,9 +37,9 @@ export function buildReflectRefractDom(host) {
   const barR = el('span', 'rr-bar-r');
   const barT = el('span', 'rr-bar-t');
   bar.append(barR, barT);
-  const summary = el('dl', 'rr-summary');
+  const summary = definitionList('rr-summary');
   const formula = makeScrollBox(el('div', 'rr-formula'), 'Reflected and transmitted fractions');
-  root.append(stage, bands, bar, summary, formula);
+  root.append(stage, bands, bar, summary.element, formula);
   host.append(root);
 
   return {
@@ -53,19 +56,16 @@ export function buildReflectRefractDom(host) {
       }
       barR.style.flexGrow = String(ray.R);
       barT.style.flexGrow = String(ray.T);
-      barR.textContent = ray.R >= 0.12 ? `R ${ray.R.toFixed(3)}` : '';
-      barT.textContent = ray.T >= 0.12 ? `T ${ray.T.toFixed(3)}` : '';
-      summary.replaceChildren(...[
-        ['Centre ray from the normal', `θ = ${ray.thetaDeg.toFixed(2)}°`],
-        ['Reflected (sky)', `R = ${ray.R.toFixed(4)}`],
-        ['Refracted (floor)', `T = 1 − R = ${ray.T.toFixed(4)}`],
-        ['Transmitted angle', `θt = ${ray.thetaTDeg.toFixed(2)}°`],
-      ].map(([term, value]) => {
-        const wrap = el('div');
-        wrap.append(el('dt', '', term), el('dd', '', value));
-        return wrap;
-      }));
-      renderTex(formula, `\\text{colour} = ${texNumber(ray.R)}\\,\\text{sky}_{\\text{reflect}} + ${texNumber(ray.T)}\\,\\text{floor}_{\\text{refract}}`);
+      barR.textContent = ray.R >= 0.12 ? `R ${fixed(ray.R, 3)}` : '';
+      barT.textContent = ray.T >= 0.12 ? `T ${fixed(ray.T, 3)}` : '';
+      summary.set([
+        ['Centre ray from the normal', `θ = ${angle(ray.thetaDeg)}`],
+        ['Reflected (sky)', `R = ${fixed(ray.R, 4)}`],
+        ['Refracted (floor)', `T = 1 − R = ${fixed(ray.T, 4)}`],
+        ['Transmitted angle', `θt = ${angle(ray.thetaTDeg)}`],
+      ]);
+      renderTex(formula, `\\text{colour} = ${texNumber(ray.R)}\\,\\text{sky}_{\\text{reflect}}`
+        + ` + ${texNumber(ray.T)}\\,\\text{floor}_{\\text{refract}}`);
     },
   };
 }

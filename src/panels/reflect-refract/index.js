@@ -6,6 +6,7 @@ import { createShaderView } from '../../gl/createShaderView.js';
 import { DEG } from '../../optics/angles.js';
 import { dielectrics } from '../../optics/materials.js';
 import { indexPresets } from '../shared/indexPresets.js';
+import { angle, fixed } from '../../ui/format.js';
 import { startWebGL } from '../shared/startWebGL.js';
 import { centreRay, splitByElevation } from './model.js';
 import { buildReflectRefractDom } from './buildReflectRefractDom.js';
@@ -86,9 +87,9 @@ export function mount(root, ctx) {
     get ray() { return ray; },
     update,
     describe() {
-      return `Looking down at ${values.elevation.toFixed(1)}° above a surface of n_t = ${values.nT}: the centre ray is `
-        + `${ray.thetaDeg.toFixed(1)}° from the normal, so R = ${ray.R.toFixed(4)} of the light comes from the reflected sky `
-        + `and T = ${ray.T.toFixed(4)} from the floor, refracted to ${ray.thetaTDeg.toFixed(2)}° (${ray.band.label}).`;
+      return `Looking down at ${angle(values.elevation, 1)} above a surface of n_t = ${values.nT}: the centre ray is `
+        + `${angle(ray.thetaDeg, 1)} from the normal, so R = ${fixed(ray.R, 4)} of the light comes from the reflected sky `
+        + `and T = ${fixed(ray.T, 4)} from the floor, refracted to ${angle(ray.thetaTDeg)} (${ray.band.label}).`;
     },
     csv() {
       const { elevation, R, T } = splitByElevation(values.nT);

@@ -6,6 +6,7 @@ import { angle, fixed } from '../../ui/format.js';
 import { setSubscripted } from '../../ui/subscripts.js';
 import { renderTex, texNumber } from '../../ui/tex.js';
 import { el } from '../../ui/el.js';
+import { definitionList } from '../../ui/definitionList.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
 
 // A field amplitude: real numbers as they are, complex ones (total internal reflection) as
@@ -21,7 +22,8 @@ export function buildRefractionWavesDom(host, { onPlayToggle }) {
   const canvas = el('canvas', 'rw-canvas');
   canvas.setAttribute('role', 'img');
   canvas.setAttribute('aria-label',
-    'Wavefronts of light crossing a horizontal interface: the incident medium above, the transmitted medium below, with the incident, transmitted and reflected rays.');
+    'Wavefronts of light crossing a horizontal interface: the incident medium above, the transmitted medium below, '
+    + 'with the incident, transmitted and reflected rays.');
   const top = el('div', 'rw-medium rw-medium-1');
   const bottom = el('div', 'rw-medium rw-medium-2');
   const tir = el('div', 'rw-tir');
@@ -37,14 +39,14 @@ export function buildRefractionWavesDom(host, { onPlayToggle }) {
   play.type = 'button';
   play.addEventListener('click', onPlayToggle);
   controls.append(play);
-  const summary = el('dl', 'rw-summary');
+  const summary = definitionList('rw-summary', { write: setSubscripted });
   const snell = makeScrollBox(el('div', 'rw-snell'), 'Snell’s law at these indices');
   const note = el('p', 'rw-note');
-  root.append(stage, controls, summary, snell, note);
+  root.append(stage, controls, summary.element, snell, note);
   host.append(root);
 
-  const mediumText = (side, m) => `n_${side} = ${m.n.toFixed(3)}   λ_${side} = λ_0/n_${side} = ${m.wavelength.toFixed(1)} nm   `
-    + `v_${side} = c/n_${side} = ${m.speed.toFixed(3)} c`;
+  const mediumText = (side, m) => `n_${side} = ${fixed(m.n, 3)}   λ_${side} = λ_0/n_${side} = ${fixed(m.wavelength, 1)} nm   `
+    + `v_${side} = c/n_${side} = ${fixed(m.speed, 3)} c`;
 
   return {
     stage,
@@ -63,25 +65,22 @@ export function buildRefractionWavesDom(host, { onPlayToggle }) {
       setSubscripted(bottom, mediumText('t', s.mT));
       tir.hidden = s.thetaT !== null;
       tirDetail.textContent = s.thetaT === null
-        ? `No transmitted wave; the evanescent field below fades within ${s.depthNm.toFixed(0)} nm (1/e).`
+        ? `No transmitted wave; the evanescent field below fades within ${fixed(s.depthNm, 0)} nm (1/e).`
         : '';
       stage.classList.toggle('rw-is-tir', s.thetaT === null);
-      summary.replaceChildren(...[
+      summary.set([
         ['Incidence θ_i', angle(s.thetaI)],
         ['Transmitted θ_t', s.thetaT === null ? 'none (total internal reflection)' : angle(s.thetaT)],
         ['Critical angle', s.critical === null ? 'none (n_i ≤ n_t)' : angle(s.critical)],
         ['Phase speeds c/n', `v_i = ${kmS(s.mI.speedKmS)}, v_t = ${kmS(s.mT.speedKmS)}`],
-        ['Reflected R', s.R.toFixed(4)],
-        ['Transmitted T', s.T.toFixed(4)],
-      ].map(([term, value]) => {
-        const wrap = el('div');
-        wrap.append(setSubscripted(el('dt'), term), setSubscripted(el('dd'), value));
-        return wrap;
-      }));
+        ['Reflected R', fixed(s.R, 4)],
+        ['Transmitted T', fixed(s.T, 4)],
+      ]);
       note.textContent = 'The picture shows s-polarized light (electric field out of the screen), incident amplitude 1: '
         + `reflected r_s = ${amplitude(s.r)}, transmitted t_s = 1 + r_s = ${amplitude(s.t)}`
         + `${s.thetaT === null ? ' (evanescent)' : ''}. R and T above are for unpolarized light.`;
-      const lhs = `n_i \\sin\\theta_i = ${texNumber(s.nI, 3)} \\sin ${texNumber(s.thetaI, 2)}^\\circ = ${texNumber(s.nI * Math.sin(s.thetaI * DEG), 4)}`;
+      const lhs = `n_i \\sin\\theta_i = ${texNumber(s.nI, 3)} \\sin ${texNumber(s.thetaI, 2)}^\\circ`
+        + ` = ${texNumber(s.nI * Math.sin(s.thetaI * DEG), 4)}`;
       renderTex(snell, s.thetaT === null
         ? `${lhs} > n_t = ${texNumber(s.nT, 3)} \\;\\Rightarrow\\; \\text{no } \\theta_t`
         : `${lhs} = n_t \\sin\\theta_t = ${texNumber(s.nT, 3)} \\sin ${texNumber(s.thetaT, 2)}^\\circ`);

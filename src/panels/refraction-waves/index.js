@@ -8,6 +8,7 @@ import { DEG } from '../../optics/angles.js';
 import { criticalAngle, fresnelExact } from '../../optics/fresnel.js';
 import { evanescentDepth, mediumWave, waveField } from '../../optics/waves.js';
 import { startWebGL } from '../shared/startWebGL.js';
+import { angle, fixed } from '../../ui/format.js';
 import { buildRefractionWavesDom } from './buildRefractionWavesDom.js';
 import fragment from './refraction-waves.frag.glsl?raw';
 import './styles.css';
@@ -125,14 +126,14 @@ export function mount(root, ctx) {
     update,
     describe() {
       const { mI, mT } = state;
-      const media = `Above, n_i = ${state.nI}: wavelength ${mI.wavelength.toFixed(1)} nm and phase speed ${mI.speed.toFixed(3)} c; `
-        + `below, n_t = ${state.nT}: ${mT.wavelength.toFixed(1)} nm and ${mT.speed.toFixed(3)} c. `;
-      const critical = state.critical === null ? 'there is no critical angle' : `the critical angle is ${state.critical.toFixed(2)}°`;
+      const media = `Above, n_i = ${state.nI}: wavelength ${fixed(mI.wavelength, 1)} nm and phase speed ${fixed(mI.speed, 3)} c; `
+        + `below, n_t = ${state.nT}: ${fixed(mT.wavelength, 1)} nm and ${fixed(mT.speed, 3)} c. `;
+      const critical = state.critical === null ? 'there is no critical angle' : `the critical angle is ${angle(state.critical)}`;
       return media + (state.thetaT === null
-        ? `At ${state.thetaI.toFixed(2)}° incidence, past the critical angle of ${state.critical.toFixed(2)}°: `
+        ? `At ${angle(state.thetaI)} incidence, past the critical angle of ${angle(state.critical)}: `
           + 'total internal reflection, no transmitted wave.'
-        : `At ${state.thetaI.toFixed(2)}° incidence the transmitted wave travels at ${state.thetaT.toFixed(2)}° (${critical}); `
-          + `R = ${state.R.toFixed(4)}, T = ${state.T.toFixed(4)}.`);
+        : `At ${angle(state.thetaI)} incidence the transmitted wave travels at ${angle(state.thetaT)} (${critical}); `
+          + `R = ${fixed(state.R, 4)}, T = ${fixed(state.T, 4)}.`);
     },
     png: view ? () => view.toDataURL() : null,
     dispose() {

@@ -11,7 +11,8 @@ import { createLinePlot } from '../../ui/createLinePlot.js';
 import { el } from '../../ui/el.js';
 import { angle as deg, fixed as fixedTo } from '../../ui/format.js';
 import { criticalMark, thetaMark } from '../../ui/plotMarks.js';
-import { renderTex, texElement } from '../../ui/tex.js';
+import { renderTex, texElement, texNumber } from '../../ui/tex.js';
+import { definitionList } from '../../ui/definitionList.js';
 import { addSwap } from '../shared/indexPair.js';
 import { addDielectricTrace } from '../shared/dielectricTrace.js';
 import './styles.css';
@@ -45,38 +46,22 @@ export function mount(root, ctx) {
   const atTex = el('div', 'sk-tex');
   formulas.append(texElement(FORMULA), r0Tex, atTex);
 
-  const readout = el('dl', 'sk-readout');
-  const item = (label, key) => {
-    const wrap = el('div');
-    const dd = el('dd', 'sk-value');
-    dd.dataset.out = key;
-    wrap.append(el('dt', '', label), dd);
-    readout.append(wrap);
-    return dd;
-  };
+  const readout = definitionList('sk-readout', { valueClass: 'sk-value' });
+  const item = (label, key) => readout.add(label, { out: key });
   const out = {
     exact: item('Exact', 'exact'), schlick: item('Schlick', 'schlick'), error: item('|error|', 'error'),
     schlickT: item('Schlick on cos θt', 'schlickT'), errorT: item('|error| on cos θt', 'errorT'),
   };
   const tirNote = el('p', 'sk-note');
 
-  const summary = el('dl', 'sk-summary');
-  const worstOut = el('dd', 'sk-value');
-  const worstTOut = el('dd', 'sk-value');
-  worstOut.dataset.worst = 'schlick';
-  worstTOut.dataset.worst = 'cosThetaT';
-  const row = (label, dd) => {
-    const wrap = el('div');
-    wrap.append(el('dt', '', label), dd);
-    summary.append(wrap);
-  };
-  row('Largest |exact − Schlick|', worstOut);
-  row('Largest |exact − Schlick on cos θt|', worstTOut);
+  const summary = definitionList('sk-summary', { valueClass: 'sk-value' });
+  const worstOut = summary.add('Largest |exact − Schlick|', { worst: 'schlick' });
+  const worstTOut = summary.add('Largest |exact − Schlick on cos θt|', { worst: 'cosThetaT' });
 
   const plotHost = el('div', 'sk-plot');
   plotHost.setAttribute('role', 'img');
   plotHost.setAttribute('aria-label', 'Exact reflectance, Schlick on cos θ, Schlick on cos θt and their errors against θ');
-  panel.append(formulas, readout, tirNote, summary, plotHost);
+  panel.append(formulas, readout.element, tirNote, summary.element, plotHost);
   root.append(panel);
 
   const plot = createLinePlot(plotHost, {
@@ -103,7 +88,7 @@ export function mount(root, ctx) {
       : 'same as Schlick (n_i ≤ n_t)';
     const r0 = normalIncidence(nI, nT);
     renderTex(r0Tex, String.raw`R_0 = \left(\frac{n_t - n_i}{n_t + n_i}\right)^{2}
-      = \left(\frac{${nT.toFixed(4)} - ${nI.toFixed(4)}}{${nT.toFixed(4)} + ${nI.toFixed(4)}}\right)^{2} = ${fixed(r0)}`);
+      = \left(\frac{${texNumber(nT)} - ${texNumber(nI)}}{${texNumber(nT)} + ${texNumber(nI)}}\right)^{2} = ${fixed(r0)}`);
   }
 
   function update() {
@@ -117,7 +102,7 @@ export function mount(root, ctx) {
     const exact = fresnelExact(cos, nI, nT);
     const schlick = fresnelSchlick(cos, nI, nT);
     const schlickT = fresnelSchlickTIR(cos, nI, nT);
-    renderTex(atTex, String.raw`R_{\mathrm{S}}(${theta.toFixed(2)}^\circ) = ${fixed(r0)} + ${fixed(1 - r0)}\,
+    renderTex(atTex, String.raw`R_{\mathrm{S}}(${texNumber(theta, 2)}^\circ) = ${fixed(r0)} + ${fixed(1 - r0)}\,
       (1 - ${fixed(cos)})^{5} = ${fixed(schlick)}`);
     out.exact.textContent = fixed(exact);
     out.schlick.textContent = fixed(schlick);
@@ -139,7 +124,7 @@ export function mount(root, ctx) {
 
     plot.setMarks([
       criticalMark(cmp.critical),
-      { x: cmp.worst.theta, color: '--c-error', label: `Max |error| ${cmp.worst.value.toFixed(3)}` },
+      { x: cmp.worst.theta, color: '--c-error', label: `Max |error| ${fixed(cmp.worst.value, 3)}` },
       thetaMark(theta),
     ]);
   }

@@ -2,10 +2,11 @@
 // Plain elements with classes styled in src/styles.css; numbers use tabular figures so they
 // update without the layout jumping.
 import { button, el } from '../../ui/el.js';
+import { angle as formatAngle, fixed } from '../../ui/format.js';
+import { definitionList } from '../../ui/definitionList.js';
 
 // On a narrow screen the spheres are shown one at a time, at a size that reads, with these to switch.
 const SINGLE = [['exact', 'Exact'], ['schlick', 'Schlick'], ['error', '|Exact − Schlick|']];
-import { angle as formatAngle } from '../../ui/format.js';
 
 export function buildSpheresDom(host) {
   const root = el('div', 'spheres-panel');
@@ -41,16 +42,17 @@ export function buildSpheresDom(host) {
   stage.append(canvas, labels, legend);
 
   const readout = el('p', 'readout');
-  const summary = el('dl', 'summary');
+  const summary = definitionList('summary');
   const plot = el('div', 'plot');
   plot.setAttribute('aria-label', 'Reflectance R against angle θ');
-  main.append(switcher, stage, readout, summary, plot);
+  main.append(switcher, stage, readout, summary.element, plot);
   root.append(main);
   host.append(root);
 
   const setReadout = (data) => {
     readout.textContent = data
-      ? `Pixel: θ = ${formatAngle(data.theta)}   F exact = ${data.exact.toFixed(4)}   F Schlick = ${data.schlick.toFixed(4)}   |error| = ${data.error.toFixed(4)}`
+      ? `Pixel: θ = ${formatAngle(data.theta)}   F exact = ${fixed(data.exact, 4)}   F Schlick = ${fixed(data.schlick, 4)}   `
+        + `|error| = ${fixed(data.error, 4)}`
       : 'Hover or tap a sphere to read θ, F exact, F Schlick and the error at that pixel.';
   };
   setReadout(null);
@@ -70,16 +72,13 @@ export function buildSpheresDom(host) {
       legend.hidden = mode !== null && mode !== 'error';
     },
     setSummary(pairs) {
-      summary.replaceChildren(...pairs.flatMap(([term, value]) => {
-        const wrap = el('div');
-        wrap.append(el('dt', '', term), el('dd', '', value));
-        return [wrap];
-      }));
+      summary.set(pairs);
     },
     setLegend(top, gradient) {
       legendBar.style.background = gradient;
       const digits = top < 0.01 ? 3 : top < 0.1 ? 3 : 2;
-      legendTicks.replaceChildren(...[0, top / 2, top].map((v, i) => el('span', '', i === 2 ? `≥ ${v.toFixed(digits)}` : v.toFixed(digits))));
+      const ticks = [0, top / 2, top].map((v) => fixed(v, digits));
+      legendTicks.replaceChildren(...ticks.map((text, i) => el('span', '', i === 2 ? `≥ ${text}` : text)));
     },
   };
 }

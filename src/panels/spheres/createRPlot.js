@@ -1,6 +1,7 @@
 // The hero's R(θ) plot: exact, Schlick, Rs, Rp and the error, with the Brewster and critical
 // angles marked (the range past the critical angle shaded) and an optional θ from a hovered pixel.
 import { createLinePlot } from '../../ui/createLinePlot.js';
+import { angle } from '../../ui/format.js';
 import { brewsterMark, criticalMark, thetaMark } from '../../ui/plotMarks.js';
 
 export const R_SERIES = [
@@ -20,7 +21,7 @@ export function createRPlot(container) {
   const refresh = () => lines.setMarks([
     brewsterMark(landmarks.brewster),
     criticalMark(landmarks.critical),
-    hover != null && thetaMark(hover, `Pixel θ ${hover.toFixed(1)}°`),
+    hover != null && thetaMark(hover, `Pixel θ ${angle(hover, 1)}`),
   ]);
   return {
     get plot() { return lines.plot; },

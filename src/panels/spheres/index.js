@@ -2,7 +2,7 @@
 // Hero panel `spheres`: exact Fresnel vs Schlick on three spheres (exact, Schlick, error heatmap),
 // one camera and light, with the live R(θ) plot below. Hovering a sphere marks that pixel's θ.
 import { colormapGradient } from '../../ui/colormap.js';
-import { angle as formatAngle } from '../../ui/format.js';
+import { angle as formatAngle, fixed } from '../../ui/format.js';
 import { directionFromAngles } from '../../gl/directionFromAngles.js';
 import { cosDeg, DEG } from '../../optics/angles.js';
 import { fresnelExact, fresnelSchlick, brewsterAngle, criticalAngle, normalIncidence } from '../../optics/fresnel.js';
@@ -58,7 +58,9 @@ export function mount(root, ctx) {
       viewDist: Math.round(view.distance * 100) / 100,
     };
     const moved = Object.fromEntries(Object.entries(next).filter(([key, value]) => value !== values[key]));
-    if (ctx.set(moved).refused) trio.setView({ azimuth: values.viewAz, elevation: values.viewEl, distance: values.viewDist }, { silent: true });
+    if (ctx.set(moved).refused) {
+      trio.setView({ azimuth: values.viewAz, elevation: values.viewEl, distance: values.viewDist }, { silent: true });
+    }
   }
 
   let curvesKey = '';
@@ -78,10 +80,10 @@ export function mount(root, ctx) {
       plot.setCurves(curves, { brewster, critical: critical === null ? null : critical / DEG });
       trace.refresh();
       dom.setSummary([
-        ['R0', normalIncidence(nI, nT).toFixed(5)],
+        ['R0', fixed(normalIncidence(nI, nT), 5)],
         ['Brewster', formatAngle(brewster)],
         ['Critical', critical === null ? 'none (n_i ≤ n_t)' : formatAngle(critical / DEG)],
-        ['Max |exact − Schlick|', `${worst.value.toFixed(4)} at ${formatAngle(worst.theta)}`],
+        ['Max |exact − Schlick|', `${fixed(worst.value, 4)} at ${formatAngle(worst.theta)}`],
       ]);
     }
     errScale = values.errScale === 'auto' ? niceCeil(worst.value) : Number(values.errScale);
@@ -146,10 +148,10 @@ export function mount(root, ctx) {
       const at60 = fresnelExact(cosDeg(60), values.nI, values.nT);
       const s60 = fresnelSchlick(cosDeg(60), values.nI, values.nT);
       const critical = criticalAngle(values.nI, values.nT);
-      return `From n_i = ${values.nI} into n_t = ${values.nT}: R at 0° is ${normalIncidence(values.nI, values.nT).toFixed(4)}; `
-        + `R at 60° is ${at60.toFixed(4)} exact and ${s60.toFixed(4)} by Schlick; `
+      return `From n_i = ${values.nI} into n_t = ${values.nT}: R at 0° is ${fixed(normalIncidence(values.nI, values.nT), 4)}; `
+        + `R at 60° is ${fixed(at60, 4)} exact and ${fixed(s60, 4)} by Schlick; `
         + `${critical === null ? 'no critical angle' : `critical angle ${formatAngle(critical / DEG)}`}; `
-        + `the largest error of Schlick is ${worst.value.toFixed(4)} at ${formatAngle(worst.theta)}.`;
+        + `the largest error of Schlick is ${fixed(worst.value, 4)} at ${formatAngle(worst.theta)}.`;
     },
     csv() {
       const { theta, exact, schlick, s, p, error } = curves;

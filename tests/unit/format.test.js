@@ -1,0 +1,28 @@
+import { describe, it, expect } from 'vitest';
+import { angle, fixed, markupNumber, MINUS, rounded, sci } from '../../src/ui/format.js';
+
+describe('format: shown numbers', () => {
+  it('writes a negative number with the minus sign U+2212, never a hyphen', () => {
+    expect(fixed(-0.25, 3)).toBe(`${MINUS}0.250`);
+    expect(angle(-12.5)).toBe(`${MINUS}12.50°`);
+    expect(sci(-1.5e-8, 1)).toBe(`${MINUS}1.5e${MINUS}8`);
+    expect(fixed(0.5, 2)).toBe('0.50');
+  });
+
+  it('shows an undefined quantity as a dash', () => {
+    expect(fixed(NaN)).toBe('—');
+  });
+});
+
+describe('format: numbers that are not shown', () => {
+  it('markupNumber keeps the ASCII hyphen-minus that SVG path data and CSS lengths need', () => {
+    expect(markupNumber(-3.14159, 2)).toBe('-3.14');
+    expect(markupNumber(12, 1)).toBe('12.0');
+  });
+
+  it('rounded gives the number a control with that many decimals holds', () => {
+    expect(rounded(0.04000000000000001, 3)).toBe(0.04);
+    expect(rounded(1.000293, 6)).toBe(1.000293);
+    expect(rounded(0.16955, 3)).toBe(0.17);
+  });
+});
