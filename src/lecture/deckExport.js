@@ -3,7 +3,7 @@
 // the slide, a text item as a text slide, a question with its answer on the slide below.
 //
 // The file carries reveal.js itself (its dist script, its CSS and the dracula theme, which fetches
-// no web fonts), imported here as text with vite's ?raw: this module is loaded only when a deck is
+// no web fonts; its colours made light for light panels), imported here as text with vite's ?raw: this module is loaded only when a deck is
 // exported, so the page that offers the export does not download them. No CDN: a classroom may be
 // offline. The panels come from embedUrl: the site's own embed.html for a deck used online, or
 // offline/embed.html (the default) for a deck placed beside the folder dist/offline/ that
@@ -34,13 +34,20 @@ const DECK_CSS = `
 .reveal .fl-title h1 { font-size: 1.8em; }
 .reveal .fl-text { font-size: 0.6em; flex: 0 1 auto; min-height: 0; overflow: auto; }
 .reveal .fl-text p, .reveal .fl-text ul, .reveal .fl-text ol { margin: 0 0 0.5em; }
-.reveal .fl-embed { display: block; flex: 1 1 auto; min-height: 55%; width: 100%; border: 0; background: #000; }
+.reveal .fl-embed { display: block; flex: 1 1 auto; min-height: 55%; width: 100%; border: 0; background: var(--r-background-color); }
 .reveal .fl-short { min-height: 45%; }
 .reveal .fl-kind, .reveal .fl-small { font-size: 0.5em; opacity: 0.8; margin: 0 0 0.6em; }
 .reveal .fl-prompt { font-size: 0.75em; }
 .reveal .fl-options, .reveal .fl-why { font-size: 0.6em; }
 .reveal ol.fl-options { list-style-type: upper-alpha; }
 .reveal .lecture-math-display { text-align: center; margin: 0.4em 0; }
+`;
+
+// With light panels the deck is light too: dracula's colours, overridden.
+const LIGHT_CSS = `
+:root { --r-background: #fff; --r-background-color: #fff; --r-main-color: #1d1d1f; --r-heading-color: #5b2bb5;
+  --r-link-color: #b0126f; --r-link-color-dark: #8a0e57; --r-link-color-hover: #0b6f86; --r-selection-background-color: #d6d0f0;
+  --r-selection-color: #000; --r-bold-color: #8a4b00; --r-italic-color: #5a5a00; --r-inline-code-color: #0a7a32; --r-list-bullet-color: #0b6f86; }
 `;
 
 // The deck's own lines: reveal.js with the choices above and the keys a panel hands back
@@ -84,7 +91,7 @@ const styleText = (text) => String(text).replace(/<\/(style)/gi, '<\\/$1');
  * @param {string} [options.embedUrl]   embed.html's address: DEFAULT_EMBED_URL for a deck beside the offline folder, or the site's own
  * @param {string} [options.revealJs]   reveal.js's UMD script (default: reveal.js 6 from the lab's build)
  * @param {string} [options.revealCss]  reveal.js's CSS and a theme (default: reveal.css and dracula.css)
- * @param {'dark' | 'light' | null} [options.theme]  the embeds' colour scheme (default dark, as the deck's theme)
+ * @param {'dark' | 'light' | null} [options.theme]  the embeds' colour scheme and the deck's (default dark; null: each embed as its reader's browser has it, on a dark deck)
  * @param {boolean} [options.projector] the embeds in projector mode (larger type, thicker lines)
  * @returns {string}
  */
@@ -112,7 +119,7 @@ export function lectureDeckHtml(lecture, {
      (reveal.js and a few lines that move the deck); each panel is a frame of the lab's embed page,
      which has its own. Panels come from ${escapeHtml(embedUrl)}. -->
 <style>${styleText(revealCss)}</style>
-<style>${DECK_CSS}</style>
+<style>${DECK_CSS}${theme === 'light' ? LIGHT_CSS : ''}</style>
 </head>
 <body>
 <div class="reveal">

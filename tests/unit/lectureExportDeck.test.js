@@ -135,6 +135,8 @@ describe('the reveal.js deck of a lecture', () => {
       expect(() => deck(composed, { embedUrl: bad }), String(bad)).toThrow(/embedUrl/);
     }
     expect(() => deck(composed, { theme: 'pink' })).toThrow(/theme/);
+    expect(deck(composed, { theme: 'light' })).toContain('--r-background-color: #fff');
+    expect(deck(composed)).not.toContain('--r-background-color: #fff');
     expect(() => deck({ kind: 'nope' })).toThrow(/no lecture/);
   });
 
