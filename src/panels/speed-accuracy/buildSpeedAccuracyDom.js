@@ -103,7 +103,8 @@ export function buildSpeedAccuracyDom(host, { onRun, onCancel, onJson }) {
         const verdict = `${r.passes ? 'within' : 'over'} ${budgetCodes} codes${r.onFront ? ', on the front' : ''}`;
         // |ΔR| as toExponential writes it, as formatCodes does (formatMeasures.js says why).
         const max = Number.isFinite(r.max) ? r.max.toExponential(2) : 'NaN/∞';
-        tr.append(name, ...[r.costText, formatCodes(r.maxCodes), where, formatCodes(r.meanCodes), max, verdict].map((t) => el('td', '', t)));
+        const cells = [r.costText, formatCodes(r.maxCodes), where, formatCodes(r.meanCodes), max, verdict];
+        tr.append(name, ...cells.map((t) => el('td', '', t)));
         return tr;
       }));
     },
