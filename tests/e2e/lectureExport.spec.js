@@ -29,6 +29,7 @@ const lecture = {
 };
 
 let dir;
+let answer; // the question's computed answer for its seed, as the lecture page and the deck must both say it
 test.beforeAll(async () => {
   const server = await createServer({
     root, configFile: resolve(root, 'vite.config.js'), logLevel: 'warn', appType: 'custom',
@@ -37,6 +38,11 @@ test.beforeAll(async () => {
   try {
     const { lectureDeckHtml } = await server.ssrLoadModule('/src/lecture/deckExport.js');
     const { offlineLectureHtml } = await server.ssrLoadModule('/src/lecture/offlineExport.js');
+    const { questionById } = await server.ssrLoadModule('/src/homework/questions.js');
+    const { expectedValue, questionParams } = await server.ssrLoadModule('/src/homework/gradeAnswer.js');
+    const { formatValue } = await server.ssrLoadModule('/src/homework/formatAnswer.js');
+    const question = questionById('critical-predict');
+    answer = formatValue(question, expectedValue(question, questionParams(question, 'room 7')));
     dir = mkdtempSync(join(tmpdir(), 'fresnel-lab-export-'));
     // A copy: another build may rewrite dist/ while this runs. The lecture goes beside the embed
     // page (its question's panel is a frame of ./embed.html); the deck goes beside the folder.
@@ -72,6 +78,11 @@ test('the offline lecture opened from disk shows the composed lecture, its marku
   expect(await values('spheres--2')).toMatchObject({ nI: 1.5, nT: 1 });
   expect(await values('metals')).toMatchObject({ metal: 'copper' });
   await expect(items.nth(5)).toContainText('Hands up first.');
+  // Revealed, the question says the deck's answer, and its panel is a frame of the embed page beside the file.
+  await items.nth(5).getByRole('button', { name: 'Reveal the answer' }).click();
+  await expect(items.nth(5)).toContainText(`The computed answer is ${answer}`);
+  await expect(items.nth(5).locator('iframe')).toHaveAttribute('src', /^file:.*\/offline\/embed\.html\?.*panel=refraction-waves/);
+  await expect(page.frameLocator('section[data-item="question--6"] iframe').locator('.embed-title')).toBeVisible({ timeout: 30_000 });
   expect(await page.evaluate(() => window.__xss)).toBeUndefined();
   expect(await page.locator('main img, main svg[onload], main a[href^="javascript"]').count()).toBe(0);
 });
@@ -148,7 +159,7 @@ test('the deck from disk, stepped through in reveal.js: states, slide:stop, clic
 
     await page.keyboard.press('Space'); // its answer, with the question's panel
     await expect.poll(() => indices(page)).toEqual({ h: 6, v: 1, f: undefined });
-    await expect(current.locator('.fl-prompt')).toContainText(/The computed answer is \d+\.\d+°/);
+    await expect(current.locator('.fl-prompt')).toContainText(`The computed answer is ${answer}`);
     await expect.poll(() => mounted(page, 'refraction-waves')).toBe(true);
 
     // A clicker's key pressed inside the panel comes back to the deck and moves it.
