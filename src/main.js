@@ -94,7 +94,11 @@ function ownPanels() {
     ...missingFiles,
   ];
   showNotice(main, 'This page does not match its panel manifest:', problems, { kind: 'error' });
-  return { sections, panels: sections.map((section) => ({ section, key: section.dataset.panel, item: null, prefix: lecturePrefix(section.dataset.panel) })) };
+  const panels = sections.map((section) => {
+    const id = section.dataset.panel;
+    return { section, key: id, item: null, prefix: lecturePrefix(id) };
+  });
+  return { sections, panels };
 }
 
 /**
@@ -144,5 +148,6 @@ window.fresnelLab.ready = (async () => {
   await new Promise((resolve) => { requestAnimationFrame(() => setTimeout(resolve, 0)); });
   // KaTeX too: the page's formulas are typeset as their panels mount, not after (which would
   // change their height under the reader).
-  await Promise.allSettled([texReady(), composed?.ready, ...entries.filter(Boolean).map((e) => e.host.load())]); // a failure is shown in its panel
+  // A failure is shown in its panel (a question's, in its section).
+  await Promise.allSettled([texReady(), composed?.ready, ...entries.filter(Boolean).map((e) => e.host.load())]);
 })();

@@ -139,7 +139,8 @@ export function createPanelHost(container, panel, {
     }
   };
   buttons.link.addEventListener('click', () => copy(buttons.link, lectureLink(values), 'Link copied', 'Link to this view'));
-  buttons.embed.addEventListener('click', () => copy(buttons.embed, embedCode(panel, values, embedOptions), 'Embed code copied', 'Embed code'));
+  buttons.embed.addEventListener('click', () => copy(buttons.embed, embedCode(panel, values, embedOptions), 'Embed code copied',
+    'Embed code'));
   buttons.png.addEventListener('click', () => {
     const url = instance?.png?.();
     if (url) downloadUrl(`fresnel-lab-${panel.id}.png`, url);

@@ -124,7 +124,8 @@ export function defaults(schema) {
  * that starts elsewhere than the panel's defaults needs (a key left out means the item's value).
  */
 export function withDefaults(schema, start) {
-  return Object.fromEntries(Object.entries(schema).map(([key, spec]) => [key, Object.hasOwn(start, key) ? { ...spec, default: start[key] } : spec]));
+  const startOf = ([key, spec]) => [key, Object.hasOwn(start, key) ? { ...spec, default: start[key] } : spec];
+  return Object.fromEntries(Object.entries(schema).map(startOf));
 }
 
 /** The schema key a name or one of its aliases stands for, or undefined. */

@@ -38,12 +38,19 @@ export function openLecture(search, elementText) {
     return { source: 'default', lecture: null, problems: [], refused: false, given: null };
   }
   if (!read.ok) return { source: 'default', lecture: null, problems: read.problems, refused: true, given: source };
+  // A lecture whose every item was refused would be an empty page: it is refused whole, its reasons named.
+  if (!read.lecture.items.length) {
+    const problems = [...read.problems, 'It has no item that can be shown.'];
+    return { source: 'default', lecture: null, problems, refused: true, given: source };
+  }
   return { source, lecture: read.lecture, problems: read.problems, refused: false, given: source };
 }
 
 /** The data element's JSON, read as readLecture reads any lecture. */
 function readElement(text) {
-  if (text.length > MAX_ELEMENT) return { ok: false, problems: [`The lecture in this page has ${text.length} characters, more than the ${MAX_ELEMENT} a lecture may have.`] };
+  if (text.length > MAX_ELEMENT) {
+    return { ok: false, problems: [`The lecture in this page has ${text.length} characters, more than the ${MAX_ELEMENT} it may have.`] };
+  }
   let data;
   try {
     data = JSON.parse(text);
@@ -70,6 +77,7 @@ export function itemKeys(items, lecturePrefix) {
     if (item.type !== 'panel') return { key: `${item.type}--${i + 1}`, prefix: null };
     const count = (seen.get(item.panel) ?? 0) + 1;
     seen.set(item.panel, count);
-    return count === 1 ? { key: item.panel, prefix: lecturePrefix(item.panel) } : { key: `${item.panel}--${count}`, prefix: `${item.panel}--${count}.` };
+    if (count === 1) return { key: item.panel, prefix: lecturePrefix(item.panel) };
+    return { key: `${item.panel}--${count}`, prefix: `${item.panel}--${count}.` };
   });
 }

@@ -140,7 +140,10 @@ test.describe('a lecture in the page', () => {
     const carried = {
       ...LECTURE,
       title: 'Carried </script><b>offline</b>',
-      items: [{ type: 'text', heading: 'Notes', text: 'A <b>tag</b> stays text.' }, { type: 'panel', panel: 'schlick', state: { nT: 1.33 } }],
+      items: [
+        { type: 'text', heading: 'Notes', text: 'A <b>tag</b> stays text.' },
+        { type: 'panel', panel: 'schlick', state: { nT: 1.33 } },
+      ],
     };
     // As the offline export writes it: every < as \u003c, so the element cannot be closed early.
     const element = `<script type="application/json" id="fresnel-lab-lecture">${JSON.stringify(carried).replace(/</g, '\\u003c')}</script>`;

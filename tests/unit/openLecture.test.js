@@ -13,10 +13,12 @@ import { check } from './fuzzConfig.js';
 const lecture = (items) => ({ kind: 'fresnel-lab-lecture', version: 1, title: 'T', items });
 const SCHLICK = { type: 'panel', panel: 'schlick', state: { nT: 1.33 } };
 const TEXT = { type: 'text', text: 'Agenda' };
+const schemaKeys = (id, prefix) => Object.keys(panelSchema(id)).map((k) => prefix + k);
 
 describe('openLecture', () => {
   it('opens nothing without a lecture: the lab’s own', () => {
-    expect(openLecture(new URLSearchParams(''), null)).toEqual({ source: 'default', lecture: null, problems: [], refused: false, given: null });
+    const opened = openLecture(new URLSearchParams(''), null);
+    expect(opened).toEqual({ source: 'default', lecture: null, problems: [], refused: false, given: null });
   });
 
   it('opens the link’s lecture, and it wins over one in the page', () => {
@@ -34,12 +36,19 @@ describe('openLecture', () => {
   });
 
   it('refuses what cannot be read at all, and says where it came from', () => {
-    expect(openLecture(new URLSearchParams({ lecture: 'L1.@@' }), null)).toMatchObject({ source: 'default', lecture: null, refused: true, given: 'link' });
+    const fromLink = openLecture(new URLSearchParams({ lecture: 'L1.@@' }), null);
+    expect(fromLink).toMatchObject({ source: 'default', lecture: null, refused: true, given: 'link' });
     for (const text of ['{', '[]', 'null', JSON.stringify({ kind: 'other' }), ' '.repeat(400_001)]) {
       const opened = openLecture(new URLSearchParams(''), text);
       expect(opened, text.slice(0, 20)).toMatchObject({ source: 'default', lecture: null, refused: true, given: 'data' });
       expect(opened.problems.length).toBeGreaterThan(0);
     }
+  });
+
+  it('refuses a lecture with no item left to show, naming why', () => {
+    const opened = openLecture(new URLSearchParams(''), JSON.stringify(lecture([{ type: 'panel', panel: 'nope' }])));
+    expect(opened).toMatchObject({ source: 'default', lecture: null, refused: true, given: 'data' });
+    expect(opened.problems.join(' ')).toMatch(/nope is no panel.*no item that can be shown/);
   });
 
   it('never throws on any page text', () => {
@@ -62,12 +71,13 @@ describe('itemKeys', () => {
   });
 
   it('gives every item its own key and every panel item its own URL keys, none another panel’s', () => {
-    const item = fc.oneof(fc.constantFrom(...PANEL_IDS).map((panel) => ({ type: 'panel', panel })), fc.constant(TEXT), fc.constant({ type: 'question' }));
+    const panel = fc.constantFrom(...PANEL_IDS).map((id) => ({ type: 'panel', panel: id }));
+    const item = fc.oneof(panel, fc.constant(TEXT), fc.constant({ type: 'question' }));
     check(fc.property(fc.array(item, { maxLength: 30 }), (items) => {
       const keys = itemKeys(items, lecturePrefix);
       expect(new Set(keys.map((k) => k.key)).size).toBe(items.length);
       // Every URL key a panel item writes (prefix + schema key) is its alone.
-      const urlKeys = keys.flatMap(({ prefix }, i) => (prefix === null ? [] : Object.keys(panelSchema(items[i].panel)).map((k) => prefix + k)));
+      const urlKeys = keys.flatMap(({ prefix }, i) => (prefix === null ? [] : schemaKeys(items[i].panel, prefix)));
       expect(new Set(urlKeys).size).toBe(urlKeys.length);
       for (const { key } of keys) if (key.includes('--')) expect(PANEL_IDS).not.toContain(key);
     }));
