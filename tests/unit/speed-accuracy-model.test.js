@@ -231,8 +231,11 @@ describe('speed-accuracy model: errors read back from the GPU', () => {
     model.update();
     const log = 'ERROR: 0:12: \'fm_evaluate\' : no matching overloaded function found\n';
     const refusal = new ShaderError({ stage: 'fragment', log, source: '' });
+    const logged = vi.spyOn(console, 'error').mockImplementation(() => {});
     measurements[0].reject(refusal);
     await flush();
+    expect(logged).toHaveBeenCalledWith(refusal); // the whole log, with the source lines it names
+    logged.mockRestore();
     expect(events).toEqual([['useEmulation']]);
     expect(model.problem).toBe('This GPU could not compile the shader that evaluates a method, so the errors shown are the JavaScript '
       + 'emulation. The driver said: ERROR: 0:12: \'fm_evaluate\' : no matching overloaded function found');

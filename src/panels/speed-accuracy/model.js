@@ -6,6 +6,7 @@
 // when another scene or precision is asked for or the panel disposed, so a late result is dropped.
 import { benchResults } from '../../methods/benchResults.js';
 import { sceneById } from '../../methods/scenes.js';
+import { ShaderError } from '../../gl/shaderError.js';
 import { fixed } from '../../ui/format.js';
 import { createRunGate, isStaleRun } from '../shared/createRunGate.js';
 import { glslOf } from './errorSources.js';
@@ -68,6 +69,7 @@ export function createSpeedAccuracyModel({
     }, (error) => {
       if (!run.live) return;
       measuring = null;
+      if (error instanceof ShaderError) console.error(error); // the whole log, for whoever reports it
       problem = readBackProblem(error);
       if (glslOf(values.errors)) hooks.useEmulation();
       else hooks.invalidate();

@@ -4,7 +4,7 @@
 // neither. Pure (the error classes carry no WebGL), so each wording is tested in Node.
 import { WebGL2Unavailable } from '../../gl/contextBudget.js';
 import { GpuFloatUnavailable } from '../../gl/evaluateMethodsGpu.js';
-import { ShaderError } from '../../gl/shaderError.js';
+import { refusalLine, ShaderError } from '../../gl/shaderError.js';
 
 const FALLBACK = 'so the errors shown are the JavaScript emulation.';
 
@@ -14,8 +14,8 @@ export function readBackProblem(/** @type {unknown} */ error) {
     return `${error.message} Reading errors back needs WebGL2 with float render targets, ${FALLBACK}`;
   }
   if (error instanceof ShaderError) {
-    // The driver's first words on it; the console has the whole log with the source lines it names.
-    const first = error.log.split('\n').map((line) => line.trim()).find(Boolean) ?? '';
+    // The driver's first error line (the model logs the whole log with the source lines it names).
+    const first = refusalLine(error);
     const what = error.stage === 'link' ? 'link' : 'compile';
     return `This GPU could not ${what} the shader that evaluates a method${error.label ? ` (${error.label})` : ''}, ${FALLBACK}`
       + (first ? ` The driver said: ${first}` : '');
