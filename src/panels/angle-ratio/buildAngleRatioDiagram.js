@@ -3,6 +3,7 @@
 // The incident ray's end is a slider (drag it, or focus it and use the arrow keys).
 import { DEG } from '../../optics/angles.js';
 import { setSubscripted } from '../../ui/subscripts.js';
+import { angle, fixed, markupNumber } from '../../ui/format.js';
 
 const NS = 'http://www.w3.org/2000/svg';
 const W = 800;
@@ -24,7 +25,8 @@ const down = (deg, r, side) => ({ x: P.x + side * r * Math.sin(deg * DEG), y: P.
 
 /** An arc of radius r around P from the normal (start) to point `end`; sweep 0 or 1 (SVG arc flag). */
 function arcPath(start, end, r, sweep) {
-  return `M${start.x.toFixed(2)} ${start.y.toFixed(2)} A${r} ${r} 0 0 ${sweep} ${end.x.toFixed(2)} ${end.y.toFixed(2)}`;
+  const [x0, y0, x1, y1] = [start.x, start.y, end.x, end.y].map((v) => markupNumber(v, 2));
+  return `M${x0} ${y0} A${r} ${r} 0 0 ${sweep} ${x1} ${y1}`;
 }
 
 function ray(className, label) {
@@ -43,7 +45,7 @@ function ray(className, label) {
         line.setAttribute('x1', a.x); line.setAttribute('y1', a.y);
         line.setAttribute('x2', b.x); line.setAttribute('y2', b.y);
       }
-      band.setAttribute('stroke-width', Math.max(0, power * MAX_WIDTH).toFixed(3));
+      band.setAttribute('stroke-width', markupNumber(Math.max(0, power * MAX_WIDTH), 3));
       const dx = b.x - a.x;
       const dy = b.y - a.y;
       const len = Math.hypot(dx, dy);
@@ -135,30 +137,30 @@ export function buildAngleRatioDiagram(host, { onAngle }) {
     set(split, nI, nT) {
       const { theta, R, T, thetaT, tir, critical } = split;
       current = theta;
-      setSubscripted(nILabel, `n_i = ${nI.toFixed(4)}\u2003θ_i = ${theta.toFixed(1)}°`);
-      setSubscripted(nTLabel, `n_t = ${nT.toFixed(4)}\u2003${tir ? 'no refracted ray' : `θ_t = ${thetaT.toFixed(2)}°`}`);
+      setSubscripted(nILabel, `n_i = ${fixed(nI, 4)}\u2003θ_i = ${angle(theta, 1)}`);
+      setSubscripted(nTLabel, `n_t = ${fixed(nT, 4)}\u2003${tir ? 'no refracted ray' : `θ_t = ${angle(thetaT)}`}`);
       const start = up(theta, LEN, -1);
       // Ray captions sit in the corners, colour-coded, so they never cross a ray or an arc.
       incident.set(start, P, 1, 'Incident power 1', { x: 16, y: 72 });
       const rEnd = up(theta, LEN, 1);
-      reflected.set(P, rEnd, R, `Reflected R = ${R.toFixed(3)}`, { x: W - 16, y: 34, end: true });
+      reflected.set(P, rEnd, R, `Reflected R = ${fixed(R, 3)}`, { x: W - 16, y: 34, end: true });
       refracted.g.style.display = tir ? 'none' : '';
       if (!tir) {
         const tEnd = down(thetaT, LEN, 1);
-        refracted.set(P, tEnd, T, `Refracted T = ${T.toFixed(3)}`, { x: W - 16, y: H - 16, end: true });
+        refracted.set(P, tEnd, T, `Refracted T = ${fixed(T, 3)}`, { x: W - 16, y: H - 16, end: true });
       }
-      tirNote.textContent = tir ? `No refracted ray: ${theta.toFixed(1)}° is past the critical angle ${critical.toFixed(2)}°` : '';
-      handle.setAttribute('transform', `translate(${start.x.toFixed(2)} ${start.y.toFixed(2)})`);
-      handle.setAttribute('aria-valuenow', theta.toFixed(1));
-      handle.setAttribute('aria-valuetext', `${theta.toFixed(1)}°: R ${R.toFixed(3)}, T ${T.toFixed(3)}`);
+      tirNote.textContent = tir ? `No refracted ray: ${angle(theta, 1)} is past the critical angle ${angle(critical)}` : '';
+      handle.setAttribute('transform', `translate(${markupNumber(start.x, 2)} ${markupNumber(start.y, 2)})`);
+      handle.setAttribute('aria-valuenow', markupNumber(theta, 1));
+      handle.setAttribute('aria-valuetext', `${angle(theta, 1)}: R ${fixed(R, 3)}, T ${fixed(T, 3)}`);
 
       const r = 70;
       arcs[0].setAttribute('d', theta > 0.05 ? arcPath(up(0, r, 1), up(theta, r, -1), r, 0) : '');
       arcs[1].setAttribute('d', theta > 0.05 ? arcPath(up(0, r + 14, 1), up(theta, r + 14, 1), r + 14, 1) : '');
       arcs[2].setAttribute('d', !tir && thetaT > 0.05 ? arcPath(down(0, r, 1), down(thetaT, r, 1), r, 0) : '');
       const place = (node, at, text) => {
-        node.setAttribute('x', at.x.toFixed(1));
-        node.setAttribute('y', at.y.toFixed(1));
+        node.setAttribute('x', markupNumber(at.x, 1));
+        node.setAttribute('y', markupNumber(at.y, 1));
         setSubscripted(node, text);
       };
       // Short names just outside each arc: inside the wedge when it is wide enough, else beside

@@ -5,6 +5,7 @@
 import { interfaceSplit, interfaceSplitCurve } from './interfaceSplit.js';
 import { el } from '../../ui/el.js';
 import { setSubscripted } from '../../ui/subscripts.js';
+import { angle, fixed, markupNumber } from '../../ui/format.js';
 import { cssVar } from '../../ui/theme.js';
 import { addSwap } from '../shared/indexPair.js';
 import { buildAngleRatioDiagram, svgToPng } from './buildAngleRatioDiagram.js';
@@ -27,8 +28,8 @@ function bar(label, className) {
   return {
     row,
     set(v) {
-      fill.style.width = `${(100 * v).toFixed(2)}%`;
-      value.textContent = v.toFixed(4);
+      fill.style.width = `${markupNumber(100 * v, 2)}%`;
+      value.textContent = fixed(v, 4);
     },
   };
 }
@@ -85,11 +86,11 @@ export function mount(root, ctx) {
     tBar.set(split.T);
     const critical = split.critical === null
       ? `No critical angle: light enters a denser (or equal) medium (n_i ≤ n_t).`
-      : `Critical angle ${split.critical.toFixed(2)}°.`;
+      : `Critical angle ${angle(split.critical)}.`;
     setSubscripted(status, split.tir
-      ? `Total internal reflection: ${theta.toFixed(1)}° is past the critical angle ${split.critical.toFixed(2)}°, `
+      ? `Total internal reflection: ${angle(theta, 1)} is past the critical angle ${angle(split.critical)}, `
         + 'so there is no refracted ray and T = 0; all the light is reflected.'
-      : `θ_i = ${theta.toFixed(1)}°, θ_t = ${split.thetaT.toFixed(2)}° (Snell's law). ${critical}`);
+      : `θ_i = ${angle(theta, 1)}, θ_t = ${angle(split.thetaT)} (Snell's law). ${critical}`);
     panel.classList.toggle('ar-is-tir', split.tir);
     analogy.textContent = stoneAnalogy(nI, nT);
     refreshPng();
@@ -102,11 +103,11 @@ export function mount(root, ctx) {
     update,
     describe() {
       const { theta, nI, nT } = values;
-      const base = `From n_i = ${nI} into n_t = ${nT} at ${theta.toFixed(1)}° from the normal: `
-        + `R = ${split.R.toFixed(4)} is reflected and T = ${split.T.toFixed(4)} is transmitted`;
+      const base = `From n_i = ${nI} into n_t = ${nT} at ${angle(theta, 1)} from the normal: `
+        + `R = ${fixed(split.R, 4)} is reflected and T = ${fixed(split.T, 4)} is transmitted`;
       return split.tir
-        ? `${base}; past the critical angle ${split.critical.toFixed(2)}° there is no refracted ray.`
-        : `${base}, refracted to ${split.thetaT.toFixed(2)}°.`;
+        ? `${base}; past the critical angle ${angle(split.critical)} there is no refracted ray.`
+        : `${base}, refracted to ${angle(split.thetaT)}.`;
     },
     csv() {
       const { theta, R, T } = interfaceSplitCurve(values.nI, values.nT);

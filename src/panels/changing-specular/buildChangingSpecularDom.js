@@ -1,7 +1,8 @@
 // The DOM of the changing-specular panel: the two rendered floors with their labels, a cross-section
 // (SVG) of light, normal, mirror direction r, view v and Phong's lobe, the live formulas, and the
 // plot host. Styled by styles.css under .cspec-panel.
-import { renderTex } from '../../ui/tex.js';
+import { renderTex, texNumber } from '../../ui/tex.js';
+import { fixed, markupNumber as num } from '../../ui/format.js';
 import './styles.css';
 import { el } from '../../ui/el.js';
 import { DEG } from '../../optics/angles.js';
@@ -46,10 +47,10 @@ function buildDiagram() {
   const labels = { l: label('cspec-label cspec-l', 'light'), r: label('cspec-label cspec-r', 'r'),
     v: label('cspec-label cspec-v', 'v'), theta: label('cspec-label', 'θ') };
 
-  const place = (node, [x, y]) => { node.setAttribute('x', x.toFixed(1)); node.setAttribute('y', y.toFixed(1)); };
+  const place = (node, [x, y]) => { node.setAttribute('x', num(x, 1)); node.setAttribute('y', num(y, 1)); };
   const line = (node, from, to) => {
-    node.setAttribute('x1', from[0].toFixed(1)); node.setAttribute('y1', from[1].toFixed(1));
-    node.setAttribute('x2', to[0].toFixed(1)); node.setAttribute('y2', to[1].toFixed(1));
+    node.setAttribute('x1', num(from[0], 1)); node.setAttribute('y1', num(from[1], 1));
+    node.setAttribute('x2', num(to[0], 1)); node.setAttribute('y2', num(to[1], 1));
   };
 
   /** Light on the right at lightEl, mirror direction and viewer on the left; lobe (v·r)^s around r. */
@@ -77,11 +78,11 @@ function buildDiagram() {
       const c = Math.cos((psi - psiR) * DEG);
       points.push(at(psi, 120 * (c > 0 ? c ** s : 0)));
     }
-    lobe.setAttribute('d', `M${O[0]} ${O[1]}${points.map(([x, y]) => `L${x.toFixed(1)} ${y.toFixed(1)}`).join('')}Z`);
+    lobe.setAttribute('d', `M${O[0]} ${O[1]}${points.map(([x, y]) => `L${num(x, 1)} ${num(y, 1)}`).join('')}Z`);
     // θ between the normal and the light.
     const a = at(90, 46);
     const b = at(psiL, 46);
-    arc.setAttribute('d', `M${a[0].toFixed(1)} ${a[1].toFixed(1)}A46 46 0 0 1 ${b[0].toFixed(1)} ${b[1].toFixed(1)}`);
+    arc.setAttribute('d', `M${num(a[0], 1)} ${num(a[1], 1)}A46 46 0 0 1 ${num(b[0], 1)} ${num(b[1], 1)}`);
     place(labels.theta, at((90 + psiL) / 2, 60));
     root.setAttribute('aria-label', `Cross-section: light ${lightEl}° above the surface (θ = ${90 - lightEl}° from the normal), `
       + `mirror direction r at ${lightEl}° on the other side, viewer at ${viewEl}°.`);
@@ -94,7 +95,8 @@ export function buildChangingSpecularDom(host) {
   const stage = el('div', 'cspec-stage');
   const canvas = el('canvas', 'cspec-canvas');
   canvas.setAttribute('role', 'img');
-  canvas.setAttribute('aria-label', 'The same flat tiled floor twice: the first lit with Phong\'s highlight, the second with Phong times F.');
+  canvas.setAttribute('aria-label',
+    'The same flat tiled floor twice: the first lit with Phong\'s highlight, the second with Phong times F.');
   const labels = el('div', 'cspec-labels');
   const left = el('span', 'cspec-tag cspec-tag-phong', 'Phong: R0·(v·r)^s');
   const right = el('span', 'cspec-tag cspec-tag-fresnel', 'Phong × F: F(θ)·(v·r)^s');
@@ -121,13 +123,13 @@ export function buildChangingSpecularDom(host) {
     setDiagram: diagram.update,
     /** Live formulas at the centre of view. */
     setNumbers(h, s) {
-      const lobe = `(${h.vDotR.toFixed(3)})^{${s}}`;
+      const lobe = `(${texNumber(h.vDotR, 3)})^{${s}}`;
       // Inline style, so a narrow panel wraps the line at = and × instead of cutting it off.
-      renderTex(texPhong, `\\text{Phong} = R_0\\,(\\mathbf v\\cdot\\mathbf r)^s = ${h.R0.toFixed(4)} \\times ${lobe} `
-        + `= \\mathbf{${h.phong.toFixed(4)}}`, { display: false });
-      renderTex(texFresnel, `\\text{Phong}\\times F = F(${h.thetaDeg.toFixed(1)}^\\circ)\\,(\\mathbf v\\cdot\\mathbf r)^s = `
-        + `${h.F.toFixed(4)} \\times ${lobe} = \\mathbf{${h.phongF.toFixed(4)}}`, { display: false });
-      const ratio = (h.F / h.R0).toFixed(2);
+      renderTex(texPhong, `\\text{Phong} = R_0\\,(\\mathbf v\\cdot\\mathbf r)^s = ${texNumber(h.R0)} \\times ${lobe} `
+        + `= \\mathbf{${texNumber(h.phong)}}`, { display: false });
+      renderTex(texFresnel, `\\text{Phong}\\times F = F(${texNumber(h.thetaDeg, 1)}^\\circ)\\,(\\mathbf v\\cdot\\mathbf r)^s = `
+        + `${texNumber(h.F)} \\times ${lobe} = \\mathbf{${texNumber(h.phongF)}}`, { display: false });
+      const ratio = fixed(h.F / h.R0, 2);
       note.textContent = h.R0 === 0
         ? 'At the centre of each view. With n_t = 1 there is no interface: nothing is reflected at any angle.'
         : `At the centre of each view. F is ${ratio}× R0 here, so the Phong × F floor reflects ${ratio}× `

@@ -10,6 +10,7 @@ import { thetaMark } from '../../ui/plotMarks.js';
 import { DEG } from '../../optics/angles.js';
 import { peakHighlightCurves, phongHighlights } from '../../optics/phong.js';
 import { startWebGL } from '../shared/startWebGL.js';
+import { angle, fixed } from '../../ui/format.js';
 import { buildChangingSpecularDom } from './buildChangingSpecularDom.js';
 import fragment from './changing-specular.frag.glsl?raw';
 import { schema } from './schema.js';
@@ -106,10 +107,10 @@ export function mount(root, ctx) {
     describe() {
       const h = highlight;
       return `Light ${values.lightEl}° and view ${values.viewEl}° above the surface, s = ${values.s}, n_t = ${values.nT}. `
-        + `At the centre of view v·r = ${h.vDotR.toFixed(3)}: plain Phong gives ${h.phong.toFixed(4)} (k_s = R0 = ${h.R0.toFixed(4)}), `
-        + `Phong × F gives ${h.phongF.toFixed(4)} (F at θ = ${h.thetaDeg.toFixed(1)}° is ${h.F.toFixed(4)}). `
-        + `At the mirror peak plain Phong is ${h.R0.toFixed(4)} at every elevation, while Phong × F is `
-        + `${curveAt('phongF', 80).toFixed(4)} at 80° and ${curveAt('phongF', 5).toFixed(4)} at 5°.`;
+        + `At the centre of view v·r = ${fixed(h.vDotR, 3)}: plain Phong gives ${fixed(h.phong, 4)} (k_s = R0 = ${fixed(h.R0, 4)}), `
+        + `Phong × F gives ${fixed(h.phongF, 4)} (F at θ = ${angle(h.thetaDeg, 1)} is ${fixed(h.F, 4)}). `
+        + `At the mirror peak plain Phong is ${fixed(h.R0, 4)} at every elevation, while Phong × F is `
+        + `${fixed(curveAt('phongF', 80), 4)} at 80° and ${fixed(curveAt('phongF', 5), 4)} at 5°.`;
     },
     csv() {
       return {

@@ -5,7 +5,7 @@ import { linearToHex } from '../../ui/srgb.js';
 import { el } from '../../ui/el.js';
 import { scrollBox } from '../../ui/scrollBox.js';
 import { lectureNote } from '../../ui/lectureNote.js';
-import { fixed } from '../../ui/format.js';
+import { angle, fixed } from '../../ui/format.js';
 
 /** CSS colour of a linear RGB reflectance. */
 export function swatchColor(rgb) {
@@ -22,10 +22,11 @@ const CHANNEL_NAMES = ['Red', 'Green', 'Blue'];
 export function buildMetalsDom(host, metals, onPick) {
   const swatchRow = el('div', 'mt-swatches');
   swatchRow.setAttribute('role', 'group');
-  swatchRow.setAttribute('aria-label', 'F0 per material (linear reflectance sampled at 650, 550 and 450 nm: red, green, blue); pick a metal');
+  swatchRow.setAttribute('aria-label',
+    'F0 per material (linear reflectance sampled at 650, 550 and 450 nm: red, green, blue); pick a metal');
   // Three numbers that wrap as a group when a swatch is narrow (text stays "0.956 0.792 0.408").
   const fillNumbers = (node, rgb) => {
-    const parts = rgb.map((v) => el('span', '', v.toFixed(3)));
+    const parts = rgb.map((v) => el('span', '', fixed(v, 3)));
     node.replaceChildren(...parts.flatMap((part, i) => (i ? [' ', part] : [part])));
   };
 
@@ -96,12 +97,12 @@ export function buildMetalsDom(host, metals, onPick) {
         name.scope = 'row';
         name.style.color = `var(${CHANNEL_VARS[s.channel]})`;
         const dip = s.dip > 0
-          ? `${s.minimum.value.toFixed(4)} at ${s.minimum.theta.toFixed(2)}° (−${s.dip.toFixed(4)})`
+          ? `${fixed(s.minimum.value, 4)} at ${angle(s.minimum.theta)} (−${fixed(s.dip, 4)})`
           : 'none: never below F0';
-        row.append(name, el('td', '', `${metal.n[ch].toFixed(3)} + ${metal.k[ch].toFixed(3)}i`),
-          el('td', '', s.f0.toFixed(4)),
-          el('td', '', `${s.maxError.value.toFixed(4)} at ${s.maxError.theta.toFixed(2)}°`), el('td', '', dip),
-          el('td', '', `${fixed(s.principal.theta, 2)}° (Rp = ${fixed(s.principal.rp, 3)})`));
+        row.append(name, el('td', '', `${fixed(metal.n[ch], 3)} + ${fixed(metal.k[ch], 3)}i`),
+          el('td', '', fixed(s.f0, 4)),
+          el('td', '', `${fixed(s.maxError.value, 4)} at ${angle(s.maxError.theta)}`), el('td', '', dip),
+          el('td', '', `${angle(s.principal.theta)} (Rp = ${fixed(s.principal.rp, 3)})`));
         return row;
       }));
     },

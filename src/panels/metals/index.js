@@ -10,6 +10,7 @@ import { fresnelConductor, fresnelExact, normalIncidence } from '../../optics/fr
 import { metalById, metalF0, metals } from '../../optics/materials.js';
 import { CHANNELS, metalCurveStats, metalCurves, schlickForF0 } from './metalCurves.js';
 import { createAudioTrace } from '../../ui/createAudioTrace.js';
+import { angle, fixed } from '../../ui/format.js';
 import { createLinePlot } from '../../ui/createLinePlot.js';
 import { createTwinStage } from '../shared/createTwinStage.js';
 import { buildMetalsDom } from './buildMetalsDom.js';
@@ -70,7 +71,9 @@ export function mount(root, ctx) {
       const metal = metalById(values.metal);
       const f0 = metalF0(metal);
       return [
-        ...CHANNELS.map((c, ch) => ({ label: `${metal.name} exact ${SHORT[c]}`, at: (deg) => fresnelConductor(cosDeg(deg), metal.n[ch], metal.k[ch]) })),
+        ...CHANNELS.map((c, ch) => ({
+          label: `${metal.name} exact ${SHORT[c]}`, at: (deg) => fresnelConductor(cosDeg(deg), metal.n[ch], metal.k[ch]),
+        })),
         ...CHANNELS.map((c, ch) => ({ label: `${metal.name} Schlick ${SHORT[c]}`, at: (deg) => schlickForF0(cosDeg(deg), f0[ch]) })),
       ];
     },
@@ -92,7 +95,7 @@ export function mount(root, ctx) {
       // Where each channel's exact curve is lowest, when that is visibly below F0.
       plot.setMarks(stats.filter((s) => s.dip > 0.002).map((s) => ({
         x: s.minimum.theta, color: CHANNEL_VARS[CHANNELS.indexOf(s.channel)],
-        label: `${SHORT[s.channel]} dips ${s.dip.toFixed(3)} below F0`,
+        label: `${SHORT[s.channel]} dips ${fixed(s.dip, 3)} below F0`,
       })));
       dom.setTable(metal, stats);
       dom.setNote(metalsLectureGap(metal, stats), SOURCE);
@@ -124,12 +127,12 @@ export function mount(root, ctx) {
       const list = (f) => stats.map(f).join(', ');
       const deepest = stats.reduce((a, b) => (b.dip > a.dip ? b : a));
       const dip = deepest.dip > 0
-        ? `The exact ${deepest.channel} curve dips to ${deepest.minimum.value.toFixed(4)} at ${deepest.minimum.theta.toFixed(1)}°, `
-          + `${deepest.dip.toFixed(4)} below F0, which Schlick cannot show.`
+        ? `The exact ${deepest.channel} curve dips to ${fixed(deepest.minimum.value, 4)} at ${angle(deepest.minimum.theta, 1)}, `
+          + `${fixed(deepest.dip, 4)} below F0, which Schlick cannot show.`
         : 'The exact curves never fall below F0.';
-      return `${metal.name} (n + ik per channel): F0 is ${list((s) => s.f0.toFixed(3))} for red, green and blue, `
-        + `against ${normalIncidence(1, values.nT).toFixed(3)} for the dielectric of n = ${values.nT}. `
-        + `Schlick with these F0 is off by at most ${list((s) => `${s.maxError.value.toFixed(4)} at ${s.maxError.theta.toFixed(1)}°`)}. `
+      return `${metal.name} (n + ik per channel): F0 is ${list((s) => fixed(s.f0, 3))} for red, green and blue, `
+        + `against ${fixed(normalIncidence(1, values.nT), 3)} for the dielectric of n = ${values.nT}. `
+        + `Schlick with these F0 is off by at most ${list((s) => `${fixed(s.maxError.value, 4)} at ${angle(s.maxError.theta, 1)}`)}. `
         + `${dip} The metal sphere uses ${values.fresnel === 'exact' ? 'exact conductor Fresnel' : "Schlick's approximation"}.`;
     },
     csv() {

@@ -2,6 +2,7 @@
 // "Use" button per row, and the custom row in the footer. Rebuilt from data on every render, so the
 // DOM never disagrees with the values.
 import { el } from '../../ui/el.js';
+import { angle, fixed, rounded } from '../../ui/format.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
 
 /** The table's columns, each a sort key of materialRows.js (SORT_KEYS). */
@@ -16,9 +17,9 @@ export const COLUMNS = [
 
 /** n with at least four decimals, and all the data has (air: 1.000293). */
 export function formatIndex(n) {
-  const text = String(Number(n.toFixed(6)));
+  const text = String(rounded(n, 6));
   const decimals = text.includes('.') ? text.split('.')[1].length : 0;
-  return decimals >= 4 ? text : n.toFixed(4);
+  return decimals >= 4 ? text : fixed(n, 4);
 }
 
 /**
@@ -38,9 +39,9 @@ function breakable(text) {
 function cells(row) {
   return [
     formatIndex(row.n),
-    `${row.speed.toFixed(4)} c`,
-    row.r0.toFixed(3),
-    row.critical === null ? 'none' : `${row.critical.toFixed(1)}°`,
+    `${fixed(row.speed, 4)} c`,
+    fixed(row.r0, 3),
+    row.critical === null ? 'none' : angle(row.critical, 1),
   ];
 }
 

@@ -4,6 +4,7 @@
 // a material's n to every panel of the page. Rows come from src/panels/refractive-index/materialRows.js.
 import { customRow, materialRows, sortMaterialRows } from './materialRows.js';
 import { buildIndexTable } from './buildIndexTable.js';
+import { angle, fixed } from '../../ui/format.js';
 import './styles.css';
 import { schema } from './schema.js';
 
@@ -60,8 +61,8 @@ export function mount(root, ctx) {
       const hi = byN[byN.length - 1];
       const chosen = selectedRow();
       return `${rows.length} materials, n from ${lo.n} (${lo.name}) to ${hi.n} (${hi.name}); `
-        + `${hi.name} reflects R0 = ${hi.r0.toFixed(3)} head-on, and light inside it cannot get out beyond ${hi.critical.toFixed(1)}°. `
-        + (chosen ? `In use: ${chosen.name}, n = ${chosen.n}, R0 = ${chosen.r0.toFixed(3)}.` : 'No material chosen yet.');
+        + `${hi.name} reflects R0 = ${fixed(hi.r0, 3)} head-on, and light inside it cannot get out beyond ${angle(hi.critical, 1)}. `
+        + (chosen ? `In use: ${chosen.name}, n = ${chosen.n}, R0 = ${fixed(chosen.r0, 3)}.` : 'No material chosen yet.');
     },
     csv() {
       const all = [...shown, custom];

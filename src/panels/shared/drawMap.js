@@ -1,8 +1,10 @@
 // Draws one stability map on a 2D canvas: the class of every cell (θ across, n_i/n_t up, both
-// linear), axes, the critical-angle curve θc = asin(1/ratio) for ratio > 1, rings around failures when they are few (one failing cell would otherwise be a 3-pixel
-// dot on a projector), and the probed cell. Colours come from the theme's CSS variables.
+// linear), axes, the critical-angle curve θc = asin(1/ratio) for ratio > 1, rings around failures
+// when they are few (one failing cell would otherwise be a 3-pixel dot on a projector), and the probed
+// cell. Colours come from the theme's CSS variables.
 import { cssVar, lineScale } from '../../ui/theme.js';
 import { context2d } from '../../ui/context2d.js';
+import { fixed } from '../../ui/format.js';
 import { criticalAngleDeg } from '../../methods/classifyGrid.js';
 import { FINE } from '../../methods/stabilityMap.js';
 
@@ -22,8 +24,12 @@ function rgb(css) {
 
 /** Plot-area geometry in CSS pixels and the cell ↔ pixel maps for a map's grid. */
 export function layout(cssWidth, cssHeight, map, fontPx) {
-  const pad = { left: Math.round(fontPx * 3.6), right: Math.round(fontPx * 0.9), top: Math.round(fontPx * 0.8), bottom: Math.round(fontPx * 3) };
-  const plot = { x: pad.left, y: pad.top, w: Math.max(10, cssWidth - pad.left - pad.right), h: Math.max(10, cssHeight - pad.top - pad.bottom) };
+  const pad = {
+    left: Math.round(fontPx * 3.6), right: Math.round(fontPx * 0.9), top: Math.round(fontPx * 0.8), bottom: Math.round(fontPx * 3),
+  };
+  const plot = {
+    x: pad.left, y: pad.top, w: Math.max(10, cssWidth - pad.left - pad.right), h: Math.max(10, cssHeight - pad.top - pad.bottom),
+  };
   const dTheta = (map.thetaDeg[map.width - 1] - map.thetaDeg[0]) / (map.width - 1);
   const dRatio = (map.ratio[map.height - 1] - map.ratio[0]) / (map.height - 1);
   const t0 = map.thetaDeg[0] - dTheta / 2;
@@ -98,7 +104,7 @@ function axes(g, L, fontPx) {
     g.moveTo(L.plot.x, L.y(r));
     g.lineTo(L.plot.x - fontPx * 0.35, L.y(r));
     g.stroke();
-    g.fillText(r.toFixed(1), L.plot.x - fontPx * 0.45, L.y(r));
+    g.fillText(fixed(r, 1), L.plot.x - fontPx * 0.45, L.y(r));
   }
   g.save();
   g.translate(fontPx * 0.9, L.plot.y + L.plot.h / 2);
