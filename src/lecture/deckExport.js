@@ -14,7 +14,8 @@
 // panels inside it are the embed page, which carries its own policy. A policy meta would have to
 // allow the inline scripts by hash and the frames from wherever embedUrl points, which is the
 // deck's owner's choice, not ours.
-import revealJsText from '../../node_modules/reveal.js/dist/reveal.js?raw'; // the UMD build (not in the package's exports): sets window.Reveal
+// The UMD build, which sets window.Reveal; the package's exports do not name it, so it is found by its path.
+import revealJsText from '../../node_modules/reveal.js/dist/reveal.js?raw';
 import revealCssText from 'reveal.js/reveal.css?raw';
 import revealThemeText from 'reveal.js/theme/dracula.css?raw';
 import { readLecture } from './readLecture.js';
@@ -46,8 +47,9 @@ const DECK_CSS = `
 // With light panels the deck is light too: dracula's colours, overridden.
 const LIGHT_CSS = `
 :root { --r-background: #fff; --r-background-color: #fff; --r-main-color: #1d1d1f; --r-heading-color: #5b2bb5;
-  --r-link-color: #b0126f; --r-link-color-dark: #8a0e57; --r-link-color-hover: #0b6f86; --r-selection-background-color: #d6d0f0;
-  --r-selection-color: #000; --r-bold-color: #8a4b00; --r-italic-color: #5a5a00; --r-inline-code-color: #0a7a32; --r-list-bullet-color: #0b6f86; }
+  --r-link-color: #b0126f; --r-link-color-dark: #8a0e57; --r-link-color-hover: #0b6f86;
+  --r-selection-background-color: #d6d0f0; --r-selection-color: #000; --r-bold-color: #8a4b00; --r-italic-color: #5a5a00;
+  --r-inline-code-color: #0a7a32; --r-list-bullet-color: #0b6f86; }
 `;
 
 // The deck's own lines: reveal.js with the choices above and the keys a panel hands back
@@ -63,7 +65,10 @@ const DECK_SCRIPT = `
   });
   window.deck = deck;
   deck.initialize();
-  var moves = { PageDown: 'next', ' ': 'next', ArrowRight: 'next', ArrowDown: 'next', PageUp: 'prev', ArrowLeft: 'prev', ArrowUp: 'prev', Home: 'first', End: 'last' };
+  var moves = {
+    PageDown: 'next', ' ': 'next', ArrowRight: 'next', ArrowDown: 'next',
+    PageUp: 'prev', ArrowLeft: 'prev', ArrowUp: 'prev', Home: 'first', End: 'last'
+  };
   window.addEventListener('message', function (event) {
     var data = event.data;
     if (!data || typeof data !== 'object' || data.type !== 'fresnel-lab:key' || typeof data.key !== 'string') return;
@@ -91,12 +96,14 @@ const styleText = (text) => String(text).replace(/<\/(style)/gi, '<\\/$1');
  * @param {string} [options.embedUrl]   embed.html's address: DEFAULT_EMBED_URL for a deck beside the offline folder, or the site's own
  * @param {string} [options.revealJs]   reveal.js's UMD script (default: reveal.js 6 from the lab's build)
  * @param {string} [options.revealCss]  reveal.js's CSS and a theme (default: reveal.css and dracula.css)
- * @param {'dark' | 'light' | null} [options.theme]  the embeds' colour scheme and the deck's (default dark; null: each embed as its reader's browser has it, on a dark deck)
+ * @param {'dark' | 'light' | null} [options.theme]  the embeds' colour scheme and the deck's (default dark; null: each
+ *   embed as its reader's browser has it, on a dark deck)
  * @param {boolean} [options.projector] the embeds in projector mode (larger type, thicker lines)
  * @returns {string}
  */
 export function lectureDeckHtml(lecture, {
-  embedUrl = DEFAULT_EMBED_URL, revealJs = revealJsText, revealCss = `${revealCssText}\n${revealThemeText}`, theme = 'dark', projector = false,
+  embedUrl = DEFAULT_EMBED_URL, revealJs = revealJsText, revealCss = `${revealCssText}\n${revealThemeText}`,
+  theme = 'dark', projector = false,
 } = {}) {
   const scheme = typeof embedUrl === 'string' ? /^\s*([a-z][a-z0-9+.-]*):/i.exec(embedUrl) : null;
   if (typeof embedUrl !== 'string' || !embedUrl.trim() || (scheme && !['http', 'https', 'file'].includes(scheme[1].toLowerCase()))) {

@@ -72,7 +72,8 @@ function textSlide(item, n) {
 function answerHtml(question, params) {
   if (question.kind === 'choice') {
     const right = trueOption(question, params);
-    return `<p class="fl-prompt"><strong>${subscriptedHtml(right.text(params))}</strong></p>\n    <p class="fl-why">${subscriptedHtml(right.why(params))}</p>`;
+    return `<p class="fl-prompt"><strong>${subscriptedHtml(right.text(params))}</strong></p>\n`
+      + `    <p class="fl-why">${subscriptedHtml(right.why(params))}</p>`;
   }
   const expected = expectedValue(question, params);
   return `<p class="fl-prompt">The computed answer is <strong>${escapeHtml(formatValue(question, expected))}</strong> `
@@ -88,10 +89,10 @@ function questionSlide(item, n, frame) {
   const question = questionById(item.question);
   const params = questionParams(question, item.seed ?? DEFAULT_QUESTION_SEED);
   const entry = panelEntry(question.panel);
-  const options = question.kind === 'choice'
-    ? `\n    <ol class="fl-options" type="A">${question.options(params).map((o) => `<li>${subscriptedHtml(o.text(params))}</li>`).join('')}</ol>`
-    : '';
-  const src = embedSource(frame.embedUrl, question.panel, { state: question.state(params), theme: frame.theme, projector: frame.projector });
+  const optionItems = question.kind === 'choice' ? question.options(params).map((o) => `<li>${subscriptedHtml(o.text(params))}</li>`) : [];
+  const options = optionItems.length ? `\n    <ol class="fl-options" type="A">${optionItems.join('')}</ol>` : '';
+  const { embedUrl, theme, projector } = frame;
+  const src = embedSource(embedUrl, question.panel, { state: question.state(params), theme, projector });
   return `<section data-item="${n}" data-item-type="question" data-question="${escapeHtml(question.id)}">
   <section class="fl-question">
     <h2>${item.heading ? escapeHtml(item.heading) : 'A question for the room'}</h2>${textHtml(item.text)}

@@ -51,7 +51,9 @@ const isLectureElement = (openTag) => new RegExp(`\\sid\\s*=\\s*["']?${LECTURE_E
  * @returns {string}
  */
 export function offlineLectureHtml(offlineIndexHtml, lecture) {
-  if (typeof offlineIndexHtml !== 'string' || !/<head[\s>]/i.test(offlineIndexHtml)) throw new TypeError('The offline lecture page is not an HTML page.');
+  if (typeof offlineIndexHtml !== 'string' || !/<head[\s>]/i.test(offlineIndexHtml)) {
+    throw new TypeError('The offline lecture page is not an HTML page.');
+  }
   const read = readLecture(lecture);
   if (!read.ok) throw new TypeError(`This is no lecture: ${read.problems.join(' ')}`);
   let html = offlineIndexHtml;
@@ -68,7 +70,8 @@ export function offlineLectureHtml(offlineIndexHtml, lecture) {
   // The first <title> is the page's own (it comes before any script); the lecture's title, escaped.
   const title = /<title>[^<]*<\/title>/i.exec(html);
   if (title && (!first || title.index < first[0])) {
-    html = `${html.slice(0, title.index)}<title>${escapeHtml(`${read.lecture.title}: Fresnel Lab`)}</title>${html.slice(title.index + title[0].length)}`;
+    const named = `<title>${escapeHtml(`${read.lecture.title}: Fresnel Lab`)}</title>`;
+    html = `${html.slice(0, title.index)}${named}${html.slice(title.index + title[0].length)}`;
   }
   return html;
 }

@@ -19,8 +19,8 @@ const root = resolve(import.meta.dirname, '../..');
 const lecture = {
   kind: 'fresnel-lab-lecture', version: 1, title: `Glass, twice ${XSS[0]}`,
   items: [
-    { type: 'text', heading: 'Agenda', text: `1. Into the glass\n2. Out of it\n\nAt normal incidence $R_0 = 0.04$. ${XSS[1]} [x](${XSS[2]})` },
-    { type: 'panel', panel: 'schlick', state: { nT: 1.7 }, heading: `Schlick's curve ${XSS[3]}`, text: 'Where does it part from the exact one?' },
+    { type: 'text', heading: 'Agenda', text: `1. Into the glass\n2. Out of it\n\nHead-on $R_0 = 0.04$. ${XSS[1]} [x](${XSS[2]})` },
+    { type: 'panel', panel: 'schlick', state: { nT: 1.7 }, heading: `Schlick ${XSS[3]}`, text: 'Where does it part from the exact?' },
     { type: 'panel', panel: 'spheres', state: { nT: 1.9 }, heading: 'Into the glass' },
     { type: 'panel', panel: 'spheres', state: { nI: 1.5, nT: 1 }, lock: ['nI'], heading: 'Out of the glass' },
     { type: 'panel', panel: 'metals', state: { metal: 'copper' } },
@@ -67,7 +67,8 @@ test('the offline lecture opened from disk shows the composed lecture, its marku
   expect(await page.title()).toBe(`${lecture.title}: Fresnel Lab`);
   const items = page.locator('main section[data-item]');
   await expect(items).toHaveCount(lecture.items.length);
-  expect(await items.evaluateAll((all) => all.map((s) => s.dataset.item))).toEqual(['text--1', 'schlick', 'spheres', 'spheres--2', 'metals', 'question--6']);
+  expect(await items.evaluateAll((all) => all.map((s) => s.dataset.item)))
+    .toEqual(['text--1', 'schlick', 'spheres', 'spheres--2', 'metals', 'question--6']);
   await expect(items.nth(0).locator('.lecture-own-heading')).toHaveText('Agenda');
   await expect(items.nth(0).locator('.lecture-text ol li')).toHaveCount(2);
   await expect(items.nth(1).locator('.lecture-own-heading')).toHaveText(lecture.items[1].heading);

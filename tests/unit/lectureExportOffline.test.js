@@ -38,7 +38,7 @@ const lecture = (over = {}) => ({
   items: [
     { type: 'text', heading: 'Agenda', text: '- air → glass\n- glass → air' },
     { type: 'panel', panel: 'spheres', state: { nT: 1.5 }, heading: 'Into glass' },
-    { type: 'panel', panel: 'spheres', state: { nI: 1.5, nT: 1 }, lock: ['nI'], text: 'Out of the glass: past $\\theta_c$ all is reflected.' },
+    { type: 'panel', panel: 'spheres', state: { nI: 1.5, nT: 1 }, lock: ['nI'], text: 'Out of the glass: past $\\theta_c$ all reflects.' },
     { type: 'question', question: QUESTIONS[0].id, seed: 'room' },
   ],
   ...over,
@@ -46,7 +46,8 @@ const lecture = (over = {}) => ({
 
 /** The data elements in a page: [openTag, text]; a text runs to the first </script, as a browser reads it. */
 function dataElements(html) {
-  return [...html.matchAll(/<script\b([^>]*)>([\s\S]*?)<\/script/gi)].filter(([, attrs]) => attrs.includes(LECTURE_ELEMENT_ID)).map(([, attrs, text]) => [attrs, text]);
+  return [...html.matchAll(/<script\b([^>]*)>([\s\S]*?)<\/script/gi)]
+    .filter(([, attrs]) => attrs.includes(LECTURE_ELEMENT_ID)).map(([, attrs, text]) => [attrs, text]);
 }
 
 function readBack(html) {
@@ -80,11 +81,13 @@ describe('the offline lecture page', () => {
 
   it('a hostile title, heading or text stays data: the element ends where it should and parses back', () => {
     for (const bad of HOSTILE) {
-      const data = lecture({ title: bad, items: [{ type: 'text', heading: bad, text: bad }, { type: 'panel', panel: 'schlick', heading: bad, text: bad }] });
+      const items = [{ type: 'text', heading: bad, text: bad }, { type: 'panel', panel: 'schlick', heading: bad, text: bad }];
+      const data = lecture({ title: bad, items });
       const html = offlineLectureHtml(PAGE, data);
       expect(readBack(html)).toEqual(readLecture(data).lecture);
       expect(inlineTexts(html).scripts).toEqual([bundle]); // no script was opened by the text
-      expect(html).toContain(`<title>${`${readLecture(data).lecture.title}: Fresnel Lab`.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;').replace(/'/g, '&#39;')}</title>`);
+      const entities = { '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' };
+      expect(html).toContain(`<title>${`${readLecture(data).lecture.title}: Fresnel Lab`.replace(/[&<>"']/g, (c) => entities[c])}</title>`);
     }
   });
 
@@ -93,9 +96,13 @@ describe('the offline lecture page', () => {
       fc.array(fc.constantFrom(...HOSTILE, '<', '/', 'script', '!--', ' ', '\\u003c'), { maxLength: 8 }).map((p) => p.join('')));
     const item = fc.oneof(
       fc.record({ type: fc.constant('text'), heading: text, text }),
-      fc.record({ type: fc.constant('panel'), panel: fc.constantFrom('schlick', 'spheres', 'metals'), heading: text, text }, { requiredKeys: ['type', 'panel'] }),
+      fc.record({ type: fc.constant('panel'), panel: fc.constantFrom('schlick', 'spheres', 'metals'), heading: text, text },
+        { requiredKeys: ['type', 'panel'] }),
     );
-    check(fc.property(fc.record({ kind: fc.constant(LECTURE_KIND), version: fc.constant(1), title: text, items: fc.array(item, { maxLength: 6 }) }), (data) => {
+    const anyLecture = fc.record({
+      kind: fc.constant(LECTURE_KIND), version: fc.constant(1), title: text, items: fc.array(item, { maxLength: 6 }),
+    });
+    check(fc.property(anyLecture, (data) => {
       const html = offlineLectureHtml(PAGE, data);
       expect(readBack(html)).toEqual(readLecture(data).lecture);
       expect(inlineTexts(html).scripts).toEqual([bundle]);
