@@ -6,7 +6,9 @@ import { cosDeg, toDegrees as deg } from '../optics/angles.js';
 import { schlickErrorAt } from '../optics/curves.js';
 import { displayCodes } from '../methods/advisor.js';
 import { goldenMax } from '../optics/refinedMax.js';
-import { brewsterAngle, criticalAngle, fresnelConductor, fresnelExact, fresnelPolarized, fresnelSchlick, normalIncidence } from '../optics/fresnel.js';
+import {
+  brewsterAngle, criticalAngle, fresnelConductor, fresnelExact, fresnelPolarized, fresnelSchlick, normalIncidence,
+} from '../optics/fresnel.js';
 import { dielectricById, metalById, metals } from '../optics/materials.js';
 import { methodError } from '../methods/advisor.js';
 import { methodById } from '../methods/methods.js';
@@ -52,18 +54,23 @@ export const FRESNEL_QUESTIONS = [
       {
         id: 'all-004', text: () => 'Yes: every dielectric reflects 4 % head-on.',
         holds: () => ['water', 'glass', 'diamond'].every((id) => Math.abs(normalIncidence(1, dielectricById(id).n) - 0.04) < 0.005),
-        why: () => `No: 0.04 belongs to n = 1.5 (R(0°) = ${fixed(normalIncidence(1, 1.5), 3)}). Water gives ${fixed(normalIncidence(1, dielectricById('water').n), 3)}, diamond ${fixed(normalIncidence(1, dielectricById('diamond').n), 3)}.`,
+        why: () => `No: 0.04 belongs to n = 1.5 (R(0°) = ${fixed(normalIncidence(1, 1.5), 3)}). `
+          + `Water gives ${fixed(normalIncidence(1, dielectricById('water').n), 3)}, `
+          + `diamond ${fixed(normalIncidence(1, dielectricById('diamond').n), 3)}.`,
       },
       {
         id: 'depends-on-n', text: () => 'No: it is ((n_t − n_i)/(n_t + n_i))², so it grows with the index.',
         holds: () => normalIncidence(1, dielectricById('water').n) < normalIncidence(1, dielectricById('glass').n)
           && normalIncidence(1, dielectricById('glass').n) < normalIncidence(1, dielectricById('diamond').n),
-        why: () => `Right: water ${fixed(normalIncidence(1, dielectricById('water').n), 3)}, glass ${fixed(normalIncidence(1, dielectricById('glass').n), 3)}, diamond ${fixed(normalIncidence(1, dielectricById('diamond').n), 3)}.`,
+        why: () => `Right: water ${fixed(normalIncidence(1, dielectricById('water').n), 3)}, `
+          + `glass ${fixed(normalIncidence(1, dielectricById('glass').n), 3)}, `
+          + `diamond ${fixed(normalIncidence(1, dielectricById('diamond').n), 3)}.`,
       },
       {
         id: 'none-head-on', text: () => 'Nothing is reflected head-on: reflection needs a grazing angle.',
         holds: () => normalIncidence(1, dielectricById('glass').n) === 0,
-        why: () => `No: head-on glass still reflects ${fixed(normalIncidence(1, dielectricById('glass').n), 3)}; grazing only makes it more.`,
+        why: () => `No: head-on glass still reflects ${fixed(normalIncidence(1, dielectricById('glass').n), 3)}; `
+          + `grazing only makes it more.`,
       },
     ],
     state: () => ({}),
@@ -96,14 +103,16 @@ export const FRESNEL_QUESTIONS = [
   {
     id: 'exact-r', panel: 'exact-fresnel', kind: 'numeric', unit: 'fraction', tolerance: 0.0005,
     params: (rng) => ({ theta: rng.pick(ANGLES), nT: rng.pick(INDICES) }),
-    prompt: (p) => `Light meets a surface from air at θ = ${p.theta}°, into n_t = ${p.nT}. What fraction R is reflected (unpolarised)? To 3 decimals.`,
+    prompt: (p) => `Light meets a surface from air at θ = ${p.theta}°, into n_t = ${p.nT}. `
+      + `What fraction R is reflected (unpolarised)? To 3 decimals.`,
     expected: (p) => fresnelExact(cosDeg(p.theta), 1, p.nT),
     state: (p) => ({ nI: 1, nT: p.nT }),
   },
   {
     id: 'matched-grazing', panel: 'exact-fresnel', kind: 'choice',
     params: (rng) => ({ n: rng.pick([1.33, 1.5, 2.42]) }),
-    prompt: (p) => `Both sides of an interface have n = ${p.n} (n_i = n_t). What does the exact formula give for R at θ = 89.9°, nearly grazing?`,
+    prompt: (p) => `Both sides of an interface have n = ${p.n} (n_i = n_t). `
+      + `What does the exact formula give for R at θ = 89.9°, nearly grazing?`,
     options: () => {
       const r = (p) => fresnelExact(cosDeg(89.9), p.n, p.n);
       const fromAir = (p) => fixed(fresnelExact(cosDeg(89.9), 1, p.n), 3);
@@ -111,12 +120,14 @@ export const FRESNEL_QUESTIONS = [
         {
           id: 'one', text: () => '1: at grazing every surface reflects everything.',
           holds: (p) => r(p) > 0.99,
-          why: (p) => `No: with equal indices there is no interface to reflect from, and R = ${fixed(r(p), 3)} at every angle. Grazing light is reflected strongly only where the indices differ: from air into ${p.n}, R(89.9°) = ${fromAir(p)}.`,
+          why: (p) => `No: with equal indices there is no interface to reflect from, and R = ${fixed(r(p), 3)} at every angle. `
+            + `Grazing light is reflected strongly only where the indices differ: from air into ${p.n}, R(89.9°) = ${fromAir(p)}.`,
         },
         {
           id: 'zero', text: () => '0: nothing tells the two sides apart, so nothing is reflected.',
           holds: (p) => r(p) === 0,
-          why: (p) => `Right: R = 0 at every angle, grazing included: with nothing to tell the two sides apart there is no reflection (from air into ${p.n} it would be ${fromAir(p)}).`,
+          why: (p) => `Right: R = 0 at every angle, grazing included: `
+            + `with nothing to tell the two sides apart there is no reflection (from air into ${p.n} it would be ${fromAir(p)}).`,
         },
         {
           id: 'half', text: () => 'About 0.5: at grazing the light splits evenly.',
@@ -130,7 +141,8 @@ export const FRESNEL_QUESTIONS = [
   {
     id: 'schlick-error', panel: 'schlick', kind: 'numeric', unit: 'fraction', tolerance: 0.0005,
     params: (rng) => ({ theta: rng.pick([60, 70, 75, 80, 85]), nT: rng.pick([1.33, 1.5, 2.0]) }),
-    prompt: (p) => `From air into n_t = ${p.nT} at θ = ${p.theta}°: how far is Schlick's approximation from the exact R (|exact − Schlick|)? To 3 decimals.`,
+    prompt: (p) => `From air into n_t = ${p.nT} at θ = ${p.theta}°: `
+      + `how far is Schlick's approximation from the exact R (|exact − Schlick|)? To 3 decimals.`,
     expected: (p) => schlickErrorAt(p.theta, 1, p.nT),
     state: (p) => ({ nI: 1, nT: p.nT }),
   },
@@ -142,7 +154,9 @@ export const FRESNEL_QUESTIONS = [
       {
         id: 'good', text: () => 'Yes: Schlick works from either side.',
         holds: (p) => Math.abs(fresnelExact(cosDeg(p.theta), 1.5, 1) - fresnelSchlick(cosDeg(p.theta), 1.5, 1)) < 0.05,
-        why: (p) => `No: past the critical angle (${fixed(deg(criticalAngle(1.5, 1)), 1)}°) the exact R is ${fixed(fresnelExact(cosDeg(p.theta), 1.5, 1), 3)}, Schlick on cos θ_i gives ${fixed(fresnelSchlick(cosDeg(p.theta), 1.5, 1), 3)}.`,
+        why: (p) => `No: past the critical angle (${fixed(deg(criticalAngle(1.5, 1)), 1)}°) `
+          + `the exact R is ${fixed(fresnelExact(cosDeg(p.theta), 1.5, 1), 3)}, `
+          + `Schlick on cos θ_i gives ${fixed(fresnelSchlick(cosDeg(p.theta), 1.5, 1), 3)}.`,
       },
       {
         id: 'misses-tir', text: () => 'No: it misses total internal reflection; it needs cos θ_t, and R = 1 past the critical angle.',
@@ -167,13 +181,17 @@ export const FRESNEL_QUESTIONS = [
       {
         id: 'scale-up', text: () => 'Yes: doubling F doubles the rim and keeps the centre right.',
         holds: (p) => 2 * fresnelExact(cosDeg(85), 1, p.nT) <= 1,
-        why: (p) => `No: F at 85° is already ${fixed(fresnelExact(cosDeg(85), 1, p.nT), 3)}; doubled it is ${fixed(2 * fresnelExact(cosDeg(85), 1, p.nT), 3)}, more light than arrives, and the centre's ${fixed(normalIncidence(1, p.nT), 3)} doubles too.`,
+        why: (p) => `No: F at 85° is already ${fixed(fresnelExact(cosDeg(85), 1, p.nT), 3)}; `
+          + `doubled it is ${fixed(2 * fresnelExact(cosDeg(85), 1, p.nT), 3)}, more light than arrives, `
+          + `and the centre's ${fixed(normalIncidence(1, p.nT), 3)} doubles too.`,
       },
       {
         id: 'energy', text: () => 'No: F is a fraction of the light; scaled, it exceeds 1 near grazing and breaks energy conservation.',
         holds: (p) => 2 * fresnelExact(cosDeg(85), 1, p.nT) > 1,
-        why: (p) => `Right: 2·F(85°) = ${fixed(2 * fresnelExact(cosDeg(85), 1, p.nT), 3)} > 1. Brighten the light or the environment instead; `
-          + `the index barely moves the rim (F(85°) = ${RIM_INDICES.map((n) => fixed(fresnelExact(cosDeg(85), 1, n), 2)).join(', ')} for n = ${RIM_INDICES.join(', ')}).`,
+        why: (p) => `Right: 2·F(85°) = ${fixed(2 * fresnelExact(cosDeg(85), 1, p.nT), 3)} > 1. `
+          + `Brighten the light or the environment instead; `
+          + `the index barely moves the rim (F(85°) = ${RIM_INDICES.map((n) => fixed(fresnelExact(cosDeg(85), 1, n), 2)).join(', ')} for `
+          + `n = ${RIM_INDICES.join(', ')}).`,
       },
     ],
     state: (p) => ({ nT: p.nT }),
@@ -189,7 +207,8 @@ export const FRESNEL_QUESTIONS = [
         {
           id: 'keeps-colour', text: () => 'The same colour, brighter: a metal keeps its colour at every angle.',
           holds: (p) => spread(channels(p, 89)) >= spread(channels(p, 0)),
-          why: (p) => `No: head-on the channels are ${channels(p, 0).map((x) => fixed(x, 2)).join(', ')}; at 89° they are ${channels(p, 89).map((x) => fixed(x, 2)).join(', ')}: nearly white.`,
+          why: (p) => `No: head-on the channels are ${channels(p, 0).map((x) => fixed(x, 2)).join(', ')}; `
+            + `at 89° they are ${channels(p, 89).map((x) => fixed(x, 2)).join(', ')}: nearly white.`,
         },
         {
           id: 'towards-white', text: () => 'Nearly white: every channel tends to 1 at grazing, so the tint fades.',
@@ -202,7 +221,8 @@ export const FRESNEL_QUESTIONS = [
           why: (p) => {
             const [head, grazing] = [channels(p, 0), channels(p, 89)];
             const grows = grazing.every((x, i) => x > head[i]);
-            return `No: ${grows ? 'every channel grows' : 'the channels go'} from ${head.map((x) => fixed(x, 2)).join(', ')} head-on to ${grazing.map((x) => fixed(x, 2)).join(', ')} at 89°.`;
+            return `No: ${grows ? 'every channel grows' : 'the channels go'} from ${head.map((x) => fixed(x, 2)).join(', ')} head-on to `
+              + `${grazing.map((x) => fixed(x, 2)).join(', ')} at 89°.`;
           },
         },
       ];
@@ -212,18 +232,21 @@ export const FRESNEL_QUESTIONS = [
   {
     id: 'metal-r0', panel: 'metals', kind: 'numeric', unit: 'fraction', tolerance: 0.005,
     params: (rng) => ({ metal: rng.pick(metals.map((m) => m.id)) }),
-    prompt: (p) => `Head-on (0°), what fraction of green light (${metalById(p.metal).rgbNm[1]} nm) does ${metalById(p.metal).name.toLowerCase()} reflect? To 2 decimals.`,
+    prompt: (p) => `Head-on (0°), what fraction of green light (${metalById(p.metal).rgbNm[1]} nm) `
+      + `does ${metalById(p.metal).name.toLowerCase()} reflect? To 2 decimals.`,
     expected: (p) => fresnelConductor(1, metalById(p.metal).n[1], metalById(p.metal).k[1]),
     state: (p) => ({ metal: p.metal }),
   },
   {
     id: 'schlick-visible', panel: 'speed-accuracy', kind: 'choice',
     params: () => ({}),
-    prompt: () => 'Light from air onto plastic, paint or skin (n from 1.3 to 1.7), at display white on an 8-bit sRGB screen: can anyone see that Schlick’s pow(1 − c, 5) is not the exact R (is any pixel off by more than half a display code)?',
+    prompt: () => 'Light from air onto plastic, paint or skin (n from 1.3 to 1.7), at display white on an 8-bit sRGB screen: '
+      + 'can anyone see that Schlick’s pow(1 − c, 5) is not the exact R (is any pixel off by more than half a display code)?',
     options: () => {
       const where = () => {
         const { codes, theta, nT } = schlickWorstCodes();
-        return `${fixed(codes, 1)} codes (${fixed((100 * codes) / 255, 1)} % of the range) at worst, near θ = ${fixed(theta, 0)}° for n = ${fixed(nT, 2)}`;
+        return `${fixed(codes, 1)} codes (${fixed((100 * codes) / 255, 1)} % of the range) at worst, `
+          + `near θ = ${fixed(theta, 0)}° for n = ${fixed(nT, 2)}`;
       };
       return [
         {
@@ -234,7 +257,9 @@ export const FRESNEL_QUESTIONS = [
         {
           id: 'visible', text: () => 'Yes: near grazing its error shows, by more than two codes at worst.',
           holds: () => schlickWorstCodes().codes > 2,
-          why: () => `Right: ${where()}. The exact c/g form is off by ${codesText(methodError(sceneById('plastic'), methodById('exact-cg')).maxCodes)} at worst; the panel weighs that against what each method costs on this device.`,
+          why: () => `Right: ${where()}. The exact c/g form is off by `
+            + `${codesText(methodError(sceneById('plastic'), methodById('exact-cg')).maxCodes)} at worst; `
+            + `the panel weighs that against what each method costs on this device.`,
         },
       ];
     },
@@ -243,19 +268,22 @@ export const FRESNEL_QUESTIONS = [
   {
     id: 'lecture-order', panel: 'shader-lab', kind: 'choice',
     params: (rng) => ({ n: rng.pick([1.33, 1.5]), theta: rng.pick([89.99, 89.999]) }),
-    prompt: (p) => `Both sides have n = ${p.n}. In float32 (highp), the lecture's code computes g = sqrt(1.0 + c*c - m*m) at θ = ${p.theta}°. What R comes out?`,
+    prompt: (p) => `Both sides have n = ${p.n}. In float32 (highp), the lecture's code computes g = sqrt(1.0 + c*c - m*m) `
+      + `at θ = ${p.theta}°. What R comes out?`,
     options: () => {
       const literal = (p) => methodById('exact-cg-literal').evaluate('fp32', cosDeg(p.theta), p.n, p.n);
       return [
         {
           id: 'zero', text: () => '0, as it must be with no interface.',
           holds: (p) => literal(p) === 0,
-          why: (p) => `No: it gives ${fixed(literal(p), 4)}. With c² below half a float32 step of 1, 1.0 + c*c rounds to 1.0, so g² = 0 and R = 1; (1 − m)(1 + m) + c² keeps c².`,
+          why: (p) => `No: it gives ${fixed(literal(p), 4)}. With c² below half a float32 step of 1, 1.0 + c*c rounds to 1.0, `
+            + `so g² = 0 and R = 1; (1 − m)(1 + m) + c² keeps c².`,
         },
         {
           id: 'one', text: () => '1: 1.0 + c*c rounds to 1.0, so g = 0 and the formula says everything is reflected.',
           holds: (p) => Math.abs(literal(p) - 1) < 1e-6,
-          why: (p) => `Right: ${fixed(literal(p), 4)}, where the exact R is 0. The grader's matched-indices criterion catches exactly this.`,
+          why: (p) => `Right: ${fixed(literal(p), 4)}, where the exact R is 0. `
+            + `The grader's matched-indices criterion catches exactly this.`,
         },
         {
           id: 'nan', text: () => 'NaN: the square root of a negative number.',
@@ -269,20 +297,25 @@ export const FRESNEL_QUESTIONS = [
   {
     id: 'pow-above-one', panel: 'stability', kind: 'choice',
     params: (rng) => ({ nT: rng.pick([1.33, 1.5]) }),
-    prompt: (p) => `Interpolated normals can give cos θ = ${COS_ABOVE_ONE}, a hair above 1. In a highp shader, what does Schlick's R0 + (1 − R0)·pow(1 − cos θ, 5) give there (from air into n_t = ${p.nT})?`,
+    prompt: (p) => `Interpolated normals can give cos θ = ${COS_ABOVE_ONE}, a hair above 1. In a highp shader, `
+      + `what does Schlick's R0 + (1 − R0)·pow(1 − cos θ, 5) give there (from air into n_t = ${p.nT})?`,
     options: () => {
       const value = (p) => methodById('schlick-pow').evaluate('fp32', COS_ABOVE_ONE, 1, p.nT);
       const r0 = (p) => normalIncidence(1, p.nT);
       return [
         {
-          id: 'undefined', text: () => 'Nothing usable: pow of a negative base is undefined in GLSL (NaN on many GPUs); clamp cos θ to [0, 1] first.',
+          id: 'undefined', text: () => 'Nothing usable: pow of a negative base is undefined in GLSL (NaN on many GPUs); '
+            + 'clamp cos θ to [0, 1] first.',
           holds: (p) => !Number.isFinite(value(p)),
-          why: () => 'Right: GLSL ES 3.00 (§8.2) leaves pow(x, y) undefined for x < 0, and log2 of a negative number is NaN where the GPU computes pow as exp2(y·log2 x). The stability map shows the column at θ = 0° for this method.',
+          why: () => 'Right: GLSL ES 3.00 (§8.2) leaves pow(x, y) undefined for x < 0, '
+            + 'and log2 of a negative number is NaN where the GPU computes pow as exp2(y·log2 x). '
+            + 'The stability map shows the column at θ = 0° for this method.',
         },
         {
           id: 'r0', text: () => 'R0, or a hair below it: (1 − cos θ)⁵ is a tiny negative number.',
           holds: (p) => Number.isFinite(value(p)) && Math.abs(value(p) - r0(p)) < 1e-6,
-          why: (p) => `No: that is what float64 arithmetic with an odd power gives (R0 = ${fixed(r0(p), 4)}), but a shader's pow of a negative base is undefined, and commonly NaN.`,
+          why: (p) => `No: that is what float64 arithmetic with an odd power gives (R0 = ${fixed(r0(p), 4)}), `
+            + `but a shader's pow of a negative base is undefined, and commonly NaN.`,
         },
         {
           id: 'one', text: () => '1: past its range the shader saturates.',

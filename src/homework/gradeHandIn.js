@@ -25,10 +25,13 @@ export function gradeHandIn(data, { expected = null } = {}) {
   const problems = read.ok ? [] : read.problems.map((p) => `sheet: ${p}`);
   if (data.version !== SHEET_VERSION) problems.push(`version must be ${SHEET_VERSION}.`);
   if (!text(data.seed, 64)) problems.push('seed must be a text of 1 to 64 characters.');
-  if (!Array.isArray(data.answers) || (read.ok && data.answers.length !== read.sheet.items.length)) problems.push('answers must hold one entry per question.');
-  if (read.ok && read.sheet.seed !== undefined && data.seed !== read.sheet.seed) problems.push(`this sheet gives everyone the seed ${read.sheet.seed}, but the file says ${rawText(data.seed, 64)}.`);
+  if (!Array.isArray(data.answers) || (read.ok && data.answers.length !== read.sheet.items.length)) problems.push('answers must hold '
+    + 'one entry per question.');
+  if (read.ok && read.sheet.seed !== undefined && data.seed !== read.sheet.seed) problems.push(`this sheet gives everyone the seed `
+    + `${read.sheet.seed}, but the file says ${rawText(data.seed, 64)}.`);
   if (read.ok && expected && sheetFingerprint(read.sheet) !== sheetFingerprint(expected)) {
-    problems.push(`it answers another sheet (fingerprint ${sheetFingerprint(read.sheet)}) than the one given to check against (${sheetFingerprint(expected)}): an edited copy, or the wrong sheet.`);
+    problems.push(`it answers another sheet (fingerprint ${sheetFingerprint(read.sheet)}) `
+      + `than the one given to check against (${sheetFingerprint(expected)}): an edited copy, or the wrong sheet.`);
   }
   if (problems.length) return { ok: false, problems };
   const attempts = Array.isArray(data.attempts) ? data.attempts : [];

@@ -27,7 +27,8 @@ export const LIGHT_QUESTIONS = [
   {
     id: 'mip-renormalize', panel: 'normal-mips', kind: 'choice',
     params: (rng) => ({ tiltDeg: rng.pick([10, 20, 30]), s: rng.pick([32, 64, 128]) }),
-    prompt: (p) => `Two normals tilted ±${p.tiltDeg}° are averaged into one texel of a coarser mip level. Renormalising the average to length 1 keeps…`,
+    prompt: (p) => `Two normals tilted ±${p.tiltDeg}° are averaged into one texel of a coarser mip level. `
+      + `Renormalising the average to length 1 keeps…`,
     options: () => {
       // The average of two unit normals tilted ±t has length cos t; Toksvig reads the lost spread from it.
       const length = (p) => Math.cos(p.tiltDeg * DEG);
@@ -35,12 +36,16 @@ export const LIGHT_QUESTIONS = [
         {
           id: 'keeps-roughness', text: () => '…the roughness: the direction is what matters.',
           holds: (p) => toksvigFactor(length(p), p.s) === 1,
-          why: (p) => `No: the average has length ${fixed(length(p), 3)}; that shortfall is the spread of the normals. Toksvig's factor turns it into a lower exponent (${fixed(p.s * toksvigFactor(length(p), p.s), 1)} instead of ${p.s}); renormalised, the texel is as shiny as a flat one.`,
+          why: (p) => `No: the average has length ${fixed(length(p), 3)}; that shortfall is the spread of the normals. `
+            + `Toksvig's factor turns it into a lower exponent (${fixed(p.s * toksvigFactor(length(p), p.s), 1)} instead of ${p.s}); `
+            + `renormalised, the texel is as shiny as a flat one.`,
         },
         {
           id: 'loses-roughness', text: () => '…the direction only: the spread of the normals, and with it the roughness, is lost.',
           holds: (p) => length(p) < 1 && toksvigFactor(length(p), p.s) < 1,
-          why: (p) => `Right: length ${fixed(length(p), 3)} carries the spread; Toksvig's exponent ${fixed(p.s * toksvigFactor(length(p), p.s), 1)} instead of ${p.s} keeps the highlight as broad as the bumps make it.`,
+          why: (p) => `Right: length ${fixed(length(p), 3)} carries the spread; `
+            + `Toksvig's exponent ${fixed(p.s * toksvigFactor(length(p), p.s), 1)} instead of ${p.s} keeps the highlight as broad `
+            + `as the bumps make it.`,
         },
       ];
     },
@@ -49,7 +54,8 @@ export const LIGHT_QUESTIONS = [
   {
     id: 'toksvig-exponent', panel: 'normal-mips', kind: 'numeric', unit: null, tolerance: 0.5,
     params: (rng) => ({ L: rng.pick([0.9, 0.95, 0.98, 0.99]), s: rng.pick([16, 32, 64, 128]) }),
-    prompt: (p) => `A texel of a coarser mip level averages its normals into one of length |N_a| = ${p.L}. Toksvig's formula lowers a Blinn-Phong exponent s = ${p.s} to what? To the nearest whole number (within 0.5).`,
+    prompt: (p) => `A texel of a coarser mip level averages its normals into one of length |N_a| = ${p.L}. `
+      + `Toksvig's formula lowers a Blinn-Phong exponent s = ${p.s} to what? To the nearest whole number (within 0.5).`,
     expected: (p) => toksvigExponent(p.L, p.s),
     state: () => ({ technique: 'toksvig' }),
   },
@@ -58,7 +64,9 @@ export const LIGHT_QUESTIONS = [
     id: 'asphalt-outshine', panel: 'asphalt', kind: 'predict', unit: 'deg', tolerance: 2,
     axis: 'Camera elevation above the road',
     params: (rng) => ({ nT: rng.pick([1.5, 1.55, 1.6]), sunEl: rng.pick([10, 15, 20]) }),
-    prompt: (p) => `A road of n_t = ${p.nT} and roughness ${ASPHALT_ROUGHNESS} under a sun ${p.sunEl}° above it, straight ahead. Lower the camera from overhead (90°). Predict the camera elevation at which the brightest spot in view first reflects more light specularly than diffusely (the panel's highlight ÷ diffuse passes 1). Within 2°.`,
+    prompt: (p) => `A road of n_t = ${p.nT} and roughness ${ASPHALT_ROUGHNESS} under a sun ${p.sunEl}° above it, straight ahead. `
+      + `Lower the camera from overhead (90°). Predict the camera elevation at which the brightest spot in view first reflects more light `
+      + `specularly than diffusely (the panel's highlight ÷ diffuse passes 1). Within 2°.`,
     expected: (p) => angleWhere(specularShare(p), 0.5, 2, 90),
     curve: (p) => ({ label: 'Specular share of the brightest spot', f: specularShare(p), level: 0.5 }),
     state: (p) => ({ nT: p.nT, sunEl: p.sunEl, roughness: ASPHALT_ROUGHNESS, camEl: 90, fresnel: true }),
@@ -66,10 +74,12 @@ export const LIGHT_QUESTIONS = [
   {
     id: 'phong-grazing', panel: 'changing-specular', kind: 'choice',
     params: (rng) => ({ nT: rng.pick([1.33, 1.5]), s: rng.pick([20, 60, 200]) }),
-    prompt: (p) => `Keep the viewer in the mirror direction and lower the light from overhead (90°) to 5° above a surface of n_t = ${p.nT}. What happens to the peak of the highlight?`,
+    prompt: (p) => `Keep the viewer in the mirror direction and lower the light from overhead (90°) `
+      + `to 5° above a surface of n_t = ${p.nT}. What happens to the peak of the highlight?`,
     options: () => {
       const peak = (p, model, elevation) => phongHighlights(elevation, elevation, p.s, 1, p.nT)[model];
-      const both = (p) => `plain Phong ${fixed(peak(p, 'phong', 90), 3)} → ${fixed(peak(p, 'phong', 5), 3)}, Phong × F ${fixed(peak(p, 'phongF', 90), 3)} → ${fixed(peak(p, 'phongF', 5), 3)}`;
+      const both = (p) => `plain Phong ${fixed(peak(p, 'phong', 90), 3)} → ${fixed(peak(p, 'phong', 5), 3)}, `
+        + `Phong × F ${fixed(peak(p, 'phongF', 90), 3)} → ${fixed(peak(p, 'phongF', 5), 3)}`;
       return [
         {
           id: 'fresnel-grows', text: () => 'Plain Phong (k_s = R0) stays the same; Phong × F grows many times over towards grazing.',
@@ -79,7 +89,8 @@ export const LIGHT_QUESTIONS = [
         {
           id: 'both-grow', text: () => 'Both grow: Phong’s lobe already brightens at grazing.',
           holds: (p) => peak(p, 'phong', 5) > 1.01 * peak(p, 'phong', 90),
-          why: (p) => `No: ${both(p)}. (v·r)^s is 1 in the mirror direction whatever the elevation; Phong ignores the angle between r and the surface.`,
+          why: (p) => `No: ${both(p)}. (v·r)^s is 1 in the mirror direction whatever the elevation; `
+            + `Phong ignores the angle between r and the surface.`,
         },
         {
           id: 'both-fade', text: () => 'Both fade: less light reaches a surface at grazing.',
@@ -93,21 +104,25 @@ export const LIGHT_QUESTIONS = [
   {
     id: 'split-half', panel: 'reflect-refract', kind: 'numeric', unit: 'deg', tolerance: 0.5,
     params: (rng) => ({ nT: rng.pick([1.333, 1.45, 1.5, 1.6]) }),
-    prompt: (p) => `A pool of n_t = ${p.nT} under an open sky. At what angle from the normal do the reflected sky and the refracted floor carry equal shares of the light (R = T = 0.5)? In degrees, within 0.5°.`,
+    prompt: (p) => `A pool of n_t = ${p.nT} under an open sky. `
+      + `At what angle from the normal do the reflected sky and the refracted floor carry equal shares of the light (R = T = 0.5)? In `
+      + `degrees, within 0.5°.`,
     expected: (p) => angleWhere(reflectance(1, p.nT), 0.5),
     state: (p) => ({ nT: p.nT }),
   },
   {
     id: 'snell-angle', panel: 'refraction-waves', kind: 'numeric', unit: 'deg', tolerance: 0.05,
     params: (rng) => ({ theta: rng.pick([20, 30, 40, 50, 60, 70]), nT: rng.pick(INDICES) }),
-    prompt: (p) => `A wave from air (n_i = 1) meets n_t = ${p.nT} at θ_i = ${p.theta}°. At what angle θ_t from the normal does the transmitted wave travel? In degrees to 0.1°.`,
+    prompt: (p) => `A wave from air (n_i = 1) meets n_t = ${p.nT} at θ_i = ${p.theta}°. `
+      + `At what angle θ_t from the normal does the transmitted wave travel? In degrees to 0.1°.`,
     expected: (p) => deg(transmittedAngle(p.theta * DEG, 1, p.nT)),
     state: (p) => ({ nI: 1, nT: p.nT }),
   },
   {
     id: 'critical-predict', panel: 'refraction-waves', kind: 'predict', unit: 'deg', tolerance: 2,
     params: (rng) => ({ nI: rng.pick([1.33, 1.5, 1.6, 2.42]) }),
-    prompt: (p) => `A wave inside n_i = ${p.nI} meets air (n_t = 1). Predict the angle of incidence past which no transmitted wave leaves (within 2°), then look.`,
+    prompt: (p) => `A wave inside n_i = ${p.nI} meets air (n_t = 1). `
+      + `Predict the angle of incidence past which no transmitted wave leaves (within 2°), then look.`,
     expected: (p) => deg(criticalAngle(p.nI, 1)),
     curve: (p) => ({ label: 'R from inside', f: reflectance(p.nI, 1) }),
     state: (p) => ({ nI: p.nI, nT: 1 }),
@@ -115,14 +130,16 @@ export const LIGHT_QUESTIONS = [
   {
     id: 'critical-angle', panel: 'angle-ratio', kind: 'numeric', unit: 'deg', tolerance: 0.05,
     params: (rng) => ({ nI: rng.pick([1.33, 1.5, 1.6, 2.42]) }),
-    prompt: (p) => `Light inside a medium of n_i = ${p.nI} meets air (n_t = 1). Above what angle is all of it reflected? In degrees to 0.1°.`,
+    prompt: (p) => `Light inside a medium of n_i = ${p.nI} meets air (n_t = 1). `
+      + `Above what angle is all of it reflected? In degrees to 0.1°.`,
     expected: (p) => deg(criticalAngle(p.nI, 1)),
     state: (p) => ({ nI: p.nI, nT: 1 }),
   },
   {
     id: 'schlick-worst', panel: 'spheres', kind: 'predict', unit: 'deg', tolerance: 3,
     params: (rng) => ({ nT: rng.pick([1.33, 1.5, 1.75, 2.0]) }),
-    prompt: (p) => `From air into n_t = ${p.nT}: predict the angle θ at which Schlick's approximation is furthest from the exact R (within 3°), then look at the error sphere and the plot.`,
+    prompt: (p) => `From air into n_t = ${p.nT}: predict the angle θ at which Schlick's approximation is furthest from the exact R (within `
+      + `3°), then look at the error sphere and the plot.`,
     expected: (p) => angleOfMax(schlickGap(p.nT)),
     curve: (p) => ({ label: '|exact − Schlick|', f: schlickGap(p.nT) }),
     state: (p) => ({ nI: 1, nT: p.nT }),

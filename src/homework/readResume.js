@@ -34,13 +34,15 @@ export function readResume(text, { seed, classSeed = null, questions, params }) 
   // had one (as now) and otherwise for the learner's id unhashed: other numbers than today's.
   const madeFor = own(data, 'seed') ? data.seed : classSeed;
   if (madeFor !== seed) {
-    return none(own(data, 'seed') ? 'is for other numbers (another seed)' : 'was kept by an earlier version of this page for other numbers');
+    return none(own(data, 'seed') ? 'is for other numbers (another seed)' : 'was kept by an earlier version of this '
+      + 'page for other numbers');
   }
   if (data.answers.length !== questions.length) {
     return none(`is for a sheet of ${data.answers.length} questions, and this one has ${questions.length}`);
   }
   const answers = questions.map((question, i) => readAnswer(question, params[i], data.answers[i]));
   const dropped = answers.filter((a, i) => a === null && data.answers[i] !== null).length;
-  const notice = dropped ? `${dropped} of the answers your course kept ${dropped === 1 ? 'does' : 'do'} not fit ${dropped === 1 ? 'its question and is' : 'their questions and are'} left open.` : null;
+  const notice = dropped ? `${dropped} of the answers your course kept ${dropped === 1 ? 'does' : 'do'} not fit `
+    + `${dropped === 1 ? 'its question and is' : 'their questions and are'} left open.` : null;
   return { answers, notice };
 }

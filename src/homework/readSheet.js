@@ -56,7 +56,8 @@ export function readSheet(data) {
     });
   }
   if (data.seed !== undefined && !text(data.seed, 64)) problems.push('seed, where given, must be a text of 1 to 64 characters.');
-  if (data.reveal !== undefined && !['after-answer', 'lecturer'].includes(data.reveal)) problems.push('reveal must be after-answer or lecturer.');
+  if (data.reveal !== undefined && !['after-answer', 'lecturer'].includes(data.reveal)) problems.push('reveal must be '
+    + 'after-answer or lecturer.');
   if (problems.length) return { ok: false, problems };
   return {
     ok: true,

@@ -51,7 +51,8 @@ export function readStartState(text, panelId) {
     else refused.push(`${rawText(name)}=${rawText(value)} ${read.reason}`);
   }
   const problems = [];
-  if (unknown.length) problems.push(`${unknown.join(', ')} ${unknown.length === 1 ? 'is not a value' : 'are not values'} of the “${titleOf(panelId)}” panel.`);
+  if (unknown.length) problems.push(`${unknown.join(', ')} ${unknown.length === 1 ? 'is not a value' : 'are not values'} of the `
+    + `“${titleOf(panelId)}” panel.`);
   if (refused.length) problems.push(`${refused.join('; ')}.`);
   return problems.length ? { ok: false, problem: problems.join(' ') } : { ok: true, state };
 }

@@ -25,7 +25,8 @@ import { summarizeQuestions } from './summarizeQuestions.js';
  * request: { sheet (the sheet set, its JSON), files?, text?, classFile? (a saved view's text or
  * bytes: its sheet is used, and its hand-ins come first) }.
  * @param {{ sheet?: unknown, files?: PickedFile[], text?: string, classFile?: string | Uint8Array }} request
- * @param {{ caps?: object, onProgress?: (progress: ViewProgress) => void, signal?: AbortSignal, pause?: () => Promise<unknown>, sliceMs?: number }} [options]
+ * @param {{ caps?: object, onProgress?: (progress: ViewProgress) => void, signal?: AbortSignal,
+ *   pause?: () => Promise<unknown>, sliceMs?: number }} [options]
  * @returns {Promise<ClassView>}
  */
 export async function buildClassView(request, { caps, onProgress, signal, pause, sliceMs } = {}) {
@@ -42,11 +43,13 @@ export async function buildClassView(request, { caps, onProgress, signal, pause,
     handIns.push(...saved.handIns);
     refused.push(...saved.refused);
   }
-  if (sheet === undefined || sheet === null) return { ok: false, problems: ['Give the sheet you set: hand-ins are graded against it, and those for any other sheet are refused.'] };
+  if (sheet === undefined || sheet === null) return { ok: false, problems: ['Give the sheet you set: hand-ins are graded against it, '
+    + 'and those for any other sheet are refused.'] };
   // A saved view's hand-ins count against the cap on hand-ins read in all.
   const left = classCaps(caps).maxHandIns - handIns.length;
   const read = left > 0 ? readClassHandIns({ files: request?.files, text: request?.text }, { ...caps, maxHandIns: left })
-    : { handIns: [], refused: request?.files?.length || (typeof request?.text === 'string' && request.text.trim()) ? [{ source: 'files and text', reason: 'not read: the saved class view holds as many hand-ins as are read in all.' }] : [] };
+    : { handIns: [], refused: request?.files?.length || (typeof request?.text === 'string' && request.text.trim()) ? [{ source: 'files and '
+      + 'text', reason: 'not read: the saved class view holds as many hand-ins as are read in all.' }] : [] };
   handIns.push(...read.handIns);
   refused.push(...read.refused);
   const grades = await gradeClass(sheet, handIns, {

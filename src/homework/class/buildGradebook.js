@@ -17,7 +17,8 @@ import { lmsName } from './lmsName.js';
 
 /**
  * @typedef {'right' | 'wrong' | 'unanswered'} Mark
- * @typedef {{ kind: 'superseded' | 'resubmitted' | 'shared-seed' | 'class-seed' | 'copied' | 'no-name', text: string, others: number[] }} Flag
+ * @typedef {{ kind: 'superseded' | 'resubmitted' | 'shared-seed' | 'class-seed' | 'copied' | 'no-name', text: string,
+ *   others: number[] }} Flag
  * @typedef {{ key: number, name: string, lmsName: string, seed: string, score: number, total: number, percent: number,
  *   marks: Mark[], tries: (number | null)[], triesTotal: number | null, time: string | null, source: string,
  *   counted: boolean, flags: Flag[] }} Row  key: the hand-in's index in grades.graded
@@ -47,9 +48,12 @@ function supersede(rows, identity) {
     const earlier = group.slice(0, -1);
     for (const row of earlier) {
       row.counted = false;
-      row.flags.push({ kind: 'superseded', text: `Not counted: ${shown(latest)} handed in again later (${latest.time ?? 'no time given'}, ${latest.source}).`, others: [latest.key] });
+      row.flags.push({ kind: 'superseded', text: `Not counted: ${shown(latest)} handed in again later (${latest.time ?? 'no time given'}, `
+        + `${latest.source}).`, others: [latest.key] });
     }
-    latest.flags.push({ kind: 'resubmitted', text: `Handed in ${group.length} times; this one, the latest, counts.`, others: earlier.map((r) => r.key) });
+    latest.flags.push({
+      kind: 'resubmitted', text: `Handed in ${group.length} times; this one, the latest, counts.`, others: earlier.map((r) => r.key),
+    });
   }
 }
 
@@ -65,7 +69,8 @@ function sharedSeeds(rows, identity) {
     if (students.size < 2) continue;
     for (const row of group) {
       const others = group.filter((r) => r !== row);
-      row.flags.push({ kind: 'shared-seed', text: `Seed ${row.seed} is also on the hand-in of ${listed(others)}: one sheet under ${students.size} names.`, others: others.map((r) => r.key) });
+      row.flags.push({ kind: 'shared-seed', text: `Seed ${row.seed} is also on the hand-in of ${listed(others)}: `
+        + `one sheet under ${students.size} names.`, others: others.map((r) => r.key) });
     }
   }
 }
@@ -105,7 +110,8 @@ function copiedAnswers(rows, graded, items, identity, atLeast) {
     if (shared.length < atLeast) continue;
     const questions = shared.sort((a, b) => a - b).map((i) => i + 1).join(', ');
     for (const [row, other] of [[x, y], [y, x]]) {
-      row.flags.push({ kind: 'copied', text: `The same wrong answers as ${shown(other)} to the same numbers (seed ${row.seed}) on questions ${questions}: a copied sheet looks like that.`, others: [other.key] });
+      row.flags.push({ kind: 'copied', text: `The same wrong answers as ${shown(other)} to the same numbers (seed ${row.seed}) `
+        + `on questions ${questions}: a copied sheet looks like that.`, others: [other.key] });
     }
   }
 }
@@ -136,10 +142,12 @@ export function buildGradebook(grades, { copiedAtLeast = COPIED_AT_LEAST } = {})
   supersede(rows, identity);
   const counted = rows.filter((row) => row.counted);
   if (sheet.seed === undefined) sharedSeeds(counted, identity);
-  else for (const row of counted) if (row.seed !== sheet.seed) row.flags.push({ kind: 'class-seed', text: `Seed ${row.seed}, where the sheet gives everyone ${sheet.seed}.`, others: [] });
+  else for (const row of counted) if (row.seed !== sheet.seed) row.flags.push({ kind: 'class-seed', text: `Seed ${row.seed}, `
+    + `where the sheet gives everyone ${sheet.seed}.`, others: [] });
   copiedAnswers(counted, graded, items, identity, copiedAtLeast);
   for (const row of rows) {
-    if (!row.name) row.flags.push({ kind: 'no-name', text: row.lmsName ? `No name in the hand-in; the LMS's folder says ${row.lmsName}.` : 'No name in the hand-in.', others: [] });
+    if (!row.name) row.flags.push({ kind: 'no-name', text: row.lmsName ? `No name in the hand-in; `
+      + `the LMS's folder says ${row.lmsName}.` : 'No name in the hand-in.', others: [] });
   }
   return {
     title: sheet.title, fingerprint: grades.fingerprint, classSeed: sheet.seed ?? null, items, rows,

@@ -44,7 +44,8 @@ export function readClassFile(input, capsGiven = {}) {
   const caps = classCaps(capsGiven);
   const size = typeof input === 'string' ? input.length : input instanceof Uint8Array ? input.length : -1;
   if (size < 0) return { ok: false, problems: ['A class view is a file of text (JSON).'] };
-  if (size > caps.maxClassFileBytes) return { ok: false, problems: [`This file is ${megabytes(size)}: more than the ${megabytes(caps.maxClassFileBytes)} a class view may have.`] };
+  if (size > caps.maxClassFileBytes) return { ok: false, problems: [`This file is ${megabytes(size)}: `
+    + `more than the ${megabytes(caps.maxClassFileBytes)} a class view may have.`] };
   let doc;
   try {
     doc = JSON.parse(typeof input === 'string' ? input : new TextDecoder().decode(input));
@@ -55,7 +56,8 @@ export function readClassFile(input, capsGiven = {}) {
     return { ok: false, problems: [`This is no saved class view (its kind is not ${CLASS_FILE_KIND}).`] };
   }
   const problems = [];
-  if (own(doc, 'version') !== CLASS_FILE_VERSION) problems.push(`version must be ${CLASS_FILE_VERSION}; this file says ${rawText(own(doc, 'version'))}.`);
+  if (own(doc, 'version') !== CLASS_FILE_VERSION) problems.push(`version must be ${CLASS_FILE_VERSION}; `
+    + `this file says ${rawText(own(doc, 'version'))}.`);
   const sheet = readSheet(own(doc, 'sheet'));
   if (!sheet.ok) problems.push(...sheet.problems.map((p) => `its sheet: ${p}`));
   const handIns = own(doc, 'handIns');
@@ -64,13 +66,15 @@ export function readClassFile(input, capsGiven = {}) {
 
   /** @type {Refusal[]} */
   const refused = Object.keys(doc).filter((key) => !FIELDS.includes(key))
-    .map((key) => ({ source: 'class view', reason: `“${rawText(key, 32)}” is not a field of a class view (${FIELDS.join(', ')}); ignored.` }));
+    .map((key) => ({ source: 'class view', reason: `“${rawText(key, 32)}” is not a field of a class view `
+      + `(${FIELDS.join(', ')}); ignored.` }));
   /** @type {HandIn[]} */
   const kept = [];
   handIns.forEach((entry, i) => {
     const label = `hand-in ${i + 1} of the class view`;
     if (i >= caps.maxHandIns) {
-      if (i === caps.maxHandIns) refused.push({ source: `hand-ins ${i + 1}–${handIns.length} of the class view`, reason: `not read: more than the ${caps.maxHandIns} hand-ins read in all.` });
+      if (i === caps.maxHandIns) refused.push({ source: `hand-ins ${i + 1}–${handIns.length} of the class view`, reason: `not read: `
+        + `more than the ${caps.maxHandIns} hand-ins read in all.` });
       return;
     }
     if (!plainObject(entry)) {
@@ -79,9 +83,11 @@ export function readClassFile(input, capsGiven = {}) {
     }
     const source = own(entry, 'source');
     if (!Object.hasOwn(entry, 'data')) refused.push({ source: label, reason: 'it has no data.' });
-    else if (typeof source !== 'string' || !source || source.length > MAX_SOURCE) refused.push({ source: label, reason: `its source must be a text of 1 to ${MAX_SOURCE} characters.` });
+    else if (typeof source !== 'string' || !source || source.length > MAX_SOURCE) refused.push({ source: label, reason: `its source must `
+      + `be a text of 1 to ${MAX_SOURCE} characters.` });
     else kept.push({ source, data: entry.data });
   });
   const saved = own(doc, 'saved');
-  return { ok: true, sheet: sheet.sheet, saved: typeof saved === 'string' && !Number.isNaN(Date.parse(saved)) ? saved.slice(0, 40) : null, handIns: kept, refused };
+  const when = typeof saved === 'string' && !Number.isNaN(Date.parse(saved)) ? saved.slice(0, 40) : null;
+  return { ok: true, sheet: sheet.sheet, saved: when, handIns: kept, refused };
 }

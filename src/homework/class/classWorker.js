@@ -11,7 +11,8 @@ import { buildClassView } from './buildClassView.js';
 /**
  * Answers class-view requests on a worker's global scope (or anything with addEventListener and
  * postMessage, as tests give it).
- * @param {{ addEventListener: (type: 'message', listener: (event: { data: any }) => void) => void, postMessage: (message: any) => void }} scope
+ * @param {{ addEventListener: (type: 'message', listener: (event: { data: any }) => void) => void,
+ *   postMessage: (message: any) => void }} scope
  */
 export function serveClassView(scope) {
   scope.addEventListener('message', async (event) => {

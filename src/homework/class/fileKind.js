@@ -16,7 +16,8 @@ export const baseName = (path) => path.slice(path.lastIndexOf('/') + 1);
 export function fileKind(path) {
   const name = baseName(path);
   // A Mac's zip tool adds a resource-fork twin (__MACOSX/…/._handin.json) for every file: binary, no hand-in.
-  if (path.split('/').includes('__MACOSX') || name.startsWith('._')) return { reason: 'macOS metadata that a Mac adds to zips, not a hand-in.' };
+  if (path.split('/').includes('__MACOSX') || name.startsWith('._')) return { reason: 'macOS metadata that a Mac adds to '
+    + 'zips, not a hand-in.' };
   const dot = name.lastIndexOf('.');
   const extension = dot > 0 ? name.slice(dot + 1).toLowerCase() : '';
   if (extension === 'json') return { kind: 'json' };

@@ -238,7 +238,8 @@ export function findHandIns(text, source, { maxHandIns = Infinity } = {}) {
     else unlisted += 1;
   }
   // A text of nothing but "FLH1." would list a refusal for each: past a thousand, they are counted.
-  if (unlisted) refused.push({ source, reason: `and ${unlisted} more hand-ins or codes in it that cannot be read (not listed one by one).` });
+  if (unlisted) refused.push({ source, reason: `and ${unlisted} more hand-ins or codes in it that cannot be read (not `
+    + `listed one by one).` });
   if (!handIns.length && !refused.length) {
     refused.push({ source, reason: `holds no hand-in: no handed-in code (${HAND_IN_PREFIX}…) and no handed-in file's JSON.` });
   }

@@ -18,7 +18,8 @@ import { CLASS_FILE_KIND } from './classFile.js';
  * @typedef {{ source: string, data: unknown }} HandIn
  * @typedef {{ source: string, reason: string }} Refusal
  * @typedef {{ source: string, result: any }} Graded  result: gradeHandIn's { ok: true, … } (its sheet is the class's)
- * @typedef {{ ok: true, sheet: any, fingerprint: string, graded: Graded[], refused: Refusal[] } | { ok: false, problems: string[] }} ClassGrades
+ * @typedef {{ ok: true, sheet: any, fingerprint: string, graded: Graded[], refused: Refusal[] }
+ *   | { ok: false, problems: string[] }} ClassGrades
  * @typedef {{ done: number, total: number }} Progress
  */
 
@@ -32,7 +33,8 @@ function notAHandIn(data) {
   const kind = own(data, 'kind');
   if (kind === CLASS_FILE_KIND) return 'This is a saved class view, not a hand-in: open it as a class view.';
   if (kind !== undefined && kind !== HAND_IN_KIND) return `This is not a hand-in: its kind is ${rawText(kind)}.`;
-  if (Object.hasOwn(data, 'items') && !Object.hasOwn(data, 'answers')) return 'This is a sheet, not a hand-in: it has questions and no answers.';
+  if (Object.hasOwn(data, 'items') && !Object.hasOwn(data, 'answers')) return 'This is a sheet, not a hand-in: '
+    + 'it has questions and no answers.';
   return null;
 }
 

@@ -30,7 +30,9 @@ const mark = { right: '1', wrong: '0', unanswered: '' };
  */
 export function gradebookCells(gradebook, { rows = gradebook.rows, includeSuperseded = false } = {}) {
   const questions = gradebook.items.map((item, i) => `Q${i + 1} ${item.question}`);
-  const header = ['Name', 'LMS name', 'Seed', 'Score', 'Out of', 'Percent', ...questions, 'Tries', 'Handed in', 'Counted', 'Flags', 'Source'];
+  const header = [
+    'Name', 'LMS name', 'Seed', 'Score', 'Out of', 'Percent', ...questions, 'Tries', 'Handed in', 'Counted', 'Flags', 'Source',
+  ];
   const body = rows.filter((row) => includeSuperseded || row.counted).map((row) => [
     textCell(row.name), textCell(row.lmsName), textCell(row.seed),
     String(row.score), String(row.total), row.percent.toFixed(1),

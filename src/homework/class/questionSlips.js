@@ -5,7 +5,9 @@
 // count how many made each slip although every student had other numbers. A factor that any question
 // can show (×2, degrees for radians) is labelled on the histogram instead (summarizeQuestions.js).
 import { DEG, cosDeg, toDegrees as deg } from '../../optics/angles.js';
-import { brewsterAngle, criticalAngle, fresnelConductor, fresnelExact, fresnelPolarized, fresnelSchlick, normalIncidence } from '../../optics/fresnel.js';
+import {
+  brewsterAngle, criticalAngle, fresnelConductor, fresnelExact, fresnelPolarized, fresnelSchlick, normalIncidence,
+} from '../../optics/fresnel.js';
 import { metalById } from '../../optics/materials.js';
 import { toksvigFactor } from '../../normals/lobeFormulas.js';
 

@@ -51,7 +51,8 @@ export function readClassHandIns({ files = [], text = '' } = {}, capsGiven = {})
     const kind = fileKind(path);
     if (kind.reason) return kind.reason;
     const max = kind.kind === 'zip' ? caps.maxNestedZipBytes : caps.maxFileBytes;
-    return claimed > max ? `its header says it unpacks to ${megabytes(claimed)}, more than the ${megabytes(max)} a ${kind.kind === 'zip' ? 'zip inside a zip' : 'file'} may have.` : null;
+    return claimed > max ? `its header says it unpacks to ${megabytes(claimed)}, `
+      + `more than the ${megabytes(max)} a ${kind.kind === 'zip' ? 'zip inside a zip' : 'file'} may have.` : null;
   };
 
   const readFile = (name, bytes, depth) => {
@@ -60,8 +61,10 @@ export function readClassHandIns({ files = [], text = '' } = {}, capsGiven = {})
       refused.push({ source: name, reason: kind.reason });
     } else if (kind.kind === 'zip') {
       const max = depth === 0 ? caps.maxZipBytes : caps.maxNestedZipBytes;
-      if (depth >= caps.maxDepth) refused.push({ source: name, reason: `a zip inside ${depth} others: zips are opened ${caps.maxDepth} deep at most.` });
-      else if (bytes.length > max) refused.push({ source: name, reason: `${megabytes(bytes.length)}: more than the ${megabytes(max)} a zip may have.` });
+      if (depth >= caps.maxDepth) refused.push({ source: name, reason: `a zip inside ${depth} others: `
+        + `zips are opened ${caps.maxDepth} deep at most.` });
+      else if (bytes.length > max) refused.push({ source: name, reason: `${megabytes(bytes.length)}: `
+        + `more than the ${megabytes(max)} a zip may have.` });
       else {
         const zip = unzipBounded(bytes, { name, admit, budget, maxEntries: caps.maxEntries });
         refused.push(...zip.refused);
@@ -69,7 +72,8 @@ export function readClassHandIns({ files = [], text = '' } = {}, capsGiven = {})
         if (!zip.files.length && !zip.refused.length) refused.push({ source: name, reason: 'an empty zip: it holds no files.' });
       }
     } else if (bytes.length > caps.maxFileBytes) {
-      refused.push({ source: name, reason: `${megabytes(bytes.length)}: more than the ${megabytes(caps.maxFileBytes)} a handed-in file or a text of codes may have.` });
+      refused.push({ source: name, reason: `${megabytes(bytes.length)}: more than the ${megabytes(caps.maxFileBytes)} a handed-in file or `
+        + `a text of codes may have.` });
     } else {
       const content = decodeText(bytes);
       if (!content.trim()) refused.push({ source: name, reason: 'an empty file.' });
@@ -91,7 +95,8 @@ export function readClassHandIns({ files = [], text = '' } = {}, capsGiven = {})
   });
 
   if (typeof text === 'string' && text.trim()) {
-    if (text.length > caps.maxTextChars) refused.push({ source: 'pasted text', reason: `${text.length} characters: more than the ${caps.maxTextChars} read at once; paste it in parts or save it as a .txt file.` });
+    if (text.length > caps.maxTextChars) refused.push({ source: 'pasted text', reason: `${text.length} characters: `
+      + `more than the ${caps.maxTextChars} read at once; paste it in parts or save it as a .txt file.` });
     else readText(text, 'pasted text');
   }
   return { handIns, refused };

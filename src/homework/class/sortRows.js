@@ -7,7 +7,8 @@
 
 /**
  * @typedef {import('./buildGradebook.js').Row} Row
- * @typedef {'name' | 'lmsName' | 'seed' | 'score' | 'total' | 'percent' | 'tries' | 'time' | 'source' | 'flags' | 'counted' | `item:${number}`} Column
+ * @typedef {'name' | 'lmsName' | 'seed' | 'score' | 'total' | 'percent' | 'tries' | 'time' | 'source' | 'flags' | 'counted'
+ *   | `item:${number}`} Column
  */
 
 const TEXT_COLUMNS = ['name', 'lmsName', 'seed', 'source'];

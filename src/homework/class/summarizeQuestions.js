@@ -25,7 +25,8 @@ const FACTORS = [
 
 /**
  * @typedef {{ lo: number, hi: number, count: number }} Bin
- * @typedef {{ id: string, text: string, chosen: number, chosenWhenRight: number, chosenWhenWrong: number, rightFor: number, why: string | null }} OptionCount
+ * @typedef {{ id: string, text: string, chosen: number, chosenWhenRight: number, chosenWhenWrong: number, rightFor: number,
+ *   why: string | null }} OptionCount
  * @typedef {{ item: number, question: string, kind: string, unit: string | null, tolerance: number | null, students: number,
  *   right: number, wrong: number, unanswered: number, shareRight: number | null,
  *   options?: OptionCount[],
@@ -70,7 +71,9 @@ function choiceSummary(question, entries) {
 
 function numericSummary(question, entries) {
   const half = RATIO_DECADES / RATIO_STEP;
-  const ratio = { step: RATIO_STEP, bins: centredBins(half, RATIO_STEP), labels: [], below: 0, above: 0, opposite: 0, flipped: 0, zero: 0, noRatio: 0 };
+  const ratio = {
+    step: RATIO_STEP, bins: centredBins(half, RATIO_STEP), labels: [], below: 0, above: 0, opposite: 0, flipped: 0, zero: 0, noRatio: 0,
+  };
   const logs = [];
   const slipCounts = new Map();
   for (const { result: r } of entries) {
@@ -106,7 +109,8 @@ function numericSummary(question, entries) {
     return { at, factor, text, count: logs.filter((x) => Math.abs(x - at) <= RATIO_STEP / 2).length };
   });
   // Every slip the question names, counted or not (a class with no hand-in has none to name).
-  const slips = (entries.length ? questionSlips(question, entries[0].result.params) : []).map(({ label }) => ({ label, count: slipCounts.get(label) ?? 0 }));
+  const slips = (entries.length ? questionSlips(question, entries[0].result.params) : [])
+    .map(({ label }) => ({ label, count: slipCounts.get(label) ?? 0 }));
   for (const [label, count] of slipCounts) if (!slips.some((s) => s.label === label)) slips.push({ label, count });
   return { ratio, slips };
 }

@@ -12,8 +12,13 @@ import { seededRandom } from '../seededRandom.js';
 import { handInToCode, makeHandIn } from '../sheetCodes.js';
 import { SHEET_VERSION } from '../readSheet.js';
 
-const FIRST = ['Ada', 'Zoë', 'Łukasz', 'José', 'Aoife', 'Chloé', 'Mia', 'Noah', 'Søren', 'Yūki', 'Amara', 'Björn', 'Ingrid', 'Ravi', 'Lena', 'Tomás'];
-const LAST = ['Lovelace', 'Müller', 'Nowak', 'García', 'O’Brien', 'Dubois', 'Rossi', 'Kim', 'Jensen', 'Tanaka', 'Okafor', 'Berg', 'Larsen', 'Patel', 'Novák', 'Silva'];
+const FIRST = [
+  'Ada', 'Zoë', 'Łukasz', 'José', 'Aoife', 'Chloé', 'Mia', 'Noah', 'Søren', 'Yūki', 'Amara', 'Björn', 'Ingrid', 'Ravi', 'Lena', 'Tomás',
+];
+const LAST = [
+  'Lovelace', 'Müller', 'Nowak', 'García', 'O’Brien', 'Dubois', 'Rossi', 'Kim', 'Jensen', 'Tanaka', 'Okafor', 'Berg', 'Larsen', 'Patel',
+  'Novák', 'Silva',
+];
 const WRONG_FACTORS = [2, 0.5, Math.PI / 180, 100, 1.3, 0.8];
 const START = Date.UTC(2026, 0, 15, 9);
 
@@ -31,7 +36,9 @@ function answerFor(question, params, how, rng) {
   }
   const expected = expectedValue(question, params);
   if (question.kind === 'predict') {
-    const off = how === 'right' ? (rng.next() - 0.5) * question.tolerance : (rng.next() < 0.5 ? -1 : 1) * (question.tolerance + 1 + 30 * rng.next());
+    const off = how === 'right'
+      ? (rng.next() - 0.5) * question.tolerance
+      : (rng.next() < 0.5 ? -1 : 1) * (question.tolerance + 1 + 30 * rng.next());
     return round(clamp(expected + off), 0.1);
   }
   return formatValue(question, how === 'right' ? expected : expected * rng.pick(WRONG_FACTORS));
@@ -40,7 +47,8 @@ function answerFor(question, params, how, rng) {
 /**
  * @param {{ students?: number, questions?: number, seed?: string, classSeed?: string, right?: number, unanswered?: number }} [options]
  *   right: the share of answers right; unanswered: the share left out; classSeed: one seed for all.
- * @returns {{ sheet: any, handIns: { source: string, data: any }[], files: { name: string, bytes: Uint8Array }[], zip: Uint8Array, codes: string }}
+ * @returns {{ sheet: any, handIns: { source: string, data: any }[], files: { name: string, bytes: Uint8Array }[],
+ *   zip: Uint8Array, codes: string }}
  */
 export function syntheticClass({ students = 500, questions = 40, seed = 'synthetic', classSeed, right = 0.6, unanswered = 0.05 } = {}) {
   const rng = seededRandom(`class:${seed}`);
@@ -50,13 +58,17 @@ export function syntheticClass({ students = 500, questions = 40, seed = 'synthet
     [order[i], order[j]] = [order[j], order[i]];
   }
   const items = Array.from({ length: questions }, (_, i) => ({ question: order[i % order.length].id }));
-  const sheet = { version: SHEET_VERSION, title: `Synthetic class (${seed})`, reveal: 'after-answer', ...(classSeed ? { seed: classSeed } : {}), items };
+  const sheet = {
+    version: SHEET_VERSION, title: `Synthetic class (${seed})`, reveal: 'after-answer', ...(classSeed ? { seed: classSeed } : {}), items,
+  };
   const handIns = [];
   const files = [];
   /** @type {import('fflate').Zippable} */
   const tree = {};
   for (let k = 0; k < students; k += 1) {
-    const name = `${FIRST[k % FIRST.length]} ${LAST[Math.floor(k / FIRST.length) % LAST.length]}${k >= FIRST.length * LAST.length ? ` ${Math.floor(k / (FIRST.length * LAST.length)) + 1}` : ''}`;
+    const pairs = FIRST.length * LAST.length;
+    const name = `${FIRST[k % FIRST.length]} ${LAST[Math.floor(k / FIRST.length) % LAST.length]}`
+      + `${k >= pairs ? ` ${Math.floor(k / pairs) + 1}` : ''}`;
     const studentSeed = classSeed ?? `${seed}-${k}-${Math.floor(rng.next() * 1e9).toString(36)}`;
     const answers = items.map((item) => {
       const question = /** @type {any} */ (questionById(item.question));

@@ -100,7 +100,8 @@ function entrySizes(b, p, nameLength, extraLength) {
   return { size, claimed, local };
 }
 
-const BOMB = (claimed) => ({ reason: `a zip bomb: it unpacks to more than the ${claimed} bytes its header claims, so unpacking stopped there.` });
+const BOMB = (claimed) => ({ reason: `a zip bomb: it unpacks to more than the ${claimed} bytes its header claims, `
+  + `so unpacking stopped there.` });
 const DAMAGED = { reason: 'damaged: its compressed data does not unpack to what its header claims (was the zip cut short?).' };
 
 /**
@@ -119,7 +120,8 @@ function inflateBounded(input, claimed) {
       return DAMAGED;
     }
     if (out.length > claimed) return BOMB(claimed);
-    return out.length === claimed ? { bytes: out.subarray(0, claimed) } : { reason: `damaged: it unpacks to ${out.length} bytes where its header claims ${claimed}.` };
+    return out.length === claimed ? { bytes: out.subarray(0, claimed) } : { reason: `damaged: it unpacks to ${out.length} bytes where its `
+      + `header claims ${claimed}.` };
   }
   const out = new Uint8Array(claimed);
   let length = 0;
@@ -167,7 +169,8 @@ export function unzipBounded(bytes, { name, admit, budget, maxEntries }) {
   }
   const { count } = directory;
   if (count > maxEntries) {
-    refuse(name, `its directory lists ${count} entries, more than the ${maxEntries} read from one zip: refused before anything was unpacked (a zip bomb can list millions).`);
+    refuse(name, `its directory lists ${count} entries, more than the ${maxEntries} read from one zip: `
+      + `refused before anything was unpacked (a zip bomb can list millions).`);
     return { files, refused };
   }
   let p = directory.offset;
@@ -195,8 +198,10 @@ export function unzipBounded(bytes, { name, admit, budget, maxEntries }) {
     const refusal = admit(path, claimed);
     if (refusal) refuse(source, refusal);
     else if (flags & 1) refuse(source, 'encrypted: it cannot be read without its password.');
-    else if (method !== 0 && method !== 8) refuse(source, `packed with a method this reader does not know (${method}); only stored and deflated entries are read.`);
-    else if (claimed > budget.bytes) refuse(source, `not unpacked: its ${megabytes(claimed)} would pass what is left of the cap on bytes unpacked from zips in all (${megabytes(budget.bytes)}).`);
+    else if (method !== 0 && method !== 8) refuse(source, `packed with a method this reader does not know (${method}); `
+      + `only stored and deflated entries are read.`);
+    else if (claimed > budget.bytes) refuse(source, `not unpacked: its ${megabytes(claimed)} would pass what is left of the cap on bytes `
+      + `unpacked from zips in all (${megabytes(budget.bytes)}).`);
     else {
       const read = readEntry(b, { local, size, claimed, method, crc });
       if (read.reason) refuse(source, read.reason);
@@ -220,7 +225,8 @@ function readEntry(b, { local, size, claimed, method, crc }) {
   const data = b.subarray(start, start + size);
   /** @type {{ bytes?: Uint8Array, reason?: string }} */
   let read;
-  if (method === 0) read = size === claimed ? { bytes: data.slice() } : { reason: `damaged: it is stored unpacked, yet holds ${size} bytes where it claims ${claimed}.` };
+  if (method === 0) read = size === claimed ? { bytes: data.slice() } : { reason: `damaged: it is stored unpacked, `
+    + `yet holds ${size} bytes where it claims ${claimed}.` };
   else read = inflateBounded(data, claimed);
   if (read.bytes && crc32(read.bytes) !== crc) return { reason: 'damaged: what it unpacks to does not match its checksum.' };
   return read;

@@ -35,7 +35,8 @@ export function buildChecker(root) {
   files.multiple = true;
   const results = el('div', 'hw-reports');
   section.append(heading,
-    el('p', null, 'Every answer is recomputed from the sheet, the seed and the answer; nothing the file says about being right is read. For a whole class at once, with a gradebook, use “Grade a class” below.'),
+    el('p', null, 'Every answer is recomputed from the sheet, the seed and the answer; nothing the file says about being right is read. '
+      + 'For a whole class at once, with a gradebook, use “Grade a class” below.'),
     field('The sheet you set (optional, recommended)', sheet),
     field('Paste a hand-in code (FLH1.…) or a handed-in file’s text', code), check,
     field('Or choose handed-in files', files), results);
@@ -49,7 +50,9 @@ export function buildChecker(root) {
   check.addEventListener('click', () => withExpected((expected) => [report('Pasted code', code.value, expected)]));
   files.addEventListener('change', async () => {
     const picked = await Promise.all([...files.files].map(async (file) => ({ file, read: await readTextFile(file) })));
-    withExpected((expected) => picked.map(({ file, read }) => (read.ok ? report(file.name, read.text, expected) : report(file.name, '', expected, read))));
+    withExpected((expected) => picked.map(({ file, read }) => (read.ok
+      ? report(file.name, read.text, expected)
+      : report(file.name, '', expected, read))));
   });
   return { check: (text) => { code.value = text; check.click(); } };
 }

@@ -36,7 +36,8 @@ export function buildComposer(root) {
   seed.type = 'text';
   seed.maxLength = 64;
   seed.placeholder = 'empty: each student gets their own numbers';
-  section.append(heading, field('Title', title), field('Answers are shown', reveal), field('One seed for the whole class (optional)', seed));
+  section.append(heading, field('Title', title), field('Answers are shown', reveal), field('One seed for the whole '
+    + 'class (optional)', seed));
 
   const picks = [];
   for (const panel of PANELS) {
@@ -99,7 +100,9 @@ export function buildComposer(root) {
       note.textContent = overridden.length ? `Set by the question itself, so not taken from here: ${overridden.join(', ')}.` : '';
       return Object.keys(read.state ?? {}).length ? { question: question.id, state: read.state } : { question: question.id };
     });
-    const draft = { version: 1, title: title.value.trim(), reveal: reveal.value, items, ...(seed.value.trim() ? { seed: seed.value.trim() } : {}) };
+    const draft = {
+      version: 1, title: title.value.trim(), reveal: reveal.value, items, ...(seed.value.trim() ? { seed: seed.value.trim() } : {}),
+    };
     const read = readSheet(draft);
     const all = items.length ? [...itemProblems, ...(read.ok ? [] : read.problems)] : ['Pick at least one question.'];
     current = all.length ? null : read.sheet;
@@ -114,7 +117,8 @@ export function buildComposer(root) {
   reveal.addEventListener('change', update);
   copy.addEventListener('click', async () => {
     link.select();
-    problems.replaceChildren(el('p', null, (await copyText(link.value)) ? 'The link is copied.' : 'Copying was refused here: the link is selected, press Ctrl+C (⌘C).'));
+    problems.replaceChildren(el('p', null, (await copyText(link.value)) ? 'The link is copied.' : 'Copying was refused here: '
+      + 'the link is selected, press Ctrl+C (⌘C).'));
   });
   save.addEventListener('click', () => {
     if (current) downloadText('fresnel-lab-sheet.json', `${JSON.stringify(current, null, 2)}\n`, 'application/json');
@@ -127,7 +131,8 @@ export function buildComposer(root) {
     try {
       const blob = await buildScormPackage(sheet);
       downloadBlob(`fresnel-lab-${fileSlug(sheet.title)}-scorm12.zip`, blob);
-      problems.replaceChildren(el('p', null, `The package is saved (${Math.round(blob.size / 1024)} kB): import it into the LMS as a SCORM package; the score of each hand-in goes to its gradebook.`));
+      problems.replaceChildren(el('p', null, `The package is saved (${Math.round(blob.size / 1024)} kB): `
+        + `import it into the LMS as a SCORM package; the score of each hand-in goes to its gradebook.`));
     } catch (error) {
       problems.replaceChildren(el('p', 'hw-problem', error.message));
     } finally {

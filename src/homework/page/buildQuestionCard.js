@@ -36,7 +36,9 @@ function panelFrame(panelId, state) {
  * onFrame(frame): a panel's frame was made. Returns { element, answer(), attempts(), revealed(),
  * reveal(), refresh() }.
  */
-export function buildQuestionCard({ number, item, question, params, saved, attempts: savedAttempts = 0, lecture, panelsAllowed, onAnswer, onFrame }) {
+export function buildQuestionCard({
+  number, item, question, params, saved, attempts: savedAttempts = 0, lecture, panelsAllowed, onAnswer, onFrame,
+}) {
   const entry = panelEntry(question.panel);
   const element = el('article', `hw-item hw-${question.kind}`);
   element.id = `question-${number}`;
@@ -141,7 +143,8 @@ export function buildQuestionCard({ number, item, question, params, saved, attem
   function showPanel() {
     if (panelBox.querySelector('iframe')) return;
     if (!panelsAllowed()) {
-      if (!panelBox.firstChild) panelBox.append(el('p', 'hw-panel-waiting', 'The panel appears once every prediction on this sheet is committed: it could give one away.'));
+      if (!panelBox.firstChild) panelBox.append(el('p', 'hw-panel-waiting', 'The panel appears once every prediction on this sheet is '
+        + 'committed: it could give one away.'));
       return;
     }
     const frame = panelFrame(question.panel, state);
@@ -188,7 +191,8 @@ export function buildQuestionCard({ number, item, question, params, saved, attem
     if (!graded) say('shown', question.kind === 'predict' ? `No prediction was committed. ${truth}` : truth);
     else if (!graded.answered) say('wrong', graded.explanation);
     else if (graded.correct) say('right', `Right. ${truth}`);
-    else if (question.kind === 'predict' || revealed) say('wrong', `${question.kind === 'predict' ? 'Off' : 'Not within the tolerance'}: yours ${formatValue(question, graded.value)}. ${truth}`);
+    else if (question.kind === 'predict' || revealed) say('wrong', `${question.kind === 'predict' ? 'Off' : 'Not within the tolerance'}: `
+      + `yours ${formatValue(question, graded.value)}. ${truth}`);
     else say('wrong', `${graded.explanation} Try again.`);
   }
   render();

@@ -19,7 +19,8 @@ export async function buildScormPackage(sheet) {
       return response.text();
     }));
   } catch {
-    throw new Error('The package is made from the offline pages next to this one (offline/homework.html and offline/embed.html), which this copy cannot reach: open the lab from its built site (npm run build) on a web server.');
+    throw new Error('The package is made from the offline pages next to this one (offline/homework.html and offline/embed.html), '
+      + 'which this copy cannot reach: open the lab from its built site (npm run build) on a web server.');
   }
   const code = sheetToCode(sheet);
   // The sheet travels as a data block before the page's closing </body> (the last one: the page's

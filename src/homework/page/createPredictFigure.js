@@ -50,7 +50,8 @@ export function createPredictFigure({ label, describedBy = null, axisTitle = THE
   marker.setAttribute('aria-valuemin', '0');
   marker.setAttribute('aria-valuemax', '90');
   picture.append(axis, truthLayer, marker);
-  const caption = el('figcaption', 'predict-caption', 'Drag the marker, or focus it and use ←/→ (Shift: 0.1°, Page Up/Down: 10°), then commit.');
+  const caption = el('figcaption', 'predict-caption', 'Drag the marker, or focus it and use ←/→ (Shift: 0.1°, '
+    + 'Page Up/Down: 10°), then commit.');
   element.append(picture, caption);
 
   let value = initial;
@@ -125,9 +126,13 @@ export function createPredictFigure({ label, describedBy = null, axisTitle = THE
       const y = (v) => baseline - ((baseline - PAD.top - 14) * v) / top;
       const path = samples.map((t, i) => `${i ? 'L' : 'M'}${x(t).toFixed(1)},${y(ys[i]).toFixed(1)}`).join('');
       truthLayer.append(svg('path', { d: path, class: 'predict-curve' }));
-      if (curve.level !== undefined) truthLayer.append(svg('line', { x1: x(0), x2: x(90), y1: y(curve.level), y2: y(curve.level), class: 'predict-level' }));
+      if (curve.level !== undefined) {
+        truthLayer.append(svg('line', { x1: x(0), x2: x(90), y1: y(curve.level), y2: y(curve.level), class: 'predict-level' }));
+      }
       truthLayer.append(svg('line', { x1: x(truth), x2: x(truth), y1: PAD.top, y2: baseline, class: 'predict-true' }));
-      const name = svg('text', { x: x(truth) + (truth > 60 ? -6 : 6), y: PAD.top + 12, 'text-anchor': truth > 60 ? 'end' : 'start', class: 'predict-true-label' });
+      const name = svg('text', {
+        x: x(truth) + (truth > 60 ? -6 : 6), y: PAD.top + 12, 'text-anchor': truth > 60 ? 'end' : 'start', class: 'predict-true-label',
+      });
       name.textContent = `true: ${truth.toFixed(2)}°`;
       // The curve's name goes top left, or low on the left where the curve starts high there.
       const highOnLeft = Math.max(...ys.slice(0, 145)) > 0.7 * top;
@@ -136,7 +141,8 @@ export function createPredictFigure({ label, describedBy = null, axisTitle = THE
       truthLayer.append(name, curveName);
       element.classList.add('revealed');
       const against = axisTitle === THETA_AXIS ? 'θ' : `the ${axisTitle.charAt(0).toLowerCase()}${axisTitle.slice(1)}`;
-      caption.textContent = `${curve.label} against ${against}; the true angle is ${truth.toFixed(2)}°${committed ? `, yours ${value.toFixed(1)}°` : ''}.`;
+      caption.textContent = `${curve.label} against ${against}; the true angle is `
+        + `${truth.toFixed(2)}°${committed ? `, yours ${value.toFixed(1)}°` : ''}.`;
     },
   };
 }

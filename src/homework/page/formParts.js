@@ -24,7 +24,8 @@ const MAX_FILE_BYTES = 1_000_000; // a sheet or a handed-in file is a few kiloby
 
 /** { ok: true, text } or { ok: false, problems }, for a file the user picked. */
 export async function readTextFile(file) {
-  if (file.size > MAX_FILE_BYTES) return { ok: false, problems: [`${file.name} is ${file.size} bytes: a sheet or a handed-in file is a few kilobytes.`] };
+  if (file.size > MAX_FILE_BYTES) return { ok: false, problems: [`${file.name} is ${file.size} bytes: `
+    + `a sheet or a handed-in file is a few kilobytes.`] };
   try {
     return { ok: true, text: await file.text() };
   } catch {

@@ -40,13 +40,15 @@ export function gradedReport(label, graded, { against }) {
   }
   const who = graded.name || 'no name given';
   const when = graded.time ? new Date(graded.time).toLocaleString() : 'no time given';
-  const score = el('p', 'hw-score', `${graded.title}: ${who}, seed ${graded.seed}, handed in ${when}. Score ${graded.score} of ${graded.total}, recomputed.`);
+  const score = el('p', 'hw-score', `${graded.title}: ${who}, seed ${graded.seed}, handed in ${when}. `
+    + `Score ${graded.score} of ${graded.total}, recomputed.`);
   score.setAttribute('role', 'status');
   const fingerprint = el('p', 'hw-meta', `Sheet fingerprint ${graded.fingerprint} (checked against ${against}).`);
   const table = el('table', 'hw-report-table');
   table.append(el('thead'), el('tbody'));
   const head = el('tr');
-  for (const h of ['#', 'Question (as this student saw it)', 'Answer', 'Computed answer', 'Result', 'Tries']) head.append(el('th', null, h));
+  const columns = ['#', 'Question (as this student saw it)', 'Answer', 'Computed answer', 'Result', 'Tries'];
+  for (const h of columns) head.append(el('th', null, h));
   table.tHead.append(head);
   graded.results.forEach((result, i) => {
     const question = questionById(result.question);

@@ -21,7 +21,8 @@ function chooseSeed(sheet, urlSeed, scorm, ownSeed) {
   if (sheet.seed) return { seed: sheet.seed, source: ' (the same for everyone on this sheet).' };
   if (urlSeed) return { seed: urlSeed, source: ', given in the link.' };
   // Hashed, so two long account ids that share a beginning still get different numbers.
-  if (scorm?.learner.id) return { seed: `lms-${hashSeed(scorm.learner.id).toString(36)}`, source: ', from your course account: the same numbers wherever you open it.' };
+  if (scorm?.learner.id) return { seed: `lms-${hashSeed(scorm.learner.id).toString(36)}`, source: ', from your course account: '
+    + 'the same numbers wherever you open it.' };
   return { seed: ownSeed, source: ': the same seed gives the same numbers again, and your hand-in carries it.' };
 }
 
@@ -64,9 +65,11 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
   // In a course's LMS the score counts: the switch (and its reveal) is there only for a sheet set for class.
   lectureLabel.hidden = Boolean(scorm) && sheet.reveal !== 'lecturer';
   const revealAll = button('Reveal every answer', 'hw-reveal-all');
-  head.append(el('h1', null, sheet.title), seedLine, field('Your name (goes into the hand-in)', name, 'hw-field hw-name'), lectureLabel, revealAll);
+  head.append(el('h1', null, sheet.title), seedLine, field('Your name (goes into the hand-in)', name, 'hw-field hw-name'),
+    lectureLabel, revealAll);
   if (scorm) head.append(el('p', 'hw-meta', 'This sheet is part of your course: handing in sends your score to its gradebook.'));
-  else if (!store.kept()) head.append(el('p', 'notice notice-warning', 'This browser does not let the page keep your answers: hand in before you close it.'));
+  else if (!store.kept()) head.append(el('p', 'notice notice-warning', 'This browser does not let the page keep your answers: '
+    + 'hand in before you close it.'));
   if (resumeNotice) head.append(el('p', 'notice notice-warning hw-resume-notice', resumeNotice));
   root.append(head);
 
@@ -79,7 +82,8 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
   const lecture = () => lectureBox.checked;
   const frames = new Map(); // a panel frame's window → the frame, to fit each to the size it reports
   let cards = [];
-  const panelsAllowed = () => cards.every(({ card }, i) => questions[i].kind !== 'predict' || card.revealed() || (card.answer() !== null && !lecture()));
+  const panelsAllowed = () => cards.every(({ card }, i) => questions[i].kind !== 'predict' || card.revealed()
+    || (card.answer() !== null && !lecture()));
   const refreshAll = () => { for (const { card } of cards) card.refresh(); };
   cards = sheet.items.map((item, i) => {
     const card = buildQuestionCard({
@@ -95,7 +99,9 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
         work.answers[i] = answer;
         work.attempts[i] = card.attempts();
         // Each check is one interaction in the LMS's reports; an empty box checked is no answer.
-        if (scorm && answer !== null) scorm.record(scormInteraction({ position: i + 1, question: questions[i], params: params[i], answer, at: new Date() }));
+        if (scorm && answer !== null) {
+          scorm.record(scormInteraction({ position: i + 1, question: questions[i], params: params[i], answer, at: new Date() }));
+        }
         keep();
         if (questions[i].kind === 'predict') queueMicrotask(refreshAll); // a panel held back may now show
       },
@@ -142,12 +148,14 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
   codeLabel.hidden = true;
   const copy = button('Copy the code', 'hw-copy');
   copy.hidden = true;
-  handIn.append(handInTitle, el('p', null, 'The file and the code hold your answers, your seed, your name and the time; they are checked by recomputing every answer.'), send, status, codeLabel, copy);
+  handIn.append(handInTitle, el('p', null, 'The file and the code hold your answers, your seed, your name and the time; '
+    + 'they are checked by recomputing every answer.'), send, status, codeLabel, copy);
   root.append(handIn);
 
   send.addEventListener('click', () => {
     const record = makeHandIn({
-      sheet, seed, name: work.name.trim(), answers: cards.map(({ card }) => card.answer()), attempts: cards.map(({ card }) => card.attempts()),
+      sheet, seed, name: work.name.trim(),
+      answers: cards.map(({ card }) => card.answer()), attempts: cards.map(({ card }) => card.attempts()),
     });
     const filename = `fresnel-lab-${fileSlug(sheet.title)}-${fileSlug(seed)}.json`;
     downloadText(filename, `${JSON.stringify(record, null, 2)}\n`, 'application/json');
@@ -159,14 +167,17 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
     if (scorm) {
       const graded = gradeHandIn(record); // the same recomputation the lecturer's check does
       if (!graded.ok) sent = ` It could not be graded for the course: ${graded.problems.join(' ')}`;
-      else if (scorm.report(graded.score, graded.total)) sent = ` Your score, ${graded.score} of ${graded.total}, went to the course's gradebook.`;
+      else if (scorm.report(graded.score, graded.total)) sent = ` Your score, ${graded.score} of ${graded.total}, `
+        + `went to the course's gradebook.`;
       else sent = ' The course did not take the score: hand in the file or the code instead.';
     }
-    status.textContent = `Handed in at ${new Date(record.time).toLocaleTimeString()}: saved as ${filename}.${open ? ` ${open} of ${record.answers.length} questions have no answer.` : ''}${sent}`;
+    status.textContent = `Handed in at ${new Date(record.time).toLocaleTimeString()}: `
+      + `saved as ${filename}.${open ? ` ${open} of ${record.answers.length} questions have no answer.` : ''}${sent}`;
   });
   copy.addEventListener('click', async () => {
     codeField.select();
-    status.textContent = (await copyText(codeField.value)) ? 'The code is copied.' : 'Copying was refused here: the code is selected, press Ctrl+C (⌘C).';
+    status.textContent = (await copyText(codeField.value)) ? 'The code is copied.' : 'Copying was refused here: '
+      + 'the code is selected, press Ctrl+C (⌘C).';
   });
 
   const back = el('p', 'hw-back');

@@ -78,7 +78,9 @@ export function buildClassSection(root) {
   const details = makeDialog('hw-student-dialog', { print: true });
   const showDialog = makeDialog('hw-show-dialog');
   section.append(heading,
-    el('p', null, 'Bring everything the class handed in, as it came: handed-in files, a folder of them, the zip an LMS gives for “download all submissions”, or codes pasted from messages or an export. Every answer is computed again here; nothing leaves this browser.'),
+    el('p', null, 'Bring everything the class handed in, as it came: handed-in files, a folder of them, '
+      + 'the zip an LMS gives for “download all submissions”, or codes pasted from messages or an export. '
+      + 'Every answer is computed again here; nothing leaves this browser.'),
     field('The sheet the class answered', sheet),
     field('Handed-in files, text files of codes, or zips', files), field('Or a whole folder', folder), drop,
     field('Or paste codes (FLH1.…), one per line or among other text', codes),
@@ -95,7 +97,8 @@ export function buildClassSection(root) {
     const classFile = saved.files[0] ? new Uint8Array(await saved.files[0].arrayBuffer()) : undefined;
     const expected = readSetSheet(sheet.value);
     if (!expected.ok || (!expected.sheet && classFile === undefined)) {
-      out.replaceChildren(problemBox('The sheet to grade against cannot be used:', expected.ok ? ['Give the sheet you set (its link, code or JSON): the class is graded against it.'] : expected.problems));
+      out.replaceChildren(problemBox('The sheet to grade against cannot be used:', expected.ok ? ['Give the sheet you set (its link, '
+        + 'code or JSON): the class is graded against it.'] : expected.problems));
       status.textContent = '';
       return;
     }
@@ -108,7 +111,9 @@ export function buildClassSection(root) {
     let result;
     try {
       result = await runner.run(request, (p) => {
-        status.textContent = p.phase === 'grading' && p.total ? `Grading ${p.done} of ${p.total} hand-ins…` : PHASES[p.phase] ?? status.textContent;
+        status.textContent = p.phase === 'grading' && p.total
+          ? `Grading ${p.done} of ${p.total} hand-ins…`
+          : PHASES[p.phase] ?? status.textContent;
       });
     } catch (error) {
       result = { ok: false, problems: [`Grading stopped: ${error.message}`] };
@@ -131,7 +136,8 @@ export function buildClassSection(root) {
   async function showView(v, ms) {
     const { gradebook } = v;
     const seconds = fixed(ms / 1000, 1);
-    status.textContent = `${gradebook.title}: ${gradebook.rows.length} hand-in${gradebook.rows.length === 1 ? '' : 's'} graded, ${gradebook.students} student${gradebook.students === 1 ? '' : 's'} counted`
+    status.textContent = `${gradebook.title}: ${gradebook.rows.length} hand-in${gradebook.rows.length === 1 ? '' : 's'} graded, `
+      + `${gradebook.students} student${gradebook.students === 1 ? '' : 's'} counted`
       + `${gradebook.superseded ? ` (${gradebook.superseded} earlier hand-in${gradebook.superseded === 1 ? '' : 's'} not counted)` : ''}`
       + `${v.refused.length ? `; ${v.refused.length} could not be used (listed below)` : ''}. Graded in ${runner.where()} in ${seconds} s.`
       + `${runner.problem() ? ` ${runner.problem()}` : ''}`;
@@ -162,8 +168,10 @@ export function buildClassSection(root) {
       },
     });
     state.table = table;
-    csv.addEventListener('click', () => downloadText(`${fileSlug(gradebook.title)}-gradebook.csv`, gradebookToCsv(gradebook, { includeSuperseded: true }), 'text/csv;charset=utf-8'));
-    keep.addEventListener('click', () => downloadText(`${fileSlug(gradebook.title)}-class.json`, writeClassFile({ sheet: v.sheet, handIns: v.handIns }), 'application/json'));
+    csv.addEventListener('click', () => downloadText(`${fileSlug(gradebook.title)}-gradebook.csv`,
+      gradebookToCsv(gradebook, { includeSuperseded: true }), 'text/csv;charset=utf-8'));
+    keep.addEventListener('click', () => downloadText(`${fileSlug(gradebook.title)}-class.json`,
+      writeClassFile({ sheet: v.sheet, handIns: v.handIns }), 'application/json'));
     const gradebookHeading = el('h3', null, 'Gradebook');
     const questionsHeading = el('h3', null, 'What the class got wrong, and why');
     const questionCards = () => questionSummaries(v, {
@@ -183,7 +191,9 @@ export function buildClassSection(root) {
   }
 
   grade.addEventListener('click', run);
-  for (const input of [files, folder, saved]) input.addEventListener('change', () => { if (sheet.value.trim() || saved.files.length) run(); });
+  for (const input of [files, folder, saved]) {
+    input.addEventListener('change', () => { if (sheet.value.trim() || saved.files.length) run(); });
+  }
   drop.addEventListener('dragover', (event) => { event.preventDefault(); drop.classList.add('hw-drop-over'); });
   drop.addEventListener('dragleave', () => drop.classList.remove('hw-drop-over'));
   drop.addEventListener('drop', async (event) => {

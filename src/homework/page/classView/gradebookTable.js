@@ -66,7 +66,8 @@ export function createGradebookTable(gradebook, { onDetails }) {
 
   const columns = [
     { id: 'name', text: 'Name' }, { id: 'seed', text: 'Seed' }, { id: 'score', text: 'Score' }, { id: 'percent', text: '%' },
-    ...gradebook.items.map((item, i) => ({ id: `item:${i}`, text: `Q${i + 1}`, title: `${KIND_NAMES[item.kind] ?? item.kind}: ${item.question}` })),
+    ...gradebook.items.map((item, i) => ({ id: `item:${i}`, text: `Q${i + 1}`, title: `${KIND_NAMES[item.kind] ?? item.kind}: `
+      + `${item.question}` })),
     { id: 'tries', text: 'Tries' }, { id: 'time', text: 'Handed in' }, { id: 'flags', text: 'Flags' },
   ];
   const headers = new Map();
@@ -115,7 +116,8 @@ export function createGradebookTable(gradebook, { onDetails }) {
     applyOrder();
   }
   function applyOrder() {
-    order = sortRows(gradebook.rows, /** @type {any} */ (sorted.column), { descending: sorted.descending, locale: document.documentElement.lang || undefined });
+    order = sortRows(gradebook.rows, /** @type {any} */ (sorted.column),
+      { descending: sorted.descending, locale: document.documentElement.lang || undefined });
     for (const [id, th] of headers) {
       if (id === sorted.column) th.setAttribute('aria-sort', sorted.descending ? 'descending' : 'ascending');
       else th.removeAttribute('aria-sort');

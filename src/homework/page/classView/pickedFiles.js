@@ -22,7 +22,8 @@ export async function readPicked(entries) {
     }
     const max = kind.kind === 'zip' ? CLASS_CAPS.maxZipBytes : CLASS_CAPS.maxFileBytes;
     if (file.size > max) {
-      refused.push({ source: path, reason: `${megabytes(file.size)}: more than the ${megabytes(max)} a ${kind.kind === 'zip' ? 'zip' : 'handed-in file or a text of codes'} may have.` });
+      refused.push({ source: path, reason: `${megabytes(file.size)}: more than the ${megabytes(max)} a `
+        + `${kind.kind === 'zip' ? 'zip' : 'handed-in file or a text of codes'} may have.` });
       continue;
     }
     try {

@@ -76,7 +76,8 @@ function numericParts(summary) {
     return '';
   };
   parts.push(columns(ratio.bins, {
-    caption: 'Each answer divided by the value computed for that student, on a log scale: right answers stand at ×1, a slip by a factor as a column at that factor.',
+    caption: 'Each answer divided by the value computed for that student, on a log scale: right answers stand at ×1, '
+      + 'a slip by a factor as a column at that factor.',
     binText: (bin) => `${ratioText(bin.lo)} to ${ratioText(bin.hi)}`, tick,
   }));
   const peaks = ratio.labels.filter((l) => l.count > 0).map((l) => `${l.text}: ${students(l.count)}`);
@@ -151,7 +152,8 @@ export async function questionSummaries(view, { onShow }) {
       setSubscripted(prompt, promptText(question, first.params, sameForAll));
       card.append(prompt);
     }
-    card.append(el('p', 'hw-share', `${percent(summary.shareRight)} right: ${summary.right} right, ${summary.wrong} wrong, ${summary.unanswered} unanswered, of ${students(summary.students)}.`));
+    card.append(el('p', 'hw-share', `${percent(summary.shareRight)} right: ${summary.right} right, ${summary.wrong} wrong, `
+      + `${summary.unanswered} unanswered, of ${students(summary.students)}.`));
     if (summary.kind === 'choice') card.append(...choiceParts(summary));
     else if (summary.kind === 'numeric') card.append(...numericParts(summary));
     else card.append(...predictParts(summary));
