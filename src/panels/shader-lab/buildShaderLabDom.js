@@ -58,7 +58,8 @@ export function buildShaderLabDom(host) {
     referenceMap,
     setTask(exercise, rows) {
       title.textContent = exercise.title;
-      signature.replaceChildren('Write ', el('code', null, exercise.signature), '. It is compiled into a shader on this GPU and checked against the float64 optics core:');
+      signature.replaceChildren('Write ', el('code', null, exercise.signature),
+        '. It is compiled into a shader on this GPU and checked against the float64 optics core:');
       criteria.replaceChildren(...rows.map(({ label, precision, result }) => {
         const item = el('li', `sl-criterion${result ? (result.pass ? ' sl-pass' : ' sl-fail') : ''}`);
         const state = result ? (result.pass ? 'passed' : 'failed') : 'not graded';
@@ -69,7 +70,8 @@ export function buildShaderLabDom(host) {
     },
     setErrors(list) {
       const texts = list.map(({ line, message }) => (line ? `Line ${line}: ${message}` : message));
-      if (texts.join('\n') !== [...errors.children].map((li) => li.textContent).join('\n')) errors.replaceChildren(...texts.map((t) => el('li', null, t)));
+      const shown = [...errors.children].map((li) => li.textContent);
+      if (texts.join('\n') !== shown.join('\n')) errors.replaceChildren(...texts.map((t) => el('li', null, t)));
       errors.hidden = list.length === 0;
     },
     setSummary(text) { if (summary.textContent !== text) summary.textContent = text; },

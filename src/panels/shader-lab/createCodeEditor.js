@@ -51,7 +51,8 @@ export function createCodeEditor(parent, { doc, label, onChange, onRun }) {
         EditorView.contentAttributes.of({ 'aria-label': label }),
         // Only what the student typed: the page's own replacements (remote) are not a change of theirs.
         EditorView.updateListener.of((update) => {
-          if (update.docChanged && !update.transactions.some((t) => t.annotation(Transaction.remote))) onChange(update.state.doc.toString());
+          const typed = update.docChanged && !update.transactions.some((t) => t.annotation(Transaction.remote));
+          if (typed) onChange(update.state.doc.toString());
         }),
         readOnly.of(EditorState.readOnly.of(false)),
       ],

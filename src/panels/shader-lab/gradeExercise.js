@@ -4,9 +4,11 @@
 // come from the GPU (evaluateSource in src/gl/evaluateMethodsGpu.js), the cases from gradingCases.js.
 import { caseText } from './gradingCases.js';
 import { criterion } from './exercises.js';
+import { fixed } from '../../ui/format.js';
 
 const SLACK = 1e-6;
-const num = (x) => (!Number.isFinite(x) ? String(x) : x === 0 ? '0' : Math.abs(x) >= 1e-3 ? x.toFixed(4) : x.toExponential(1));
+// A value in a reason: four decimals, a tiny one in two digits (1.2e-5), NaN and ±Infinity by name.
+const num = (x) => (!Number.isFinite(x) ? String(x) : x === 0 ? '0' : Math.abs(x) >= 1e-3 ? fixed(x, 4) : x.toExponential(1));
 
 /** The values of case i: one number (dielectric) or three (conductor channels). */
 const channelsOf = (values, i, width) => (width === 1 ? [values[i]] : Array.from(values.subarray(i * 3, i * 3 + 3)));
@@ -49,10 +51,17 @@ export function gradeCriterion(crit, cases, values) {
   const what = crit.target === 'schlick' ? 'Schlick’s formula' : 'the exact R';
   let reason;
   if (!checked) reason = 'No case to check.';
-  else if (!failed) reason = crit.target === 'sane' ? `All ${checked} values finite and in [0, 1].` : `All ${checked} values within ${crit.tolerance} of ${what}; the largest difference ${num(worst.error)}, at ${where}.`;
+  else if (!failed) {
+    reason = crit.target === 'sane'
+      ? `All ${checked} values finite and in [0, 1].`
+      : `All ${checked} values within ${crit.tolerance} of ${what}; the largest difference ${num(worst.error)}, at ${where}.`;
+  }
   else if (worst.kind === 'notFinite') reason = `${num(worst.value)} at ${where} (${failed} of ${checked} fail).`;
   else if (worst.kind === 'outOfRange') reason = `${num(worst.value)}, outside [0, 1], at ${where} (${failed} of ${checked} fail).`;
-  else reason = `${num(worst.value)} where ${what} is ${num(worst.reference)} (off by ${num(worst.error)}, more than ${crit.tolerance}) at ${where}; ${failed} of ${checked} fail.`;
+  else {
+    reason = `${num(worst.value)} where ${what} is ${num(worst.reference)} (off by ${num(worst.error)}, more than ${crit.tolerance}) `
+      + `at ${where}; ${failed} of ${checked} fail.`;
+  }
   return { id: crit.id, label: crit.label, precision: crit.precision, pass: checked > 0 && failed === 0, checked, failed, worst, reason };
 }
 

@@ -6,6 +6,7 @@
 // comparison measures the student's arithmetic, not the rounding of the question.
 import { DEG, cosDeg } from '../../optics/angles.js';
 import { criticalAngle, fresnelConductor, fresnelExact, fresnelSchlick } from '../../optics/fresnel.js';
+import { fixed, MINUS } from '../../ui/format.js';
 
 const f = Math.fround;
 const clamp01 = (x) => Math.min(1, Math.max(0, x));
@@ -44,7 +45,9 @@ export function dielectricCases() {
       for (const t of SWEEP) add(t === 90 ? 0 : cosDeg(t), nI, nT, t, family, 'sweep');
       for (const t of GRAZING) add(cosDeg(t), nI, nT, t, family, 'grazing');
       const critical = criticalAngle(nI, nT);
-      if (critical !== null) for (const d of CRITICAL_STEPS) add(Math.cos(critical + d * DEG), nI, nT, critical / DEG + d, family, 'critical');
+      if (critical !== null) {
+        for (const d of CRITICAL_STEPS) add(Math.cos(critical + d * DEG), nI, nT, critical / DEG + d, family, 'critical');
+      }
       if (family === 'fromAir' || family === 'fromInside') for (const c of OUTSIDE) add(c, nI, nT, null, family, 'outside');
     }
   }
@@ -55,7 +58,11 @@ export function dielectricCases() {
 export function conductorCases(metal) {
   const n = metal.n.map(f);
   const k = metal.k.map(f);
-  const angles = [...SWEEP.map((t) => [t === 90 ? 0 : cosDeg(t), t, 'sweep']), ...GRAZING.map((t) => [cosDeg(t), t, 'grazing']), ...OUTSIDE.map((c) => [c, null, 'outside'])];
+  const angles = [
+    ...SWEEP.map((t) => [t === 90 ? 0 : cosDeg(t), t, 'sweep']),
+    ...GRAZING.map((t) => [cosDeg(t), t, 'grazing']),
+    ...OUTSIDE.map((c) => [c, null, 'outside']),
+  ];
   return angles.map(([cos, thetaDeg, tag]) => {
     const c = f(cos);
     return { cos: c, n, k, thetaDeg, tag, family: 'metal', exact: n.map((ni, ch) => fresnelConductor(clamp01(c), ni, k[ch])) };
@@ -85,6 +92,8 @@ const shortFloat32 = (x) => {
 
 /** A case in words, for a reason or a table: "θ = 41.81°, n_i 1.5 → n_t 1" or "cos θ = 1.0000001, …". */
 export function caseText(c) {
-  const angle = c.thetaDeg === null ? `cos θ = ${shortFloat32(c.cos).replace('-', '−')}` : `θ = ${c.thetaDeg.toFixed(c.tag === 'critical' || c.tag === 'grazing' ? 5 : 2)}°`;
+  const angle = c.thetaDeg === null
+    ? `cos θ = ${shortFloat32(c.cos).replace('-', MINUS)}`
+    : `θ = ${fixed(c.thetaDeg, c.tag === 'critical' || c.tag === 'grazing' ? 5 : 2)}°`;
   return c.n ? angle : `${angle}, n_i ${c.nI.toPrecision(5).replace(/\.?0+$/, '')} → n_t ${c.nT.toPrecision(5).replace(/\.?0+$/, '')}`;
 }

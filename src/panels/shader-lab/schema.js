@@ -7,7 +7,10 @@ export const schema = {
   exercise: { type: 'enum', default: 'schlick', options: EXERCISE_TITLES, label: 'Exercise' },
   // Empty: the exercise's starting code. The editor shows the code; the link keeps it compact.
   // Twice the panel's own limit: longer code reaches the panel, which refuses it in its own words.
-  code: { type: 'text', default: '', maxLength: 2 * MAX_CODE, encode: encodeCode, decode: decodeCode, label: 'GLSL code', defaultText: 'the exercise’s starting code' },
+  code: {
+    type: 'text', default: '', maxLength: 2 * MAX_CODE, encode: encodeCode, decode: decodeCode, label: 'GLSL code',
+    defaultText: 'the exercise’s starting code',
+  },
   precision: { type: 'enum', default: 'highp', options: { highp: 'highp', mediump: 'mediump' }, label: 'Map precision' },
   homework: { type: 'boolean', default: false, label: 'Homework mode (no reference answers)' },
 };

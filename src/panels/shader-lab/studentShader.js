@@ -14,11 +14,22 @@ import { MAX_CODE } from './exerciseTitles.js';
 export { MAX_CODE };
 export const WRAPPER_LINE = 10000;
 
+const REFUSED = Object.freeze({
+  length: `a Fresnel function needs far fewer (at most ${MAX_CODE} here).`,
+  loop: 'Loops are refused here: a Fresnel function needs none, and a loop that never ends would stall the graphics card.',
+  continuation: 'A backslash at the end of a line is refused here (in a comment too): it joins two lines, which could hide a loop.',
+  directive: 'Preprocessor lines (#…) are refused here: the page writes the shader around your function, and a function needs none.',
+  precision: 'Precision statements are refused here: the page sets the precision your function is graded in '
+    + '(a highp local inside it is fine).',
+});
+
 /** Problems that refuse the code before it reaches the GPU: [{ line, message }] (empty: fine). */
 export function checkStudentCode(code) {
   const problems = [];
   if (typeof code !== 'string' || !code.trim()) return [{ line: null, message: 'There is no code to compile.' }];
-  if (code.length > MAX_CODE) problems.push({ line: null, message: `The code is ${code.length} characters long; a Fresnel function needs far fewer (at most ${MAX_CODE} here).` });
+  if (code.length > MAX_CODE) {
+    problems.push({ line: null, message: `The code is ${code.length} characters long; ${REFUSED.length}` });
+  }
   // Lines as the compiler counts them (\r\n, \r and \n all end one). Comments go in one pass from
   // left to right, as the compiler reads them (a word in a comment is no loop); their newlines
   // stay, so lines still count.
@@ -30,10 +41,11 @@ export function checkStudentCode(code) {
   const raw = lines.split('\n');
   bare.split('\n').forEach((text, i) => {
     const line = i + 1;
-    if (/\b(for|while|do)\b/.test(text)) problems.push({ line, message: 'Loops are refused here: a Fresnel function needs none, and a loop that never ends would stall the graphics card.' });
-    if (/\\\s*$/.test(raw[i])) problems.push({ line, message: 'A backslash at the end of a line is refused here (in a comment too): it joins two lines, which could hide a loop.' });
-    if (/^\s*#/.test(text)) problems.push({ line, message: 'Preprocessor lines (#…) are refused here: the page writes the shader around your function, and a function needs none.' });
-    if (/\bprecision\b/.test(text)) problems.push({ line, message: 'Precision statements are refused here: the page sets the precision your function is graded in (a highp local inside it is fine).' });
+    const refuse = (message) => problems.push({ line, message });
+    if (/\b(for|while|do)\b/.test(text)) refuse(REFUSED.loop);
+    if (/\\\s*$/.test(raw[i])) refuse(REFUSED.continuation);
+    if (/^\s*#/.test(text)) refuse(REFUSED.directive);
+    if (/\bprecision\b/.test(text)) refuse(REFUSED.precision);
   });
   return problems;
 }
@@ -86,7 +98,9 @@ export function readCompileLog(log, signature) {
     const message = m[2].trim();
     if (line < WRAPPER_LINE) entries.push({ line, message });
     // Past the student's last line: an unclosed brace or a missing ; shows up in the page's code.
-    else if (/syntax error|unexpected|end of/i.test(message)) entries.push({ line: null, message: `After your last line: ${message} (a missing } or ;?).` });
+    else if (/syntax error|unexpected|end of/i.test(message)) {
+      entries.push({ line: null, message: `After your last line: ${message} (a missing } or ;?).` });
+    }
     else entries.push({ line: null, message: `Define ${signature}: the page calls it (${message}).` });
   }
   return entries;
