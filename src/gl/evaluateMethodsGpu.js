@@ -3,7 +3,8 @@
 // the results back bit for bit, NaN and ±Infinity included; in-shader isnan() cannot be trusted
 // (GLSL ES 3.00 need not support NaN: "NaNs may not be supported by the implementation, in which
 // case isnan returns false", Khronos isnan reference page). Raw WebGL2 on a context the caller
-// owns: the stability panel, the speed-accuracy panel and the benchmark share one per context.
+// owns: a panel's read-back GPU (src/panels/shared/createReadBackGpu.js) makes one evaluator on its
+// own context, the speed-accuracy measurement and the benchmark one on theirs.
 // GL state touched here (framebuffers, program, vertex array, viewport, texture units 0–1,
 // pixel-store and capability flags) is restored after each call; three.js users may still call
 // renderer.resetState() afterwards to be safe.
@@ -266,31 +267,6 @@ export function createMethodsGpu(gl) {
       gl.deleteFramebuffer(framebuffer);
     },
   };
-}
-
-const shared = new WeakMap();
-
-/** The evaluator shared by everyone drawing on this context (created on first use). */
-export function methodsGpu(gl) {
-  if (!shared.has(gl)) shared.set(gl, createMethodsGpu(gl));
-  return shared.get(gl);
-}
-
-/** A new evaluator after the context was restored: the old one's objects went with the loss (none to delete). */
-export function renewMethodsGpu(gl) {
-  shared.delete(gl);
-  return methodsGpu(gl);
-}
-
-/** evaluateMethodsGpu(gl, { methodId, precision, inputs, extra }) → Float32Array: see evaluate above. */
-export function evaluateMethodsGpu(gl, options) {
-  return methodsGpu(gl).evaluate(options);
-}
-
-/** Frees the shared evaluator of this context (call before the context itself goes). */
-export function disposeMethodsGpu(gl) {
-  shared.get(gl)?.dispose();
-  shared.delete(gl);
 }
 
 /**
