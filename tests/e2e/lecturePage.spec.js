@@ -4,6 +4,7 @@
 // lecture names what it refuses and opens the rest.
 import { deflateSync } from 'fflate';
 import { test, expect, openLab } from './fixtures.js';
+import { seriousViolations } from './audit.js';
 
 /** A lecture's link code, made here as the format says (raw DEFLATE, base64url), not by the page's own writer. */
 const code = (lecture) => `L1.${Buffer.from(deflateSync(Buffer.from(JSON.stringify(lecture)), { level: 9 })).toString('base64url')}`;
@@ -49,6 +50,9 @@ test('a composed lecture opens from its link as composed, steps item by item, an
   await expect(page.locator('#text--2 ol > li')).toHaveText(['Into the glass', 'Out of it']);
   await expect(page.locator('#question--4 .hw-prompt')).toContainText('predict the angle');
   await expect(page.locator('#polarization .lecture-text')).toHaveText('Where does R_p vanish?');
+  // A panel's later item keeps the place the build keeps for the panel (760 px at this width), before it mounts.
+  expect(await page.evaluate(() => window.fresnelLab.hosts['spheres--2'].mounted)).toBe(false);
+  await expect(page.locator('#spheres--2 > .panel-mount')).toHaveCSS('min-height', '760px');
 
   // Lecture mode: the clicker keys step over every item, text and question too.
   await page.locator('.site-title h1').click();
@@ -88,6 +92,7 @@ test('a composed lecture opens from its link as composed, steps item by item, an
   expect(lectureLink.hash).toBe('#spheres--2');
   const embed = new URL(links.embed);
   expect(Object.fromEntries(embed.searchParams)).toMatchObject({ panel: 'spheres', nI: '1.5', nT: '1.2', lock: 'nI' });
+  expect(await seriousViolations(page), 'the composed lecture, the hero twice on it').toEqual([]);
 
   // The item's link opens the same lecture with both heroes as they were.
   await page.goto('about:blank');
