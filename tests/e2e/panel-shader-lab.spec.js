@@ -31,14 +31,17 @@ test('every exercise\'s reference answer passes every criterion in the panel', a
 
 test('a compile error is marked at the student\'s line; a loop is refused before the GPU sees it', async ({ page }) => {
   await openLab(page, embed('&exercise=exact'));
-  const broken = 'float fresnel(float cosTheta, float nI, float nT) {\n  float m = nI / nT;\n  float g = sqrt(1.0 - m * m + c * c);\n  return g;\n}';
+  const broken = 'float fresnel(float cosTheta, float nI, float nT) {\n  float m = nI / nT;\n'
+    + '  float g = sqrt(1.0 - m * m + c * c);\n  return g;\n}';
   await lab(page, (code) => window.fresnelLab.hosts['shader-lab'].set({ code }), broken);
   await expect(page.locator('.sl-errors li').first()).toHaveText(/^Line 3: 'c'.*undeclared identifier/);
   await expect(page.locator('.cm-lintRange-error')).toHaveText('  float g = sqrt(1.0 - m * m + c * c);');
   await expect(states(page)).toHaveText(['not graded', 'not graded']);
-  for (const text of await page.locator('.sl-errors li').allTextContents()) expect(text).toMatch(/^Line \d+: \S/); // no empty lines from the log
+  // No empty lines from the log.
+  for (const text of await page.locator('.sl-errors li').allTextContents()) expect(text).toMatch(/^Line \d+: \S/);
   await expect(page.locator('.panel-description')).toContainText('not graded; line 3:');
-  await lab(page, () => window.fresnelLab.hosts['shader-lab'].set({ code: 'float fresnel(float c, float a, float b) {\n  while (true) {}\n  return 0.0;\n}' }));
+  const loop = 'float fresnel(float c, float a, float b) {\n  while (true) {}\n  return 0.0;\n}';
+  await lab(page, (code) => window.fresnelLab.hosts['shader-lab'].set({ code }), loop);
   await expect(page.locator('.sl-errors li').first()).toHaveText(/^Line 2: Loops are refused here/);
 });
 
@@ -56,7 +59,10 @@ test('the code round-trips through the link, compact, and typing in the editor g
     const g = c.getContext('2d');
     return [0.25, 0.75].map((x) => [...g.getImageData(Math.round(c.width * x), Math.round(c.height / 2), 1, 1).data]);
   });
-  await expect.poll(async () => { const [left, right] = await centres(); return left[3] === 255 && Math.abs(left[0] - right[0]) + Math.abs(left[1] - right[1]) > 30; }).toBe(true);
+  await expect.poll(async () => {
+    const [left, right] = await centres();
+    return left[3] === 255 && Math.abs(left[0] - right[0]) + Math.abs(left[1] - right[1]) > 30;
+  }).toBe(true);
   // Typed: the edit is graded, and the link follows with the code in its compact form.
   const content = page.locator('section[data-panel="shader-lab"] .cm-content');
   await content.click();
@@ -75,7 +81,10 @@ test('a lost graphics context is said, and grading comes back with it; the code 
   await openLab(page, embed('&exercise=safe'));
   await page.getByRole('button', { name: 'Show a reference answer' }).click();
   await expect(states(page)).toHaveText(['passed', 'passed']);
-  await lab(page, () => { window.lose = window.fresnelLab.panels['shader-lab'].gl.getExtension('WEBGL_lose_context'); window.lose.loseContext(); });
+  await lab(page, () => {
+    window.lose = window.fresnelLab.panels['shader-lab'].gl.getExtension('WEBGL_lose_context');
+    window.lose.loseContext();
+  });
   await expect(page.locator('.sl-summary')).toHaveText('The graphics context was lost; grading resumes when it is back.');
   await lab(page, () => window.lose.restoreContext());
   await expect(states(page)).toHaveText(['passed', 'passed']);
@@ -93,4 +102,24 @@ test('homework mode hides the reference answers', async ({ page }) => {
   await expect(page.getByRole('button', { name: 'Show a reference answer' })).toBeHidden();
   await expect(page.getByRole('button', { name: 'Start over' })).toBeVisible();
   await expect(page.getByRole('textbox', { name: 'GLSL code of the Fresnel function' })).toBeVisible();
+});
+
+test.describe('a GPU that refuses the lab\'s own shaders', () => {
+  test.use({ allowedErrors: /did not compile|injected refusal/ });
+  test('says so, and blames no line of the student\'s code', async ({ page }) => {
+    await page.addInitScript(() => {
+      const proto = WebGL2RenderingContext.prototype;
+      const parameter = proto.getShaderParameter;
+      proto.getShaderParameter = function (shader, name) {
+        return name === this.COMPILE_STATUS ? false : parameter.call(this, shader, name);
+      };
+      proto.getShaderInfoLog = () => "ERROR: 0:1: 'injected refusal' : this driver refuses the shader";
+    });
+    await openLab(page, embed('&exercise=safe'));
+    await expect(page.locator('.sl-summary')).toHaveText('This GPU could not compile the lab’s own shaders, so nothing can be graded here: '
+      + "ERROR: 0:1: 'injected refusal' : this driver refuses the shader.");
+    await expect(page.locator('.sl-errors li')).toHaveCount(0);
+    await expect(states(page)).toHaveText(['not graded', 'not graded']);
+    await expect(page.locator('.panel-description')).toContainText('could not compile the lab’s own shaders');
+  });
 });
