@@ -91,7 +91,9 @@ test('Schlick without TIR fails past the critical angle on the glass side; Schli
   expect(same(await pixel(page, 'gpu', 60, 1.5), await themeColor(page, '--border'))).toBe(true);
 });
 
-test('the exact forms in mediump fail near the critical angle (on this GPU, or in float16 where mediump is full precision)', async ({ page }) => {
+test('the exact forms in mediump fail near the critical angle (on this GPU, or in float16 where mediump is full precision)', async ({
+  page,
+}) => {
   await openLab(page, embed()); // default: exact c/g in mediump
   const probe = await page.evaluate(() => window.fresnelLab.panels.stability.precisionProbe);
   for (const method of ['exact-cg', 'exact-sp']) {

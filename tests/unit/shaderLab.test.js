@@ -76,16 +76,19 @@ describe('criteria', () => {
 
 describe('the student\'s code in the page\'s shader', () => {
   it('is refused with a line when it loops or changes the wrapper, and not for words in comments', () => {
-    expect(checkStudentCode('float fresnel(float c, float a, float b) {\n  for (int i = 0; i < 9; i++) {}\n  return 0.0;\n}')).toEqual([{ line: 2, message: expect.stringMatching(/^Loops are refused/) }]);
+    expect(checkStudentCode('float fresnel(float c, float a, float b) {\n  for (int i = 0; i < 9; i++) {}\n  return 0.0;\n}'))
+      .toEqual([{ line: 2, message: expect.stringMatching(/^Loops are refused/) }]);
     expect(checkStudentCode('#version 100\nfloat x;')[0]).toMatchObject({ line: 1, message: expect.stringMatching(/^Preprocessor lines/) });
     expect(checkStudentCode('// do not loop: for, while\n/* while\n */ float f() { return 1.0; }')).toEqual([]);
     expect(checkStudentCode('x'.repeat(7000))[0].message).toMatch(/7000 characters/);
-    expect(checkStudentCode('#define F(a, b) a##b\nfloat f() { F(fo, r) (;;) {} return 1.0; }')[0]).toMatchObject({ line: 1, message: expect.stringMatching(/^Preprocessor lines/) });
+    expect(checkStudentCode('#define F(a, b) a##b\nfloat f() { F(fo, r) (;;) {} return 1.0; }')[0])
+      .toMatchObject({ line: 1, message: expect.stringMatching(/^Preprocessor lines/) });
     // Ways a loop could hide from a simpler check: a // comment holding /*, a line continuation,
     // lines ended by \r alone.
-    expect(checkStudentCode('float f() { // /*\n  while (true) {}\n  return 0.0; // */\n}')).toEqual([expect.objectContaining({ line: 2, message: expect.stringMatching(/^Loops/) })]);
+    const loopAt2 = [expect.objectContaining({ line: 2, message: expect.stringMatching(/^Loops/) })];
+    expect(checkStudentCode('float f() { // /*\n  while (true) {}\n  return 0.0; // */\n}')).toEqual(loopAt2);
     expect(checkStudentCode('float f() {\n  wh\\\nile (true) {}\n  return 0.0;\n}').map((p) => p.line)).toEqual([2]);
-    expect(checkStudentCode('float f() { // note\r  while (true) {}\r  return 0.0;\r}')).toEqual([expect.objectContaining({ line: 2, message: expect.stringMatching(/^Loops/) })]);
+    expect(checkStudentCode('float f() { // note\r  while (true) {}\r  return 0.0;\r}')).toEqual(loopAt2);
     expect(checkStudentCode('precision highp float;\nfloat f() { highp float x = 1.0; return x; }').map((p) => p.line)).toEqual([1]);
     expect(checkStudentCode('  ')).toHaveLength(1);
   });
@@ -94,13 +97,19 @@ describe('the student\'s code in the page\'s shader', () => {
     expect(source).toMatch(/^#version 300 es\nprecision mediump float;/);
     expect(source).toContain(`#line 1\nfloat fresnel`);
     expect(source).toContain(`#line ${WRAPPER_LINE}\nvoid main()`);
-    const log = "ERROR: 0:3: 'g' : undeclared identifier\nERROR: 0:3: '=' : dimension mismatch\nERROR: 0:10003: 'fresnel' : no matching overloaded function found\nERROR: 3 compilation errors.  No code generated.\n\n\u0000";
+    const log = "ERROR: 0:3: 'g' : undeclared identifier\nERROR: 0:3: '=' : dimension mismatch\n"
+      + "ERROR: 0:10003: 'fresnel' : no matching overloaded function found\nERROR: 3 compilation errors.  No code generated.\n\n\u0000";
     expect(readCompileLog(log, 'float fresnel(float cosTheta, float nI, float nT)')).toEqual([
       { line: 3, message: "'g' : undeclared identifier" },
       { line: 3, message: "'=' : dimension mismatch" },
-      { line: null, message: "Define float fresnel(float cosTheta, float nI, float nT): the page calls it ('fresnel' : no matching overloaded function found)." },
+      {
+        line: null,
+        message: 'Define float fresnel(float cosTheta, float nI, float nT): '
+          + "the page calls it ('fresnel' : no matching overloaded function found).",
+      },
     ]);
-    expect(readCompileLog('0(7) : error C0000: syntax error, unexpected identifier', 'f')).toEqual([{ line: 7, message: 'syntax error, unexpected identifier' }]);
+    expect(readCompileLog('0(7) : error C0000: syntax error, unexpected identifier', 'f'))
+      .toEqual([{ line: 7, message: 'syntax error, unexpected identifier' }]);
     expect(readCompileLog("ERROR: 0:10001: 'void' : syntax error", 'f')[0].message).toMatch(/^After your last line: .*a missing \} or ;\?/);
   });
 });
@@ -147,7 +156,9 @@ describe('the code in the link', () => {
     });
     it('is refused when its stream runs past its stated length or stops short of it', () => {
       const stream = deflateSync(code);
-      for (const length of [code.length - 1, code.length - 100, 1, code.length + 1]) expect(decodeCode(compact(stream, length)), `stated ${length}`).toBeNull();
+      for (const length of [code.length - 1, code.length - 100, 1, code.length + 1]) {
+        expect(decodeCode(compact(stream, length)), `stated ${length}`).toBeNull();
+      }
     });
     it('is refused when its stream is bad: a reserved block type, cut short, or not UTF-8', () => {
       const reserved = deflateSync(code);
