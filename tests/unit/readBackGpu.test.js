@@ -126,6 +126,14 @@ describe('createReadBackGpu', () => {
     fake.makeEvaluator.mockImplementationOnce(() => { throw new TypeError('out of memory'); });
     expect(() => fake.restore()).not.toThrow();
     expect([gpu.ready, gpu.problem]).toEqual([false, 'Could not start again: out of memory']);
+    fake.lose();
+    const unlike = new ShaderError({ stage: 'fragment', log: 'ERROR: 0:1: no' });
+    vi.spyOn(console, 'error').mockImplementation(() => {});
+    fake.evaluators[0].probePrecision.mockImplementationOnce(() => { throw unlike; });
+    fake.makeEvaluator.mockImplementationOnce(() => fake.evaluators[0]);
+    fake.restore();
+    expect(gpu.problem).toMatch(/^Could not start again: The fragment shader did not compile:\nERROR: 0:1: no/);
+    expect(fake.evaluators[0].dispose).toHaveBeenCalledOnce(); // the half-made evaluator is freed
     const plain = fakeGpu();
     const other = createReadBackGpu({ words: WORDS, ...plain.options() });
     plain.lose();

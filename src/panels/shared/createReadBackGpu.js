@@ -99,8 +99,8 @@ export function createReadBackGpu({
       evaluator = made;
     } catch (error) {
       prepared = null;
+      made?.dispose(); // what it made on the context so far
       if (!again) {
-        made?.dispose();
         problem = wordProblem(error, words);
         if (!problem) throw error;
         return;
