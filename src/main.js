@@ -79,8 +79,10 @@ if (opened.refused) {
 const composed = opened.lecture ? mountLecture(main, opened.lecture, itemKeys(opened.lecture.items, lecturePrefix)) : null;
 const lectureCode = opened.lecture ? lectureToCode(opened.lecture) : null;
 window.fresnelLab.lecture = { source: opened.source, title: opened.lecture?.title ?? null, code: lectureCode };
+// The composer runs from the site (it reads the offline page beside it): a page opened from disk has none beside it.
 const composeLink = document.querySelector('a.compose-link');
 if (composeLink instanceof HTMLAnchorElement && lectureCode) composeLink.href = `./compose.html?lecture=${lectureCode}`;
+if (window.location.protocol === 'file:') document.querySelector('.compose-offer')?.remove();
 
 /** The lab's own lecture: its panels, each in the section the build wrote for it. */
 function ownPanels() {
