@@ -5,6 +5,7 @@
 // homework question asked of the room (questionItem.js, loaded only for a lecture that has one).
 import { PLACE_LAYOUTS, panelEntry, sectionHtml } from '../panels/manifest.js';
 import { el } from '../ui/el.js';
+import { showNotice } from '../host/showNotice.js';
 import { lectureTextFragment } from './lectureTextDom.js';
 
 /** The lecturer's own heading and text for an item (nothing when it has neither). */
@@ -61,7 +62,7 @@ function plainSection(item, key, className, label) {
 /**
  * Shows `lecture` in `main` (the lab's own sections go), its title in the header. keys: from
  * itemKeys. Returns { sections: every item's section in order, panels: [{ section, item, key,
- * prefix }], ready: resolves once the questions are on the page }.
+ * prefix }], ready: resolves once the questions are on the page (their cards, or null where they could not load) }.
  * @param {HTMLElement} main
  * @param {{ title: string, items: any[] }} lecture
  * @param {{ key: string, prefix: string | null }[]} keys
@@ -93,7 +94,10 @@ export function mountLecture(main, lecture, keys) {
   });
   main.append(...sections);
   const ready = questions.length
-    ? import('./questionItem.js').then(({ askQuestions }) => askQuestions(questions))
+    ? import('./questionItem.js').then(({ askQuestions }) => askQuestions(questions), (error) => {
+      for (const { section } of questions) showNotice(section, 'This question could not load.', [error.message], { kind: 'error' });
+      return null; // said in each question's section; the rest of the lecture goes on
+    })
     : Promise.resolve();
   return { sections, panels, ready };
 }
