@@ -22,9 +22,10 @@ export function contentSecurityPolicy({ singleFile = false, scripts = [], styles
     // KaTeX's fonts are files on a served page; lil-gui's icon font is a data: URL in its CSS.
     'font-src': singleFile ? ['data:'] : ["'self'", 'data:'],
     'worker-src': singleFile ? ['blob:'] : ["'self'"],
-    // The homework page fetches the offline pages next to it to make a SCORM package.
+    // The homework page fetches the offline pages next to it to make a SCORM package, the composer
+    // the offline lecture page to export a lecture as one file.
     'connect-src': singleFile ? ["'none'"] : ["'self'"],
-    // The homework page shows its panels in frames of the embed page beside it.
+    // The homework page and the composer show panels in frames of the embed page beside them.
     'frame-src': ["'self'"],
     'base-uri': ["'none'"],
     'form-action': ["'none'"],
