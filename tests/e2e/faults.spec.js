@@ -92,6 +92,26 @@ test.describe('a loss in the middle of progressive work', () => {
   });
 
   test('normal-mips: every canvas asked for WebGL before the chains arrive (the loss tests do), and its 2D pictures still draw', async ({ page }) => {
+    // The chain workers' answers are held back until the contexts are lost, so the loss always comes
+    // before the chains (racing the workers, it came after them on a fast load).
+    await page.addInitScript(() => {
+      const held = [];
+      let holding = true;
+      window.releaseChainWorkers = () => { holding = false; held.splice(0).forEach((deliver) => deliver()); };
+      const NativeWorker = window.Worker;
+      window.Worker = class extends NativeWorker {
+        constructor(url, options) {
+          super(url, options);
+          if (!String(url).includes('chainWorker')) return;
+          // Registered before the page's own listeners, so it sees each answer first.
+          this.addEventListener('message', (event) => {
+            if (!holding) return;
+            event.stopImmediatePropagation();
+            held.push(() => this.dispatchEvent(new MessageEvent('message', { data: event.data })));
+          });
+        }
+      };
+    });
     await openLab(page, 'embed.html?panel=normal-mips');
     // Before the worker's chains: the strip and inspector canvases have no picture yet.
     const early = await page.evaluate(`(() => {
@@ -101,6 +121,7 @@ test.describe('a loss in the middle of progressive work', () => {
       return early;
     })()`);
     expect(early, 'the chains were still being built').toBe(true);
+    await page.evaluate(() => window.releaseChainWorkers());
     await page.evaluate(() => window.fresnelLab.panels['normal-mips'].whenBuilt());
     await page.evaluate(() => window.lost.forEach((ext) => ext.restoreContext()));
     await expect(page.locator('.panel-fault')).toBeHidden();
