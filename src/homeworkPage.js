@@ -1,6 +1,7 @@
 // homework.html: with ?sheet=CODE (or a sheet written into the page, in a SCORM package), the sheet
-// a student works on (showSheet); without one, the lecturer's page: open a sheet file, compose a sheet, check handed-in files, grade a class. A sheet that cannot
-// be read is refused with its reasons, and the lecturer's page is shown under them.
+// a student works on (showSheet); without one, the lecturer's page: open a sheet file, compose a
+// sheet, check handed-in files, grade a class. A sheet that cannot be read is refused with its
+// reasons, and the lecturer's page is shown under them.
 import './styles.css';
 import './homework/page/homework.css';
 import { setupPageControls } from './host/setupPageControls.js';
@@ -26,7 +27,9 @@ window.fresnelLab = { homework: null };
 function lecturerPage() {
   const intro = el('section', 'hw-intro');
   intro.append(el('h1', null, 'Homework on the lecture’s panels'),
-    el('p', null, 'Compose a sheet of questions; students open its link, predict and answer on the panels themselves, and hand in a file or a code. Every answer is computed by the lab’s own optics, and checked again here from the seed: no server is involved.'));
+    el('p', null, 'Compose a sheet of questions; students open its link, predict and answer on the panels themselves, '
+      + 'and hand in a file or a code. Every answer is computed by the lab’s own optics, '
+      + 'and checked again here from the seed: no server is involved.'));
   const openLabel = el('label', 'hw-field');
   const file = el('input');
   file.type = 'file';
@@ -74,6 +77,7 @@ if (code === null) {
     window.fresnelLab.homework = showSheet(root, { sheet: read.sheet, code, urlSeed: seed, scorm });
   } else {
     lecturerPage();
-    showNotice(root, 'This sheet link cannot be used:', [...read.problems, 'Ask for the link again, or compose a sheet below.'], { kind: 'error' });
+    showNotice(root, 'This sheet link cannot be used:', [...read.problems, 'Ask for the link again, or compose a sheet below.'],
+      { kind: 'error' });
   }
 }

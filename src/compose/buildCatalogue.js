@@ -20,7 +20,9 @@ export function buildCatalogue(onAdd) {
   for (const group of questionCatalogue()) {
     const optgroup = /** @type {HTMLOptGroupElement} */ (el('optgroup'));
     optgroup.label = group.title;
-    for (const q of group.questions) optgroup.append(new Option(`${q.kind}: ${q.prompt.length > 110 ? `${q.prompt.slice(0, 110)}…` : q.prompt}`, q.id));
+    for (const q of group.questions) {
+      optgroup.append(new Option(`${q.kind}: ${q.prompt.length > 110 ? `${q.prompt.slice(0, 110)}…` : q.prompt}`, q.id));
+    }
     select.append(optgroup);
   }
   const addQuestion = button('Add the question');

@@ -11,7 +11,8 @@ import { panelEntry } from '../panels/manifest.js';
 import { questionCatalogue, questionPrompt } from './catalogue.js';
 import { buildPanelStart } from './buildPanelStart.js';
 
-const TEXT_HINT = 'Markdown: a blank line between paragraphs, *emphasis*, **strong**, - lists, [a link](https://…), $n_1 \\sin θ_1$ and $$display math$$.';
+const TEXT_HINT = 'Markdown: a blank line between paragraphs, *emphasis*, **strong**, - lists, [a link](https://…), '
+  + '$n_1 \\sin θ_1$ and $$display math$$.';
 
 function textInput(value, max, placeholder) {
   const input = /** @type {HTMLInputElement} */ (el('input'));
@@ -61,7 +62,9 @@ function questionFields(item, patch) {
   for (const group of questionCatalogue()) {
     const optgroup = /** @type {HTMLOptGroupElement} */ (el('optgroup'));
     optgroup.label = group.title;
-    for (const q of group.questions) optgroup.append(new Option(`${q.kind}: ${q.prompt.length > 110 ? `${q.prompt.slice(0, 110)}…` : q.prompt}`, q.id));
+    for (const q of group.questions) {
+      optgroup.append(new Option(`${q.kind}: ${q.prompt.length > 110 ? `${q.prompt.slice(0, 110)}…` : q.prompt}`, q.id));
+    }
     select.append(optgroup);
   }
   select.value = item.question;
@@ -71,7 +74,9 @@ function questionFields(item, patch) {
   const where = el('p', 'cp-muted');
   const show = () => {
     setSubscripted(prompt, questionPrompt(select.value, seed.value));
-    const { panel } = questionCatalogue().flatMap((g) => g.questions.map((q) => ({ ...q, panel: g.panel }))).find((q) => q.id === select.value) ?? {};
+    const { panel } = questionCatalogue()
+      .flatMap((g) => g.questions.map((q) => ({ ...q, panel: g.panel })))
+      .find((q) => q.id === select.value) ?? {};
     where.textContent = panel ? `On the panel “${panelEntry(panel).title}”; the room predicts or answers, then you reveal.` : '';
   };
   select.addEventListener('change', () => { patch({ question: select.value }); show(); });
@@ -89,7 +94,8 @@ export function buildItemEditor(item, { patch }) {
     box.append(headingField(item, patch, `optional: yours, above “${entry?.title ?? item.panel}”`),
       markdownField(item, patch, 'optional: your words before the panel'), buildPanelStart(item, { patch }));
   } else if (item.type === 'question') {
-    box.append(...questionFields(item, patch), headingField(item, patch, 'optional'), markdownField(item, patch, 'optional: what you say before asking'));
+    box.append(...questionFields(item, patch), headingField(item, patch, 'optional'),
+      markdownField(item, patch, 'optional: what you say before asking'));
   } else {
     box.append(headingField(item, patch, 'optional, e.g. Agenda'), markdownField(item, patch, ''));
   }

@@ -21,7 +21,11 @@ export function buildLectureList({ actions, editor }) {
   const element = el('div', 'cp-list-box');
   element.append(status, empty, list);
 
-  /** @type {Map<string, { card: HTMLLIElement, number: HTMLElement, name: HTMLElement, up: HTMLButtonElement, down: HTMLButtonElement }>} */
+  /**
+   * @type {Map<string, {
+   *   card: HTMLLIElement, number: HTMLElement, name: HTMLElement, up: HTMLButtonElement, down: HTMLButtonElement
+   * }>}
+   */
   const cards = new Map();
   let order = [];
 

@@ -85,7 +85,8 @@ export function buildPanelStart(initial, { patch }) {
     const locks = read.source === 'embed' || read.source === 'composed' ? { lock: read.lock, hide: read.hide } : {};
     setStart(read.state, locks);
     const taken = Object.keys(item.state).length;
-    say([`Taken from the link: ${taken ? `${fixed(taken, 0)} value${taken === 1 ? '' : 's'}` : 'the defaults'}${locks.lock ? ', and its locked and hidden controls' : ''}.`]);
+    say([`Taken from the link: ${taken ? `${fixed(taken, 0)} value${taken === 1 ? '' : 's'}` : 'the defaults'}`
+      + `${locks.lock ? ', and its locked and hidden controls' : ''}.`]);
     if (read.problems.length) result.append(...read.problems.map((p) => el('p', 'cp-problem', `Refused: ${p}`)));
   };
   use.addEventListener('click', useLink);
@@ -159,7 +160,9 @@ export function buildPanelStart(initial, { patch }) {
   const selects = new Map();
   for (const [key, spec] of Object.entries(schema)) {
     const select = /** @type {HTMLSelectElement} */ (el('select'));
-    for (const [value, text] of [['free', 'free'], ['lock', 'locked (shown, fixed)'], ['hide', 'hidden']]) select.add(new Option(text, value));
+    for (const [value, text] of [['free', 'free'], ['lock', 'locked (shown, fixed)'], ['hide', 'hidden']]) {
+      select.add(new Option(text, value));
+    }
     const label = el('label', 'cp-control');
     const name = el('span');
     setSubscripted(name, spec.label ?? key);
@@ -177,9 +180,12 @@ export function buildPanelStart(initial, { patch }) {
     });
   }
   function refreshControls() {
-    for (const [key, select] of selects) select.value = item.hide.includes(key) ? 'hide' : item.lock.includes(key) ? 'lock' : 'free';
+    for (const [key, select] of selects) {
+      select.value = item.hide.includes(key) ? 'hide' : item.lock.includes(key) ? 'lock' : 'free';
+    }
     const n = item.lock.length + item.hide.length;
-    legend.textContent = `Controls the room may change${n ? ` (${fixed(item.lock.length, 0)} locked, ${fixed(item.hide.length, 0)} hidden)` : ''}`;
+    legend.textContent = 'Controls the room may change'
+      + `${n ? ` (${fixed(item.lock.length, 0)} locked, ${fixed(item.hide.length, 0)} hidden)` : ''}`;
   }
   showSummary();
   refreshControls();

@@ -61,7 +61,9 @@ export function buildShare({ onOpen }) {
   function update({ lecture, problems: found }) {
     current = lecture && lecture.items.length ? lecture : null;
     const lines = lecture && !lecture.items.length ? ['Add at least one item.'] : found;
-    problems.replaceChildren(...(lines.length ? [el('p', null, 'What the lecture page would leave out:'), ...lines.map((p) => el('p', 'cp-problem', p))] : []));
+    problems.replaceChildren(...(lines.length
+      ? [el('p', null, 'What the lecture page would leave out:'), ...lines.map((p) => el('p', 'cp-problem', p))]
+      : []));
     link.value = current ? lectureAddress(current) : '';
     size.textContent = current ? `The link is ${fixed(link.value.length, 0)} characters long.` : '';
     for (const control of [copy, save, offline, deck]) control.disabled = !current;
@@ -92,7 +94,8 @@ export function buildShare({ onOpen }) {
     file.value = '';
     if (read.ok) onOpen(read.lecture, read.problems, chosen.name);
     else {
-      message.replaceChildren(el('p', 'cp-problem', `${chosen.name} is not a lecture the lab can open:`), ...read.problems.map((p) => el('p', 'cp-problem', p)));
+      message.replaceChildren(el('p', 'cp-problem', `${chosen.name} is not a lecture the lab can open:`),
+        ...read.problems.map((p) => el('p', 'cp-problem', p)));
     }
   });
 
@@ -108,12 +111,14 @@ export function buildShare({ onOpen }) {
     } catch {
       return say(window.location.protocol === 'file:'
         ? 'This page was opened from disk, where it may not read offline/index.html beside it: open the composer from the lab’s web server.'
-        : 'The single-file lecture page (offline/index.html beside this page) could not be read: it is made by npm run build, so open the composer from the built site.', 'problem');
+        : 'The single-file lecture page (offline/index.html beside this page) could not be read: it is made by npm run build, '
+          + 'so open the composer from the built site.', 'problem');
     }
     // The single-file page carries its scripts inline; a page that loads script files is not it
     // (the development server answers any address with the lecture page's sources).
     if (/<script[^>]+\bsrc=/i.test(page)) {
-      return say('offline/index.html here is not the single-file lecture page (the development server has none): build the site (npm run build) and open the composer from it.', 'problem');
+      return say('offline/index.html here is not the single-file lecture page (the development server has none): '
+        + 'build the site (npm run build) and open the composer from it.', 'problem');
     }
     try {
       const { offlineLectureHtml } = await import('../lecture/offlineExport.js');

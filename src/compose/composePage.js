@@ -30,7 +30,8 @@ installPageFaults((title, lines) => showNotice(notices, title, lines, { kind: 'e
 
 const intro = el('section', 'hw-intro cp-intro');
 intro.append(el('h1', null, 'Compose a lecture'),
-  el('p', null, 'Pick panels, texts and questions to the room, put them in your order, give each your own words and the view it starts from. '
+  el('p', null, 'Pick panels, texts and questions to the room, put them in your order, '
+    + 'give each your own words and the view it starts from. '
     + 'The lecture is a link: present it, share it, or carry it as one offline file or a reveal.js deck. Nothing leaves this browser.'));
 const startEmpty = button('Start an empty lecture');
 const startDefault = button('Start from the lab’s own lecture');
@@ -52,7 +53,8 @@ if (search.has('lecture')) {
     before = loadDraft().lecture;
   } else {
     kept = false; // the work kept in this browser is not overwritten by a link that could not be read
-    showNotice(notices, 'This lecture link cannot be opened:', [...read.problems, 'The lecture kept in this browser, if any, is shown instead.'], { kind: 'error' });
+    showNotice(notices, 'This lecture link cannot be opened:',
+      [...read.problems, 'The lecture kept in this browser, if any, is shown instead.'], { kind: 'error' });
   }
 }
 if (!search.has('lecture') || !kept) {
@@ -99,7 +101,9 @@ function moved(key, next) {
   commit(next);
   const to = itemIndex(draft, key);
   const name = itemName(draft.items[to]);
-  list.announce(to === from ? `“${name}” is already ${to === 0 ? 'first' : 'last'}.` : `Moved “${name}” to position ${to + 1} of ${draft.items.length}.`);
+  list.announce(to === from
+    ? `“${name}” is already ${to === 0 ? 'first' : 'last'}.`
+    : `Moved “${name}” to position ${to + 1} of ${draft.items.length}.`);
 }
 
 const share = buildShare({
@@ -117,7 +121,8 @@ function commit(next) {
   share.update(draftToLecture(draft));
   if (kept && !saveDraft(draftData(draft))) {
     kept = false;
-    showNotice(notices, 'Not kept:', ['This browser refuses the page its storage, so the lecture is lost when the page closes: download it as a file.']);
+    showNotice(notices, 'Not kept:',
+      ['This browser refuses the page its storage, so the lecture is lost when the page closes: download it as a file.']);
   }
 }
 
@@ -132,7 +137,8 @@ function add(item) {
   const added = addItem(draft, item);
   if (!added.key) return list.announce(`A lecture holds at most ${LECTURE_CAPS.items} items.`);
   commit(added.draft);
-  list.announce(`Added “${itemName(draft.items[itemIndex(draft, added.key)])}” as item ${itemIndex(draft, added.key) + 1} of ${draft.items.length}.`);
+  list.announce(`Added “${itemName(draft.items[itemIndex(draft, added.key)])}” `
+    + `as item ${itemIndex(draft, added.key) + 1} of ${draft.items.length}.`);
 }
 
 const catalogue = buildCatalogue({
@@ -148,7 +154,9 @@ columns.append(catalogue, lectureSection);
 root.append(columns, share.element);
 
 const confirmReplace = () => !draft.items.length || window.confirm(`Replace the ${draft.items.length} items of this lecture?`);
-startEmpty.addEventListener('click', () => { if (confirmReplace()) { clearDraft(); replace(emptyDraft()); list.announce('An empty lecture.'); } });
+startEmpty.addEventListener('click', () => {
+  if (confirmReplace()) { clearDraft(); replace(emptyDraft()); list.announce('An empty lecture.'); }
+});
 startDefault.addEventListener('click', () => {
   if (!confirmReplace()) return;
   replace(draftFromLecture(defaultLecture()));

@@ -32,7 +32,9 @@ export function loadDraft(storage = globalThis.localStorage) {
     return { lecture: null, problems: ['This browser refuses the page its storage, so the work is not kept between visits.'] };
   }
   if (text === null) return { lecture: null, problems: [] };
-  if (typeof text !== 'string' || text.length > MAX_STORED) return { lecture: null, problems: ['The lecture kept in this browser is too large to be one; it is not used.'] };
+  if (typeof text !== 'string' || text.length > MAX_STORED) {
+    return { lecture: null, problems: ['The lecture kept in this browser is too large to be one; it is not used.'] };
+  }
   let data;
   try {
     data = JSON.parse(text);

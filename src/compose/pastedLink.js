@@ -48,7 +48,9 @@ export function readPastedLink(text, panelId) {
   const schema = panelSchema(panelId);
   if (!schema || !panelEntry(panelId)) return { ok: false, problems: [`${rawText(panelId)} is no panel of the lab.`] };
   if (typeof text !== 'string' || !text.trim()) return { ok: false, problems: ['Paste a link copied from the panel.'] };
-  if (text.length > MAX_PASTED) return { ok: false, problems: [`The pasted text has ${text.length} characters, more than the ${MAX_PASTED} a link of a panel has.`] };
+  if (text.length > MAX_PASTED) {
+    return { ok: false, problems: [`The pasted text has ${text.length} characters, more than the ${MAX_PASTED} a link of a panel has.`] };
+  }
   const search = searchOf(text.trim());
   if (!search) return { ok: false, problems: ['This is neither a link nor key=value pairs.'] };
   /** @type {[string, string][]} */

@@ -34,7 +34,9 @@ const shadersOf = new WeakMap();
  */
 export function compileProgram(gl, fragment, { label = '', check = true } = {}) {
   const program = gl.createProgram();
-  const shaders = [['vertex', gl.VERTEX_SHADER, FULL_SCREEN_VERTEX], ['fragment', gl.FRAGMENT_SHADER, fragment]].map(([stage, type, source]) => {
+  const shaders = [
+    ['vertex', gl.VERTEX_SHADER, FULL_SCREEN_VERTEX], ['fragment', gl.FRAGMENT_SHADER, fragment],
+  ].map(([stage, type, source]) => {
     const shader = gl.createShader(type);
     gl.shaderSource(shader, source);
     gl.compileShader(shader);

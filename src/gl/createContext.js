@@ -7,7 +7,8 @@ import { currentOwner } from './faultOwner.js';
 /**
  * @param {HTMLCanvasElement} canvas
  * @param {WebGLContextAttributes} [attributes]
- * @returns {{ gl: WebGL2RenderingContext, dispose: () => void }} dispose() gives the context back now (not at GC) and its place in the budget.
+ * @returns {{ gl: WebGL2RenderingContext, dispose: () => void }} dispose() gives the context back now (not at GC)
+ *   and its place in the budget.
  */
 export function createContext(canvas, attributes = {}) {
   // No probe on a canvas of its own first (hasWebGL2): making a context costs a software GPU a

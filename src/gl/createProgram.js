@@ -37,7 +37,9 @@ export function createProgram(gl, fragment) {
   for (let i = 0; i < count; i += 1) {
     const info = gl.getActiveUniform(program, i);
     const kind = typeInfo(gl, info.type);
-    if (!kind) throw new TypeError(`The uniform ${info.name} has a type this view does not set (only float, int and bool vectors and sampler2D).`);
+    if (!kind) {
+      throw new TypeError(`The uniform ${info.name} has a type this view does not set (only float, int and bool vectors and sampler2D).`);
+    }
     const [size, isInt] = kind;
     const location = gl.getUniformLocation(program, info.name);
     const name = info.name.replace(/\[0\]$/, '');

@@ -22,7 +22,9 @@ import { onDemand } from './onDemand.js';
  * fragment is compiled with neither define and does everything in one pass. shaders/keptTerms.glsl
  * holds the fragment's side of this.
  * @param {HTMLCanvasElement} canvas
- * @param {{ fragment: string, uniforms?: Record<string, { value: any }>, onFrame?: () => void, maxPixels?: number, cache?: { live: string[] } }} options
+ * @param {{
+ *   fragment: string, uniforms?: Record<string, { value: any }>, onFrame?: () => void, maxPixels?: number, cache?: { live: string[] }
+ * }} options
  */
 export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, maxPixels = 1_500_000, cache = null }) {
   const context = createContext(canvas);

@@ -95,10 +95,11 @@ const pause = () => new Promise((resolve) => { setTimeout(resolve, 0); });
  * Times methods on a WebGL2 context (the caller owns it). Options: methods (default all),
  * precisions (default both), size (target is size × size), loops (starting loop count; it is
  * calibrated so the costliest pass takes about targetMs), passes (draws per wall-clock block),
- * bestOf (timings per sample, the fastest kept: interference only ever adds time), repeats, maxLoops, onProgress(done, total, label), signal (AbortSignal),
- * whenVisible (awaited after each method: the run pauses while its panel is off screen), chunks (shader
- * chunks, for tests), now (ms clock). Resolves to { timer, device, size, loops, passes, bestOf, repeats,
- * evaluationsPerPass, results: { highp: { id: { nsPerEval, samples } }, mediump: … }, baselineMs }.
+ * bestOf (timings per sample, the fastest kept: interference only ever adds time), repeats, maxLoops,
+ * onProgress(done, total, label), signal (AbortSignal), whenVisible (awaited after each method: the
+ * run pauses while its panel is off screen), chunks (shader chunks, for tests), now (ms clock).
+ * Resolves to { timer, device, size, loops, passes, bestOf, repeats, evaluationsPerPass,
+ * results: { highp: { id: { nsPerEval, samples } }, mediump: … }, baselineMs }.
  */
 export async function timeMethodsGpu(gl, {
   methods = METHODS, precisions = GPU_PRECISIONS, size = 128, loops = 16, targetMs = 5, passes = 2, bestOf = 3, repeats = 5,

@@ -7,5 +7,7 @@ import { LECTURE_KIND, LECTURE_VERSION } from './readLecture.js';
 export const DEFAULT_TITLE = 'Fresnel Lab: mipmapping normal maps and Fresnel reflection'; // the lecture page's title
 
 export function defaultLecture() {
-  return { kind: LECTURE_KIND, version: LECTURE_VERSION, title: DEFAULT_TITLE, items: PANELS.map(({ id }) => ({ type: 'panel', panel: id })) };
+  return {
+    kind: LECTURE_KIND, version: LECTURE_VERSION, title: DEFAULT_TITLE, items: PANELS.map(({ id }) => ({ type: 'panel', panel: id })),
+  };
 }

@@ -34,10 +34,16 @@ export function lectureFromCode(text) {
     }
   }
   code = code.replace(/\s+/g, ''); // mail wraps long links
-  if (!code.startsWith(LECTURE_CODE_PREFIX)) return { ok: false, problems: [`This is no lecture code (one starts with ${LECTURE_CODE_PREFIX}).`] };
-  if (code.length > MAX_CODE) return { ok: false, problems: [`This lecture code has ${code.length} characters, more than the ${MAX_CODE} a lecture may have.`] };
+  if (!code.startsWith(LECTURE_CODE_PREFIX)) {
+    return { ok: false, problems: [`This is no lecture code (one starts with ${LECTURE_CODE_PREFIX}).`] };
+  }
+  if (code.length > MAX_CODE) {
+    return { ok: false, problems: [`This lecture code has ${code.length} characters, more than the ${MAX_CODE} a lecture may have.`] };
+  }
   const body = code.slice(LECTURE_CODE_PREFIX.length);
-  if (!/^[A-Za-z0-9_-]*$/.test(body)) return { ok: false, problems: ['This lecture code holds characters a code never has: was it changed?'] };
+  if (!/^[A-Za-z0-9_-]*$/.test(body)) {
+    return { ok: false, problems: ['This lecture code holds characters a code never has: was it changed?'] };
+  }
   let json;
   try {
     const bytes = Uint8Array.from(atob(body.replace(/-/g, '+').replace(/_/g, '/')), (c) => c.charCodeAt(0));

@@ -17,7 +17,8 @@ md.validateLink = (url) => LINK.test(url.trim());
 
 /**
  * @typedef {{ text: string } | { math: string, display: boolean }
- *   | { tag: 'p' | 'ul' | 'ol' | 'li' | 'em' | 'strong' | 'code' | 'br' | 'a', href?: string, start?: number, children: TextNode[] }} TextNode
+ *   | { tag: 'p' | 'ul' | 'ol' | 'li' | 'em' | 'strong' | 'code' | 'br' | 'a', href?: string, start?: number,
+ *       children: TextNode[] }} TextNode
  */
 
 const BLOCK = { paragraph_open: 'p', bullet_list_open: 'ul', ordered_list_open: 'ol', list_item_open: 'li' };

@@ -25,14 +25,20 @@ const own = (o, key) => (Object.hasOwn(o, key) ? o[key] : undefined);
 function optionalText(value, max, what, problems) {
   if (value === undefined) return undefined;
   if (typeof value !== 'string') { problems.push(`${what} is not text, so it is left out.`); return undefined; }
-  if (value.length > max) { problems.push(`${what} has ${value.length} characters, more than ${max}, so it is left out.`); return undefined; }
+  if (value.length > max) {
+    problems.push(`${what} has ${value.length} characters, more than ${max}, so it is left out.`);
+    return undefined;
+  }
   return value;
 }
 
 /** A list of the panel's control keys (locked or hidden), each resolved to its schema key. */
 function keyList(value, schema, what, problems) {
   if (value === undefined) return undefined;
-  if (!Array.isArray(value) || value.length > LECTURE_CAPS.keys) { problems.push(`${what} is not a list of up to ${LECTURE_CAPS.keys} control names, so it is left out.`); return undefined; }
+  if (!Array.isArray(value) || value.length > LECTURE_CAPS.keys) {
+    problems.push(`${what} is not a list of up to ${LECTURE_CAPS.keys} control names, so it is left out.`);
+    return undefined;
+  }
   const keys = [];
   for (const name of value) {
     const key = typeof name === 'string' ? resolveKey(schema, name) : undefined;
@@ -45,7 +51,9 @@ function keyList(value, schema, what, problems) {
 function readPanelItem(item, where, problems) {
   const id = own(item, 'panel');
   const schema = typeof id === 'string' ? panelSchema(id) : undefined;
-  if (!schema || !panelEntry(id)) return problems.push(`${where}: ${rawText(id, 40)} is no panel of the lab, so the item is left out.`) && null;
+  if (!schema || !panelEntry(id)) {
+    return problems.push(`${where}: ${rawText(id, 40)} is no panel of the lab, so the item is left out.`) && null;
+  }
   const out = { type: 'panel', panel: id };
   const state = own(item, 'state');
   if (state !== undefined) {
@@ -68,7 +76,9 @@ function readPanelItem(item, where, problems) {
 
 function readQuestionItem(item, where, problems) {
   const id = own(item, 'question');
-  if (typeof id !== 'string' || !questionById(id)) return problems.push(`${where}: ${rawText(id, 40)} is no question of the homework bank, so the item is left out.`) && null;
+  if (typeof id !== 'string' || !questionById(id)) {
+    return problems.push(`${where}: ${rawText(id, 40)} is no question of the homework bank, so the item is left out.`) && null;
+  }
   const out = { type: 'question', question: id };
   const seed = optionalText(own(item, 'seed'), LECTURE_CAPS.seed, `${where}, its seed`, problems);
   if (seed !== undefined && seed.trim()) out.seed = seed.trim();
@@ -81,15 +91,23 @@ function readItem(item, i, problems) {
   if (!isObject(item)) return problems.push(`${where} is not an item, so it is left out.`) && null;
   const type = own(item, 'type');
   const fields = typeof type === 'string' && Object.hasOwn(ITEM_FIELDS, type) ? ITEM_FIELDS[type] : null;
-  if (!fields) return problems.push(`${where}: ${rawText(type, 40)} is no kind of item (panel, text or question), so it is left out.`) && null;
-  for (const key of Object.keys(item)) if (!fields.includes(key)) problems.push(`${where}: ${rawText(key, 40)} is no field of a ${type} item, so it is left out.`);
-  const out = type === 'panel' ? readPanelItem(item, where, problems) : type === 'question' ? readQuestionItem(item, where, problems) : { type: 'text' };
+  if (!fields) {
+    return problems.push(`${where}: ${rawText(type, 40)} is no kind of item (panel, text or question), so it is left out.`) && null;
+  }
+  for (const key of Object.keys(item)) {
+    if (!fields.includes(key)) problems.push(`${where}: ${rawText(key, 40)} is no field of a ${type} item, so it is left out.`);
+  }
+  const out = type === 'panel' ? readPanelItem(item, where, problems)
+    : type === 'question' ? readQuestionItem(item, where, problems)
+    : { type: 'text' };
   if (!out) return null;
   const heading = optionalText(own(item, 'heading'), LECTURE_CAPS.heading, `${where}, its heading`, problems);
   const text = optionalText(own(item, 'text'), LECTURE_CAPS.text, `${where}, its text`, problems);
   if (heading?.trim()) out.heading = heading.trim();
   if (text?.trim()) out.text = text.trim();
-  if (type === 'text' && !out.text && !out.heading) return problems.push(`${where} is a text item without text, so it is left out.`) && null;
+  if (type === 'text' && !out.text && !out.heading) {
+    return problems.push(`${where} is a text item without text, so it is left out.`) && null;
+  }
   return out;
 }
 
@@ -100,10 +118,21 @@ function readItem(item, i, problems) {
  */
 export function readLecture(data) {
   if (!isObject(data)) return { ok: false, problems: ['A lecture is a JSON object with a title and a list of items.'] };
-  if (own(data, 'kind') !== LECTURE_KIND) return { ok: false, problems: [`This is not a lecture (its kind is ${rawText(own(data, 'kind'), 40)}, not ${LECTURE_KIND}).`] };
-  if (own(data, 'version') !== LECTURE_VERSION) return { ok: false, problems: [`This lecture is version ${rawText(own(data, 'version'), 20)}; this page reads version ${LECTURE_VERSION}.`] };
+  if (own(data, 'kind') !== LECTURE_KIND) {
+    return { ok: false, problems: [`This is not a lecture (its kind is ${rawText(own(data, 'kind'), 40)}, not ${LECTURE_KIND}).`] };
+  }
+  if (own(data, 'version') !== LECTURE_VERSION) {
+    return {
+      ok: false,
+      problems: [`This lecture is version ${rawText(own(data, 'version'), 20)}; this page reads version ${LECTURE_VERSION}.`],
+    };
+  }
   const problems = [];
-  for (const key of Object.keys(data)) if (!['kind', 'version', 'title', 'items'].includes(key)) problems.push(`${rawText(key, 40)} is no field of a lecture, so it is left out.`);
+  for (const key of Object.keys(data)) {
+    if (!['kind', 'version', 'title', 'items'].includes(key)) {
+      problems.push(`${rawText(key, 40)} is no field of a lecture, so it is left out.`);
+    }
+  }
   const title = optionalText(own(data, 'title'), LECTURE_CAPS.title, 'The title', problems)?.trim() || 'A lecture';
   const raw = own(data, 'items');
   if (!Array.isArray(raw)) return { ok: false, problems: ['A lecture holds a list of items.'] };

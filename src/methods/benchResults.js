@@ -84,7 +84,8 @@ export function benchResults({ gpu = null, cpu = null, frames = null, gpuErrors 
         mediump: mediump ? { nsPerEval: mediump.nsPerEval, samples: mediump.samples } : null,
       } : null,
       cpu: cpu?.methods?.[m.id]
-        ? { context: 'fp64', where: cpu.where ?? 'page', nsPerEval: cpu.methods[m.id].nsPerEval, samples: cpu.methods[m.id].samples } : null,
+        ? { context: 'fp64', where: cpu.where ?? 'page', nsPerEval: cpu.methods[m.id].nsPerEval, samples: cpu.methods[m.id].samples }
+        : null,
       error: methodErrors(m, gpuErrors),
     };
   });
@@ -103,7 +104,8 @@ export function benchResults({ gpu = null, cpu = null, frames = null, gpuErrors 
     config: {
       ...meta.config,
       gpu: gpu ? {
-        size: gpu.size, loops: gpu.loops, passes: gpu.passes, bestOf: gpu.bestOf, repeats: gpu.repeats, evaluationsPerPass: gpu.evaluationsPerPass,
+        size: gpu.size, loops: gpu.loops, passes: gpu.passes, bestOf: gpu.bestOf, repeats: gpu.repeats,
+        evaluationsPerPass: gpu.evaluationsPerPass,
       } : null,
     },
     methods,
@@ -136,7 +138,9 @@ export function benchCsv(results) {
   const m = results.methods;
   const col = (f) => m.map((row) => f(row) ?? NaN);
   const columns = { method: m.map((row) => row.id), kind: m.map((row) => row.kind), static_cost: col((r) => r.staticCost) };
-  for (const [name, get] of [['gpu_highp', (r) => r.gpu?.nsPerEval], ['gpu_mediump', (r) => r.gpu?.mediump?.nsPerEval], ['cpu_fp64', (r) => r.cpu?.nsPerEval]]) {
+  for (const [name, get] of [
+    ['gpu_highp', (r) => r.gpu?.nsPerEval], ['gpu_mediump', (r) => r.gpu?.mediump?.nsPerEval], ['cpu_fp64', (r) => r.cpu?.nsPerEval],
+  ]) {
     for (const stat of ['median', 'min', 'max']) columns[`${name}_ns_${stat}`] = col((r) => get(r)?.[stat]);
   }
   const errorColumns = { ...Object.fromEntries(PRECISION_IDS.map((p) => [p, p])), gpuHighp: 'gpu_highp', gpuMediump: 'gpu_mediump' };
@@ -163,9 +167,11 @@ export function benchTable(results) {
   const f = results.frames;
   if (f) {
     out.push('', `Frames at ${f.width}×${f.height} CSS px: hero spheres ${ns(f.spheres.msPerFrame)} ms, `
-      + `three.js MeshPhysicalMaterial ${ns(f.threePhysical.msPerFrame)} ms, hero/peer ${fixed(f.ratio, 2)}${f.timer ? ` (${f.timer})` : ''}`);
+      + `three.js MeshPhysicalMaterial ${ns(f.threePhysical.msPerFrame)} ms, `
+      + `hero/peer ${fixed(f.ratio, 2)}${f.timer ? ` (${f.timer})` : ''}`);
   }
   out.push(`Device: ${results.device.renderer ?? 'no WebGL2'}; timer: ${results.device.timer ?? '–'}`
-    + `; errors: JS emulation (fp64, fp32, fp16)${results.methods.some((r) => r.error.gpuHighp) ? ' and read back from this GPU (highp, mediump)' : ''}`);
+    + '; errors: JS emulation (fp64, fp32, fp16)'
+    + `${results.methods.some((r) => r.error.gpuHighp) ? ' and read back from this GPU (highp, mediump)' : ''}`);
   return out.join('\n');
 }

@@ -237,7 +237,8 @@ export const METHODS = Object.freeze([
   conductor('conductor-exact', 'Exact conductor (n + ik)', { static: 32, alu: 20, sfu: 4 },
     { short: 'Exact conductor', note: 'SPIR-V count: 26 fp-arith + 3 fma + 2 sqrt + 1 max (vec3)' }, conductorExact),
   conductor('conductor-schlick', 'Schlick with F0 per channel', { static: 6, alu: 5, sfu: 0 },
-    { short: 'Schlick, F0 per channel', note: 'SPIR-V count: the multiplications-only Schlick on vec3 F0' }, (P, c, _n, _k, f0) => schlickMul(P, c, f0)),
+    { short: 'Schlick, F0 per channel', note: 'SPIR-V count: the multiplications-only Schlick on vec3 F0' },
+    (P, c, _n, _k, f0) => schlickMul(P, c, f0)),
   conductor('conductor-f82', 'F82-tint (Hoffman 2019, Kutz et al. 2021)', { static: 13, alu: 9, sfu: 0 },
     { short: 'F82-tint', note: 'SPIR-V count: 11 fp-arith + 2 clamp (vec3), b precomputed' }, conductorF82),
 ].map((method) => Object.freeze(method)));

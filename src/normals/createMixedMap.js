@@ -1,7 +1,8 @@
 // Mixed map: a blocks × blocks grid of regions, each flat, bumps, grooves, slope checker or value
 // noise, so per-texel gloss varies across the map (like the RenderMonkey map of Hill's "Specular
-// Showdown", 2011, chosen for its mix of rough and smooth areas). The child maps have periods that divide the block side, so each block holds whole
-// periods; region borders are creases, as in a painted map.
+// Showdown", 2011, chosen for its mix of rough and smooth areas). The child maps have periods that
+// divide the block side, so each block holds whole periods; region borders are creases, as in a
+// painted map.
 import { createBumps } from './createBumps.js';
 import { createGrooves } from './createGrooves.js';
 import { createSlopeChecker } from './createSlopeChecker.js';

@@ -5,7 +5,12 @@
 import { PANELS, panelEntry } from './manifest.js';
 import { panelSchema } from './panelSchema.js';
 
-/** @typedef {{ schema?: import('../host/panelContract.js').Schema, mount?: import('../host/panelContract.js').PanelDefinition['mount'] }} PanelModule */
+/**
+ * @typedef {{
+ *   schema?: import('../host/panelContract.js').Schema,
+ *   mount?: import('../host/panelContract.js').PanelDefinition['mount']
+ * }} PanelModule
+ */
 const modules = /** @type {Record<string, () => Promise<PanelModule>>} */ (import.meta.glob('./*/index.js'));
 const moduleOf = (id) => (Object.hasOwn(modules, `./${id}/index.js`) ? modules[`./${id}/index.js`] : undefined);
 

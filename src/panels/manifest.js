@@ -43,7 +43,8 @@ export const PANELS = Object.freeze([
     title: "Exact Fresnel vs Schlick's approximation",
     lede: `Each sphere is shaded with the lecture's coat model, k = (1 − F)·k<sub>d</sub> + F·k<sub>s</sub>: a diffuse colour
         and a mirrored sky weighed by one F at the view angle (a heuristic; Fresnel in lighting below shows how a layered
-        coat differs). The first sphere takes the exact Fresnel reflectance, the second Schlick's cheap polynomial, the third shows how far apart they are.
+        coat differs). The first sphere takes the exact Fresnel reflectance, the second Schlick's cheap polynomial, `
+      + `the third shows how far apart they are.
         Both agree head-on and part near the rim, where the view grazes the surface.
         Swap the indices to look out of the glass: past the critical angle all light is reflected, and Schlick misses it.`,
     cite: 'Lecture: “Reflection Math”, “Fresnel Reflection in Lighting”.',
@@ -252,7 +253,8 @@ export function lecturePrefix(id) {
 /** The lecture page's <section> for a panel: heading, lede with its citation, and the mount point. */
 export function sectionHtml(entry) {
   const heading = entry.titleHtml ?? entry.title.replace(/&/g, '&amp;').replace(/</g, '&lt;');
-  return `<section data-panel="${entry.id}" id="${entry.id}" class="panel${entry.hero ? ' hero' : ''}" tabindex="-1" aria-labelledby="${entry.id}-title">
+  return `<section data-panel="${entry.id}" id="${entry.id}" class="panel${entry.hero ? ' hero' : ''}" tabindex="-1" `
+    + `aria-labelledby="${entry.id}-title">
       <h2 id="${entry.id}-title">${heading}</h2>
       <p class="lede">
         ${entry.lede.trim()}
@@ -301,7 +303,8 @@ export function manifestProblems(files, indexHtml, panels = PANELS) {
     if (!/^[a-z0-9]+(-[a-z0-9]+)*$/.test(id)) problems.push(`The id “${id}” is not lower-case words joined by hyphens.`);
     if (!files.includes(`${id}/index.js`)) problems.push(`The panel “${id}” has no module src/panels/${id}/index.js.`);
     if (!files.includes(`${id}/schema.js`)) {
-      problems.push(`The panel “${id}” has no src/panels/${id}/schema.js: its parameters (export const schema) come with the page, apart from its module.`);
+      problems.push(`The panel “${id}” has no src/panels/${id}/schema.js: `
+        + 'its parameters (export const schema) come with the page, apart from its module.');
     }
     for (const field of ['title', 'lede', 'cite']) {
       if (typeof entry[field] !== 'string' || !entry[field].trim()) problems.push(`The panel “${id}” has no ${field}.`);
@@ -310,7 +313,8 @@ export function manifestProblems(files, indexHtml, panels = PANELS) {
     for (const layout of Object.keys(PLACE_LAYOUTS)) {
       const height = entry.place?.[layout];
       if (!(Number.isFinite(height) && height > 0)) {
-        problems.push(`The panel “${id}” has no place.${layout}: the height in px the lecture page keeps for it before it mounts (docs/panels.md).`);
+        problems.push(`The panel “${id}” has no place.${layout}: `
+          + 'the height in px the lecture page keeps for it before it mounts (docs/panels.md).');
       }
     }
   }
