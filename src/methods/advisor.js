@@ -82,7 +82,9 @@ function measure(scene, method, P) {
 function describe(row) {
   const where = row.thetaAtMax === null ? '' : ` at ${toDegrees(row.thetaAtMax).toFixed(1)}°`;
   if (row.nanCount > 0) return `${row.label} (NaN or Infinity at ${row.nanCount} samples)`;
-  return `${row.label} (max |ΔR| ${row.max.toPrecision(2)}${where}, ${row.maxCodes.toFixed(2)} codes)`;
+  // A real minus sign in the exponent, as src/ui/format.js writes shown numbers (methods stays apart from ui).
+  const max = row.max.toPrecision(2).replace('e+', 'e').replaceAll('-', '\u2212');
+  return `${row.label} (max |ΔR| ${max}${where}, ${row.maxCodes.toFixed(2)} codes)`;
 }
 
 /**

@@ -15,6 +15,12 @@ export function sci(value, digits = 6) {
   return value.toExponential(digits).replaceAll('-', MINUS).replace('e+', 'e');
 }
 
+/** `digits` significant digits, as toPrecision writes them (3.14, 2.9e−7), with a real minus sign. */
+export function precise(value, digits = 6) {
+  if (!Number.isFinite(value)) return Number.isNaN(value) ? '—' : String(value).replace('-', MINUS);
+  return value.toPrecision(digits).replaceAll('-', MINUS).replace('e+', 'e');
+}
+
 /** An angle in degrees, 56.31°. */
 export function angle(deg, digits = 2) {
   return `${fixed(deg, digits)}°`;

@@ -1,5 +1,5 @@
 import { describe, it, expect } from 'vitest';
-import { angle, fixed, markupNumber, MINUS, rounded, sci } from '../../src/ui/format.js';
+import { angle, fixed, markupNumber, MINUS, precise, rounded, sci } from '../../src/ui/format.js';
 
 describe('format: shown numbers', () => {
   it('writes a negative number with the minus sign U+2212, never a hyphen', () => {
@@ -24,5 +24,16 @@ describe('format: numbers that are not shown', () => {
     expect(rounded(0.04000000000000001, 3)).toBe(0.04);
     expect(rounded(1.000293, 6)).toBe(1.000293);
     expect(rounded(0.16955, 3)).toBe(0.17);
+  });
+});
+
+describe('precise', () => {
+  it('writes significant digits with a real minus sign and no e+', () => {
+    expect(precise(3.14159, 3)).toBe('3.14');
+    expect(precise(2.9e-7, 2)).toBe('2.9e\u22127');
+    expect(precise(-0.000123456, 3)).toBe('\u22120.000123');
+    expect(precise(12345678, 2)).toBe('1.2e7');
+    expect(precise(NaN)).toBe('—');
+    expect(precise(-Infinity)).toBe('\u2212Infinity');
   });
 });

@@ -152,7 +152,7 @@ export function mount(root, ctx) {
     notes.R.textContent = terms.tir ? 'total internal reflection: the code returns 1' : 'reflectance';
     exactOut.textContent = fixed(exact);
     polarOut.textContent = `${fixed(0.5 * (s + p))}  (Rs ${fixed(s, 4)}, Rp ${fixed(p, 4)})`;
-    diffOut.textContent = Math.abs(terms.R - exact).toExponential(1);
+    diffOut.textContent = sci(Math.abs(terms.R - exact), 1);
 
     panel.classList.toggle('xf-tir', terms.tir);
     if (terms.tir) {

@@ -4,11 +4,11 @@
 // come from the GPU (evaluateSource in src/gl/evaluateMethodsGpu.js), the cases from gradingCases.js.
 import { caseText } from './gradingCases.js';
 import { criterion } from './exercises.js';
-import { fixed } from '../../ui/format.js';
+import { fixed, sci } from '../../ui/format.js';
 
 const SLACK = 1e-6;
 // A value in a reason: four decimals, a tiny one in two digits (1.2e-5), NaN and ±Infinity by name.
-const num = (x) => (!Number.isFinite(x) ? String(x) : x === 0 ? '0' : Math.abs(x) >= 1e-3 ? fixed(x, 4) : x.toExponential(1));
+const num = (x) => (!Number.isFinite(x) ? String(x) : x === 0 ? '0' : Math.abs(x) >= 1e-3 ? fixed(x, 4) : sci(x, 1));
 
 /** The values of case i: one number (dielectric) or three (conductor channels). */
 const channelsOf = (values, i, width) => (width === 1 ? [values[i]] : Array.from(values.subarray(i * 3, i * 3 + 3)));

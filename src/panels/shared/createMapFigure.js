@@ -2,6 +2,7 @@
 // cells per class), as the stability panel and the shader lab show them; drawn by drawMap.js.
 import { el } from '../../ui/el.js';
 import { context2d } from '../../ui/context2d.js';
+import { precise } from '../../ui/format.js';
 import { CLASS_NAMES } from '../../methods/stabilityMap.js';
 import { CLASS_COLORS } from './drawMap.js';
 import './stabilityMaps.css';
@@ -55,7 +56,7 @@ export function createMapFigure(side, { focusable = true } = {}) {
     },
     setCounts(map) {
       for (const cls of CLASS_NAMES) cells[cls].textContent = map ? String(map.counts[cls]) : '–';
-      max.textContent = map ? `largest finite |R − R_exact|: ${map.maxError.toPrecision(3)}` : '';
+      max.textContent = map ? `largest finite |R − R_exact|: ${precise(map.maxError, 3)}` : '';
     },
     showMessage(text) {
       message.textContent = text;

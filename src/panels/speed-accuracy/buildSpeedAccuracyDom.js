@@ -4,7 +4,7 @@
 import { button, el } from '../../ui/el.js';
 import { toDegrees } from '../../optics/angles.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
-import { angle } from '../../ui/format.js';
+import { angle, sci } from '../../ui/format.js';
 import { formatCodes } from './formatMeasures.js';
 
 export function buildSpeedAccuracyDom(host, { onRun, onCancel, onJson }) {
@@ -101,8 +101,7 @@ export function buildSpeedAccuracyDom(host, { onRun, onCancel, onJson }) {
         const where = r.nanCount > 0 ? `NaN at ${r.nanCount} samples`
           : r.thetaAtMax === null ? '–' : `${angle(toDegrees(r.thetaAtMax), 1)}, ${r.caseText}`;
         const verdict = `${r.passes ? 'within' : 'over'} ${budgetCodes} codes${r.onFront ? ', on the front' : ''}`;
-        // |ΔR| as toExponential writes it, as formatCodes does (formatMeasures.js says why).
-        const max = Number.isFinite(r.max) ? r.max.toExponential(2) : 'NaN/∞';
+        const max = Number.isFinite(r.max) ? sci(r.max, 2) : 'NaN/∞';
         const cells = [r.costText, formatCodes(r.maxCodes), where, formatCodes(r.meanCodes), max, verdict];
         tr.append(name, ...cells.map((t) => el('td', '', t)));
         return tr;

@@ -1,19 +1,18 @@
 // @ts-check
 // The speed-accuracy panel's numbers as it shows them: display errors in 8-bit codes and timings
 // as a median with its spread. Through ui/format.js, so a negative time (a method's pass less the
-// baseline's, within noise) carries a real minus sign. Small errors keep toExponential's form
-// (1.2e-4): the wider U+2212 in every exponent widens the table's columns and re-wraps the table.
-import { fixed, MINUS } from '../../ui/format.js';
+// baseline's, within noise) and every small error's exponent (1.2e−4) carry a real minus sign.
+import { fixed, precise, sci } from '../../ui/format.js';
 
 /** Codes to a short string: small values in scientific notation, NaN/∞ as words. */
 export function formatCodes(/** @type {number} */ v) {
   if (v === Infinity || Number.isNaN(v)) return 'NaN/∞';
   if (v === 0) return '0';
-  return v < 0.01 ? v.toExponential(1) : v < 10 ? fixed(v, 2) : fixed(v, 1);
+  return v < 0.01 ? sci(v, 1) : v < 10 ? fixed(v, 2) : fixed(v, 1);
 }
 
 /** Two significant digits, as toPrecision writes them, with a real minus sign. */
-const twoDigits = (/** @type {number} */ v) => v.toPrecision(2).replace('e+', 'e').replaceAll('-', MINUS);
+const twoDigits = (/** @type {number} */ v) => precise(v, 2);
 
 /** A spread { median, min, max } of nanoseconds as "median ns [min, max]", '–' when there is none. */
 export function formatNs(/** @type {{ median: number, min: number, max: number } | null | undefined} */ spread) {

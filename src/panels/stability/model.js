@@ -10,7 +10,7 @@ import { cellAt, classifyGrid, criticalAngleDeg, gridInputs } from '../../method
 import { methodById } from '../../methods/methods.js';
 import { contextFor } from '../../methods/rounding.js';
 import { classify, classifyValue, CLASS_NAMES } from '../../methods/stabilityMap.js';
-import { fixed } from '../../ui/format.js';
+import { fixed, precise as significant } from '../../ui/format.js';
 import { CLASS_LABELS } from '../shared/createMapFigure.js';
 import { isStaleRun } from '../shared/createRunGate.js';
 
@@ -38,7 +38,7 @@ export function pairFor(precision) {
 }
 
 // Six significant digits: a value beside the exact R, NaN and ±Infinity as JavaScript names them.
-const precise = (v) => (Number.isFinite(v) ? v.toPrecision(6) : String(v));
+const precise = (v) => (Number.isFinite(v) ? significant(v, 6) : String(v));
 const failing = (map) => map.width * map.height - map.counts.fine;
 
 /**
@@ -157,7 +157,7 @@ export function createStabilityModel({ values, gpu, onRead = () => {} }) {
     },
     describe() {
       const method = methodById(values.method);
-      const words = (map) => `${map.counts.fine} fine, ${map.counts.aboveTolerance} with error above ${values.tolerance.toPrecision(3)}, `
+      const words = (map) => `${map.counts.fine} fine, ${map.counts.aboveTolerance} with error above ${significant(values.tolerance, 3)}, `
         + `${map.counts.outOfRange} outside [0, 1] and ${map.counts.notFinite} NaN or infinite`;
       const gpuText = maps.gpu ? `on this GPU in ${pair.gpu}: ${words(maps.gpu)}` : 'no GPU map (no float render targets)';
       const mediump = fullMediump() ? ' mediump runs at full precision on this GPU.' : '';
