@@ -265,7 +265,8 @@ export function createPanelHost(container, panel, {
       gui = null;
       toolbar.hidden = true;
       content.replaceChildren();
-      showNotice(noticeHost, `The ${panel.title} panel could not start.`, [error.message, 'The other panels are not affected; reload the page to try again.'], { kind: 'error' });
+      showNotice(noticeHost, `The ${panel.title} panel could not start.`,
+        [error.message, 'The other panels are not affected; reload the page to try again.'], { kind: 'error' });
       throw error;
     } finally {
       mounting = false;

@@ -85,7 +85,8 @@ export async function makePoster({ picture, title, link, colours }) {
 
   g.fillStyle = colours.muted;
   g.font = '500 30px system-ui, sans-serif';
-  const lead = local ? 'Opened from disk: this link opens on this computer only' : matrix ? 'Explore it live: scan the code or open' : 'Explore it live: open';
+  const lead = local ? 'Opened from disk: this link opens on this computer only'
+    : matrix ? 'Explore it live: scan the code or open' : 'Explore it live: open';
   g.fillText(lead, margin, qr.y, qr.x - 2 * margin);
   // The link in full beside the code, wrapped at any character; a long link takes a smaller type
   // rather than being cut (the code holds all of it either way).

@@ -76,7 +76,8 @@ export function createPanelFaults({ title, restart }) {
 }
 
 // Input events whose listeners are the panel's own (drags, keys, controls).
-const INPUTS = ['pointerdown', 'pointermove', 'pointerup', 'click', 'dblclick', 'keydown', 'keyup', 'input', 'change', 'wheel', 'touchstart', 'touchmove', 'focusin'];
+const INPUTS = ['pointerdown', 'pointermove', 'pointerup', 'click', 'dblclick', 'keydown', 'keyup', 'input', 'change', 'wheel',
+  'touchstart', 'touchmove', 'focusin'];
 /** @type {PanelFaults | null} */
 let inputOwner = null;
 let clearing = 0;

@@ -4,7 +4,8 @@
 // (in the manner of PhET's query-parameter tables).
 //
 // Spec fields: type ('number' | 'enum' | 'color' | 'boolean' | 'text'), default, label, and
-// for numbers min, max, step and, for an index or a count, integer: true (a whole number only); for enums options (an array of values, or { value: label });
+// for numbers min, max, step and, for an index or a count, integer: true (a whole number only);
+// for enums options (an array of values, or { value: label });
 // for texts maxLength and optionally encode/decode, a compact form for the link (decode also
 // takes the plain text, which messages send; it returns null for a form it cannot read);
 // optionally aliases: older keys that still read (links and decks made before a rename keep working).
@@ -69,7 +70,9 @@ export function parseValue(spec, raw) {
       return { ok: true, value: value + 0 }; // -0 is 0: it would print as −0 and write a link of its own
     }
     case 'enum': {
-      if (!['string', 'number', 'boolean'].includes(typeof raw)) return { ok: false, reason: `is not one of ${enumValues(spec).join(', ')}` };
+      if (!['string', 'number', 'boolean'].includes(typeof raw)) {
+        return { ok: false, reason: `is not one of ${enumValues(spec).join(', ')}` };
+      }
       const value = String(raw);
       if (!enumValues(spec).includes(value)) return { ok: false, reason: `is not one of ${enumValues(spec).join(', ')}` };
       return { ok: true, value };
@@ -148,8 +151,12 @@ export function readParams(schema, search, prefix = '') {
     if (name === undefined) continue;
     const raw = search.get(name);
     const result = parseValue(spec, raw);
-    if (result.ok) values[key] = result.value;
-    else problems.push({ key: name, raw, reason: result.reason, fallback: spec.type === 'text' ? spec.defaultText ?? 'an empty text' : formatValue(spec, spec.default) });
+    if (result.ok) {
+      values[key] = result.value;
+    } else {
+      const fallback = spec.type === 'text' ? spec.defaultText ?? 'an empty text' : formatValue(spec, spec.default);
+      problems.push({ key: name, raw, reason: result.reason, fallback });
+    }
   }
   return { values, problems };
 }

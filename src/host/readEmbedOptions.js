@@ -21,7 +21,8 @@ const list = (raw) => raw.split(',').map((k) => k.trim()).filter(Boolean).slice(
 export function parseOrigin(raw) {
   try {
     const url = new URL(raw);
-    const bare = url.pathname === '/' && !url.search && !url.hash && !url.username && !url.password && !raw.includes('?') && !raw.includes('#');
+    const bare = url.pathname === '/' && !url.search && !url.hash && !url.username && !url.password
+      && !raw.includes('?') && !raw.includes('#');
     return /^https?:$/.test(url.protocol) && bare ? url.origin : null;
   } catch {
     return null;
@@ -30,7 +31,9 @@ export function parseOrigin(raw) {
 
 /** @param {URLSearchParams} search */
 export function readEmbedOptions(search) {
-  const options = { theme: null, projector: null, reducedMotion: null, audio: false, lock: [], hide: [], controls: true, parentOrigin: null };
+  const options = {
+    theme: null, projector: null, reducedMotion: null, audio: false, lock: [], hide: [], controls: true, parentOrigin: null,
+  };
   const problems = [];
   const bad = (key, raw, reason) => problems.push({ key, raw, reason });
   if (search.has('theme')) {

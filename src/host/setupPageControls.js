@@ -41,6 +41,7 @@ export function setupPageControls(bar, { onMaterial = null } = {}) {
 
   // A page without panels of its own (the homework page, whose panels sit in frames) has no
   // material or controls to set.
-  bar.append(label('Theme ', scheme), label('Projector ', projector), ...(onMaterial ? [label('Material in every panel ', material), hide] : []));
+  bar.append(label('Theme ', scheme), label('Projector ', projector),
+    ...(onMaterial ? [label('Material in every panel ', material), hide] : []));
   return { toggleControls, material };
 }
