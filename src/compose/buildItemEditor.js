@@ -68,7 +68,7 @@ function questionFields(item, patch) {
     select.append(optgroup);
   }
   select.value = item.question;
-  const seed = textInput(item.seed, LECTURE_CAPS.seed, 'empty: the example numbers');
+  const seed = textInput(item.seed, LECTURE_CAPS.seed, 'empty: the numbers the lecture page shows');
   const prompt = el('p', 'cp-prompt');
   prompt.setAttribute('aria-live', 'polite');
   const where = el('p', 'cp-muted');

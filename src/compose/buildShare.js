@@ -123,7 +123,8 @@ export function buildShare({ onOpen }) {
     try {
       const { offlineLectureHtml } = await import('../lecture/offlineExport.js');
       downloadText(`${fileSlug(lecture.title)}.html`, offlineLectureHtml(page, lecture), 'text/html');
-      say('The offline lecture is saved: one HTML file that opens from a USB stick, with no server.');
+      say('The offline lecture is saved: one HTML file that opens from a USB stick, with no server. '
+        + 'Put it in the lab\'s offline folder, beside embed.html: a question\'s panel and Copy embed code open that page.');
     } catch (error) {
       say(error instanceof Error ? error.message : String(error), 'problem');
     }

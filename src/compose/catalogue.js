@@ -1,10 +1,11 @@
 // @ts-check
 // What the composer offers: every panel of the manifest by its title and lede as plain text (the
 // manifest's ledes are HTML written for the lecture page; the composer shows them as text only),
-// and every question of the homework bank by its prompt, with the example numbers its seed gives.
+// and every question of the homework bank by its prompt, with the numbers the room gets (ROOM_SEED) or its seed gives.
 import { PANELS, panelEntry } from '../panels/manifest.js';
 import { KIND_NAMES, QUESTIONS as BANK } from '../homework/questions.js';
 import { questionParams } from '../homework/gradeAnswer.js';
+import { ROOM_SEED } from '../lecture/readLecture.js';
 
 /** The bank's questions (plain objects the homework modules describe). */
 const QUESTIONS = /** @type {any[]} */ (BANK);
@@ -43,14 +44,14 @@ export function questionCatalogue() {
     panel: p.id,
     title: p.title,
     questions: QUESTIONS.filter((q) => q.panel === p.id)
-      .map((q) => ({ id: q.id, kind: KIND_NAMES[q.kind], prompt: q.prompt(questionParams(q, 'example')) })),
+      .map((q) => ({ id: q.id, kind: KIND_NAMES[q.kind], prompt: q.prompt(questionParams(q, ROOM_SEED)) })),
   })).filter((group) => group.questions.length);
 }
 
-/** A question's prompt with the numbers a seed gives (the example seed when none). */
+/** A question's prompt with the numbers a seed gives (with none, the room's: ROOM_SEED, as the page and the deck). */
 export function questionPrompt(id, seed = '') {
   const q = QUESTIONS.find((question) => question.id === id);
-  return q ? q.prompt(questionParams(q, seed.trim() || 'example')) : '';
+  return q ? q.prompt(questionParams(q, seed.trim() || ROOM_SEED)) : '';
 }
 
 /** The title of a question's panel. */

@@ -17,12 +17,13 @@ import { KIND_NAMES, questionById } from '../homework/questions.js';
 import { expectedValue, questionParams, trueOption } from '../homework/gradeAnswer.js';
 import { formatTolerance, formatValue } from '../homework/formatAnswer.js';
 import { escapeHtml, lectureTextHtml, subscriptedHtml } from './lectureTextHtml.js';
+import { ROOM_SEED } from './readLecture.js';
 
 /** Plot-only panels that create a WebGL context for a while (the manifest's webgl is false). */
 const HOLDS_CONTEXT_AT_TIMES = ['speed-accuracy'];
 
-/** The seed of a question item that names none: the same numbers in every copy of the deck. */
-export const DEFAULT_QUESTION_SEED = 'lecture';
+/** The seed of a question item that names none (readLecture.js): the numbers the room gets on the page. */
+export const DEFAULT_QUESTION_SEED = ROOM_SEED;
 
 /**
  * The embed page's link for a panel: `base?panel=ID`, the values that differ from the panel's
@@ -53,11 +54,11 @@ function frameHtml(src, id, { short }) {
 const textHtml = (text) => (text ? `\n  <div class="fl-text">${lectureTextHtml(text)}</div>` : '');
 
 function panelSlide(item, n, frame) {
-  const entry = panelEntry(item.panel);
-  const heading = item.heading ? escapeHtml(item.heading) : subscriptedHtml(entry.title);
+  // Without a heading of the lecturer's the slide has none: the embed shows the panel's title itself.
+  const heading = item.heading ? `<h2>${escapeHtml(item.heading)}</h2>` : '';
   const src = embedSource(frame.embedUrl, item.panel, { ...item, theme: frame.theme, projector: frame.projector });
   return `<section class="fl-panel" data-item="${n}" data-item-type="panel" data-panel="${escapeHtml(item.panel)}">
-  <h2>${heading}</h2>${textHtml(item.text)}
+  ${heading}${textHtml(item.text)}
   ${frameHtml(src, item.panel, { short: Boolean(item.text) })}
 </section>`;
 }

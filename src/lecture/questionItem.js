@@ -7,9 +7,8 @@ import { questionById } from '../homework/questions.js';
 import { questionParams } from '../homework/gradeAnswer.js';
 import { buildQuestionCard } from '../homework/page/buildQuestionCard.js';
 import { button } from '../ui/el.js';
+import { ROOM_SEED } from './readLecture.js';
 
-// Without a seed of its own a question draws its numbers from this one: the same on every screen.
-const ROOM_SEED = 'lecture';
 
 /** Each { section, item, number } gets its card and a "Reveal the answer" button. Returns the cards. */
 export function askQuestions(questions) {

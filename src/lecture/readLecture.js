@@ -11,6 +11,9 @@ import { questionById } from '../homework/questions.js';
 
 export const LECTURE_KIND = 'fresnel-lab-lecture';
 export const LECTURE_VERSION = 1;
+/** The seed of a question item that names none: the same numbers on the page, in the deck and in the composer. */
+export const ROOM_SEED = 'lecture';
+
 export const LECTURE_CAPS = Object.freeze({ items: 80, title: 200, heading: 200, text: 4000, keys: 64, seed: 64 });
 const ITEM_FIELDS = {
   panel: ['type', 'panel', 'state', 'lock', 'hide', 'heading', 'text'],

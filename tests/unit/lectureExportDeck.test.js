@@ -92,7 +92,9 @@ describe('the reveal.js deck of a lecture', () => {
     expect(html).toContain('<h1>Glass, twice</h1>');
     expect(html).toContain('<title>Glass, twice</title>');
     expect(html).toContain('<h2>Into glass</h2>');
-    expect(html).toContain(`<h2>${subscriptedHtml(panelEntry('schlick').title)}</h2>`); // no heading: the panel's title
+    // No heading of the lecturer's: no slide heading, the embed shows the panel's title (not twice).
+    expect(html).not.toContain(`<h2>${subscriptedHtml(panelEntry('schlick').title)}</h2>`);
+    expect(html).toMatch(/data-panel="schlick">\s*<iframe/);
     expect(html).toContain(lectureTextHtml(composed.items[0].text));
     expect(html).toContain('<a href="https://book.example" target="_blank" rel="noopener noreferrer">the book</a>');
     expect(html).toMatch(/<span class="lecture-math"><span class="katex"><math [^>]*>.*<annotation encoding="application\/x-tex">R_0</);
