@@ -123,14 +123,17 @@ export const PANEL_UPDATES = {
 /**
  * ms per update of every WebGL panel in `runs` interleaved rounds: each round visits every panel
  * once, the hero among them, so a busy spell of the machine falls on all of them alike; `toHero` is
- * a panel's ms over the hero's of the same round (median [min, max] over the rounds).
+ * a panel's ms over the hero's of the same round (median [min, max] over the rounds). `ids` (the
+ * hero first) narrows the panels, as the tiny run does.
  */
-export async function panelUpdateCosts(browser, base, { width = 1280, height = 720, updates = 12, warmup = 6, runs = 5 } = {}) {
+export async function panelUpdateCosts(browser, base,
+  { width = 1280, height = 720, updates = 12, warmup = 6, runs = 5, ids = Object.keys(PANEL_UPDATES) } = {}) {
   const { context, page } = await hostPage(browser, base, { width: width + 40, height: height + 40 });
-  const samples = Object.fromEntries(Object.keys(PANEL_UPDATES).map((id) => [id, []]));
+  const samples = Object.fromEntries(ids.map((id) => [id, []]));
   try {
     for (let r = 0; r < runs; r += 1) {
-      for (const [id, { key, values, query = '' }] of Object.entries(PANEL_UPDATES)) {
+      for (const id of ids) {
+        const { key, values, query = '' } = PANEL_UPDATES[id];
         const [ms] = await timeUpdates(page, `${base}embed.html?panel=${id}${query}`, { width, height, key, values, updates, warmup });
         samples[id].push(ms);
       }
