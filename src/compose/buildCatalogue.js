@@ -4,7 +4,8 @@
 import { button, el } from '../ui/el.js';
 import { setSubscripted } from '../ui/subscripts.js';
 import { field, titledSection } from '../homework/page/formParts.js';
-import { panelCatalogue, questionCatalogue } from './catalogue.js';
+import { panelCatalogue } from './catalogue.js';
+import { questionSelect } from './buildItemEditor.js';
 
 /** onAdd: { panel(id), question(id), text() }. */
 export function buildCatalogue(onAdd) {
@@ -16,15 +17,7 @@ export function buildCatalogue(onAdd) {
   texts.append(addText);
 
   const questionBox = el('div', 'cp-add-question');
-  const select = /** @type {HTMLSelectElement} */ (el('select'));
-  for (const group of questionCatalogue()) {
-    const optgroup = /** @type {HTMLOptGroupElement} */ (el('optgroup'));
-    optgroup.label = group.title;
-    for (const q of group.questions) {
-      optgroup.append(new Option(`${q.kind}: ${q.prompt.length > 110 ? `${q.prompt.slice(0, 110)}…` : q.prompt}`, q.id));
-    }
-    select.append(optgroup);
-  }
+  const select = questionSelect();
   const addQuestion = button('Add the question');
   addQuestion.addEventListener('click', () => onAdd.question(select.value));
   questionBox.append(field('A question to the room, from the homework bank', select), addQuestion);

@@ -57,7 +57,8 @@ function headingField(item, patch, placeholder) {
   return field('Heading', heading);
 }
 
-function questionFields(item, patch) {
+/** A select of the bank's questions, grouped by panel, each by its kind and prompt (cut at 110 characters). */
+export function questionSelect() {
   const select = /** @type {HTMLSelectElement} */ (el('select'));
   for (const group of questionCatalogue()) {
     const optgroup = /** @type {HTMLOptGroupElement} */ (el('optgroup'));
@@ -67,6 +68,11 @@ function questionFields(item, patch) {
     }
     select.append(optgroup);
   }
+  return select;
+}
+
+function questionFields(item, patch) {
+  const select = questionSelect();
   select.value = item.question;
   const seed = textInput(item.seed, LECTURE_CAPS.seed, 'empty: the numbers the lecture page shows');
   const prompt = el('p', 'cp-prompt');

@@ -4,6 +4,7 @@
 // prediction beside it, both labelled, and the marker stays where it was committed. SVG, so it is
 // sharp on a projector and needs no WebGL.
 import { el } from '../../ui/el.js';
+import { angle } from '../../ui/format.js';
 
 const NS = 'http://www.w3.org/2000/svg';
 const W = 640;
@@ -62,7 +63,7 @@ export function createPredictFigure({ label, describedBy = null, axisTitle = THE
     for (const line of [markerLine]) { line.setAttribute('x1', px); line.setAttribute('x2', px); }
     knob.setAttribute('cx', px);
     markerText.setAttribute('x', Math.min(Math.max(px, PAD.left + 40), W - PAD.right - 40));
-    markerText.textContent = `${committed ? 'yours: ' : ''}${value.toFixed(1)}°`;
+    markerText.textContent = `${committed ? 'yours: ' : ''}${angle(value, 1)}`;
     marker.style.display = locked && !committed ? 'none' : ''; // revealed with nothing committed: no marker
     marker.setAttribute('aria-valuenow', value.toFixed(1));
     marker.setAttribute('aria-valuetext', `${value.toFixed(1)} degrees`);
@@ -133,7 +134,7 @@ export function createPredictFigure({ label, describedBy = null, axisTitle = THE
       const name = svg('text', {
         x: x(truth) + (truth > 60 ? -6 : 6), y: PAD.top + 12, 'text-anchor': truth > 60 ? 'end' : 'start', class: 'predict-true-label',
       });
-      name.textContent = `true: ${truth.toFixed(2)}°`;
+      name.textContent = `true: ${angle(truth, 2)}`;
       // The curve's name goes top left, or low on the left where the curve starts high there.
       const highOnLeft = Math.max(...ys.slice(0, 145)) > 0.7 * top;
       const curveName = svg('text', { x: PAD.left + 6, y: highOnLeft ? baseline - 40 : PAD.top + 30, class: 'predict-curve-label' });
@@ -142,7 +143,7 @@ export function createPredictFigure({ label, describedBy = null, axisTitle = THE
       element.classList.add('revealed');
       const against = axisTitle === THETA_AXIS ? 'θ' : `the ${axisTitle.charAt(0).toLowerCase()}${axisTitle.slice(1)}`;
       caption.textContent = `${curve.label} against ${against}; the true angle is `
-        + `${truth.toFixed(2)}°${committed ? `, yours ${value.toFixed(1)}°` : ''}.`;
+        + `${angle(truth, 2)}${committed ? `, yours ${angle(value, 1)}` : ''}.`;
     },
   };
 }
