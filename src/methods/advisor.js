@@ -53,7 +53,8 @@ const errorCache = new WeakMap(); // scene → Map('method|precision' → result
 
 /**
  * Error of one method over a scene's domain in a precision (the scene's by default): errorStats
- * in linear R plus maxCodes, the largest display error in 8-bit codes, and caseAtMax. Cached per
+ * in linear R plus maxCodes and meanCodes, the largest and the mean display error in 8-bit codes
+ * (one sweep gives both), and caseAtMax. Cached per
  * scene object, method and precision (the methods are deterministic).
  */
 export function methodError(scene, method, precision = scene.precision) {
@@ -66,16 +67,25 @@ export function methodError(scene, method, precision = scene.precision) {
 }
 
 function measure(scene, method, P) {
-  const stats = sweepDomain({
-    evaluate: (cos, ...args) => method.evaluate(P, cos, ...args),
+  return sceneErrors(scene, (cos, ...args) => method.evaluate(P, cos, ...args));
+}
+
+/**
+ * The errors of `evaluate` (cos θ and a case's arguments → R) over a scene's domain against its
+ * float64 reference: sweepDomain's statistics in linear R plus maxCodes and meanCodes, the display
+ * error in 8-bit codes. A method's errors in an arithmetic and values read back from a GPU
+ * (gpuErrors.js) are measured by this one sweep.
+ */
+export function sceneErrors(scene, evaluate) {
+  const { also, ...linear } = sweepDomain({
+    evaluate,
     reference: referenceFor(scene.kind),
     cases: scene.cases,
     thetaCount: scene.thetaCount,
     weighting: scene.weighting,
     also: { codes: displayCodes },
   });
-  const { also, ...linear } = stats;
-  return Object.freeze({ ...linear, maxCodes: also.codes.max });
+  return Object.freeze({ ...linear, maxCodes: also.codes.max, meanCodes: also.codes.mean });
 }
 
 

@@ -2,10 +2,9 @@
 // domain: the same samples, weights and statistics as advisor.methodError (errorMetrics.sweepDomain
 // with displayCodes alongside), so a figure measured on the GPU and one from the JS emulation
 // differ only where the arithmetic differs. The advisor's choice can then be made from them.
-import { displayCodes, HALF_STEP_CODES, recommend } from './advisor.js';
-import { sweepDomain, thetaSamples } from './errorMetrics.js';
+import { HALF_STEP_CODES, recommend, sceneErrors } from './advisor.js';
+import { thetaSamples } from './errorMetrics.js';
 import { f82Coefficients } from './methods.js';
-import { referenceFor } from './scenes.js';
 
 /** Samples in a scene's domain: every case at every angle. */
 export function domainSize(scene) {
@@ -44,7 +43,7 @@ export function domainExtra(scene, methodId) {
 /**
  * Error statistics of values (one per sample, domainInputs' order) against the scene's float64
  * reference: methodError's shape { count, max, mean, rms, thetaAtMax, nanCount, outOfRange,
- * caseAtMax, maxCodes } plus meanCodes (displayBudgets.meanDisplayCodes' figure). NaN and
+ * caseAtMax, maxCodes, meanCodes } (advisor.sceneErrors). NaN and
  * Infinity count as sweepDomain counts them (nanCount, max = Infinity, left out of the means).
  */
 export function errorsFromValues(scene, values) {
@@ -52,23 +51,14 @@ export function errorsFromValues(scene, values) {
   if (!values || values.length !== size) throw new RangeError(`expected ${size} values, got ${values?.length}`);
   const { cos } = thetaSamples(scene.thetaCount, scene.weighting);
   let k = 0;
-  const stats = sweepDomain({
-    // sweepDomain evaluates case by case, angle by angle, once each: sample k. The check keeps
-    // this true if its order ever changes.
-    evaluate: (c) => {
-      if (c !== cos[k % cos.length]) throw new Error('sweepDomain visited the samples in an unexpected order');
-      const value = values[k];
-      k += 1;
-      return value;
-    },
-    reference: referenceFor(scene.kind),
-    cases: scene.cases,
-    thetaCount: scene.thetaCount,
-    weighting: scene.weighting,
-    also: { codes: displayCodes },
+  // sweepDomain evaluates case by case, angle by angle, once each: sample k. The check keeps
+  // this true if its order ever changes.
+  return sceneErrors(scene, (c) => {
+    if (c !== cos[k % cos.length]) throw new Error('sweepDomain visited the samples in an unexpected order');
+    const value = values[k];
+    k += 1;
+    return value;
   });
-  const { also, ...linear } = stats;
-  return Object.freeze({ ...linear, maxCodes: also.codes.max, meanCodes: also.codes.mean });
 }
 
 /**

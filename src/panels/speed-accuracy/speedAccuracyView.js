@@ -5,7 +5,7 @@
 // Pure: the model (model.js) supplies the benchmark's results and the GPU's read-back errors.
 import { gpuPrecisionFor, measuredCosts } from '../../methods/benchResults.js';
 import {
-  CRITERION, displayBudget, meanDisplayCodes, recommendWithin,
+  CRITERION, displayBudget, recommendWithin,
 } from '../../methods/displayBudgets.js';
 import { recommendWithErrors } from '../../methods/gpuErrors.js';
 import { methodById } from '../../methods/methods.js';
@@ -95,7 +95,7 @@ export function speedAccuracyView(values, { source: src, results, problem, probe
     const method = methodById(r.methodId);
     const cost = costOf(results, method, glsl, mode);
     return {
-      ...r, ...cost, costText: cost.text, meanCodes: r.meanCodes ?? meanDisplayCodes(scene, method),
+      ...r, ...cost, costText: cost.text,
       caseText: caseText(scene.kind, r.caseAtMax), recommended: r.methodId === rec.methodId, onFront: false,
     };
   });
