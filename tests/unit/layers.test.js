@@ -30,7 +30,7 @@ function importsOf(path) {
 }
 
 /** Physics that one panel happens to use alone today, kept with the rest of the physics. */
-const PHYSICS_USED_ONCE = ['src/optics/microfacet.js', 'src/optics/diffuseFresnel.js', 'src/optics/validate.js'];
+const PHYSICS_USED_ONCE = ['src/optics/microfacet.js', 'src/optics/conductorPhase.js', 'src/optics/diffuseFresnel.js', 'src/optics/validate.js'];
 
 const layerOf = (path) => path.split('/')[1];
 const all = sources('src');

@@ -98,17 +98,61 @@ describe('where the lecture\'s "almost no Fresnel factor" falls short', async ()
     }
     for (const id of ['gold', 'copper']) expect(metalsLectureGap(metalById(id), stats(metalById(id))), id).toContain('tint fades');
   });
-  it('every metal rises towards 1 at grazing in every channel, and has a principal angle where Rp is least', () => {
+  it('every metal rises towards 1 at grazing in every channel, with a pseudo-Brewster angle where Rp is least', () => {
     for (const m of metals) {
       const grazing = channelsAt(m, 89.9);
       for (let ch = 0; ch < 3; ch += 1) expect(grazing[ch]).toBeGreaterThan(channelsAt(m, 0)[ch]);
       for (const [ch, s] of stats(m).entries()) {
-        // No angle on a 0.02° grid has a smaller Rp than the refined principal angle's.
+        // No angle on a 0.02° grid has a smaller Rp than the refined pseudo-Brewster angle's.
         for (let t = 0; t <= 90; t += 0.02) {
-          expect(fresnelConductorPolarized(Math.cos(t * DEG), m.n[ch], m.k[ch]).p).toBeGreaterThanOrEqual(s.principal.rp - 1e-12);
+          expect(fresnelConductorPolarized(Math.cos(t * DEG), m.n[ch], m.k[ch]).p)
+            .toBeGreaterThanOrEqual(s.pseudoBrewster.rp - 1e-12);
         }
-        expect(s.principal.theta > 60 && s.principal.theta < 85, `${m.id} ${ch}`).toBe(true);
+        expect(s.pseudoBrewster.theta > 60 && s.pseudoBrewster.theta < 85, `${m.id} ${ch}`).toBe(true);
+        // The principal angle (p–s phase 90°) lies a little beyond it (Azzam, JOSA A 25, 2858, 2008).
+        expect(s.principal.theta, `${m.id} ${ch}`).toBeGreaterThan(s.pseudoBrewster.theta);
+        expect(s.principal.theta - s.pseudoBrewster.theta, `${m.id} ${ch}`).toBeLessThan(6);
       }
     }
+  });
+});
+
+describe('the principal angle, where the p–s phase difference is 90°', async () => {
+  const { conductorPhaseDifference, principalAngle } = await import('../../src/optics/conductorPhase.js');
+  const { metals } = await import('../../src/optics/materials.js');
+  const stats = (m) => metalCurveStats(metalCurves(m), m);
+  // Independent of conductorPhase.js: the ellipsometric ratio rp/rs = (sin θ tan θ − w)/(sin θ tan θ + w),
+  // w = √(η² − sin²θ) (Azzam & Bashara, Ellipsometry and Polarized Light, 1977, §4.3), in plain complex numbers.
+  const ratio = (t, n, k) => {
+    const th = t * DEG;
+    const st = Math.sin(th) * Math.tan(th);
+    const [x, y] = [n * n - k * k - Math.sin(th) ** 2, 2 * n * k];
+    const r = Math.hypot(x, y);
+    const w = [Math.sqrt((r + x) / 2), Math.sqrt((r - x) / 2)]; // y > 0: the root in the first quadrant
+    const num = [st - w[0], -w[1]];
+    const den = [st + w[0], w[1]];
+    const q = den[0] ** 2 + den[1] ** 2;
+    return [(num[0] * den[0] + num[1] * den[1]) / q, (num[1] * den[0] - num[0] * den[1]) / q];
+  };
+  const delta = (t, n, k) => Math.abs(Math.atan2(ratio(t, n, k)[1], ratio(t, n, k)[0])) / DEG;
+
+  it('gold: 75.5°, 70.6° and 69.0° (red, green, blue), a few degrees past its Rp minima 73.5°, 65.9°, 65.1°', () => {
+    const gold = metalById('gold');
+    const s = stats(gold);
+    expect(s.map((c) => c.principal.theta.toFixed(1))).toEqual(['75.5', '70.6', '69.0']);
+    expect(s.map((c) => c.pseudoBrewster.theta.toFixed(1))).toEqual(['73.5', '65.9', '65.1']);
+    for (const [ch, c] of s.entries()) expect(delta(c.principal.theta, gold.n[ch], gold.k[ch])).toBeCloseTo(90, 8);
+  });
+  it('agrees with the ellipsometric ratio at every angle, falling from 180° head-on to 0° at grazing', () => {
+    for (const m of metals) {
+      for (let ch = 0; ch < 3; ch += 1) {
+        for (const t of [1, 20, 45, 60, 70, 75, 80, 85, 89]) {
+          expect(conductorPhaseDifference(Math.cos(t * DEG), m.n[ch], m.k[ch])).toBeCloseTo(delta(t, m.n[ch], m.k[ch]), 9);
+        }
+        expect(conductorPhaseDifference(1, m.n[ch], m.k[ch])).toBeCloseTo(180, 9);
+        expect(conductorPhaseDifference(0, m.n[ch], m.k[ch])).toBeCloseTo(0, 9);
+      }
+    }
+    expect(principalAngle(1.5, 0)).toBeNull(); // a dielectric has Brewster's angle instead
   });
 });

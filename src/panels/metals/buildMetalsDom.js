@@ -5,7 +5,7 @@ import { linearToHex } from '../../ui/srgb.js';
 import { el } from '../../ui/el.js';
 import { scrollBox } from '../../ui/scrollBox.js';
 import { lectureNote } from '../../ui/lectureNote.js';
-import { angle, fixed } from '../../ui/format.js';
+import { angle, fixed, precise } from '../../ui/format.js';
 
 /** CSS colour of a linear RGB reflectance. */
 export function swatchColor(rgb) {
@@ -14,6 +14,11 @@ export function swatchColor(rgb) {
 
 const CHANNEL_VARS = { red: '--c-red', green: '--c-green', blue: '--c-blue' };
 const CHANNEL_NAMES = ['Red', 'Green', 'Blue'];
+
+/** How far below F0 a dip goes: four decimals, or two significant digits where those would read 0.0000. */
+export function belowF0(dip) {
+  return `${fixed(dip, 4) === fixed(0, 4) ? precise(dip, 2) : fixed(dip, 4)} below F0`;
+}
 
 /**
  * host: the panel element. metals: [{ id, name, f0 }]. onPick(id) runs when a metal's swatch is
@@ -56,7 +61,9 @@ export function buildMetalsDom(host, metals, onPick) {
 
   const table = el('table', 'mt-table');
   const head = el('tr');
-  for (const text of ['Channel', 'n + ik', 'F0', 'Max |exact − Schlick|', 'Lowest exact R (below F0)', 'Principal angle (Rp least)']) {
+  const columns = ['Channel', 'n + ik', 'F0', 'Max |exact − Schlick|', 'Lowest exact R (below F0)',
+    'Pseudo-Brewster angle (Rp least)', 'Principal angle (p–s phase 90°)'];
+  for (const text of columns) {
     const th = el('th', '', text);
     th.scope = 'col';
     head.append(th);
@@ -97,12 +104,13 @@ export function buildMetalsDom(host, metals, onPick) {
         name.scope = 'row';
         name.style.color = `var(${CHANNEL_VARS[s.channel]})`;
         const dip = s.dip > 0
-          ? `${fixed(s.minimum.value, 4)} at ${angle(s.minimum.theta)} (−${fixed(s.dip, 4)})`
+          ? `${fixed(s.minimum.value, 4)} at ${angle(s.minimum.theta)} (${belowF0(s.dip)})`
           : 'none: never below F0';
         row.append(name, el('td', '', `${fixed(metal.n[ch], 3)} + ${fixed(metal.k[ch], 3)}i`),
           el('td', '', fixed(s.f0, 4)),
           el('td', '', `${fixed(s.maxError.value, 4)} at ${angle(s.maxError.theta)}`), el('td', '', dip),
-          el('td', '', `${angle(s.principal.theta)} (Rp = ${fixed(s.principal.rp, 3)})`));
+          el('td', '', `${angle(s.pseudoBrewster.theta)} (Rp = ${fixed(s.pseudoBrewster.rp, 3)})`),
+          el('td', '', angle(s.principal.theta)));
         return row;
       }));
     },

@@ -3,7 +3,7 @@
 // Every number comes from the exact conductor Fresnel of the lab's data (src/optics/fresnel.js).
 import { cosDeg } from '../../optics/angles.js';
 import { fresnelConductor } from '../../optics/fresnel.js';
-import { fixed } from '../../ui/format.js';
+import { fixed, precise } from '../../ui/format.js';
 
 export const GRAZING = 89;
 export const SOURCE = 'Lazányi & Szirmay-Kalos, “Fresnel term approximations for metals”, WSCG 2005; '
@@ -14,6 +14,10 @@ export const NEUTRAL = 0.05;
 
 const spread = (rgb) => Math.max(...rgb) - Math.min(...rgb);
 const list = (rgb) => rgb.map((x) => fixed(x, 2)).join(', ');
+/** Three decimals, or two significant digits where three would read 0.000. */
+const small = (x) => (fixed(x, 3) === fixed(0, 3) ? precise(x, 2) : fixed(x, 3));
+/** 'red', 'red and blue', 'every channel'. */
+const channelNames = (names) => (names.length === 3 ? 'every channel' : names.join(' and '));
 
 /** R per channel at θ (degrees). */
 export function channelsAt(metal, theta) {
@@ -28,8 +32,10 @@ export function metalsLectureGap(metal, stats) {
   const head = channelsAt(metal, 0);
   const grazing = channelsAt(metal, GRAZING);
   const deepest = stats.reduce((a, b) => (b.dip > a.dip ? b : a));
-  const dip = deepest.dip > 0
-    ? ` first dips below F0 (by up to ${fixed(deepest.dip, 3)}, ${deepest.channel}, near ${fixed(deepest.minimum.theta, 0)}°), then`
+  const dipping = stats.filter((s) => s.dip > 0).map((s) => s.channel);
+  const dip = dipping.length > 0
+    ? ` first dips below F0 in ${channelNames(dipping)} (by up to ${small(deepest.dip)}, ${deepest.channel}, `
+      + `near ${fixed(deepest.minimum.theta, 0)}°), then`
     : '';
   const tint = spread(head) >= NEUTRAL && spread(grazing) < spread(head)
     ? `its tint fades towards white (the channels ${fixed(spread(head), 2)} apart head-on, ${fixed(spread(grazing), 2)} at ${GRAZING}°)`

@@ -5,6 +5,7 @@
 import { conductorNormalIncidence, fresnelConductor, fresnelConductorPolarized, fresnelSchlick } from '../../optics/fresnel.js';
 import { cosDeg } from '../../optics/angles.js';
 import { refinedMax } from '../../optics/refinedMax.js';
+import { principalAngle } from '../../optics/conductorPhase.js';
 
 export const CHANNELS = Object.freeze(['red', 'green', 'blue']);
 
@@ -52,9 +53,10 @@ export function metalCurves(metal, count = 361) {
 /**
  * Per channel of `metal` (the one the curves are of): F0, the largest |exact − Schlick| and its
  * angle, and the lowest exact value with its angle, each refined off the grid (refinedMax.js);
- * `dip` is how far that lowest value lies below F0 (0 when the curve never drops); `principal`, the
- * principal (pseudo-Brewster) angle where Rp is least, which a conductor has instead of Brewster's
- * Rp = 0 (Born & Wolf, Principles of Optics, 7th ed., §14.4.1).
+ * `dip` is how far that lowest value lies below F0 (0 when the curve never drops). A conductor has
+ * no Brewster angle (Rp = 0) but two stand-ins: `pseudoBrewster`, where Rp is least, and `principal`,
+ * where the p–s phase difference is 90° (Born & Wolf, Principles of Optics, 7th ed., §14.4.1; they
+ * differ by a few degrees, Azzam, JOSA A 25, 2858, 2008; conductorPhase.js).
  */
 export function metalCurveStats({ theta, f0, exact, error }, metal) {
   return CHANNELS.map((name, ch) => {
@@ -69,7 +71,8 @@ export function metalCurveStats({ theta, f0, exact, error }, metal) {
       maxError: worst,
       minimum: { value: -low.value, theta: low.theta },
       dip: Math.max(0, f0[ch] - -low.value),
-      principal: { theta: leastRp.theta, rp: -leastRp.value },
+      pseudoBrewster: { theta: leastRp.theta, rp: -leastRp.value },
+      principal: { theta: principalAngle(metal.n[ch], metal.k[ch]) },
     };
   });
 }
