@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { fresnelExact, normalIncidence } from '../../src/optics/fresnel.js';
 import { microfacetSpecular } from '../../src/optics/microfacet.js';
 import {
-  SCENE, cameraBasis, highlightInView, pixelRay, shadeRoad, sheenGrowth, specularAlbedo, sunDirection,
+  SCENE, cameraBasis, highlightInView, pixelRay, shadeRoad, sheenGrowth, sightBelow, specularAlbedo, sunDirection,
 } from '../../src/panels/asphalt/model.js';
 import { questionById } from '../../src/homework/questions.js';
 
@@ -105,14 +105,19 @@ describe('how much the road reflects, and why it shines', () => {
     // Fresnel off: F = R0 everywhere, so less is reflected at grazing.
     expect(specularAlbedo({ ...base, sunEl: 10, fresnel: false })).toBeLessThan(at(80) / 1.8);
   });
-  it('the growth from overhead is the lobe times F, and both factors are large', () => {
+  it('the growth against the road straight below is the lobe times F, and both factors are large', () => {
     const g = sheenGrowth({ ...base, camEl: 6 }, 2);
     const now = highlightInView({ ...base, camEl: 6 }, 2).peak;
-    const overhead = highlightInView({ ...base, camEl: 90 }, 2).peak;
-    expect(g.total).toBeCloseTo(now.specular / overhead.specular, 10);
-    expect(g.lobe).toBeGreaterThan(12);
-    expect(g.lobe).toBeLessThan(14);
-    expect(g.fresnel).toBeGreaterThan(9);
+    const straightDown = shadeRoad([0, -1, 0], base);
+    expect(g.total).toBeCloseTo(now.specular / straightDown.specular, 10);
+    expect(now.below).toBeLessThan(1e-6); // at the default view the brightest spot is at the horizon
+    expect(g.lobe).toBeGreaterThan(18);
+    expect(g.lobe).toBeLessThan(19);
+    expect(g.fresnel).toBeGreaterThan(11);
+    // The same two directions from any camera that sees them: the field of view drops out.
+    const fromHigher = sheenGrowth({ ...base, camEl: 15 }, 2);
+    expect(fromHigher.spot.below).toBeLessThan(1e-6);
+    expect(fromHigher.total).toBeCloseTo(g.total, 6);
     // With Fresnel off the lobe grows just the same and F not at all.
     const off = sheenGrowth({ ...base, camEl: 6, fresnel: false }, 2);
     expect(off.lobe).toBeCloseTo(g.lobe, 10);
@@ -129,18 +134,29 @@ describe('how much the road reflects, and why it shines', () => {
 
 describe('the homework question asks what the panel computes', () => {
   const q = questionById('asphalt-outshine');
-  it('its answer is the camera elevation where the brightest spot equals the diffuse road', () => {
+  it('its answer is the direction below the horizon where a sun-ward spot\'s specular equals its diffuse part', () => {
     for (const nT of [1.5, 1.55, 1.6]) {
       for (const sunEl of [10, 15, 20]) {
-        const camEl = q.expected({ nT, sunEl });
-        const values = { camEl, sunEl, roughness: 0.8, nT, fresnel: true };
-        const { peak } = highlightInView(values, 16 / 9); // any aspect: the central column is the same
-        expect(peak.specular / peak.diffuse).toBeCloseTo(1, 8);
-        // Dull above it, brighter than the road below it.
-        const ratio = (e) => highlightInView({ ...values, camEl: e }, 2).peak;
-        expect(ratio(camEl + 2).specular).toBeLessThan(ratio(camEl + 2).diffuse);
-        expect(ratio(camEl - 2).specular).toBeGreaterThan(ratio(camEl - 2).diffuse);
+        const below = q.expected({ nT, sunEl });
+        const values = { sunEl, roughness: 0.8, nT, fresnel: true };
+        const spot = (b) => shadeRoad(sightBelow(b), values);
+        expect(spot(below).specular / spot(below).diffuse).toBeCloseTo(1, 8);
+        expect(spot(below).below).toBeCloseTo(below, 9); // what the hover readout shows
+        // Diffuse wins looking steeper, specular looking lower.
+        expect(spot(below + 2).specular).toBeLessThan(spot(below + 2).diffuse);
+        expect(spot(below - 2).specular).toBeGreaterThan(spot(below - 2).diffuse);
       }
+    }
+  });
+  it('does not depend on the camera: the panel\'s own pixel at that direction, from any camera, gives the same', () => {
+    const values = { sunEl: 10, roughness: 0.8, nT: 1.55, fresnel: true };
+    const below = q.expected(values);
+    for (const camEl of [below - 15, below, below + 15]) {
+      // The central column's pixel that looks `below` under the horizon, from a camera at camEl.
+      const ndcY = Math.tan((camEl - below) * DEG) / Math.tan((SCENE.fovY / 2) * DEG);
+      const hit = shadeRoad(pixelRay(camEl, 0, ndcY, 16 / 9), { ...values, camEl });
+      expect(hit.below).toBeCloseTo(below, 9);
+      expect(hit.specular / hit.diffuse).toBeCloseTo(1, 8);
     }
   });
   it('its start state is the panel overhead with the question\'s sun and index', () => {

@@ -92,11 +92,12 @@ export function mount(root, ctx) {
     dom.setBadge(values.fresnel ? 'Fresnel on: F(θd) exact' : `Fresnel off: F = R0 = ${f3(r0)}`, values.fresnel);
     dom.setSummary([
       ['F at the view centre', `${f3(centre.F)} (θd = ${deg(centre.thetaD)})`, true],
-      ['Highlight luminance', `${f3(peak.specular)} at θd = ${deg(peak.thetaD)}, F = ${f3(peak.F)}`, true],
-      ['Diffuse road', f3(peak.diffuse)],
+      ['Brightest spot in view', `seen ${deg(peak.below)} below the horizon: luminance ${f3(peak.specular)}, `
+        + `θd = ${deg(peak.thetaD)}, F = ${f3(peak.F)}`, true],
+      ['Diffuse road there', f3(peak.diffuse)],
       ['Highlight ÷ diffuse', `${fixed(peak.specular / peak.diffuse, 1)}×`],
-      ['Growth since overhead', `${times(growth.total)}: lobe ${times(growth.lobe)}, F ${times(growth.fresnel)}`],
-      ['Sunlight reflected specularly', `${percent(albedo)} (diffuse albedo ${percent(SCENE.albedo)})`],
+      ['Against the road straight below', `${times(growth.total)}: lobe ${times(growth.lobe)}, F ${times(growth.fresnel)}`],
+      [`Sunlight reflected specularly (sun ${deg(values.sunEl)} up)`, `${percent(albedo)} (diffuse albedo ${percent(SCENE.albedo)})`],
       ['R0 (head-on)', f3(r0)],
     ]);
     if (!view) return;
@@ -113,15 +114,15 @@ export function mount(root, ctx) {
   }
 
   // Hovering or tapping the road: the angle θd between the sun and the half-vector there, and F(θd).
-  const hint = 'Hover or tap the road to read θd (sun to half-vector) and F there.';
+  const hint = 'Hover or tap the road to read how far below the horizon it is seen, θd (sun to half-vector), F and both parts there.';
   const onHover = (event) => {
     const rect = dom.canvas.getBoundingClientRect();
     const ndcX = (2 * (event.clientX - rect.left)) / rect.width - 1;
     const ndcY = 1 - (2 * (event.clientY - rect.top)) / rect.height;
     const hit = shadeRoad(pixelRay(values.camEl, ndcX, ndcY, rect.width / rect.height), values);
     dom.setReadout(hit
-      ? `Road ${fixed(hit.distance, 1)} m ahead: θd = ${deg(hit.thetaD)}, F = ${f3(hit.F)}, `
-        + `specular ${f3(hit.specular)}, diffuse ${f3(hit.diffuse)}`
+      ? `Road ${fixed(hit.distance, 1)} m ahead, seen ${deg(hit.below)} below the horizon: θd = ${deg(hit.thetaD)}, `
+        + `F = ${f3(hit.F)}, specular ${f3(hit.specular)}, diffuse ${f3(hit.diffuse)}`
       : 'Sky: no road under the cursor.');
   };
   const onLeave = () => dom.setReadout(hint);
@@ -154,14 +155,18 @@ export function mount(root, ctx) {
     update,
     describe() {
       const { peak, centre } = state;
+      const share = albedo < SCENE.albedo
+        ? `less than its diffuse albedo of ${percent(SCENE.albedo)}: the sheen is concentrated, not plentiful`
+        : `no less than its diffuse albedo of ${percent(SCENE.albedo)}: with the sun this low, the specular layer reflects as `
+          + 'much as the diffuse one, and it is concentrated too';
       return `Camera ${values.camEl}° above the road, sun ${values.sunEl}° ahead, roughness ${values.roughness}, `
         + `n_t = ${values.nT} (assumed for bitumen), Fresnel ${values.fresnel ? 'on' : 'off'}. `
         + `At the centre of view the sun meets the microfacets at θd = ${deg(centre.thetaD)}, where F is ${f3(centre.F)}; `
-        + `the brightest highlight has luminance ${f3(peak.specular)}, ${fixed(peak.specular / peak.diffuse, 1)} times `
-        + `the diffuse road (${f3(peak.diffuse)}). Since the camera was overhead it grew ${times(growth.total)}: `
+        + `the brightest spot in view, seen ${deg(peak.below)} below the horizon, has luminance ${f3(peak.specular)}, `
+        + `${fixed(peak.specular / peak.diffuse, 1)} times the diffuse road there (${f3(peak.diffuse)}). `
+        + `Against the road seen straight down it is ${times(growth.total)} brighter: `
         + `${times(growth.lobe)} from the lobe D·G2/(4 cos θl cos θv), which gathers the reflected light into a forward beam, `
-        + `and ${times(growth.fresnel)} from F. The road reflects ${percent(albedo)} of the sunlight specularly, `
-        + `against a diffuse albedo of ${percent(SCENE.albedo)}: the sheen is concentrated, not plentiful.`;
+        + `and ${times(growth.fresnel)} from F. The road reflects ${percent(albedo)} of the sunlight specularly, ${share}.`;
     },
     csv() {
       const { column } = state;
@@ -170,6 +175,7 @@ export function mount(root, ctx) {
         columns: {
           ndc_y: column.map((c) => c.ndcY),
           distance_m: column.map((c) => c.distance),
+          below_horizon_deg: column.map((c) => c.below),
           theta_d_deg: column.map((c) => c.thetaD),
           F: column.map((c) => c.F),
           L_specular: column.map((c) => c.specular),

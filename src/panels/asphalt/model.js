@@ -56,6 +56,8 @@ export function pixelRay(camElDeg, ndcX, ndcY, aspect) {
  * parts. Specular radiance L = f·E·cosθl with f the GGX Cook–Torrance BRDF (src/optics/microfacet.js),
  * kept as its two factors: `lobe` = D·G2/(4 cosθl cosθv), where the rough facets send the light, and F.
  * With Fresnel off, F is the constant R0. Diffuse is Lambert: albedo·(E·cosθl/π + ambient).
+ * `below` is how far below the horizon the spot is seen, in degrees: on a flat road under a far sun
+ * and sky, what a spot sends towards the eye depends on that direction alone, not on the camera.
  * Returns null when the ray does not meet the road.
  */
 export function shadeRoad(dir, { sunEl, roughness, nT, fresnel }) {
@@ -70,7 +72,8 @@ export function shadeRoad(dir, { sunEl, roughness, nT, fresnel }) {
   const specular = lobe * F * SUN_Y * Math.max(0, cosL);
   const diffuse = SCENE.albedo * (SUN_Y * Math.max(0, cosL) / Math.PI + AMBIENT_Y);
   const distance = SCENE.cameraHeight / -dir[1];
-  return { thetaD: Math.acos(cosD) / DEG, F, lobe, specular, diffuse, distance };
+  const below = Math.asin(Math.min(1, -dir[1])) / DEG;
+  return { thetaD: Math.acos(cosD) / DEG, F, lobe, specular, diffuse, distance, below };
 }
 
 /** The tone curve of the shader, 1 − exp(−exposure·x), on a luminance. */
@@ -101,20 +104,40 @@ export function highlightInView(values, aspect, rows = 241) {
   return { peak, centre, column };
 }
 
-/** Camera elevation of the overhead view that sheenGrowth compares with. */
-export const OVERHEAD = 90;
+/** The line of sight `belowDeg` below the horizon, straight towards the sun (the camera's +z). */
+export function sightBelow(belowDeg) {
+  const b = belowDeg * DEG;
+  return [0, -Math.sin(b), Math.cos(b)];
+}
+
+/** How far below the horizon sheenGrowth's reference spot is seen: the road straight below. */
+export const STRAIGHT_DOWN = 90;
 
 /**
- * How the brightest spot grew from the camera overhead to this view, split into the two factors
- * of its specular luminance E·cosθl·lobe·F (E·cosθl is the same everywhere): the lobe
- * D·G2/(4 cosθl cosθv) and F(θd). total = lobe × fresnel.
+ * How much brighter the brightest spot in view is than the road seen straight down, split into the
+ * two factors of its specular luminance E·cosθl·lobe·F (E·cosθl is the same everywhere): the lobe
+ * D·G2/(4 cosθl cosθv) and F(θd). total = lobe × fresnel. Both spots are named by the direction
+ * they are seen in, so the factors do not depend on the field of view.
  */
 export function sheenGrowth(values, aspect) {
   const now = highlightInView(values, aspect).peak;
-  const overhead = highlightInView({ ...values, camEl: OVERHEAD }, aspect).peak;
-  const lobe = now.lobe / overhead.lobe;
-  const fresnel = now.F / overhead.F;
-  return { lobe, fresnel, total: lobe * fresnel, overhead };
+  const below = shadeRoad(sightBelow(STRAIGHT_DOWN), values);
+  const lobe = now.lobe / below.lobe;
+  const fresnel = now.F / below.F;
+  return { lobe, fresnel, total: lobe * fresnel, spot: now, reference: below };
+}
+
+/**
+ * The share of a sun-ward spot's light towards the eye that is specular, for the spot seen
+ * `belowDeg` below the horizon: specular / (specular + diffuse) of its luminance; 1/2 where the
+ * two are equal. A function of the direction alone (shadeRoad).
+ */
+export function specularShareBelow(values) {
+  return (belowDeg) => {
+    // At the horizon itself the sight line misses the road; a hair below it gives the limit.
+    const hit = shadeRoad(sightBelow(Math.max(belowDeg, 1e-6)), values);
+    return hit.specular / (hit.specular + hit.diffuse);
+  };
 }
 
 /** u in [0, 1) where the increasing g(u) crosses `level`, by bisection. */
