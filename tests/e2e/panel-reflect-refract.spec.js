@@ -41,16 +41,18 @@ test('80° from the normal on water reflects R = 0.3479 (URL honoured)', async (
 
 test('steep views show the floor, grazing views the sky', async ({ page }) => {
   await openLab(page, `./embed.html?panel=${PANEL}`);
-  // Straight down onto the middle of the cream tile: the refracted term is exactly (1 − R0)·tile.
+  // Straight down onto the middle of the cream tile: the refracted term is exactly (1 − R0)/n²·tile,
+  // the floor's radiance spread into the wider cone above the water.
   const R0 = fresnelExact(1, 1, 1.333);
   const tile = await page.evaluate((id) => window.fresnelLab.panels[id].view.uniforms.uTileA.value, PANEL);
   const onlyFloor = await centre(page, { elevation: 90, layer: 'refracted' });
-  expect(dist(onlyFloor, tile.map((c) => srgb((1 - R0) * c)))).toBeLessThanOrEqual(4);
+  expect(dist(onlyFloor, tile.map((c) => srgb(((1 - R0) / 1.333 ** 2) * c)))).toBeLessThanOrEqual(4);
+  await expect(page.locator('.rr-summary')).toContainText(`T/n_t² = ${((1 - R0) / 1.333 ** 2).toFixed(4)}`);
   const onlySky = await centre(page, { layer: 'reflected' });
   const steep = await centre(page, { layer: 'both' });
   expect(dist(steep, onlyFloor)).toBeLessThan(dist(steep, onlySky));
   expect(steep[0]).toBeGreaterThan(steep[2] + 40); // warm floor, not blue sky
-  await expect(page.locator('.rr-bands li[aria-current]')).toHaveText('no reflection');
+  await expect(page.locator('.rr-bands li[aria-current]')).toHaveText('little reflection');
 
   const grazingFloor = await centre(page, { elevation: 2, layer: 'refracted' });
   const grazingSky = await centre(page, { layer: 'reflected' });

@@ -28,8 +28,8 @@ describe('the centre ray', () => {
     // Near grazing the refracted ray approaches the critical angle of water, 48.6°.
     expect(centreRay(0.001, 1.333).thetaTDeg).toBeCloseTo(48.6, 1);
   });
-  it('sweeps from no reflection to lots as the view lowers', () => {
-    expect(centreRay(60, 1.333).band.label).toBe('no reflection');
+  it('sweeps from little reflection to lots as the view lowers', () => {
+    expect(centreRay(60, 1.333).band.label).toBe('little reflection');
     expect(centreRay(20, 1.333).band.label).toBe('some reflection');
     expect(centreRay(2, 1.333).band.label).toBe('lots of reflection');
   });
@@ -43,7 +43,7 @@ describe('bands and the CSV table', () => {
     expect(reflectionBand(0.3999).id).toBe('some');
     expect(reflectionBand(0.4).id).toBe('lots');
     expect(reflectionBand(1).id).toBe('lots');
-    expect(REFLECTION_BANDS.map((b) => b.label)).toEqual(['no reflection', 'some reflection', 'lots of reflection']);
+    expect(REFLECTION_BANDS.map((b) => b.label)).toEqual(['little reflection', 'some reflection', 'lots of reflection']);
   });
   it('R falls as the view rises', () => {
     const { elevation, R, T } = splitByElevation(1.333);
@@ -51,5 +51,18 @@ describe('bands and the CSV table', () => {
     expect(elevation.at(-1)).toBe(90);
     for (let i = 1; i < R.length; i += 1) expect(R[i]).toBeLessThan(R[i - 1]);
     expect(T.every((t, i) => t + R[i] === 1)).toBe(true);
+  });
+});
+
+describe('the floor seen from the air', () => {
+  it('is weighed by T/n², the radiance of light spread into the wider cone above the surface', () => {
+    // Étendue: n² dA cos θ dω is kept across a refraction, so L/n² is too (Nicodemus 1963; Pharr et al., PBRT 3rd ed.,
+    // §16.1.3). Leaving water into air, dω grows by n² for the same flux: the radiance falls by 1/n².
+    for (const [e, n] of [[90, 1.333], [30, 1.5], [5, 2.4]]) {
+      const ray = centreRay(e, n);
+      const T = 1 - dielectricR(cosOfDegrees(90 - e), 1, n);
+      expect(ray.floorWeight).toBeCloseTo(T / (n * n), 12);
+    }
+    expect(centreRay(90, 1.333).floorWeight).toBeCloseTo(0.5513, 4); // water head-on: 0.98 of the light, 0.56 of it per solid angle
   });
 });

@@ -7,6 +7,9 @@ import { el } from '../../ui/el.js';
 import { definitionList } from '../../ui/definitionList.js';
 import { angle, fixed } from '../../ui/format.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
+import { lectureNote } from '../../ui/lectureNote.js';
+
+const NOTE_SOURCE = 'Hecht, Optics, 5th ed., §4.6; Pharr, Jakob & Humphreys, Physically Based Rendering, 3rd ed., §16.1.3';
 
 export function buildReflectRefractDom(host) {
   const root = el('div', 'rr-panel');
@@ -40,6 +43,7 @@ export function buildReflectRefractDom(host) {
   const summary = definitionList('rr-summary');
   const formula = makeScrollBox(el('div', 'rr-formula'), 'Reflected and transmitted fractions');
   root.append(stage, bands, bar, summary.element, formula);
+  const note = lectureNote(root);
   host.append(root);
 
   return {
@@ -62,10 +66,20 @@ export function buildReflectRefractDom(host) {
         ['Centre ray from the normal', `θ = ${angle(ray.thetaDeg)}`],
         ['Reflected (sky)', `R = ${fixed(ray.R, 4)}`],
         ['Refracted (floor)', `T = 1 − R = ${fixed(ray.T, 4)}`],
+        ['Floor radiance let out', `T/n_t² = ${fixed(ray.floorWeight, 4)}`],
         ['Transmitted angle', `θt = ${angle(ray.thetaTDeg)}`],
       ]);
-      renderTex(formula, `\\text{colour} = ${texNumber(ray.R)}\\,\\text{sky}_{\\text{reflect}}`
-        + ` + ${texNumber(ray.T)}\\,\\text{floor}_{\\text{refract}}`);
+      renderTex(formula, '\\begin{aligned}\\text{colour} &= R\\,\\text{sky}_{\\text{reflect}} '
+        + '+ \\tfrac{T}{n_t^2}\\,\\text{floor}_{\\text{refract}}'
+        + `\\\\ &= ${texNumber(ray.R)}\\,\\text{sky}_{\\text{reflect}} + ${texNumber(ray.floorWeight)}\\,\\text{floor}_{\\text{refract}}`
+        + '\\end{aligned}');
+    },
+    /** The note on the lecture's "No reflection" caption, for a surface of index n with head-on reflectance r0. */
+    setNote(n, r0) {
+      note.set(`The lecture captions the steepest view "No reflection", but no view reflects nothing: head-on this surface `
+        + `(n_t = ${n}) still reflects R = ${fixed(r0, 3)} of the light, so below R = 0.1 the panel says "little reflection". `
+        + `The floor also looks dimmer from the air than from under the water: its light spreads into a wider cone as it `
+        + `leaves, which divides its radiance by n_t² (${fixed(1 / (n * n), 2)} here) on top of T.`, NOTE_SOURCE);
     },
   };
 }

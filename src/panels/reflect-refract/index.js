@@ -4,6 +4,7 @@
 // pixel's angle (reflect-refract.frag.glsl); the numbers are for the centre ray.
 import { createShaderView } from '../../gl/createShaderView.js';
 import { DEG } from '../../optics/angles.js';
+import { normalIncidence } from '../../optics/fresnel.js';
 import { dielectrics } from '../../optics/materials.js';
 import { indexPresets } from '../shared/indexPresets.js';
 import { angle, fixed } from '../../ui/format.js';
@@ -70,6 +71,7 @@ export function mount(root, ctx) {
   function update() {
     ray = centreRay(values.elevation, values.nT);
     dom.show(ray);
+    dom.setNote(values.nT, normalIncidence(1, values.nT));
     presetState.material = presets.idFor(values.nT);
     preset.updateDisplay();
     if (!view) return;
@@ -89,7 +91,8 @@ export function mount(root, ctx) {
     describe() {
       return `Looking down at ${angle(values.elevation, 1)} above a surface of n_t = ${values.nT}: the centre ray is `
         + `${angle(ray.thetaDeg, 1)} from the normal, so R = ${fixed(ray.R, 4)} of the light comes from the reflected sky `
-        + `and T = ${fixed(ray.T, 4)} from the floor, refracted to ${angle(ray.thetaTDeg)} (${ray.band.label}).`;
+        + `and T = ${fixed(ray.T, 4)} from the floor, refracted to ${angle(ray.thetaTDeg)} (${ray.band.label}); `
+        + `seen from the air the floor's radiance is weighed by T/n_t² = ${fixed(ray.floorWeight, 4)}.`;
     },
     csv() {
       const { elevation, R, T } = splitByElevation(values.nT);

@@ -1,6 +1,6 @@
 // The numbers of the reflect-refract panel, pure (no DOM) so Node tests can pin them: the split
 // of light between the reflected sky and the refracted floor for the ray through the centre of
-// the view, and the lecture's three words for how much reflection there is.
+// the view, and the lecture's three captions for how much reflection there is.
 // Light comes from air (n_i = 1) onto water or glass (n_t = n).
 import { fresnelExact, snellCosT } from '../../optics/fresnel.js';
 import { DEG } from '../../optics/angles.js';
@@ -9,10 +9,11 @@ import { DEG } from '../../optics/angles.js';
 /**
  * The lecture's captions ("Reflection vs. Refraction" slide), assigned by the reflected fraction R
  * of the ray through the centre. The thresholds are this panel's reading of the photographs:
- * under 10% the floor dominates the picture, from 40% the sky does.
+ * under 10% the floor dominates the picture, from 40% the sky does. The slide's lowest caption is
+ * "No reflection"; no view reflects nothing (water head-on reflects 0.02), so it reads "little".
  */
 export const REFLECTION_BANDS = Object.freeze([
-  Object.freeze({ id: 'none', label: 'no reflection', below: 0.1 }),
+  Object.freeze({ id: 'none', label: 'little reflection', below: 0.1 }),
   Object.freeze({ id: 'some', label: 'some reflection', below: 0.4 }),
   Object.freeze({ id: 'lots', label: 'lots of reflection', below: Infinity }),
 ]);
@@ -25,6 +26,9 @@ export function reflectionBand(R) {
  * The centre ray of a camera looking down at `elevationDeg` above a flat surface: its angle from
  * the normal is 90° − elevation, so cos θ = sin(elevation). R from the exact Fresnel formula,
  * T = 1 − R (no absorption), θt from Snell's law (always exists: air into a denser medium).
+ * floorWeight = T/n² weighs the floor's radiance as seen from the air: light leaving the water
+ * spreads into a wider cone, so its radiance falls by (n_i/n_t)² (radiance over n² is what a
+ * refraction keeps; Pharr, Jakob & Humphreys, Physically Based Rendering, 3rd ed., §16.1.3).
  */
 export function centreRay(elevationDeg, n) {
   const cosI = Math.sin(elevationDeg * DEG);
@@ -35,6 +39,7 @@ export function centreRay(elevationDeg, n) {
     thetaDeg: 90 - elevationDeg,
     R,
     T: 1 - R,
+    floorWeight: (1 - R) / (n * n),
     thetaTDeg: Math.atan2(sinT, cosT) / DEG,
     band: reflectionBand(R),
   };

@@ -1,6 +1,7 @@
 // reflect-refract: a camera above a flat water (or glass) surface y = 0, ray-cast analytically.
 // Each pixel's view ray meets the surface at its own angle θ from the normal; the exact Fresnel
-// F(θ) splits it: colour = F·sky(reflected ray) + (1 − F)·floor(refracted ray), in linear RGB.
+// F(θ) splits it: colour = F·sky(reflected ray) + (1 − F)/n²·floor(refracted ray), in linear RGB.
+// The 1/n² is the floor's radiance spreading into the wider cone above the water (model.js).
 // The floor is a checkered pool bottom at depth uDepth, reached by GLSL refract() (Snell).
 // The sky a pixel shows or reflects depends on the view only: compiled with CACHE_PASS it is
 // written to a float target, with CACHED read back (createShaderView's `cache`), so that moving n,
@@ -21,7 +22,7 @@ uniform float uDepth;       // depth of the pool floor
 uniform float uTile;        // tile size on the floor
 uniform vec3 uTileA;        // floor colours, linear RGB
 uniform vec3 uTileB;
-uniform int uLayer;         // 0: both terms, 1: F·sky only, 2: (1 − F)·floor only
+uniform int uLayer;         // 0: both terms, 1: F·sky only, 2: (1 − F)/n²·floor only
 
 // Checker whose tile (0, 0) is centred under the camera's centre ray at a steep view. Box-filtered
 // over the pixel footprint (fwidth), so far tiles fade to their average instead of aliasing.
@@ -96,7 +97,7 @@ void main() {
     vec3 t = refract(d, normal, 1.0 / uN); // eta = n_i / n_t
     vec3 bottom = floorColour((hit + (uDepth / -t.y) * t).xz);
     vec3 reflected = F * skySeen;
-    vec3 refracted = (1.0 - F) * bottom;
+    vec3 refracted = (1.0 - F) / (uN * uN) * bottom;
     colour = uLayer == 1 ? reflected : uLayer == 2 ? refracted : reflected + refracted;
   }
   fragColor = vec4(linearToSrgb(colour), 1.0);

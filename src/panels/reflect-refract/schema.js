@@ -7,7 +7,7 @@ export const schema = {
   ...transmittedIndex({ what: 'surface', nT: 1.333, step: 0.0001, aliases: ['n'] }),
   depth: { type: 'number', default: 1.5, min: 0.2, max: 5, step: 0.1, label: 'Pool depth (tiles)' },
   layer: {
-    type: 'enum', default: 'both', label: 'Show F·sky, (1−F)·floor or both',
-    options: { both: 'Both', reflected: 'F·sky only', refracted: '(1 − F)·floor only' },
+    type: 'enum', default: 'both', label: 'Show F·sky, (1−F)/n²·floor or both',
+    options: { both: 'Both', reflected: 'F·sky only', refracted: '(1 − F)/n²·floor only' },
   },
 };
