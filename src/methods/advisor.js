@@ -1,22 +1,26 @@
-// "Model no more than the scene needs": the cheapest method whose error cannot be seen in an
-// 8-bit sRGB image of the scene, or the most accurate one when none is that good.
+// "Model no more than the scene needs": the cheapest method whose error stays within the rounding
+// an 8-bit sRGB image of the scene makes anyway, or the most accurate one when none is that good.
 //
-// When is an error in R invisible? A pixel shows R·L (L: the light, at most display white, 1).
-// After the sRGB transform the error is |enc(R'L) − enc(RL)| ≈ enc'(RL)·L·|R' − R|, and enc'(x)·L
-// grows with L on both pieces of the curve (12.92·L below x = 0.0031308, ∝ R^(−7/12)L^(5/12)
-// above), so the worst light is L = 1: the error shows as |enc(R') − enc(R)|. It is invisible
-// when that is under half an 8-bit step, 0.5/255. recommend() applies this at every sample, at
-// the sample's own R. As one number in linear R, the half step is smallest at black
-// (0.5/255/12.92 = 1.5e-4, where the curve is steepest) and largest at white (4.45e-3, where it is
-// flattest); invisibleThreshold(level) gives it at any level, by default at the top end, where a
-// Fresnel term ends up near grazing and where the largest errors of every method here occur.
+// The line is a quantisation threshold, not a visibility one. A pixel shows R·L (L: the light, at
+// most display white, 1). After the sRGB transform the error is |enc(R'L) − enc(RL)| ≈
+// enc'(RL)·L·|R' − R|, and enc'(x)·L grows with L on both pieces of the curve (12.92·L below
+// x = 0.0031308, ∝ R^(−7/12)L^(5/12) above), so the worst light is L = 1: the error shows as
+// |enc(R') − enc(R)|. Under half an 8-bit step, 0.5/255, it is no larger than the error the
+// display's own rounding to 8 bits already makes (the stored code may still differ by one where
+// the exact value lies near a step's edge). Whether a person can see an error of a code or a few
+// depends on the content and the viewer, so the panel lets the student choose the budget.
+// recommend() applies the line at every sample, at the sample's own R. As one number in linear R,
+// the half step is smallest at black (0.5/255/12.92 = 1.5e-4, where the curve is steepest) and
+// largest at white (4.45e-3, where it is flattest); invisibleThreshold(level) gives it at any
+// level, by default at the top end, where a Fresnel term ends up near grazing and where the
+// largest errors of every method here occur.
 import { sweepDomain } from './errorMetrics.js';
 import { methodsOfKind } from './methods.js';
 import { contextFor } from './rounding.js';
 import { referenceFor } from './scenes.js';
 import { toDegrees } from '../optics/angles.js';
 
-/** 8-bit codes of half a step: the visibility line. */
+/** 8-bit codes of half a step: the display's own rounding, the strictest budget. */
 export const HALF_STEP_CODES = 0.5;
 
 /** sRGB transfer function, linear → encoded (IEC 61966-2-1:1999). */
@@ -101,7 +105,7 @@ function describe(row) {
  * Recommendation for a scene. costs: { methodId: number } in any one unit (e.g. measured ns per
  * evaluation); a method without an entry uses its static count (methods.js), so pass a cost for
  * every method of the scene's kind or none. options.budgetCodes: the largest display error
- * allowed, 0.5 (invisible) by default; options.precision overrides the scene's. options.errors:
+ * allowed, 0.5 (within the display's rounding) by default; options.precision overrides the scene's. options.errors:
  * { methodId: methodError-shaped stats } measured elsewhere (a GPU read-back) instead of the JS
  * emulation, with options.where naming them in the reason (the scene and precision otherwise).
  * Returns { methodId, invisible, reason, budgetCodes, precision, table } where table has one row
@@ -129,7 +133,7 @@ export function recommend(scene, costs = {}, {
   const byAccuracy = (a, b) => a.maxCodes - b.maxCodes || a.max - b.max;
   table.sort((a, b) => a.cost - b.cost || byAccuracy(a, b));
   const passing = table.filter((row) => row.passes && row.recommendable);
-  const budget = budgetCodes === HALF_STEP_CODES ? 'half an 8-bit sRGB step (invisible)' : `${budgetCodes} 8-bit codes`;
+  const budget = budgetCodes === HALF_STEP_CODES ? 'half an 8-bit sRGB step (the display\'s own rounding)' : `${budgetCodes} 8-bit codes`;
   const where = place ?? `${scene.label}, ${contextFor(precision).label}`;
   let choice;
   let reason;
@@ -137,8 +141,8 @@ export function recommend(scene, costs = {}, {
     choice = passing[0];
     const cheaper = table.filter((row) => row.cost < choice.cost);
     reason = `${describe(choice)} is the cheapest method whose largest error over "${where}" stays under ${budget}.`;
-    const visible = cheaper.filter((row) => !row.passes);
-    if (visible.length > 0) reason += ` Cheaper but visible: ${visible.map(describe).join('; ')}.`;
+    const over = cheaper.filter((row) => !row.passes);
+    if (over.length > 0) reason += ` Cheaper but over the budget: ${over.map(describe).join('; ')}.`;
     const demos = table.filter((row) => row.passes && !row.recommendable && row.cost <= choice.cost);
     if (demos.length > 0) {
       reason += ` ${demos.map((row) => row.label).join(', ')} costs no more here but is not recommended:`

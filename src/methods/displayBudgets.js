@@ -2,8 +2,8 @@
 // and the scene-weighted average display error to show beside the worst one.
 //
 // The criterion is advisor.js's: the worst sample over the scene's domain, at the brightest
-// light (display white), after the sRGB transform, in 8-bit codes. Under the line, half a
-// step ("invisible"), no Schlick variant passes for opaque plastic: its worst pixel is 12.1 codes
+// light (display white), after the sRGB transform, in 8-bit codes. Under the strictest line, half a
+// step (no more than the display's own rounding), no Schlick variant passes for opaque plastic: its worst pixel is 12.1 codes
 // off (n = 1.3 at 83.6°), and even its average pixel, weighted by projected area (the scene's
 // cosine weighting), is 4.0 codes off, because sRGB steepens the small errors of dark
 // reflections. Schlick is nonetheless the usual choice there, as Filament (F_Schlick), Godot
@@ -17,7 +17,7 @@ import { contextFor } from './rounding.js';
 import { referenceFor } from './scenes.js';
 
 export const DISPLAY_BUDGETS = Object.freeze([
-  { id: 'invisible', codes: 0.5, label: 'Invisible: ½ an 8-bit step' },
+  { id: 'invisible', codes: 0.5, label: 'Within rounding: ½ an 8-bit step' }, // the id stays: links use it
   { id: 'one-code', codes: 1, label: '1 code (0.4 % of the range)' },
   { id: 'one-percent', codes: 2.55, label: '1 % of the range (2.55 codes)' },
   { id: 'acceptable', codes: 12.75, label: 'Acceptable: 5 % of the range (12.75 codes)' },

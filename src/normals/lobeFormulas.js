@@ -2,9 +2,13 @@
 // α is the GGX/Beckmann roughness (α = perceptual roughness², Burley, "Physically Based Shading
 // at Disney", SIGGRAPH 2012), s the Blinn-Phong exponent. For small values every isotropic
 // method is α'² ≈ α² + 2v with v the per-axis slope variance (derived: the small-variance limit
-// of each formula below). Adding variances is exact for Beckmann, whose slopes are Gaussian (a
-// Gaussian blurred by a Gaussian stays one), and the normal-mips panel shades with Beckmann; GGX's
-// slope distribution has no finite variance, so for GGX the same sum is a heuristic fit.
+// of each formula below). The variances of independent slopes add whatever their distributions;
+// what Beckmann adds is closure: its slopes are Gaussian, and a Gaussian lobe widened by Gaussian
+// footprint slopes stays a Gaussian, so the sum is again a Beckmann lobe (the normal-mips panel
+// shades with Beckmann). That needs the footprint's slopes to be Gaussian too; the grooves and
+// checker maps are bimodal (the panel's inspector shows it), so there the sum keeps the second
+// moment but not the lobe's shape. GGX's slope distribution has no finite variance, so for GGX the
+// same sum is a heuristic fit.
 
 /** s = 2/α² − 2 (the Phong–Beckmann correspondence of Walter et al., "Microfacet Models for
  * Refraction through Rough Surfaces", EGSR 2007). */

@@ -28,7 +28,7 @@ export function mediumWave(n, lambda0 = 1) {
   return { wavelength: lambda0 / n, speed: 1 / n, speedKmS: SPEED_OF_LIGHT_KM_S / n };
 }
 
-/** True when no transmitted wave exists: n1 sin θ1 > n2 (Snell gives sin θ2 > 1). */
+/** True when no propagating transmitted wave exists (only an evanescent one): n1 sin θ1 > n2 (Snell gives sin θ2 > 1). */
 export function isTotalInternalReflection(theta1, n1, n2) {
   return snellCosT(Math.cos(checkAngle(theta1)), n1, n2) === null;
 }

@@ -48,7 +48,8 @@ describe('two-sphere stage geometry', () => {
 });
 
 describe('the layered coat beside the lecture\'s mix', async () => {
-  const { coatConstants, diffuseShares, layeredCoat, lectureCoat } = await import('../../src/panels/fresnel-lighting/model.js');
+  const { coatConstants, diffuseShares, diffuseSharesRgb, layeredCoat, lectureCoat } = await import(
+    '../../src/panels/fresnel-lighting/model.js');
   const { hemisphericalReflectance } = await import('../../src/optics/diffuseFresnel.js');
   const { fresnelExact } = await import('../../src/optics/fresnel.js');
   it('diffuse reflectance: 0.60 under a coat of 1.5, 0.09 from the air, and 1 − r_in = (1 − r_out)/n²', () => {
@@ -74,6 +75,22 @@ describe('the layered coat beside the lecture\'s mix', async () => {
     const v = { albedo: 0.4, sun: 0.7, sky: 0.2, ks: 0.9, cosV: 0.6, cosL: 0.7, n: 1, ri, re };
     expect(layeredCoat(v)).toBeCloseTo(0.4 * (0.7 + 0.2), 14);
     expect(lectureCoat({ kd: 0.4 * 0.9, ks: 0.9, cosV: 0.6, n: 1 })).toBeCloseTo(0.36, 14);
+  });
+  it('the default kd #a3241c lets out 0.524, 0.414, 0.412 per channel, 0.51 of its luminance (not 0.43 of a grey)', () => {
+    // Independent arithmetic: sRGB decode (IEC 61966-2-1), the share (1 − R0)²/(n²(1 − a·ri)) per channel, Rec. 709 weights.
+    const decode = (v) => (v <= 0.04045 ? v / 12.92 : ((v + 0.055) / 1.055) ** 2.4);
+    const kd = [0xa3, 0x24, 0x1c].map((b) => decode(b / 255));
+    const ri = hemisphericalReflectance(1.5, 1);
+    const share = (a) => ((1 - 0.04) ** 2) / (2.25 * (1 - a * ri));
+    const w = [0.2126, 0.7152, 0.0722];
+    const Y = (rgb) => rgb.reduce((sum, x, i) => sum + w[i] * x, 0);
+    const s = diffuseSharesRgb({ kd, cosV: 1, cosL: 1, n: 1.5, ri });
+    kd.forEach((a, i) => expect(s.layered[i]).toBeCloseTo(share(a), 12));
+    expect(s.layered.map((x) => x.toFixed(3))).toEqual(['0.524', '0.414', '0.412']);
+    expect(s.layeredLuminance).toBeCloseTo(Y(kd.map((a) => a * share(a))) / Y(kd), 12);
+    expect(s.layeredLuminance.toFixed(2)).toBe('0.51');
+    // Feeding the luminance of kd through the nonlinear term gives the old, wrong 0.43.
+    expect(share(Y(kd)).toFixed(2)).toBe('0.43');
   });
   it('a coated base that is not near white lets out less of its diffuse light than the lecture\'s mix; energy is kept', () => {
     const { ri } = coatConstants(1.5);

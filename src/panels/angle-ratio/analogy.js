@@ -1,6 +1,8 @@
-// The lecture's stone-skipping analogy, with how far it holds for the indices on show: light
-// "mostly reflects" (R > 0.5) only close to grazing, and reflection is not a bounce. Pure; every
-// number comes from fresnel.js.
+// The lecture's stone-skipping analogy, with how far it holds for the indices on show: its trend
+// (the flatter the incidence, the more is reflected) holds at every angle, since unpolarized R
+// rises monotonically from head-on to grazing (or to the critical angle); what needs a grazing
+// angle is "mostly reflects" (R > 0.5). And reflection is not a bounce. Pure; every number comes
+// from fresnel.js.
 import { DEG, cosDeg } from '../../optics/angles.js';
 import { criticalAngle, fresnelExact } from '../../optics/fresnel.js';
 import { angleWhere } from '../../optics/solveAngle.js';
@@ -20,11 +22,12 @@ export function stoneAnalogy(nI, nT) {
   const reach = half === null
     ? 'With equal indices nothing is reflected at any angle.'
     : critical !== null
-      ? `From the denser side light reflects more than it transmits past ${fixed(half, 1)}° and all of it past the `
-        + `critical angle, ${fixed(critical / DEG, 1)}°, far from grazing: the analogy does not describe that.`
-      : `Here light reflects more than it transmits only past ${fixed(half, 1)}° from the normal `
+      ? `From the denser side R also grows with the angle, from ${R(0)} head-on, but it passes 0.5 at ${fixed(half, 1)}° `
+        + `and reaches 1 at the critical angle, ${fixed(critical / DEG, 1)}°, far from grazing: the analogy does not describe that.`
+      : `Its trend holds at every angle: R grows from ${R(0)} head-on to 1 at grazing. What needs a grazing angle is `
+      + `"mostly reflects": light reflects more than it transmits only past ${fixed(half, 1)}° from the normal `
       + `(R = ${R(Math.floor(half / 10) * 10)} at ${Math.floor(half / 10) * 10}°, ${R(Math.min(89, Math.ceil(half) + 1))} at `
-      + `${Math.min(89, Math.ceil(half) + 1)}°), so the analogy holds only that close to grazing.`;
+      + `${Math.min(89, Math.ceil(half) + 1)}°).`;
   return `The lecture likens this to skipping a stone: the flatter it meets the water, the more likely it skips. `
     + `${reach} And light is not a stone that bounces: R and T are how the wave's power divides at the interface.`;
 }

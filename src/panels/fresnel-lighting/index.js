@@ -23,8 +23,7 @@ import { makeScrollBox } from '../../ui/scrollBox.js';
 import { lectureNote } from '../../ui/lectureNote.js';
 import { fixed, rounded } from '../../ui/format.js';
 import { definitionList } from '../../ui/definitionList.js';
-import { luminance } from '../../optics/luminance.js';
-import { coatConstants, diffuseShares } from './model.js';
+import { coatConstants, diffuseSharesRgb } from './model.js';
 
 const METHOD_NAMES = { exact: 'exact Fresnel', schlick: "Schlick's approximation", layered: 'the layered coat, exact F' };
 const METHOD_CODES = { exact: 0, schlick: 1, layered: 2 };
@@ -132,16 +131,16 @@ export function mount(root, ctx) {
       layers = coatConstants(nT);
       trace.refresh();
     }
-    // Head-on under an overhead sun, for a base as bright as kd: how much of its diffuse light each model lets out.
-    const albedo = luminance(hexToLinear(values.kd));
-    const shares = diffuseShares({ albedo, cosV: 1, cosL: 1, n: nT, ri: layers.ri });
+    // Head-on under an overhead sun: how much of kd's diffuse light each model lets out, per channel.
+    const shares = diffuseSharesRgb({ kd: hexToLinear(values.kd), cosV: 1, cosL: 1, n: nT, ri: layers.ri });
     note.set(`The lecture's k = mix(kd, ks, F) is a heuristic: it weighs the diffuse layer by one F, taken at the view `
       + `angle, although the light entered at the light's angle, and it loses nothing inside the coat. A diffuse base `
       + `under a clear coat of n = ${nT} receives 1 − F(θl) of the sunlight, lets out 1 − F(θv) of what it reflects, `
       + `spread over a wider cone (1/n²), and the coat's underside sends ${fixed(layers.ri, 2)} of that diffuse light back `
       + `to the base. Head-on, under an overhead sun, the lecture's model lets out ${fixed(shares.lecture, 2)} of this kd's `
-      + `diffuse light, the layered coat ${fixed(shares.layered, 2)}`
-      + `${shares.layered < shares.lecture
+      + `diffuse light in every channel, the layered coat ${shares.layered.map((x) => fixed(x, 2)).join(', ')} `
+      + `(red, green, blue), ${fixed(shares.layeredLuminance, 2)} of its luminance`
+      + `${shares.layeredLuminance < shares.lecture
         ? ': the coated surface looks darker'
         : ' (light bouncing under the coat makes up for the losses on a bright base)'}. `
       + `"Layered coat" shows it on the same sphere.`, COAT_SOURCE);
@@ -154,7 +153,7 @@ export function mount(root, ctx) {
       ['Constant w', `${fixed(weight, 3)} at every angle`],
       ...(method === 'layered' ? [
         ['Coat underside reflects', `${fixed(layers.ri, 4)} of diffuse light`],
-        ['Diffuse let out head-on', `${fixed(shares.layered, 3)} (lecture: ${fixed(shares.lecture, 3)})`],
+        ['Diffuse let out head-on', `${fixed(shares.layeredLuminance, 3)} of its luminance (lecture: ${fixed(shares.lecture, 3)})`],
       ] : []),
     ]);
     const live = { exact: ['vec3 kExact '], schlick: ['vec3 kSchlick '], layered: ['float fV ', 'vec3 kLayered ', '  * albedo'] }[method];

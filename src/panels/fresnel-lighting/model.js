@@ -3,6 +3,7 @@
 // the layered coat it stands for. Pure math, no DOM; the panel's numbers and tests come from here.
 import { fresnelExact } from '../../optics/fresnel.js';
 import { hemisphericalReflectance } from '../../optics/diffuseFresnel.js';
+import { luminance } from '../../optics/luminance.js';
 
 /**
  * What the layered model needs of a coat of index n over air: ri, the share of diffuse light its
@@ -43,4 +44,19 @@ export function diffuseShares({ albedo, cosV, cosL, n, ri }) {
     lecture: 1 - fV,
     layered: ((1 - fresnelExact(cosL, 1, n)) * (1 - fV)) / (n * n * (1 - albedo * ri)),
   };
+}
+
+/**
+ * diffuseShares for a colour kd (linear RGB), channel by channel: the layered share depends on the
+ * albedo through 1/(1 − albedo·ri), so it is taken per channel and then weighed by what each
+ * channel contributes to the base's luminance (Rec. 709 weights): the share of its luminance that
+ * the coat lets out. Feeding kd's luminance into the formula instead would mix the channels inside
+ * the nonlinear term.
+ */
+export function diffuseSharesRgb({ kd, cosV, cosL, n, ri }) {
+  const perChannel = kd.map((albedo) => diffuseShares({ albedo, cosV, cosL, n, ri }));
+  const layered = perChannel.map((s) => s.layered);
+  const base = luminance(kd);
+  const layeredLuminance = base > 0 ? luminance(kd.map((a, i) => a * layered[i])) / base : luminance(layered);
+  return { lecture: perChannel[0].lecture, layered, layeredLuminance };
 }

@@ -131,7 +131,8 @@ export function mount(root, ctx) {
       const critical = state.critical === null ? 'there is no critical angle' : `the critical angle is ${angle(state.critical)}`;
       return media + (state.thetaT === null
         ? `At ${angle(state.thetaI)} incidence, past the critical angle of ${angle(state.critical)}: `
-          + 'total internal reflection, no transmitted wave.'
+          + 'total internal reflection, no propagating transmitted wave: only an evanescent field below the interface, '
+          + `fading to 1/e within ${fixed(state.depthNm, 0)} nm, that carries no light away.`
         : `At ${angle(state.thetaI)} incidence the transmitted wave travels at ${angle(state.thetaT)} (${critical}); `
           + `R = ${fixed(state.R, 4)}, T = ${fixed(state.T, 4)}.`);
     },
