@@ -48,6 +48,8 @@ const RIM_INDICES = [1.33, 1.5, 2];
 export const FRESNEL_QUESTIONS = [
   {
     id: 'r0-materials', panel: 'refractive-index', kind: 'choice',
+    graded: 'R(0°) = ((n_t − n_i)/(n_t + n_i))² for water, glass and diamond from air: it grows with the index and is not 0.04 '
+      + 'for all. The panel\'s material table lists R0 per material.',
     params: () => ({}),
     prompt: () => 'Is R(0°) = 0.04 for every dielectric?',
     options: () => [
@@ -77,6 +79,8 @@ export const FRESNEL_QUESTIONS = [
   },
   {
     id: 'exact-rp-rs', panel: 'polarization', kind: 'numeric', unit: 'fraction', tolerance: 0.0005,
+    graded: 'Rs − Rp of the s and p Fresnel equations from air into the given index at the given angle; the panel plots and '
+      + 'reads out both.',
     params: (rng) => ({ theta: rng.pick(ANGLES), nT: rng.pick(INDICES) }),
     prompt: (p) => `From air into n_t = ${p.nT} at θ = ${p.theta}°: what is R_s − R_p? To 3 decimals.`,
     expected: (p) => {
@@ -87,6 +91,7 @@ export const FRESNEL_QUESTIONS = [
   },
   {
     id: 'brewster-predict', panel: 'polarization', kind: 'predict', unit: 'deg', tolerance: 2,
+    graded: 'Brewster\'s angle atan(n_t/n_i), where Rp = 0; the panel\'s plot marks Rp.',
     params: (rng) => ({ nT: rng.pick(INDICES) }),
     prompt: (p) => `From air into n_t = ${p.nT}: predict the angle at which R_p = 0 (within 2°), then look.`,
     expected: (p) => deg(brewsterAngle(1, p.nT)),
@@ -95,6 +100,7 @@ export const FRESNEL_QUESTIONS = [
   },
   {
     id: 'brewster-exact', panel: 'polarization', kind: 'numeric', unit: 'deg', tolerance: 0.05,
+    graded: 'Brewster\'s angle atan(n_t/n_i) for the given pair; the panel marks and states it.',
     params: (rng) => ({ nI: rng.pick([1, 1.33]), nT: rng.pick([1.5, 1.6, 1.75, 2.42]) }),
     prompt: (p) => `From n_i = ${p.nI} into n_t = ${p.nT}: the Brewster angle, in degrees to 0.1°.`,
     expected: (p) => deg(brewsterAngle(p.nI, p.nT)),
@@ -102,6 +108,8 @@ export const FRESNEL_QUESTIONS = [
   },
   {
     id: 'exact-r', panel: 'exact-fresnel', kind: 'numeric', unit: 'fraction', tolerance: 0.0005,
+    graded: 'The exact unpolarized reflectance (Rs + Rp)/2 at the given angle and index; the panel evaluates the lecture\'s '
+      + 'formula term by term.',
     params: (rng) => ({ theta: rng.pick(ANGLES), nT: rng.pick(INDICES) }),
     prompt: (p) => `Light meets a surface from air at θ = ${p.theta}°, into n_t = ${p.nT}. `
       + `What fraction R is reflected (unpolarised)? To 3 decimals.`,
@@ -110,6 +118,8 @@ export const FRESNEL_QUESTIONS = [
   },
   {
     id: 'matched-grazing', panel: 'exact-fresnel', kind: 'choice',
+    graded: 'R for equal indices on both sides, at 89.9°: 0, since no interface reflects; the panel\'s exact formula gives it at '
+      + 'any angle.',
     params: (rng) => ({ n: rng.pick([1.33, 1.5, 2.42]) }),
     prompt: (p) => `Both sides of an interface have n = ${p.n} (n_i = n_t). `
       + `What does the exact formula give for R at θ = 89.9°, nearly grazing?`,
@@ -140,6 +150,7 @@ export const FRESNEL_QUESTIONS = [
   },
   {
     id: 'schlick-error', panel: 'schlick', kind: 'numeric', unit: 'fraction', tolerance: 0.0005,
+    graded: '|exact R − Schlick| at the given angle and index; the panel plots both curves and their difference.',
     params: (rng) => ({ theta: rng.pick([60, 70, 75, 80, 85]), nT: rng.pick([1.33, 1.5, 2.0]) }),
     prompt: (p) => `From air into n_t = ${p.nT} at θ = ${p.theta}°: `
       + `how far is Schlick's approximation from the exact R (|exact − Schlick|)? To 3 decimals.`,
@@ -148,6 +159,8 @@ export const FRESNEL_QUESTIONS = [
   },
   {
     id: 'schlick-inside', panel: 'schlick', kind: 'choice',
+    graded: 'From inside glass past the critical angle (41.8°) the exact R is 1 while Schlick on cos θ_i stays far below; the '
+      + 'panel plots both from the denser side.',
     params: (rng) => ({ theta: rng.pick([45, 50, 60]) }),
     prompt: (p) => `Inside glass (n_i = 1.5) towards air at θ = ${p.theta}°, is Schlick's formula on cos θ_i a good estimate of R?`,
     options: () => [
@@ -168,6 +181,7 @@ export const FRESNEL_QUESTIONS = [
   },
   {
     id: 'r0-value', panel: 'r0-derivation', kind: 'numeric', unit: 'fraction', tolerance: 0.00005,
+    graded: 'R(0°) = ((n_t − n_i)/(n_t + n_i))² for the given index; the panel evaluates each step of the derivation.',
     params: (rng) => ({ nT: rng.pick(INDICES) }),
     prompt: (p) => `R(0°), head-on, from air into n_t = ${p.nT}: to 4 decimals.`,
     expected: (p) => normalIncidence(1, p.nT),
@@ -175,6 +189,7 @@ export const FRESNEL_QUESTIONS = [
   },
   {
     id: 'rim-scaling', panel: 'fresnel-lighting', kind: 'choice',
+    graded: 'Twice F(85°) for the given coat index exceeds 1, more light than arrives; the panel\'s plot gives F at the rim.',
     params: (rng) => ({ nT: rng.pick([1.33, 1.5]) }),
     prompt: (p) => `A coat of n = ${p.nT} looks too dull at the rim. Should you scale F up (say ×2) to brighten it?`,
     options: () => [
@@ -198,6 +213,8 @@ export const FRESNEL_QUESTIONS = [
   },
   {
     id: 'metal-grazing', panel: 'metals', kind: 'choice',
+    graded: 'The conductor reflectance per channel at 0° and 89° from the metal\'s n + ik: every channel approaches 1 and their '
+      + 'spread shrinks; the panel\'s table, plot and spheres show it.',
     params: (rng) => ({ metal: rng.pick(['gold', 'copper']) }),
     prompt: (p) => `${metalById(p.metal).name} reflects its own colour head-on. What does it reflect at grazing incidence (89°)?`,
     options: () => {
@@ -231,6 +248,8 @@ export const FRESNEL_QUESTIONS = [
   },
   {
     id: 'metal-r0', panel: 'metals', kind: 'numeric', unit: 'fraction', tolerance: 0.005,
+    graded: 'A conductor\'s R(0°) = ((n − 1)² + k²)/((n + 1)² + k²) in the green channel; the panel\'s swatches and table give '
+      + 'F0 per channel.',
     params: (rng) => ({ metal: rng.pick(metals.map((m) => m.id)) }),
     prompt: (p) => `Head-on (0°), what fraction of green light (${metalById(p.metal).rgbNm[1]} nm) `
       + `does ${metalById(p.metal).name.toLowerCase()} reflect? To 2 decimals.`,
@@ -239,9 +258,12 @@ export const FRESNEL_QUESTIONS = [
   },
   {
     id: 'schlick-visible', panel: 'speed-accuracy', kind: 'choice',
+    graded: 'The largest difference between Schlick and the exact R over the plastic scene (air into n from 1.3 to 1.7, every '
+      + 'angle), in 8-bit sRGB codes at display white: a display choice, named in the prompt. The panel\'s table gives it '
+      + 'per method.',
     params: () => ({}),
     prompt: () => 'Light from air onto plastic, paint or skin (n from 1.3 to 1.7), at display white on an 8-bit sRGB screen: '
-      + 'can anyone see that Schlick’s pow(1 − c, 5) is not the exact R (is any pixel off by more than half a display code)?',
+      + 'does Schlick’s pow(1 − c, 5) err by more than the display’s own rounding, half an 8-bit code, at any pixel?',
     options: () => {
       const where = () => {
         const { codes, theta, nT } = schlickWorstCodes();
@@ -250,12 +272,13 @@ export const FRESNEL_QUESTIONS = [
       };
       return [
         {
-          id: 'invisible', text: () => 'No: engines ship Schlick, so its error must be invisible.',
+          id: 'invisible', text: () => 'No: engines ship Schlick, so its error must stay within the display’s rounding.',
           holds: () => schlickWorstCodes().codes <= 0.5,
-          why: () => `No: it is off by ${where()}. Engines accept an error of that size; it is a judgement, not invisibility.`,
+          why: () => `No: it is off by ${where()}. Engines accept an error of that size; that is a judgement about what `
+            + 'viewers notice, not a property of the display.',
         },
         {
-          id: 'visible', text: () => 'Yes: near grazing its error shows, by more than two codes at worst.',
+          id: 'visible', text: () => 'Yes: near grazing it is off by more than two codes at worst.',
           holds: () => schlickWorstCodes().codes > 2,
           why: () => `Right: ${where()}. The exact c/g form is off by `
             + `${codesText(methodError(sceneById('plastic'), methodById('exact-cg')).maxCodes)} at worst; `
@@ -267,6 +290,9 @@ export const FRESNEL_QUESTIONS = [
   },
   {
     id: 'lecture-order', panel: 'shader-lab', kind: 'choice',
+    graded: 'What the lecture\'s g = sqrt(1.0 + c*c − m*m) returns in float32 for matched indices near grazing: 1.0 + c*c rounds '
+      + 'to 1.0 when c² is below 2⁻²⁴, so g = 0 and R = 1. The shader lab compiles the student\'s own version and grades '
+      + 'this case.',
     params: (rng) => ({ n: rng.pick([1.33, 1.5]), theta: rng.pick([89.99, 89.999]) }),
     prompt: (p) => `Both sides have n = ${p.n}. In float32 (highp), the lecture's code computes g = sqrt(1.0 + c*c - m*m) `
       + `at θ = ${p.theta}°. What R comes out?`,
@@ -296,6 +322,8 @@ export const FRESNEL_QUESTIONS = [
   },
   {
     id: 'pow-above-one', panel: 'stability', kind: 'choice',
+    graded: 'What pow(1 − cos θ, 5) is for cos θ a hair above 1 in a highp shader: 1 − cos θ is negative in float32, and GLSL ES '
+      + '3.00 (§8.2) leaves pow undefined there. The stability map shows the column at θ = 0°.',
     params: (rng) => ({ nT: rng.pick([1.33, 1.5]) }),
     prompt: (p) => `Interpolated normals can give cos θ = ${COS_ABOVE_ONE}, a hair above 1. In a highp shader, `
       + `what does Schlick's R0 + (1 − R0)·pow(1 − cos θ, 5) give there (from air into n_t = ${p.nT})?`,

@@ -8,7 +8,10 @@
 //                   prediction is drawn against once the truth is shown (it stays drawn);
 //                   `axis`, where given, names what the 0°–90° axis measures (else θ from the normal);
 //   kind 'choice':  one option holds.
-// Every question has `state(p)`: the values its panel starts from.
+// Every question has `state(p)`: the values its panel starts from, and `graded`: the physical
+// quantity it grades and why a student can reason to it from what the panel shows. A quantity that
+// depends on a camera, a frame or a display choice says so in the prompt. tests/unit/homeworkGraded.test.js
+// computes each graded quantity again without the lab's code.
 import { LIGHT_QUESTIONS } from './lightQuestions.js';
 import { FRESNEL_QUESTIONS } from './fresnelQuestions.js';
 

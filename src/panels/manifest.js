@@ -68,12 +68,12 @@ export const PANELS = Object.freeze([
     id: 'asphalt',
     title: 'Does asphalt have a specular highlight?',
     lede: `Look straight down at a road and it is dull; look along it towards a low sun and it shines. Nothing about
-        the asphalt changed, only the angle, and two things grow with it: the rough microfacets send what they reflect
-        into a lobe that leans forward, towards grazing views (with Fresnel off the brightest spot still grows about 13×
-        from overhead to a camera 6° up), and F at the angle between the sun and the half-vector rises (another 9.5×).
-        Even so the road reflects only about 7 % of the sunlight specularly, less than its diffuse albedo of 9 %: the
-        sheen is bright because that light is concentrated, not because there is much of it. Switch Fresnel off to see
-        what a model without it misses.`,
+        the asphalt changed, only the angle, and two things grow with it. From the road straight below you to the road at
+        the horizon, with the sun 10° up, the rough microfacets' lobe, which leans forward towards grazing views, makes the
+        specular light about 19× brighter (with Fresnel off, that is all that grows), and F at the angle between the sun
+        and the half-vector rises about 12×. Even so, with the sun 10° up the road reflects only about 7 % of the sunlight
+        specularly, less than its diffuse albedo of 9 %: the sheen is bright because that light is concentrated, not
+        because there is much of it. Switch Fresnel off to see what a model without it misses.`,
     cite: 'Lecture: “Specular”.',
     webgl: true,
     material: 'nT',
@@ -95,7 +95,8 @@ export const PANELS = Object.freeze([
     title: 'Reflection vs refraction',
     lede: `At a water surface, part of the light is reflected (you see the sky) and the rest is refracted (you see the
         floor below). Which part wins depends on the angle: looking down you see through, looking across you see the sky.
-        F splits the two, R + T = 1.`,
+        F splits the two, R + T = 1. Light from the floor also spreads into a wider cone as it leaves the water, which
+        divides its radiance by n<sub>t</sub>².`,
     cite: 'Lecture: “Reflection vs. Refraction”.',
     webgl: true,
     material: 'nT',
@@ -107,7 +108,8 @@ export const PANELS = Object.freeze([
     lede: `In a material of index n the crests of a light wave travel at c/n (the phase speed; a pulse travels a little
         slower, at c/n<sub>g</sub>). When a wavefront crosses into a slower medium, the part that enters first slows first,
         so the front turns: Snell's law, n<sub>i</sub> sin θ<sub>i</sub> = n<sub>t</sub> sin θ<sub>t</sub>.
-        Going into a faster medium past the critical angle, no transmitted wave can match the front, and all of it is reflected.`,
+        Going into a faster medium past the critical angle, no propagating transmitted wave can match the front (only an
+        evanescent field that fades with depth and carries no light away), and all of the light is reflected.`,
     cite: 'Lecture: “Wave Theory – Refraction”.',
     webgl: true,
     material: 'nT',
@@ -196,8 +198,8 @@ export const PANELS = Object.freeze([
     lede: `Plastic, glass and paint reflect a few per cent head-on and more only towards grazing. A metal's index is
         complex, n + ik, and differs per wavelength: head-on it reflects far more (from 0.41 to 0.99 of the light per channel for the
         metals here), with a colour for gold and copper, nearly neutral for silver, aluminium and iron. It still has a Fresnel
-        factor: towards grazing its R dips a little below F0, then rises to 1 in every channel, and a coloured metal's
-        tint fades to white.`,
+        factor: towards grazing R first dips below F0 in most channels (aluminium's red by 0.08, near 82°; gold's blue not
+        at all), then rises to 1 in every channel, and a coloured metal's tint fades to white.`,
     cite: 'Lecture: “Fresnel Reflection and Materials”.',
     webgl: true,
     material: 'nT',
@@ -207,7 +209,7 @@ export const PANELS = Object.freeze([
     id: 'speed-accuracy',
     title: 'Both speed and accuracy count',
     lede: `Every Fresnel method, measured on the device in front of you: what it costs per evaluation and how wrong it is.
-        Pick a scene to see which method it needs: the cheapest one whose error you cannot see.`,
+        Pick a scene to see which method it needs: the cheapest one whose error stays within the display's own rounding.`,
     cite: 'Beyond the slides: “model no more than a scene needs”.',
     webgl: false, // the chart is 2D; contexts live only while a benchmark or a read-back runs
     material: null,

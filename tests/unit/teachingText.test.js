@@ -9,22 +9,32 @@ import { defaults } from '../../src/host/params.js';
 import { dielectricById, metalF0, metals } from '../../src/optics/materials.js';
 import { normalIncidence } from '../../src/optics/fresnel.js';
 import { NEUTRAL } from '../../src/panels/metals/lectureGap.js';
+import { metalCurves, metalCurveStats } from '../../src/panels/metals/metalCurves.js';
 
 const plain = (html) => html.replace(/<[^>]+>/g, '').replace(/\s+/g, ' ');
 const lede = (id) => plain(panelEntry(id).lede);
 const spread = (rgb) => Math.max(...rgb) - Math.min(...rgb);
 
 describe('the numbers in the ledes are the panels\' own', () => {
-  it('asphalt: the lobe grows about 13× and F 9.5× from overhead to 6°; 7 % reflected specularly, against a 9 % albedo', () => {
+  it('asphalt: from the road straight below to the horizon the lobe gives about 19×, F about 12×; 7 % reflected at a 10° sun', () => {
     const values = defaults(asphaltSchema);
-    expect(values.camEl).toBe(6);
-    const growth = sheenGrowth({ ...values, fresnel: false }, 2);
-    const withF = sheenGrowth(values, 2);
-    expect(lede('asphalt')).toContain(`about ${Math.round(growth.lobe)}× from overhead to a camera ${values.camEl}° up`);
-    expect(lede('asphalt')).toContain(`(another ${withF.fresnel.toFixed(1)}×)`);
-    expect(lede('asphalt')).toContain(`about ${Math.round(100 * specularAlbedo(values))} % of the sunlight specularly`);
+    expect(values.sunEl).toBe(10);
+    // Two stated directions, not two frames: any camera that has the horizon in view gives the same factors.
+    for (const camEl of [values.camEl, 12]) {
+      const growth = sheenGrowth({ ...values, camEl }, 2);
+      expect(growth.spot.below).toBeLessThan(1e-6); // the brightest spot is at the horizon
+      expect(growth.reference.below).toBeCloseTo(90, 9); // against the road straight below
+      expect(lede('asphalt')).toContain(`makes the specular light about ${Math.round(growth.lobe)}× brighter`);
+      expect(lede('asphalt')).toContain(`and the half-vector rises about ${Math.round(growth.fresnel)}×`);
+    }
+    expect(sheenGrowth({ ...values, fresnel: false }, 2).fresnel).toBe(1); // with Fresnel off, only the lobe grows
+    expect(lede('asphalt')).toContain('From the road straight below you to the road at the horizon, with the sun 10° up');
+    expect(lede('asphalt')).toContain(`with the sun ${values.sunEl}° up the road reflects only about `
+      + `${Math.round(100 * specularAlbedo(values))} % of the sunlight specularly`);
     expect(lede('asphalt')).toContain(`diffuse albedo of ${Math.round(100 * SCENE.albedo)} %`);
     expect(specularAlbedo(values)).toBeLessThan(SCENE.albedo);
+    // Not at every sun the slider gives: which is why the lede names its sun.
+    expect(specularAlbedo({ ...values, sunEl: 2 })).toBeGreaterThan(SCENE.albedo);
   });
   it('metals: 0.41 to 0.99 of the light head-on per channel; gold and copper coloured, silver, aluminium and iron nearly neutral', () => {
     const f0 = Object.fromEntries(metals.map((m) => [m.id, metalF0(m)]));
@@ -33,6 +43,14 @@ describe('the numbers in the ledes are the panels\' own', () => {
     for (const id of ['gold', 'copper']) expect(spread(f0[id]), id).toBeGreaterThan(NEUTRAL);
     for (const id of ['silver', 'aluminium', 'iron']) expect(spread(f0[id]), id).toBeLessThan(NEUTRAL);
     expect(lede('metals')).toMatch(/colour for gold and copper, nearly neutral for silver, aluminium and iron/);
+    // Towards grazing most channels dip below F0: aluminium's red deepest, by 0.08 near 82°; gold's blue not at all.
+    const channels = metals.flatMap((m) => metalCurveStats(metalCurves(m), m).map((s) => ({ metal: m.id, ...s })));
+    expect(channels.filter((c) => c.dip > 0).length).toBeGreaterThan(channels.length / 2);
+    const deepest = channels.reduce((a, b) => (b.dip > a.dip ? b : a));
+    expect([deepest.metal, deepest.channel]).toEqual(['aluminium', 'red']);
+    expect(lede('metals')).toContain(`R first dips below F0 in most channels (aluminium's red by ${deepest.dip.toFixed(2)}, `
+      + `near ${deepest.minimum.theta.toFixed(0)}°; gold's blue not at all)`);
+    expect(channels.find((c) => c.metal === 'gold' && c.channel === 'blue').dip).toBe(0);
     // Dielectrics: a few per cent head-on.
     for (const id of ['glass', 'acrylic', 'polycarbonate']) {
       const r0 = normalIncidence(1, dielectricById(id).n);

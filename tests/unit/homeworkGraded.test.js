@@ -1,0 +1,208 @@
+// Every homework question grades a physical quantity it declares (`graded`, in its source), and here
+// that quantity is computed again without the lab's code: from the 50-digit optics oracle
+// (tests/unit/oracle) or from the textbook formula written out below. A numeric or predicted answer
+// must match it far inside the question's tolerance; in a choice question exactly the option the
+// physics picks must hold. Every parameter set a seed can draw is checked, and a question without a
+// check here fails the last test.
+import { describe, expect, it } from 'vitest';
+import { QUESTIONS, questionById } from '../../src/homework/questions.js';
+import { seededRandom } from '../../src/homework/seededRandom.js';
+import { brewsterDegrees, conductorR, cosOfDegrees, criticalDegrees, dielectricR, dielectricSP } from './oracle/fresnelOracle.js';
+import materials from '../../src/optics/materials.json';
+
+const DEG = Math.PI / 180;
+const num = (decimal) => decimal.toNumber();
+const R = (thetaDeg, nI, nT) => num(dielectricR(cosOfDegrees(thetaDeg), nI, nT));
+const metal = (id) => materials.metals.find((m) => m.id === id);
+const dielectricN = (id) => materials.dielectrics.find((m) => m.id === id).n['589'];
+
+/** Every distinct parameter set the question's generator gives over many seeds. */
+function allParams(q) {
+  const seen = new Map();
+  for (let seed = 0; seed < 400; seed += 1) {
+    const p = q.params(seededRandom(`graded-${seed}`));
+    seen.set(JSON.stringify(p), p);
+  }
+  return [...seen.values()];
+}
+
+/** θ in [lo, hi] where the increasing or decreasing f crosses level, by bisection. */
+function crossing(f, level, lo, hi) {
+  const below = f(lo) < level;
+  let [a, b] = [lo, hi];
+  for (let i = 0; i < 60; i += 1) {
+    const m = (a + b) / 2;
+    if ((f(m) < level) === below) a = m;
+    else b = m;
+  }
+  return (a + b) / 2;
+}
+
+/** The option ids of a choice question that hold for p. */
+const holding = (q, p) => q.options(p).filter((o) => o.holds(p)).map((o) => o.id);
+
+// Plain float64 textbook forms, for grid searches the 50-digit oracle would make slow (Hecht, Optics, §4.6).
+function fresnelPlain(thetaDeg, nI, nT) {
+  const ci = Math.cos(thetaDeg * DEG);
+  const st = (nI / nT) * Math.sin(thetaDeg * DEG);
+  if (st >= 1) return 1;
+  const ct = Math.sqrt(1 - st * st);
+  const rs = (nI * ci - nT * ct) / (nI * ci + nT * ct);
+  const rp = (nT * ci - nI * ct) / (nT * ci + nI * ct);
+  return (rs * rs + rp * rp) / 2;
+}
+const schlickPlain = (thetaDeg, nI, nT) => {
+  const r0 = ((nT - nI) / (nT + nI)) ** 2;
+  return r0 + (1 - r0) * (1 - Math.cos(thetaDeg * DEG)) ** 5;
+};
+
+// The asphalt scene, shaded from the formulas (not the panel's model): GGX D (Walter et al. 2007, eq. 33),
+// height-correlated Smith G2 (Heitz 2014, eq. 99), Cook–Torrance, Lambert, Rec. 709 luminance.
+// Scene constants as the panel states them: sun and sky light, albedo 0.09.
+const SUN = [3.6, 3.3, 2.9];
+const SKY = [0.16, 0.2, 0.27];
+const Y = (rgb) => 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
+function roadSpot(belowDeg, { sunEl, roughness, nT }) {
+  const a2 = roughness ** 4; // α = roughness²
+  const l = [0, Math.sin(sunEl * DEG), Math.cos(sunEl * DEG)];
+  const v = [0, Math.sin(belowDeg * DEG), -Math.cos(belowDeg * DEG)]; // from the spot back to the eye
+  const hRaw = l.map((x, i) => x + v[i]);
+  const h = hRaw.map((x) => x / Math.hypot(...hRaw));
+  const cosD = l[0] * h[0] + l[1] * h[1] + l[2] * h[2];
+  const D = a2 / (Math.PI * (h[1] * h[1] * (a2 - 1) + 1) ** 2);
+  const lambda = (c) => (Math.sqrt(1 + a2 * (1 / (c * c) - 1)) - 1) / 2;
+  const G2 = 1 / (1 + lambda(l[1]) + lambda(v[1]));
+  const F = fresnelPlain(Math.acos(cosD) / DEG, 1, nT);
+  const specular = ((D * G2 * F) / (4 * l[1] * v[1])) * Y(SUN) * l[1];
+  const diffuse = 0.09 * ((Y(SUN) * l[1]) / Math.PI + Y(SKY));
+  return { specular, diffuse };
+}
+
+/** For each question id: a check of its graded quantity for one parameter set p. */
+const CHECKS = {
+  'mip-renormalize': (q, p) => {
+    const L = Math.cos(p.tiltDeg * DEG); // |(n1 + n2)/2| for unit normals ±t from the mean
+    expect(L).toBeLessThan(1);
+    const sigma2 = (1 - L) / L; // Toksvig 2004
+    expect(p.s / (1 + p.s * sigma2)).toBeLessThan(p.s);
+    expect(holding(q, p)).toEqual(['loses-roughness']);
+  },
+  'toksvig-exponent': (q, p) => {
+    const sigma2 = (1 - p.L) / p.L;
+    expect(Math.abs(q.expected(p) - p.s / (1 + p.s * sigma2))).toBeLessThan(1e-9);
+  },
+  'asphalt-outshine': (q, p) => {
+    const share = (b) => {
+      const { specular, diffuse } = roadSpot(b, { sunEl: p.sunEl, roughness: 0.8, nT: p.nT });
+      return specular / (specular + diffuse);
+    };
+    expect(Math.abs(q.expected(p) - crossing(share, 0.5, 1, 90))).toBeLessThan(1e-6);
+  },
+  'phong-grazing': (q, p) => {
+    const r0 = ((p.nT - 1) / (p.nT + 1)) ** 2;
+    expect(R(85, 1, p.nT)).toBeGreaterThan(4 * r0); // Phong × F grows many times; plain Phong stays R0
+    expect(holding(q, p)).toEqual(['fresnel-grows']);
+  },
+  'split-half': (q, p) => expect(Math.abs(q.expected(p) - crossing((t) => fresnelPlain(t, 1, p.nT), 0.5, 0, 90))).toBeLessThan(1e-6),
+  'snell-angle': (q, p) => expect(Math.abs(q.expected(p) - Math.asin(Math.sin(p.theta * DEG) / p.nT) / DEG)).toBeLessThan(1e-9),
+  'critical-predict': (q, p) => expect(Math.abs(q.expected(p) - num(criticalDegrees(p.nI, 1)))).toBeLessThan(1e-9),
+  'critical-angle': (q, p) => expect(Math.abs(q.expected(p) - num(criticalDegrees(p.nI, 1)))).toBeLessThan(1e-9),
+  'schlick-worst': (q, p) => {
+    let best = { gap: -1, theta: 0 };
+    for (let i = 0; i <= 90000; i += 1) {
+      const t = i / 1000;
+      const gap = Math.abs(fresnelPlain(t, 1, p.nT) - schlickPlain(t, 1, p.nT));
+      if (gap > best.gap) best = { gap, theta: t };
+    }
+    expect(Math.abs(q.expected(p) - best.theta)).toBeLessThan(0.002);
+  },
+  'r0-materials': (q, p) => {
+    const r0 = (id) => ((dielectricN(id) - 1) / (dielectricN(id) + 1)) ** 2;
+    expect(r0('water')).toBeLessThan(r0('glass'));
+    expect(r0('glass')).toBeLessThan(r0('diamond'));
+    expect(Math.abs(r0('diamond') - 0.04)).toBeGreaterThan(0.1);
+    expect(holding(q, p)).toEqual(['depends-on-n']);
+  },
+  'exact-rp-rs': (q, p) => {
+    const { s, p: rp } = dielectricSP(cosOfDegrees(p.theta), 1, p.nT);
+    expect(Math.abs(q.expected(p) - num(s.minus(rp)))).toBeLessThan(1e-12);
+  },
+  'brewster-predict': (q, p) => expect(Math.abs(q.expected(p) - num(brewsterDegrees(1, p.nT)))).toBeLessThan(1e-9),
+  'brewster-exact': (q, p) => expect(Math.abs(q.expected(p) - num(brewsterDegrees(p.nI, p.nT)))).toBeLessThan(1e-9),
+  'exact-r': (q, p) => expect(Math.abs(q.expected(p) - R(p.theta, 1, p.nT))).toBeLessThan(1e-12),
+  'matched-grazing': (q, p) => {
+    expect(R(89.9, p.n, p.n)).toBe(0);
+    expect(holding(q, p)).toEqual(['zero']);
+  },
+  'schlick-error': (q, p) => {
+    expect(Math.abs(q.expected(p) - Math.abs(R(p.theta, 1, p.nT) - schlickPlain(p.theta, 1, p.nT)))).toBeLessThan(1e-12);
+  },
+  'schlick-inside': (q, p) => {
+    expect(p.theta).toBeGreaterThan(num(criticalDegrees(1.5, 1)));
+    expect(R(p.theta, 1.5, 1)).toBe(1);
+    expect(schlickPlain(p.theta, 1.5, 1)).toBeLessThan(0.9);
+    expect(holding(q, p)).toEqual(['misses-tir']);
+  },
+  'r0-value': (q, p) => expect(Math.abs(q.expected(p) - ((p.nT - 1) / (p.nT + 1)) ** 2)).toBeLessThan(1e-15),
+  'rim-scaling': (q, p) => {
+    expect(2 * R(85, 1, p.nT)).toBeGreaterThan(1);
+    expect(holding(q, p)).toEqual(['energy']);
+  },
+  'metal-grazing': (q, p) => {
+    const m = metal(p.metal);
+    const at = (t) => m.n.map((n, i) => num(conductorR(cosOfDegrees(t), n, m.k[i])));
+    const spread = (rgb) => Math.max(...rgb) - Math.min(...rgb);
+    expect(Math.min(...at(89))).toBeGreaterThan(0.9);
+    expect(spread(at(89))).toBeLessThan(spread(at(0)) / 4);
+    expect(holding(q, p)).toEqual(['towards-white']);
+  },
+  'metal-r0': (q, p) => {
+    const { n: [, n], k: [, k] } = metal(p.metal);
+    expect(Math.abs(q.expected(p) - ((n - 1) ** 2 + k * k) / ((n + 1) ** 2 + k * k))).toBeLessThan(1e-12);
+  },
+  'schlick-visible': (q, p) => {
+    // sRGB encoding (IEC 61966-2-1), 8-bit codes at display white, over air → n 1.3 … 1.7 and every angle.
+    const enc = (x) => (x <= 0.0031308 ? 12.92 * x : 1.055 * x ** (1 / 2.4) - 0.055);
+    let worst = 0;
+    for (let n = 1.3; n <= 1.7001; n += 0.05) {
+      for (let i = 0; i <= 9000; i += 1) {
+        const t = i / 100;
+        worst = Math.max(worst, 255 * Math.abs(enc(schlickPlain(t, 1, n)) - enc(fresnelPlain(t, 1, n))));
+      }
+    }
+    expect(worst).toBeGreaterThan(2);
+    expect(holding(q, p)).toEqual(['visible']);
+  },
+  'lecture-order': (q, p) => {
+    // float32, as a highp shader rounds: 1 + c² rounds to 1 once c² < 2⁻²⁴, so g = sqrt(1 + c² − 1) = 0, and
+    // R = ½((g − c)/(g + c))²(1 + ((c(g + c) − 1)/(c(g − c) + 1))²) = ½·1·(1 + 1) = 1 where the exact R is 0.
+    const f = Math.fround;
+    const c = f(Math.cos(p.theta * DEG));
+    expect(f(c * c)).toBeLessThan(2 ** -24);
+    expect(f(1 + f(c * c))).toBe(1);
+    expect(R(p.theta, p.n, p.n)).toBe(0);
+    expect(holding(q, p)).toEqual(['one']);
+  },
+  'pow-above-one': (q, p) => {
+    // 1.0000001 survives float32 (1 + 2⁻²³), so 1 − cos θ is negative: pow is undefined there (GLSL ES 3.00 §8.2).
+    const c = Math.fround(1.0000001);
+    expect(c).toBeGreaterThan(1);
+    expect(Math.fround(1 - c)).toBeLessThan(0);
+    expect(q.prompt(p)).toContain('1.0000001');
+    expect(holding(q, p)).toEqual(['undefined']);
+  },
+};
+
+describe('every question grades the physical quantity it declares', () => {
+  for (const q of QUESTIONS) {
+    it(`${q.id}: ${q.graded?.slice(0, 60) ?? 'no declared quantity'}…`, () => {
+      expect(typeof q.graded === 'string' && q.graded.length > 40, `${q.id} declares what it grades`).toBe(true);
+      const check = CHECKS[q.id];
+      expect(check, `${q.id} has an independent check here`).toBeTypeOf('function');
+      for (const p of allParams(q)) check(q, p);
+    });
+  }
+  it('checks no question that is gone', () => {
+    expect(Object.keys(CHECKS).filter((id) => !questionById(id))).toEqual([]);
+  });
+});
