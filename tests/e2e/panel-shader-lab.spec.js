@@ -123,3 +123,23 @@ test.describe('a GPU that refuses the lab\'s own shaders', () => {
     await expect(page.locator('.panel-description')).toContainText('could not compile the lab’s own shaders');
   });
 });
+
+test('typing over a selection, within a line or across lines, keeps to the page\'s style policy', async ({ page }) => {
+  // Left to the browser, typing over highlighted text makes Chrome write style attributes into the merged
+  // lines, which the page's Content-Security-Policy refuses (a console error, and the fixture fails).
+  await openLab(page, embed());
+  const editor = page.locator('.cm-content');
+  const text = () => page.evaluate(() => window.fresnelLab.panels['shader-lab'].editor.text());
+  await editor.focus();
+  await page.keyboard.press('Control+a');
+  await page.keyboard.type('float x = 1.0;');
+  await expect.poll(text).toBe('float x = 1.0;');
+  await page.keyboard.press('Home');
+  await page.keyboard.press('Shift+End');
+  await page.keyboard.type('9');
+  await expect.poll(text).toBe('9');
+  await page.evaluate(() => window.fresnelLab.panels['shader-lab'].editor.setText('float a;\nfloat b;\nfloat c;'));
+  await page.keyboard.press('Control+a');
+  await page.keyboard.press('5');
+  await expect.poll(text).toBe('5');
+});

@@ -25,6 +25,21 @@ const glslColours = HighlightStyle.define([
   { tag: tags.invalid, color: 'var(--code-invalid)' },
 ]);
 
+// CodeMirror leaves typing to the browser and reads the change back from the DOM. Typing over a
+// selection, Chrome's own editing deletes it first and writes style attributes into the lines it
+// merges (to keep the look of the text it removed), which the page's Content-Security-Policy
+// refuses and reports. So the editor replaces a selection itself (not while an input method
+// composes), and the browser's editing never runs there.
+const typeOverSelection = EditorView.domEventHandlers({
+  beforeinput(event, view) {
+    if (event.inputType !== 'insertText' || event.isComposing || typeof event.data !== 'string') return false;
+    if (view.state.selection.ranges.every((range) => range.empty)) return false;
+    event.preventDefault();
+    if (!view.state.readOnly) view.dispatch(view.state.replaceSelection(event.data), { userEvent: 'input.type', scrollIntoView: true });
+    return true;
+  },
+});
+
 /**
  * parent: where the editor goes; doc: its text; label: its accessible name; onChange(text) after
  * each edit; onRun() on Ctrl+Enter. Returns { view, text(), setText(text), setErrors([{ line,
@@ -47,6 +62,7 @@ export function createCodeEditor(parent, { doc, label, onChange, onRun }) {
         syntaxHighlighting(glslColours),
         lintGutter(),
         EditorView.lineWrapping, // long lines wrap: nothing is cut off on a projector
+        typeOverSelection,
         keymap.of([{ key: 'Mod-Enter', run: () => { onRun(); return true; } }, ...defaultKeymap, ...historyKeymap]),
         EditorView.contentAttributes.of({ 'aria-label': label }),
         // Only what the student typed: the page's own replacements (remote) are not a change of theirs.
