@@ -141,5 +141,7 @@ export default defineConfig({
     // Pure modules with no shared state: one import per worker instead of one per file halves the run.
     pool: 'threads',
     isolate: false,
+    // CSS is left out of unit tests, but for KaTeX's, which the deck export carries as text (katexDeckCss.js).
+    css: { include: [/katex\.min\.css/] },
   },
 });

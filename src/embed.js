@@ -8,6 +8,7 @@ import { loadPanel } from './panels/loadPanel.js';
 import { createPanelHost } from './host/createPanelHost.js';
 import { connectMessages, parseMessage } from './host/messageApi.js';
 import { readEmbedOptions } from './host/readEmbedOptions.js';
+import { fitToFrame } from './host/fitToFrame.js';
 import { describeProblem } from './host/params.js';
 import { applyTheme, loadTheme } from './ui/theme.js';
 import { setSubscripted } from './ui/subscripts.js';
@@ -26,6 +27,11 @@ window.fresnelLab = {
   audio: { get on() { return audioTraceOn(); }, log: traceLog },
 };
 const { options, problems } = readEmbedOptions(search);
+// Said at once, before the panel's module arrives: a page that frames this one learns that its frame
+// holds the lab's embed page, not the browser's error page (src/ui/watchPanelFrame.js).
+if (window.parent !== window && options.parentOrigin !== 'none') {
+  window.parent.postMessage({ type: 'fresnel-lab:loading', panel: id }, options.parentOrigin ?? '*');
+}
 // What the reader's browser remembers, overridden by the embed's URL and then by messages; never
 // stored, since it is the deck's choice, not the reader's.
 const theme = { ...loadTheme() };
@@ -78,6 +84,7 @@ window.fresnelLab.ready = (async () => {
   if (options.reducedMotion !== null) host.setReducedMotion(options.reducedMotion);
   const unknown = [...host.controls('lock', options.lock), ...host.controls('hide', options.hide)];
   if (!options.controls) host.controls('hide', null);
+  if (options.fit) fitToFrame(root);
   showNotice(root, 'Some controls named in the link do not exist:', unknown.map((k) => `${k}: not a control of this panel.`));
   // The view is shown while the deck has not paused it and the frame is on screen. Paused (a
   // deck's hidden slide) or off screen for a second (a slide reveal.js preloaded ahead, a page

@@ -2,13 +2,14 @@
 //   theme=light|dark, projector=1|0, reducedMotion=1|0   override what the browser remembers
 //   audio=1|0                                             the audio trace of the R(θ) plots on or off (off by default)
 //   lock=nI,nT  hide=nI,nT  controls=0                    controls shown but fixed, hidden, or none
+//   fit=1                                                 scaled down to show whole in its frame (a slide)
 //   parentOrigin=https://deck.example                     the only origin messages go to and come from
 // A value that cannot be used is named in `problems` and left out, but for parentOrigin: an
 // author who asked for a restriction gets one, so an unusable origin leaves the panel deaf and
 // mute to every page (`parentOrigin: 'none'`) rather than open to all.
 
 /** These names belong to the embed page, so no panel's schema may use them. */
-export const EMBED_KEYS = ['panel', 'theme', 'projector', 'reducedMotion', 'audio', 'lock', 'hide', 'controls', 'parentOrigin'];
+export const EMBED_KEYS = ['panel', 'theme', 'projector', 'reducedMotion', 'audio', 'lock', 'hide', 'controls', 'fit', 'parentOrigin'];
 
 const flag = (raw) => (raw === '1' || raw === 'true' ? true : raw === '0' || raw === 'false' ? false : undefined);
 const list = (raw) => raw.split(',').map((k) => k.trim()).filter(Boolean).slice(0, 64);
@@ -32,7 +33,7 @@ export function parseOrigin(raw) {
 /** @param {URLSearchParams} search */
 export function readEmbedOptions(search) {
   const options = {
-    theme: null, projector: null, reducedMotion: null, audio: false, lock: [], hide: [], controls: true, parentOrigin: null,
+    theme: null, projector: null, reducedMotion: null, audio: false, lock: [], hide: [], controls: true, fit: false, parentOrigin: null,
   };
   const problems = [];
   const bad = (key, raw, reason) => problems.push({ key, raw, reason });
@@ -41,7 +42,7 @@ export function readEmbedOptions(search) {
     if (raw === 'light' || raw === 'dark') options.theme = raw;
     else bad('theme', raw, 'is not light or dark');
   }
-  for (const key of ['projector', 'reducedMotion', 'audio', 'controls']) {
+  for (const key of ['projector', 'reducedMotion', 'audio', 'controls', 'fit']) {
     if (!search.has(key)) continue;
     const value = flag(search.get(key));
     if (value === undefined) bad(key, search.get(key), 'is not 1 or 0');

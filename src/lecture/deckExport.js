@@ -21,6 +21,7 @@ import revealThemeText from 'reveal.js/theme/dracula.css?raw';
 import { readLecture } from './readLecture.js';
 import { escapeHtml } from './lectureTextHtml.js';
 import { lectureSlidesHtml } from './deckSlides.js';
+import { katexDeckCss } from './katexDeckCss.js';
 
 export const DEFAULT_EMBED_URL = 'offline/embed.html';
 
@@ -126,7 +127,8 @@ export function lectureDeckHtml(lecture, {
      (reveal.js and a few lines that move the deck); each panel is a frame of the lab's embed page,
      which has its own. Panels come from ${escapeHtml(embedUrl)}. -->
 <style>${styleText(revealCss)}</style>
-<style>${DECK_CSS}${theme === 'light' ? LIGHT_CSS : ''}</style>
+<style>${DECK_CSS}${theme === 'light' ? LIGHT_CSS : ''}</style>${slides.includes('class="katex"') ? `
+<style>${styleText(katexDeckCss())}</style>` : ''}
 </head>
 <body>
 <div class="reveal">

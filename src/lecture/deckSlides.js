@@ -27,12 +27,13 @@ export const DEFAULT_QUESTION_SEED = ROOM_SEED;
 
 /**
  * The embed page's link for a panel: `base?panel=ID`, the values that differ from the panel's
- * defaults (written as a share link writes them), then lock, hide, theme and projector.
+ * defaults (written as a share link writes them), then lock, hide, theme, projector and fit.
  * @param {string} base  embed.html's address, relative (offline/embed.html) or absolute
  * @param {string} id
- * @param {{ state?: Record<string, unknown>, lock?: string[], hide?: string[], theme?: string | null, projector?: boolean }} [options]
+ * @param {{ state?: Record<string, unknown>, lock?: string[], hide?: string[], theme?: string | null, projector?: boolean,
+ *   fit?: boolean }} [options]
  */
-export function embedSource(base, id, { state = {}, lock = [], hide = [], theme = null, projector = false } = {}) {
+export function embedSource(base, id, { state = {}, lock = [], hide = [], theme = null, projector = false, fit = false } = {}) {
   const schema = panelSchema(id);
   const search = new URLSearchParams({ panel: id });
   writeParams(schema, { ...defaults(schema), ...state }, search);
@@ -40,6 +41,7 @@ export function embedSource(base, id, { state = {}, lock = [], hide = [], theme 
   if (hide.length) search.set('hide', hide.join(','));
   if (theme) search.set('theme', theme);
   if (projector) search.set('projector', '1');
+  if (fit) search.set('fit', '1');
   return `${base}${base.includes('?') ? '&' : '?'}${search.toString().replace(/%2C/g, ',')}`;
 }
 
@@ -51,12 +53,14 @@ function frameHtml(src, id, { short }) {
     + `title="${escapeHtml(`Fresnel Lab: ${entry.title}`)}" allow="fullscreen; clipboard-write"></iframe>`;
 }
 
-const textHtml = (text) => (text ? `\n  <div class="fl-text">${lectureTextHtml(text)}</div>` : '');
+// Math as KaTeX's HTML, with the deck carrying KaTeX's CSS and fonts (deckExport.js): it looks as on the site.
+const textHtml = (text) => (text ? `\n  <div class="fl-text">${lectureTextHtml(text, { math: 'html' })}</div>` : '');
 
 function panelSlide(item, n, frame) {
   // Without a heading of the lecturer's the slide has none: the embed shows the panel's title itself.
   const heading = item.heading ? `<h2>${escapeHtml(item.heading)}</h2>` : '';
-  const src = embedSource(frame.embedUrl, item.panel, { ...item, theme: frame.theme, projector: frame.projector });
+  // fit: the panel shows whole on its slide, scaled down as far as it must be (src/host/fitToFrame.js).
+  const src = embedSource(frame.embedUrl, item.panel, { ...item, theme: frame.theme, projector: frame.projector, fit: true });
   return `<section class="fl-panel" data-item="${n}" data-item-type="panel" data-panel="${escapeHtml(item.panel)}">
   ${heading}${textHtml(item.text)}
   ${frameHtml(src, item.panel, { short: Boolean(item.text) })}
@@ -93,7 +97,7 @@ function questionSlide(item, n, frame) {
   const optionItems = question.kind === 'choice' ? question.options(params).map((o) => `<li>${subscriptedHtml(o.text(params))}</li>`) : [];
   const options = optionItems.length ? `\n    <ol class="fl-options" type="A">${optionItems.join('')}</ol>` : '';
   const { embedUrl, theme, projector } = frame;
-  const src = embedSource(embedUrl, question.panel, { state: question.state(params), theme, projector });
+  const src = embedSource(embedUrl, question.panel, { state: question.state(params), theme, projector, fit: true });
   return `<section data-item="${n}" data-item-type="question" data-question="${escapeHtml(question.id)}">
   <section class="fl-question">
     <h2>${item.heading ? escapeHtml(item.heading) : 'A question for the room'}</h2>${textHtml(item.text)}

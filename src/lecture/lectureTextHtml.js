@@ -1,10 +1,11 @@
 // The lecturer's text as HTML text, for files the lab writes (the reveal.js deck): the node tree
 // of lectureText.js serialised with every text and attribute escaped, so no markup from a lecture
 // reaches the file; only the tree's own tags are written, and links are those lectureText.js let
-// through (http:, https:, mailto:). Math is typeset by KaTeX as MathML (output: 'mathml'), which
-// browsers draw with their own fonts: a file carried on a stick then needs neither KaTeX's CSS nor
-// its fonts. KaTeX escapes the TeX it quotes, and with trust off (its default) it refuses \href,
-// \url and \html… commands; a formula it cannot read is shown as its source.
+// through (http:, https:, mailto:). Math is typeset by KaTeX, as KaTeX's HTML with MathML for
+// screen readers (math: 'html'; the file then carries KaTeX's CSS and fonts, katexDeckCss.js, so it
+// looks as on the site) or as MathML alone (math: 'mathml'), which browsers draw with a math font
+// of their own, if the machine has one. KaTeX escapes the TeX it quotes, and with trust off (its
+// default) it refuses \href, \url and \html… commands; a formula it cannot read is shown as its source.
 import katex from 'katex';
 import { lectureTextTree } from './lectureText.js';
 
@@ -29,23 +30,27 @@ export function subscriptedHtml(text) {
   return html + escapeHtml(String(text).slice(last));
 }
 
-/** TeX as MathML in KaTeX's wrapper, or (TeX KaTeX cannot read) its source as code; never throws. */
-export function mathHtml(tex, display) {
+/**
+ * TeX as KaTeX's HTML and MathML (math 'html') or MathML alone ('mathml'), or (TeX KaTeX cannot
+ * read) its source as code; never throws.
+ */
+export function mathHtml(tex, display, math = 'mathml') {
+  const output = math === 'html' ? 'htmlAndMathml' : 'mathml';
   try {
-    return katex.renderToString(tex, { displayMode: display, output: 'mathml', throwOnError: true, trust: false, strict: 'ignore' });
+    return katex.renderToString(tex, { displayMode: display, output, throwOnError: true, trust: false, strict: 'ignore' });
   } catch {
     return `<code class="lecture-math-error">${escapeHtml(tex)}</code>`;
   }
 }
 
-/** One node of the tree (lectureText.js's TextNode) as HTML. */
-function nodeHtml(node) {
+/** One node of the tree (lectureText.js's TextNode) as HTML, its math as `math` says (mathHtml). */
+function nodeHtml(node, math) {
   if ('text' in node) return escapeHtml(node.text);
   if ('math' in node) {
     const tag = node.display ? 'div' : 'span';
-    return `<${tag} class="${node.display ? 'lecture-math-display' : 'lecture-math'}">${mathHtml(node.math, node.display)}</${tag}>`;
+    return `<${tag} class="${node.display ? 'lecture-math-display' : 'lecture-math'}">${mathHtml(node.math, node.display, math)}</${tag}>`;
   }
-  const inner = node.children.map(nodeHtml).join('');
+  const inner = node.children.map((child) => nodeHtml(child, math)).join('');
   switch (node.tag) {
     case 'br':
       return '<br>';
@@ -61,7 +66,11 @@ function nodeHtml(node) {
   }
 }
 
-/** The lecturer's Markdown (lectureText.js's subset) as HTML text. Never throws on any string. */
-export function lectureTextHtml(source) {
-  return lectureTextTree(source).map(nodeHtml).join('');
+/**
+ * The lecturer's Markdown (lectureText.js's subset) as HTML text. Never throws on any string.
+ * @param {string} source
+ * @param {{ math?: 'html' | 'mathml' }} [options]
+ */
+export function lectureTextHtml(source, { math = 'mathml' } = {}) {
+  return lectureTextTree(source).map((node) => nodeHtml(node, math)).join('');
 }

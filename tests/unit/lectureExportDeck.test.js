@@ -38,7 +38,16 @@ const unescape = (text) => text.replace(/&(amp|lt|gt|quot|#39);/g, (_, e) => ({ 
 const slidesOf = (html) => html.slice(html.indexOf('<div class="slides">'), html.indexOf('<script>'));
 
 const TAG = /<(\/?)([a-zA-Z][a-zA-Z0-9-]*)((?:\s+[a-zA-Z][a-zA-Z0-9:-]*(?:="[^"<>]*")?)*)\s*(\/?)>/g;
-const HTML_TAGS = ['div', 'section', 'h1', 'h2', 'p', 'ul', 'ol', 'li', 'em', 'strong', 'code', 'br', 'a', 'sub', 'span', 'iframe'];
+const HTML_TAGS = ['div', 'section', 'h1', 'h2', 'p', 'ul', 'ol', 'li', 'em', 'strong', 'code', 'br', 'a', 'sub', 'span', 'iframe',
+  'svg', 'path', 'line']; // the last three: KaTeX's drawn delimiters, roots and lines
+/** KaTeX's layout (its HTML output): lengths, colours and borders it computed, never a url() or any call. */
+const KATEX_STYLE = new Set(['height', 'vertical-align', 'margin-right', 'top', 'margin-left', 'border-bottom-width', 'left',
+  'padding-left', 'min-width', 'color', 'border', 'border-style', 'border-width', 'background-color', 'border-color', 'width',
+  'position']);
+const katexStyle = (value) => value.split(';').filter(Boolean).every((declaration) => {
+  const [property, ...rest] = declaration.split(':');
+  return KATEX_STYLE.has(property.trim()) && /^[-#\w.% ]+$/.test(rest.join(':').trim());
+});
 const isMathTag = (tag) => /^(math|semantics|annotation|m[a-z]+)$/.test(tag);
 
 /**
@@ -55,8 +64,8 @@ function expectOnlyDeckMarkup(html, embedUrl = DEFAULT_EMBED_URL) {
     for (const [, attribute, value = ''] of attributes.matchAll(/\s([a-zA-Z][a-zA-Z0-9:-]*)(?:="([^"]*)")?/g)) {
       const key = attribute.toLowerCase();
       expect(key, `${tag} ${key}`).not.toMatch(/^(on|src$|srcdoc$|formaction$)/);
-      // KaTeX's own frame of \fcolorbox, its colour checked by KaTeX; no other style.
-      if (key === 'style') expect(isMathTag(tag) && /^border: [\d.]+em solid [#\w]+$/.test(value), `${tag} style="${value}"`).toBe(true);
+      // KaTeX's own layout and its frame of \fcolorbox, colours checked by KaTeX; no other style.
+      if (key === 'style') expect(katexStyle(value), `${tag} style="${value}"`).toBe(true);
       if (key === 'href') {
         expect(tag).toBe('a');
         expect(unescape(value)).toMatch(/^(https?:|mailto:)/i);
@@ -95,9 +104,13 @@ describe('the reveal.js deck of a lecture', () => {
     // No heading of the lecturer's: no slide heading, the embed shows the panel's title (not twice).
     expect(html).not.toContain(`<h2>${subscriptedHtml(panelEntry('schlick').title)}</h2>`);
     expect(html).toMatch(/data-panel="schlick">\s*<iframe/);
-    expect(html).toContain(lectureTextHtml(composed.items[0].text));
+    expect(html).toContain(lectureTextHtml(composed.items[0].text, { math: 'html' }));
     expect(html).toContain('<a href="https://book.example" target="_blank" rel="noopener noreferrer">the book</a>');
-    expect(html).toMatch(/<span class="lecture-math"><span class="katex"><math [^>]*>.*<annotation encoding="application\/x-tex">R_0</);
+    // KaTeX's HTML, as on the site, with MathML for screen readers; the deck then carries KaTeX's CSS and fonts.
+    expect(html).toMatch(/<span class="lecture-math"><span class="katex"><span class="katex-mathml"><math [^>]*>.*<annotation encoding="application\/x-tex">R_0</);
+    expect(html).toMatch(/<span class="katex-html" aria-hidden="true">/);
+    expect(html).toMatch(/font-family:KaTeX_Main;[^}]*src:url\(data:font\/woff2;base64,[A-Za-z0-9+/=]+\) format\("woff2"\)/);
+    expect(html).not.toMatch(/url\(fonts\//); // no font left to fetch from beside the file
     expectOnlyDeckMarkup(html);
   });
 
@@ -120,8 +133,8 @@ describe('the reveal.js deck of a lecture', () => {
       expect(embedProblems).toEqual([]);
       expect(options).toMatchObject({ lock: item.lock ?? [], hide: item.hide ?? [], theme: 'dark', projector: true });
     });
-    expect(frames[0].src).toBe('offline/embed.html?panel=spheres&theme=dark&projector=1'); // nT = 1.5 is the default: not written
-    expect(frames[1].src).toBe('offline/embed.html?panel=spheres&nI=1.5&nT=1&lock=nI&hide=kd,ks&theme=dark&projector=1');
+    expect(frames[0].src).toBe('offline/embed.html?panel=spheres&theme=dark&projector=1&fit=1'); // nT = 1.5 is the default: not written
+    expect(frames[1].src).toBe('offline/embed.html?panel=spheres&nI=1.5&nT=1&lock=nI&hide=kd,ks&theme=dark&projector=1&fit=1');
   });
 
   it('a WebGL panel loads only on its slide; a plot-only panel, which holds no context, is preloaded', () => {
@@ -137,7 +150,7 @@ describe('the reveal.js deck of a lecture', () => {
     const html = deck(composed, { embedUrl: online, theme: null });
     expect(framesOf(html).every((f) => f.src.startsWith(`${online}?panel=`) && !f.search.has('theme'))).toBe(true);
     expectOnlyDeckMarkup(html, online);
-    expect(framesOf(deck(composed, { embedUrl: 'embed.html?x=1' }))[0].src).toBe('embed.html?x=1&panel=spheres&theme=dark');
+    expect(framesOf(deck(composed, { embedUrl: 'embed.html?x=1' }))[0].src).toBe('embed.html?x=1&panel=spheres&theme=dark&fit=1');
     for (const bad of ['javascript:alert(1)', ' JavaScript:alert(1)', 'data:text/html,x', '', '  ', 42]) {
       expect(() => deck(composed, { embedUrl: bad }), String(bad)).toThrow(/embedUrl/);
     }
@@ -215,7 +228,7 @@ describe('the reveal.js deck of a lecture', () => {
     expect(html).toContain('var s = "<\\/script><script>alert(1)<\\/script>"; // <\\!-- x');
     expect(html).toContain('a::after{content:"<\\/style><script>alert(1)</script>"}');
     expect(html.match(/<\/script>/g)).toHaveLength(2 + 1); // the deck's two, and the text in the CSS (no end of a script there)
-    expect(html.match(/<\/style>/g)).toHaveLength(2);
+    expect(html.match(/<\/style>/g)).toHaveLength(3); // reveal's, the deck's, and KaTeX's (the lecture has math)
     expect(/<style>([^]*?)<\/style>/.exec(html)[1]).toBe('a::after{content:"<\\/style><script>alert(1)</script>"}'); // the CSS whole
     // The real reveal.js by default: its UMD build, which sets window.Reveal.
     const real = lectureDeckHtml(composed);

@@ -41,12 +41,18 @@ describe('message API shapes', () => {
 describe('embed options in the URL', () => {
   const read = (query) => readEmbedOptions(new URLSearchParams(query));
   it('reads the look, the controls and the deck origin', () => {
-    expect(read('panel=spheres&theme=light&projector=1&reducedMotion=0&audio=1&lock=nI,%20nT&hide=kd&controls=0&parentOrigin=https://deck.example:8443/'))
+    expect(read('panel=spheres&theme=light&projector=1&reducedMotion=0&audio=1&lock=nI,%20nT&hide=kd&controls=0&fit=1'
+      + '&parentOrigin=https://deck.example:8443/'))
       .toEqual({
-        options: { theme: 'light', projector: true, reducedMotion: false, audio: true, lock: ['nI', 'nT'], hide: ['kd'], controls: false, parentOrigin: 'https://deck.example:8443' },
+        options: {
+          theme: 'light', projector: true, reducedMotion: false, audio: true, lock: ['nI', 'nT'], hide: ['kd'], controls: false, fit: true,
+          parentOrigin: 'https://deck.example:8443',
+        },
         problems: [],
       });
-    expect(read('panel=spheres').options).toEqual({ theme: null, projector: null, reducedMotion: null, audio: false, lock: [], hide: [], controls: true, parentOrigin: null });
+    expect(read('panel=spheres').options).toEqual({
+      theme: null, projector: null, reducedMotion: null, audio: false, lock: [], hide: [], controls: true, fit: false, parentOrigin: null,
+    });
   });
   it('names what it cannot use and leaves it out; an unusable parentOrigin lets no page in', () => {
     const { options, problems } = read('theme=blue&projector=yes&parentOrigin=javascript:alert(1)');
