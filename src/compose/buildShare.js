@@ -1,10 +1,11 @@
 // Sharing and carrying the composed lecture: its link (index.html?lecture=CODE) to copy or to
-// present from, the lecture as a JSON file and back, and the two exports: one offline HTML file
-// (the single-file lecture page with the lecture written in) and a reveal.js deck. The exports are
+// present from, the lecture as a JSON file and back, and the two exports: the offline lecture (a
+// .zip of the single-file lecture page with the lecture written in and the embed page its frames
+// open) and a reveal.js deck. The exports are
 // loaded only when asked for (a dynamic import each: reveal.js travels only with the deck's).
 import { button, el } from '../ui/el.js';
 import { fixed, fileSlug } from '../ui/format.js';
-import { copyText, downloadText } from '../host/exporters.js';
+import { copyText, downloadBlob, downloadText } from '../host/exporters.js';
 import { field, readTextFile, titledSection } from '../homework/page/formParts.js';
 import { lectureToCode } from '../lecture/lectureLink.js';
 import { readLecture } from '../lecture/readLecture.js';
@@ -41,7 +42,7 @@ export function buildShare({ onOpen }) {
   const file = /** @type {HTMLInputElement} */ (el('input'));
   file.type = 'file';
   file.accept = '.json,application/json';
-  const offline = button('Download offline lecture (one HTML file)');
+  const offline = button('Download offline lecture (.zip: the lecture and its panels’ page)');
   const deck = button('Download reveal.js deck');
   // The deck's panels: this site's embed page (a deck used online), or offline/embed.html beside
   // the deck (a deck put next to the lab's offline folder, opened from disk or a USB stick).
@@ -103,28 +104,35 @@ export function buildShare({ onOpen }) {
     if (!current) return;
     const lecture = current;
     say('Making the offline lecture…');
-    let page;
-    try {
-      const response = await fetch('offline/index.html');
-      if (!response.ok) throw new Error(`status ${response.status}`);
-      page = await response.text();
-    } catch {
+    /** The text of a file of the built offline folder beside this page, or null. */
+    const read = async (name) => {
+      try {
+        const response = await fetch(`offline/${name}`);
+        return response.ok ? await response.text() : null;
+      } catch {
+        return null;
+      }
+    };
+    const [index, embed, favicon] = await Promise.all(['index.html', 'embed.html', 'favicon.svg'].map(read));
+    if (index === null || embed === null) {
       return say(window.location.protocol === 'file:'
-        ? 'This page was opened from disk, where it may not read offline/index.html beside it: open the composer from the lab’s web server.'
-        : 'The single-file lecture page (offline/index.html beside this page) could not be read: it is made by npm run build, '
-          + 'so open the composer from the built site.', 'problem');
+        ? 'This page was opened from disk, where it may not read the offline folder beside it: open the composer from the lab’s web server.'
+        : 'The single-file pages (offline/index.html and offline/embed.html beside this page) could not be read: they are made by '
+          + 'npm run build, so open the composer from the built site.', 'problem');
     }
-    // The single-file page carries its scripts inline; a page that loads script files is not it
+    // The single-file pages carry their scripts inline; a page that loads script files is not one
     // (the development server answers any address with the lecture page's sources).
-    if (/<script[^>]+\bsrc=/i.test(page)) {
+    if ([index, embed].some((page) => /<script[^>]+\bsrc=/i.test(page))) {
       return say('offline/index.html here is not the single-file lecture page (the development server has none): '
         + 'build the site (npm run build) and open the composer from it.', 'problem');
     }
     try {
-      const { offlineLectureHtml } = await import('../lecture/offlineExport.js');
-      downloadText(`${fileSlug(lecture.title)}.html`, offlineLectureHtml(page, lecture), 'text/html');
-      say('The offline lecture is saved: one HTML file that opens from a USB stick, with no server. '
-        + 'Put it in the lab\'s offline folder, beside embed.html: a question\'s panel and Copy embed code open that page.');
+      const { offlineLectureZip } = await import('../lecture/offlineExport.js');
+      const folder = fileSlug(lecture.title);
+      const zip = await offlineLectureZip({ index, embed, favicon: favicon ?? undefined }, lecture, folder);
+      downloadBlob(`${folder}.zip`, new Blob([zip], { type: 'application/zip' }));
+      say(`The offline lecture is saved as ${folder}.zip: unpack it anywhere (a USB stick too) and open ${folder}/index.html, `
+        + 'with no server. embed.html beside it shows the panels of its questions and what Copy embed code links to.');
     } catch (error) {
       say(error instanceof Error ? error.message : String(error), 'problem');
     }

@@ -8,8 +8,8 @@
 // (and inlineTexts in scripts/contentSecurityPolicy.js leaves such blocks out of the hashes);
 // reading its text is no fetch. Nothing else in the page depends on the lecture, but its <title>,
 // which is set as the lecture page sets it (mountLecture.js) so the file's tab is named before any
-// script runs. A question item's panel is a frame of ./embed.html: the file belongs in the offline
-// folder, beside embed.html.
+// script runs. A question item's panel is a frame of ./embed.html: the file belongs beside it, so the
+// composer offers the lecture with embed.html in one .zip (offlineLectureZip).
 import { readLecture } from './readLecture.js';
 import { LECTURE_ELEMENT_ID } from './openLecture.js';
 import { escapeHtml } from './lectureTextHtml.js';
@@ -74,4 +74,28 @@ export function offlineLectureHtml(offlineIndexHtml, lecture) {
     html = `${html.slice(0, title.index)}${named}${html.slice(title.index + title[0].length)}`;
   }
   return html;
+}
+
+/**
+ * The offline lecture as one download: a .zip of one folder that holds the lecture page and what its
+ * frames open (the embed page of a question's panel and of Copy embed code, and the icon), so that
+ * unpacked anywhere, from a USB stick too, index.html finds embed.html beside it. `pages` are the
+ * texts of the offline folder's index.html, embed.html and favicon.svg; the folder is named after
+ * the lecture (`folder`, a file-name slug). Returns the zip's bytes (fflate, stored as DEFLATE).
+ * @param {{ index: string, embed: string, favicon?: string }} pages
+ * @param {unknown} lecture
+ * @param {string} folder
+ */
+export async function offlineLectureZip(pages, lecture, folder) {
+  const { strToU8, zipSync } = await import('fflate');
+  if (typeof pages.embed !== 'string' || !/<head[\s>]/i.test(pages.embed)) {
+    throw new TypeError('The offline embed page is not an HTML page.');
+  }
+  /** @type {import('fflate').Zippable} */
+  const files = {
+    'index.html': strToU8(offlineLectureHtml(pages.index, lecture)),
+    'embed.html': strToU8(pages.embed),
+  };
+  if (typeof pages.favicon === 'string') files['favicon.svg'] = strToU8(pages.favicon);
+  return zipSync({ [folder]: files }, { level: 9 });
 }

@@ -5,6 +5,8 @@
 // where the lecture page reads ?lecture=, open it there with its items in order. Then what comes
 // from outside: a damaged link and a file that is no lecture are refused in words on a working page.
 import { readFileSync } from 'node:fs';
+import { resolve } from 'node:path';
+import { strFromU8, unzipSync } from 'fflate';
 import { test, expect } from './fixtures.js';
 import { seriousViolations } from './audit.js';
 import { deflateRawSync, inflateRawSync } from 'node:zlib';
@@ -178,14 +180,20 @@ test('a panel’s current view taken from its preview, the exports, and the audi
   const deckHtml = readFileSync(await deck.path(), 'utf8');
   expect(deckHtml).toMatch(/<iframe[^>]+embed\.html\?panel=schlick[^"]*nT=2\.4/);
   expect(deckHtml).toContain('Read <em>this</em>');
-  // The offline lecture: made from the built single-file page; the development server has none, and says so.
-  const offline = page.getByRole('button', { name: 'Download offline lecture (one HTML file)' });
+  // The offline lecture: made from the built single-file pages; the development server has none, and says so.
+  const offline = page.getByRole('button', { name: /^Download offline lecture \(\.zip/ });
   if (process.env.FRESNEL_LAB_DEV) {
     await offline.click();
     await expect(page.locator('.cp-message')).toContainText('not the single-file lecture page');
   } else {
+    // One download that holds everything the lecture needs: the lecture and the embed page its frames open.
     const [file] = await Promise.all([page.waitForEvent('download'), offline.click()]);
-    expect(readFileSync(await file.path(), 'utf8')).toContain('<script type="application/json" id="fresnel-lab-lecture">');
+    expect(file.suggestedFilename()).toMatch(/\.zip$/);
+    const zip = unzipSync(readFileSync(await file.path()));
+    const folder = file.suggestedFilename().replace(/\.zip$/, '');
+    expect(Object.keys(zip).sort()).toEqual([`${folder}/`, `${folder}/embed.html`, `${folder}/favicon.svg`, `${folder}/index.html`]);
+    expect(strFromU8(zip[`${folder}/index.html`])).toContain('<script type="application/json" id="fresnel-lab-lecture">');
+    expect(strFromU8(zip[`${folder}/embed.html`])).toBe(readFileSync(resolve(import.meta.dirname, '../../dist/offline/embed.html'), 'utf8'));
   }
 
   expect(await seriousViolations(page), 'dark').toEqual([]);

@@ -49,13 +49,14 @@ test('a student predicts, answers right and wrong, hands in, and the file is che
   // No panel anywhere on the sheet yet: the polarization or exact-formula panel could give it away.
   await expect(card(page, 2).locator('.hw-panel-waiting')).toBeVisible();
   await expect(page.locator('iframe')).toHaveCount(0);
-  await expect(card(page, 1).getByRole('button', { name: 'Commit prediction' })).toBeDisabled(); // the marker's start is no prediction
+  // Any angle can be committed, the marker's start (45°) included; the button names the one it commits.
+  await expect(card(page, 1).getByRole('button', { name: 'Commit prediction: 45.0°' })).toBeEnabled();
   const marker = card(page, 1).getByRole('slider');
   await marker.focus();
   await page.keyboard.press('Home');
   for (let i = 0; i < Math.round(brewster); i += 1) await page.keyboard.press('ArrowRight');
   await expect(marker).toHaveAttribute('aria-valuenow', Math.round(brewster).toFixed(1));
-  await card(page, 1).getByRole('button', { name: 'Commit prediction' }).click();
+  await card(page, 1).getByRole('button', { name: `Commit prediction: ${Math.round(brewster).toFixed(1)}°` }).click();
   await expect(card(page, 1).locator('.hw-result')).toHaveText(new RegExp(`^Right\\. The computed answer is ${brewster.toFixed(2)}°`));
   await expect(card(page, 1).locator('.predict-true')).toHaveCount(1);
   await expect(card(page, 1).locator('.predict-marker text')).toHaveText(`yours: ${Math.round(brewster).toFixed(1)}°`);
@@ -120,6 +121,13 @@ test('a student predicts, answers right and wrong, hands in, and the file is che
   await expect(rows.nth(1).locator('td').nth(5)).toHaveText('2'); // tries
   await expect(rows.nth(2).locator('td').nth(4)).toHaveText(/^wrong: No:/);
   await expect(rows.nth(2).locator('td').nth(3)).toHaveText(/Nearly white/);
+});
+
+test('the marker\'s start is a prediction too: 45° is committed as it stands', async ({ page }) => {
+  await page.goto(`${sheetLink({ ...SHEET, seed: 'start' })}`);
+  await card(page, 1).getByRole('button', { name: 'Commit prediction: 45.0°' }).click();
+  await expect(card(page, 1).locator('.predict-marker text')).toHaveText('yours: 45.0°');
+  await expect(card(page, 1).locator('.hw-result')).toHaveText(/The computed answer is \d+\.\d\d°/);
 });
 
 test('lecture mode judges nothing until the lecturer reveals, one question or all', async ({ page }) => {

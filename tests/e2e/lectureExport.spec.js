@@ -7,7 +7,8 @@
 // a panel moves the deck, and no more than two WebGL contexts are live at any moment.
 // Needs the built site (npm run build). The export modules are loaded through vite (ssrLoadModule),
 // since they import reveal.js and the schemas as vite does.
-import { cpSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { cpSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { unzipSync } from 'fflate';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
@@ -37,7 +38,7 @@ test.beforeAll(async () => {
   });
   try {
     const { lectureDeckHtml } = await server.ssrLoadModule('/src/lecture/deckExport.js');
-    const { offlineLectureHtml } = await server.ssrLoadModule('/src/lecture/offlineExport.js');
+    const { offlineLectureHtml, offlineLectureZip } = await server.ssrLoadModule('/src/lecture/offlineExport.js');
     const { questionById } = await server.ssrLoadModule('/src/homework/questions.js');
     const { expectedValue, questionParams } = await server.ssrLoadModule('/src/homework/gradeAnswer.js');
     const { formatValue } = await server.ssrLoadModule('/src/homework/formatAnswer.js');
@@ -50,6 +51,16 @@ test.beforeAll(async () => {
     const page = readFileSync(join(dir, 'offline/index.html'), 'utf8');
     writeFileSync(join(dir, 'offline/my-lecture.html'), offlineLectureHtml(page, lecture));
     writeFileSync(join(dir, 'my-deck.html'), lectureDeckHtml(lecture, { embedUrl: 'offline/embed.html' }));
+    // The composer's one download, unpacked as a lecturer would; and the lecture file alone, apart from its folder.
+    const pages = Object.fromEntries(['index', 'embed', 'favicon'].map((name) => [name,
+      readFileSync(join(dir, `offline/${name}.${name === 'favicon' ? 'svg' : 'html'}`), 'utf8')]));
+    const zip = unzipSync(await offlineLectureZip(pages, lecture, 'glass-twice'));
+    for (const [path, bytes] of Object.entries(zip).filter(([name]) => !name.endsWith('/'))) {
+      mkdirSync(join(dir, 'unzipped', path, '..'), { recursive: true });
+      writeFileSync(join(dir, 'unzipped', path), bytes);
+    }
+    mkdirSync(join(dir, 'alone'));
+    writeFileSync(join(dir, 'alone/lecture.html'), offlineLectureHtml(page, lecture));
   } finally {
     await server.close();
   }
@@ -60,7 +71,7 @@ const fileUrl = (path) => pathToFileURL(join(dir, path)).href;
 
 test('the offline lecture opened from disk shows the composed lecture, its markup as text', async ({ page }) => {
   test.setTimeout(60_000);
-  await page.goto(fileUrl('offline/my-lecture.html'));
+  await page.goto(fileUrl('unzipped/glass-twice/index.html')); // the composer's .zip, unpacked
   await page.evaluate(() => window.fresnelLab.ready);
   expect(await page.evaluate(() => window.fresnelLab.lecture.source)).toBe('data');
   await expect(page.locator('.site-title h1')).toHaveText(lecture.title);
@@ -82,10 +93,25 @@ test('the offline lecture opened from disk shows the composed lecture, its marku
   // Revealed, the question says the deck's answer, and its panel is a frame of the embed page beside the file.
   await items.nth(5).getByRole('button', { name: 'Reveal the answer' }).click();
   await expect(items.nth(5)).toContainText(`The computed answer is ${answer}`);
-  await expect(items.nth(5).locator('iframe')).toHaveAttribute('src', /^file:.*\/offline\/embed\.html\?.*panel=refraction-waves/);
+  await expect(items.nth(5).locator('iframe')).toHaveAttribute('src', /^file:.*\/glass-twice\/embed\.html\?.*panel=refraction-waves/);
   await expect(page.frameLocator('section[data-item="question--6"] iframe').locator('.embed-title')).toBeVisible({ timeout: 30_000 });
   expect(await page.evaluate(() => window.__xss)).toBeUndefined();
   expect(await page.locator('main img, main svg[onload], main a[href^="javascript"]').count()).toBe(0);
+});
+
+test.describe('the lecture file alone, apart from its folder', () => {
+  // The frame of the missing embed.html is the browser's own error page, which it logs.
+  test.use({ allowedErrors: /ERR_FILE_NOT_FOUND|Failed to load resource|Not allowed to load local resource/ });
+  test('says in the lab\'s words that a question\'s panel cannot load, and shows no error page', async ({ page }) => {
+    test.setTimeout(60_000);
+    await page.goto(fileUrl('alone/lecture.html'));
+    await page.evaluate(() => window.fresnelLab.ready);
+    const question = page.locator('section[data-item="question--6"]');
+    await question.getByRole('button', { name: 'Reveal the answer' }).click();
+    await expect(question.locator('.notice')).toContainText('The panel could not be shown here.', { timeout: 30_000 });
+    await expect(question.locator('.notice')).toContainText('embed.html');
+    await expect(question.locator('iframe')).toHaveCount(0);
+  });
 });
 
 /** Live WebGL contexts summed over the deck's frames (each embed counts its own). */
@@ -124,9 +150,18 @@ test('the deck from disk, stepped through in reveal.js: states, slide:stop, clic
     await expect.poll(() => indices(page)).toEqual({ h: 1, v: 0, f: undefined });
     await expect(current.locator('h2')).toHaveText('Agenda');
     await expect(current.locator('.lecture-math math')).toHaveCount(1);
+    // The math as the site draws it: KaTeX's HTML with its own CSS and fonts from inside the file (its MathML, for
+    // screen readers, hidden by that CSS), not the browser's MathML, which needs a math font the machine may lack.
+    await expect(current.locator('.lecture-math .katex-html')).toBeVisible();
+    expect(await current.locator('.lecture-math .katex-mathml').evaluate((e) => getComputedStyle(e).position)).toBe('absolute');
+    await expect.poll(() => page.evaluate(async () => { await document.fonts.ready; return document.fonts.check('20px KaTeX_Main'); }))
+      .toBe(true);
 
     await page.keyboard.press('Space'); // Schlick, preloaded: drawn from its item's state
     await expect.poll(() => mounted(page, 'schlick')).toBe(true);
+    // Whole on its slide: no scrolling inside the frame (fit=1 scales the panel down as far as it must).
+    const overflow = (id) => hostOf(page, id, () => document.documentElement.scrollHeight - window.innerHeight);
+    await expect.poll(() => overflow('schlick')).toBeLessThanOrEqual(2);
     expect(await hostOf(page, 'schlick', (pid) => window.fresnelLab.hosts[pid].values.nT)).toBe(1.7);
     await expect(current.locator('h2')).toHaveText(lecture.items[1].heading);
     await frameOf(page, 'schlick').evaluate(() => {
@@ -137,6 +172,7 @@ test('the deck from disk, stepped through in reveal.js: states, slide:stop, clic
     await page.keyboard.press('ArrowRight'); // the hero, loaded on its slide; Schlick's slide was left
     await expect.poll(() => mounted(page, 'spheres')).toBe(true);
     await expect.poll(() => drawn(page, 'spheres')).toBeGreaterThan(0);
+    await expect.poll(() => overflow('spheres')).toBeLessThanOrEqual(2);
     expect(await hostOf(page, 'spheres', (pid) => window.fresnelLab.hosts[pid].values.nT)).toBe(1.9);
     await expect.poll(() => hostOf(page, 'schlick', () => window.__heard)).toContain('slide:stop');
     await expect.poll(() => mounted(page, 'schlick')).toBe(false);

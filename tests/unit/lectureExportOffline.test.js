@@ -6,7 +6,8 @@ import { describe, expect, it } from 'vitest';
 import { existsSync, readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
 import fc from 'fast-check';
-import { LECTURE_ELEMENT_ID, lectureDataJson, offlineLectureHtml } from '../../src/lecture/offlineExport.js';
+import { LECTURE_ELEMENT_ID, lectureDataJson, offlineLectureHtml, offlineLectureZip } from '../../src/lecture/offlineExport.js';
+import { strFromU8, unzipSync } from 'fflate';
 import { LECTURE_KIND, readLecture } from '../../src/lecture/readLecture.js';
 import { contentSecurityPolicy, inlineTexts } from '../../scripts/contentSecurityPolicy.js';
 import { QUESTIONS } from '../../src/homework/questions.js';
@@ -138,5 +139,19 @@ describe('the offline lecture page', () => {
     expect(inlineTexts(html)).toEqual(inlineTexts(page));
     expect(readBack(html)).toEqual(readLecture(lecture({ title: HOSTILE[0] })).lecture);
     expect(html.length - page.length).toBeLessThan(2000);
+  });
+});
+
+describe('the offline lecture as one download', () => {
+  it('is a .zip of one folder: the lecture, the embed page its frames open, and the icon', async () => {
+    const embed = '<!doctype html><html><head><title>embed</title></head><body></body></html>';
+    const zip = unzipSync(await offlineLectureZip({ index: PAGE, embed, favicon: '<svg/>' }, lecture(), 'glass-twice'));
+    expect(Object.keys(zip).sort()).toEqual(['glass-twice/', 'glass-twice/embed.html', 'glass-twice/favicon.svg', 'glass-twice/index.html']);
+    expect(strFromU8(zip['glass-twice/index.html'])).toBe(offlineLectureHtml(PAGE, lecture()));
+    expect(strFromU8(zip['glass-twice/embed.html'])).toBe(embed);
+  });
+  it('refuses an embed page that is no HTML page, and a lecture with nothing usable', async () => {
+    await expect(offlineLectureZip({ index: PAGE, embed: 'not found' }, lecture(), 'x')).rejects.toThrow(TypeError);
+    await expect(offlineLectureZip({ index: PAGE, embed: PAGE }, { kind: 'nope' }, 'x')).rejects.toThrow(TypeError);
   });
 });

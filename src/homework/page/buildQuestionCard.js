@@ -4,6 +4,7 @@
 // cannot give it away; the prediction stays drawn next to the truth. In lecture mode nothing is
 // judged on screen until the lecturer reveals the question; revealed, it takes no more answers.
 import { el } from '../../ui/el.js';
+import { angle } from '../../ui/format.js';
 import { setSubscripted } from '../../ui/subscripts.js';
 import { panelEntry } from '../../panels/manifest.js';
 import { EMBED_KEYS } from '../../host/readEmbedOptions.js';
@@ -11,6 +12,8 @@ import { KIND_NAMES } from '../questions.js';
 import { MAX_TYPED, gradeAnswer, trueOption } from '../gradeAnswer.js';
 import { formatTolerance, formatValue } from '../formatAnswer.js';
 import { createPredictFigure } from './createPredictFigure.js';
+import { watchPanelFrame } from '../../ui/watchPanelFrame.js';
+import { showNotice } from '../../host/showNotice.js';
 import { button, field } from './formParts.js';
 
 const UNIT_HINTS = { deg: 'in degrees, e.g. 41.8 or 41.8°', fraction: 'a fraction, e.g. 0.042 or 4.2 %' };
@@ -94,16 +97,16 @@ export function buildQuestionCard({
     answerBox.append(field(`Your answer (${UNIT_HINTS[question.unit] ?? 'a number'})`, input), commit);
     controls.push(input);
   } else if (question.kind === 'predict') {
-    let moved = answer !== null;
+    // Any angle is a prediction, the marker's start included: the button names the one it commits.
+    const name = (value) => { commit.textContent = `Commit prediction: ${angle(value, 1)}`; };
     figure = createPredictFigure({
       label: `Your prediction for question ${number}, ${question.axis ?? 'θ'} in degrees`,
       describedBy: prompt.id,
       ...(question.axis ? { axisTitle: question.axis } : {}),
-      onChange: () => { moved = true; commit.disabled = false; },
+      onChange: name,
     });
     if (answer !== null) figure.setValue(answer);
-    commit.textContent = 'Commit prediction';
-    commit.disabled = !moved; // a prediction is a choice: the marker's start is not one
+    name(figure.value());
     commit.addEventListener('click', () => record(figure.value()));
     answerBox.append(figure.element, commit);
   } else {
@@ -140,8 +143,9 @@ export function buildQuestionCard({
     if (result.textContent !== text) result.textContent = text; // unchanged text is not announced again
   }
 
+  let frameMissing = false; // its frame loaded something other than the embed page: not made again
   function showPanel() {
-    if (panelBox.querySelector('iframe')) return;
+    if (panelBox.querySelector('iframe') || frameMissing) return;
     if (!panelsAllowed()) {
       if (!panelBox.firstChild) panelBox.append(el('p', 'hw-panel-waiting', 'The panel appears once every prediction on this sheet is '
         + 'committed: it could give one away.'));
@@ -149,6 +153,14 @@ export function buildQuestionCard({
     }
     const frame = panelFrame(question.panel, state);
     panelBox.replaceChildren(frame);
+    watchPanelFrame(frame, () => {
+      frame.remove(); // the browser's error page is no part of the lecture
+      frameMissing = true;
+      showNotice(panelBox, 'The panel could not be shown here.', [
+        'Its page, embed.html, did not load. A lecture or a sheet opened from disk shows each panel from embed.html in its own '
+          + 'folder: keep the file beside it, as the composer’s offline .zip and the lab’s offline folder have it.',
+      ], { kind: 'error' });
+    });
     onFrame(frame);
   }
 

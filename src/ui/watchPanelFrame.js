@@ -1,0 +1,40 @@
+// A panel's frame holds the lab's embed page, which says so at once (fresnel-lab:loading, before
+// its panel's module arrives; src/embed.js). A frame that has loaded and said nothing holds
+// something else: the browser's own error page, when embed.html is not beside the file that frames
+// it (a lecture or sheet opened from disk, apart from the folder it came in). Then the page says so
+// in its own words instead of leaving that error page inside the lecture.
+
+/** How long a loaded frame has to speak before it is taken for one that could not load, in ms. */
+export const FRAME_GRACE_MS = 5000;
+
+/**
+ * Calls onMissing() once when `frame` has loaded and no fresnel-lab: message came from it within
+ * `grace` ms; nothing when one did. Returns a function that stops watching.
+ * @param {HTMLIFrameElement} frame
+ * @param {() => void} onMissing
+ */
+export function watchPanelFrame(frame, onMissing, { grace = FRAME_GRACE_MS } = {}) {
+  let heard = false;
+  let timer = 0;
+  const stop = () => {
+    clearTimeout(timer);
+    window.removeEventListener('message', onMessage);
+    frame.removeEventListener('load', onLoad);
+  };
+  function onMessage(event) {
+    if (event.source !== frame.contentWindow || typeof event.data?.type !== 'string' || !event.data.type.startsWith('fresnel-lab:')) return;
+    heard = true;
+    stop();
+  }
+  function onLoad() {
+    clearTimeout(timer);
+    timer = window.setTimeout(() => {
+      if (heard || !frame.isConnected) return;
+      stop();
+      onMissing();
+    }, grace);
+  }
+  window.addEventListener('message', onMessage);
+  frame.addEventListener('load', onLoad);
+  return stop;
+}
