@@ -128,9 +128,12 @@ export function draftFromLecture(lecture) {
 
 /** A short plain-text name of an item, for the list and what a screen reader is told. @param {ItemDraft} item */
 export function itemName(item) {
-  if (item.type === 'panel') return item.heading.trim() || panelEntry(item.panel)?.title || item.panel;
+  // A heading of the lecturer's own names the item, and the panel stays named beside it: two cards
+  // of one panel must not differ by their headings alone.
+  const withHeading = (name) => (item.heading.trim() ? `${item.heading.trim()} (${name})` : name);
+  if (item.type === 'panel') return withHeading(panelEntry(item.panel)?.title || item.panel);
   if (item.type === 'question') {
-    return item.heading.trim() || `Question on “${panelEntry(/** @type {any} */ (questionById(item.question))?.panel)?.title ?? '?'}”`;
+    return withHeading(`Question on “${panelEntry(/** @type {any} */ (questionById(item.question))?.panel)?.title ?? '?'}”`);
   }
   return item.heading.trim() || item.text.trim().split('\n', 1)[0].slice(0, 60) || '(no text yet)';
 }

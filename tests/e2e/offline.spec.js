@@ -3,6 +3,8 @@
 // which fetches nothing in CORS mode without the server's consent).
 import { pathToFileURL } from 'node:url';
 import { resolve } from 'node:path';
+import { readFileSync } from 'node:fs';
+import { gzipSync } from 'node:zlib';
 import { test as plain } from '@playwright/test';
 import { test, expect } from './fixtures.js';
 import { PANEL_IDS } from '../../src/panels/manifest.js';
@@ -17,6 +19,14 @@ function requests(page) {
   return urls;
 }
 const fromOutside = (urls) => urls.filter((u) => !/^(file|data|blob):/.test(u));
+
+plain('the README gives the single-file lecture\'s size as built, within a tenth', () => {
+  const readme = readFileSync(resolve(import.meta.dirname, '../../README.md'), 'utf8');
+  const [, mb, kb] = /`dist\/offline\/index\.html`: [^;]*?about ([\d.]+) MB \((\d+) KB gzipped\)/.exec(readme) ?? [];
+  const file = readFileSync(resolve(import.meta.dirname, '../../dist/offline/index.html'));
+  expect(Math.abs(Number(mb) * 1e6 / file.length - 1), `README ${mb} MB, built ${file.length} bytes`).toBeLessThan(0.1);
+  expect(Math.abs(Number(kb) * 1e3 / gzipSync(file).length - 1), `README ${kb} KB gzipped`).toBeLessThan(0.1);
+});
 
 test('the single-file lecture page opened from disk mounts and draws every panel', async ({ page }) => {
   test.setTimeout(120_000);

@@ -67,6 +67,20 @@ test('controls: a swatch picks the metal, the toggle switches the sphere to Schl
   await expect(page.locator('.mt-table caption')).toContainText('Iron');
 });
 
+test('a deck that locks the metal locks its swatches too: shown, not pressable', async ({ page }) => {
+  await openLab(page, embed('&metal=gold&lock=metal'));
+  const silver = page.locator('.mt-swatch[data-metal="silver"]');
+  await expect(silver).toBeDisabled();
+  await expect(page.locator('.mt-swatch[data-metal="gold"]')).toHaveAttribute('aria-pressed', 'true');
+  expect(await silver.evaluate((b) => getComputedStyle(b).cursor)).toBe('default');
+  expect(await silver.evaluate((b) => getComputedStyle(b).opacity)).toBe('1'); // full contrast, from the back of the room
+  await silver.click({ force: true });
+  expect(await page.evaluate(() => window.fresnelLab.hosts.metals.values.metal)).toBe('gold');
+  // Unlocked by the message API, they work again.
+  await page.evaluate(() => window.fresnelLab.hosts.metals.controls('unlock', ['metal']));
+  await expect(silver).toBeEnabled();
+});
+
 test('the URL sets the metal, the method and the dielectric index', async ({ page }) => {
   await openLab(page, embed('&metal=copper&fresnel=schlick&nT=2.4'));
   const values = await page.evaluate(() => ({ ...window.fresnelLab.hosts.metals.values }));

@@ -76,7 +76,9 @@ describe('the composer’s list', () => {
 
   it('names items in plain text for the list and the announcements', () => {
     expect(itemName({ ...panelItem('spheres'), key: 'k' })).toBe(PANELS[0].title);
-    expect(itemName({ ...panelItem('spheres'), heading: ' Mine ', key: 'k' })).toBe('Mine');
+    expect(itemName({ ...panelItem('spheres'), heading: ' Mine ', key: 'k' })).toBe(`Mine (${PANELS[0].title})`);
+    expect(itemName({ ...questionItem('critical-angle'), heading: 'Ask', key: 'k' })).toBe('Ask (Question on “The ratio of reflection '
+      + 'to refraction depends on the angle”)');
     expect(itemName({ ...textItem('', 'Agenda\nthen more'), key: 'k' })).toBe('Agenda');
     expect(itemName({ ...questionItem('critical-angle'), key: 'k' })).toContain('Question on');
   });

@@ -84,6 +84,17 @@ export function buildMetalsDom(host, metals, onPick) {
 
   return {
     plotHost,
+    /**
+     * The swatches as a control of the panel's own (ctx.tie): a deck's lock of the metal disables
+     * them (shown at full contrast with a dashed frame, as a locked control is); they always show.
+     */
+    swatchControl: {
+      enable(on) {
+        for (const b of buttons) b.disabled = !on;
+        swatchRow.classList.toggle('is-locked', !on);
+      },
+      show() {},
+    },
     /** The note on the lecture's "almost no Fresnel factor" (lectureGap.js) and its source. */
     setNote(text, source) {
       note.set(text, source);

@@ -81,6 +81,7 @@ export function mount(root, ctx) {
   });
 
   ctx.bind(ctx.gui.addFolder('Materials'), ['metal', 'fresnel', 'nT']);
+  ctx.tie(dom.swatchControl, ['metal']);
 
   let curves = null;
   let stats = null;
