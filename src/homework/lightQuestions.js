@@ -63,16 +63,18 @@ export const LIGHT_QUESTIONS = [
   },
   {
     id: 'asphalt-outshine', panel: 'asphalt', kind: 'predict', unit: 'deg', tolerance: 2,
-    graded: 'How far below the horizon a sun-ward spot of road is seen when its specular luminance towards the eye equals its '
-      + 'diffuse luminance. On a flat road under a far sun and sky it depends on that direction alone, not on the camera or '
-      + 'its field of view; the panel\'s hover readout gives each spot\'s angle below the horizon with both parts.',
+    graded: 'How far below the horizon a sun-ward spot of road is seen when the sun\'s highlight there is as bright as the diffuse '
+      + 'road (lit by sun and sky; the panel, and the question, leave out the sky\'s own mirror image). On a flat road under a far '
+      + 'sun and sky it depends on that direction alone, not on the camera or its field of view; the panel\'s hover readout gives '
+      + 'each spot\'s angle below the horizon with both parts.',
     axis: 'Line of sight below the horizon',
     params: (rng) => ({ nT: rng.pick([1.5, 1.55, 1.6]), sunEl: rng.pick([10, 15, 20]) }),
     prompt: (p) => `A road of n_t = ${p.nT} and roughness ${ASPHALT_ROUGHNESS}, under a blue sky and a sun ${p.sunEl}° above it, `
       + `straight ahead. Look at spots of road straight towards the sun, from the spot below you (90° below the horizon) `
-      + `towards the horizon. Predict how far below the horizon you are looking when a spot first sends as much light `
-      + `towards you specularly as diffusely. Lower the camera and hover the road: the readout gives each spot's angle below `
-      + `the horizon and both parts. Within 2°.`,
+      + `towards the horizon. Predict how far below the horizon you are looking when the sun's highlight at a spot is first `
+      + `as bright as the diffuse road there (lit by sun and sky; like the panel, leave out the sky's own mirror image in the `
+      + `road). Lower the camera and hover the road: the readout gives each spot's angle below the horizon and both parts. `
+      + `Within 2°.`,
     expected: (p) => angleWhere(specularShare(p), 0.5, 0.5, 90),
     curve: (p) => ({ label: 'Specular share of the light from the spot', f: specularShare(p), level: 0.5 }),
     state: (p) => ({ nT: p.nT, sunEl: p.sunEl, roughness: ASPHALT_ROUGHNESS, camEl: 90, fresnel: true }),
@@ -95,7 +97,8 @@ export const LIGHT_QUESTIONS = [
           holds: (p) => peak(p, 'phong', 5) === peak(p, 'phong', 90) && peak(p, 'phongF', 5) > 4 * peak(p, 'phongF', 90),
           why: (p) => `Right: ${both(p)}. In the mirror direction v·r = 1 at every elevation, so only F can tell grazing from overhead. `
             + `(A model that also weighs the specular term by n·l = sin 5° would see Phong × F grow only `
-            + `×${fixed((peak(p, 'phongF', 5) * Math.sin(5 * DEG)) / peak(p, 'phongF', 90), 1)}.)`,
+            + `×${fixed((peak(p, 'phongF', 5) * Math.sin(5 * DEG)) / peak(p, 'phongF', 90), 1)}; a microfacet BRDF `
+            + 'also divides by cos θl cos θv, so its peak grows far more: see the asphalt panel.)',
         },
         {
           id: 'both-grow', text: () => 'Both grow: Phong’s lobe already brightens at grazing.',
@@ -118,7 +121,7 @@ export const LIGHT_QUESTIONS = [
       + 'and numbers follow the view angle.',
     params: (rng) => ({ nT: rng.pick([1.333, 1.45, 1.5, 1.6]) }),
     prompt: (p) => `A pool of n_t = ${p.nT} under an open sky. `
-      + `At what angle from the normal do the reflected sky and the refracted floor carry equal shares of the light (R = T = 0.5)? In `
+      + `At what angle from the normal does the surface reflect as much of the light as it transmits (R = T = 0.5)? In `
       + `degrees, within 0.5°.`,
     expected: (p) => angleWhere(reflectance(1, p.nT), 0.5),
     state: (p) => ({ nT: p.nT }),

@@ -98,7 +98,8 @@ function describe(row) {
   if (row.nanCount > 0) return `${row.label} (NaN or Infinity at ${row.nanCount} samples)`;
   // A real minus sign in the exponent, as src/ui/format.js writes shown numbers (methods stays apart from ui).
   const max = row.max.toPrecision(2).replace('e+', 'e').replaceAll('-', '\u2212');
-  return `${row.label} (max |ΔR| ${max}${where}, ${row.maxCodes.toFixed(2)} codes)`;
+  // The largest display error need not lie where |ΔR| is largest (sRGB is steeper for dark values): said apart.
+  return `${row.label} (max |ΔR| ${max}${where}; at most ${row.maxCodes.toFixed(2)} codes)`;
 }
 
 /**

@@ -3,14 +3,14 @@
 //
 // The criterion is advisor.js's: the worst sample over the scene's domain, at the brightest
 // light (display white), after the sRGB transform, in 8-bit codes. Under the strictest line, half a
-// step (no more than the display's own rounding), no Schlick variant passes for opaque plastic: its worst pixel is 12.1 codes
-// off (n = 1.3 at 83.6°), and even its average pixel, weighted by projected area (the scene's
-// cosine weighting), is 4.0 codes off, because sRGB steepens the small errors of dark
-// reflections. Schlick is nonetheless the usual choice there, as Filament (F_Schlick), Godot
-// (SchlickFresnel), three.js (F_Schlick) and UE4 (Karis, "Real Shading in Unreal Engine 4",
-// SIGGRAPH 2013) ship it: that is a judgement that a visible rim error of a few percent is
-// acceptable. The "acceptable" budget states that judgement as a number, 5 % of the display range
-// (12.75 codes), and says it is one; the student picks the budget.
+// step (no more than the display's own rounding), no Schlick variant passes for opaque plastic: its
+// worst pixel is 12.1 codes off (n = 1.3 at 80.6°; |ΔR| itself peaks at 83.6°, 11.1 codes there),
+// and even its average pixel, weighted by projected area (the scene's cosine weighting), is 4.0
+// codes off, because sRGB steepens the small errors of dark reflections. Schlick is nonetheless the
+// usual choice there, as Filament (F_Schlick), Godot (SchlickFresnel), three.js (F_Schlick) and UE4
+// (Karis, "Real Shading in Unreal Engine 4", SIGGRAPH 2013) ship it: that is a judgement that a
+// visible rim error of a few percent is acceptable. The "acceptable" budget states that judgement
+// as a number, 5 % of the display range (12.75 codes), and says it is one; the student picks the budget.
 import { displayCodes, recommend } from './advisor.js';
 import { sweepDomain } from './errorMetrics.js';
 import { contextFor } from './rounding.js';

@@ -35,9 +35,11 @@ export function conductorPhaseDifference(cosThetaI, n, k) {
 }
 
 /**
- * The principal angle of incidence in degrees, where Δ = 90° (Born & Wolf §14.4.1): found by
- * bisection, as Δ falls monotonically from 180° to 0° over (0°, 90°) when k > 0. Null for k = 0,
- * where Δ jumps from 180° to 0° at Brewster's angle instead.
+ * The principal angle of incidence in degrees, where Δ = 90° (Born & Wolf §14.4.1), found by
+ * bisection between Δ = 180° head-on and Δ = 0° at grazing. For the lab's metals Δ falls
+ * monotonically, so there is one (a unit test checks it); a weakly absorbing medium with n < 1 can
+ * have three (Azzam 2008), of which bisection finds one. Null for k = 0, where Δ jumps from 180°
+ * to 0° at Brewster's angle instead.
  */
 export function principalAngle(n, k) {
   if (!(k > 0)) return null;

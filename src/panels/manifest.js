@@ -209,7 +209,8 @@ export const PANELS = Object.freeze([
     id: 'speed-accuracy',
     title: 'Both speed and accuracy count',
     lede: `Every Fresnel method, measured on the device in front of you: what it costs per evaluation and how wrong it is.
-        Pick a scene to see which method it needs: the cheapest one whose error stays within the display's own rounding.`,
+        Pick a scene to see which method it needs: the cheapest one whose error is no larger than the rounding an 8-bit
+        display already makes (half a code), or within a budget you choose.`,
     cite: 'Beyond the slides: “model no more than a scene needs”.',
     webgl: false, // the chart is 2D; contexts live only while a benchmark or a read-back runs
     material: null,

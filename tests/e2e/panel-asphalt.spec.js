@@ -17,13 +17,13 @@ test('mounts in an embed with a labelled canvas and the key numbers', async ({ p
   const { centre, peak } = await page.evaluate(() => window.fresnelLab.panels.asphalt.state);
   const entry = (term) => page.locator('.asphalt-summary div', { hasText: term }).locator('dd');
   await expect(entry('F at the view centre')).toHaveText(`${centre.F.toFixed(3)} (θd = ${centre.thetaD.toFixed(1)}°)`);
-  await expect(entry('Brightest spot in view')).toContainText(`luminance ${peak.specular.toFixed(3)}`);
+  await expect(entry('Brightest highlight in view')).toContainText(`specular luminance ${peak.specular.toFixed(3)}`);
   await expect(page.locator('.panel-description')).toContainText('n_t = 1.55 (assumed for bitumen)');
   expect(centre.F).toBeGreaterThan(0.4); // default camera 6° above the road: near grazing
   // The two causes and how little is reflected (model.js, tests/unit/asphalt.test.js): the lede's figures.
   // At the default view the brightest spot is at the horizon; it is compared with the road seen straight down.
-  await expect(entry('Brightest spot in view')).toContainText('seen 0.0° below the horizon');
-  await expect(entry('Against the road straight below')).toHaveText(/^×21\d\.\d: lobe ×18\.5, F ×11\.7$/);
+  await expect(entry('Brightest highlight in view')).toContainText('seen 0.0° below the horizon');
+  await expect(entry('Highlight against the road straight below')).toHaveText(/^×21\d\.\d: lobe ×18\.5, F ×11\.7 \(diffuse counted too: ×3\d\.\d\)$/);
   await expect(entry('Sunlight reflected specularly')).toHaveText('7.3 % (diffuse albedo 9.0 %)');
   await expect(page.locator('.panel-description')).toContainText('the sheen is concentrated, not plentiful');
 });

@@ -66,12 +66,15 @@ describe('the stone-skipping analogy says how far it holds', async () => {
     expect(text).toContain(`R = ${fresnelExact(cosDeg(80), 1, 1.5).toFixed(2)} at 80°, ${fresnelExact(cosDeg(84), 1, 1.5).toFixed(2)} at 84°`);
     expect(text).toContain('R = 0.39 at 80°, 0.56 at 84°');
     expect(text).toContain('not a stone that bounces');
-    expect(text).toContain('Its trend holds at every angle: R grows from 0.04 head-on to 1 at grazing');
+    expect(text).toContain('Its trend holds at every angle: R grows from 0.040 head-on to 1 at grazing');
+    expect(text).toContain('Its slide says the greater the angle between the stone\'s velocity and the water\'s surface, the more it '
+      + 'skips; it is the other way round');
+    expect(stoneAnalogy(1.333, 1.5)).toContain('R grows from 0.0035 head-on'); // never 0.00
   });
-  it('its trend holds at every angle: unpolarized R never falls as the incidence flattens', () => {
-    // Checked on a 0.01° grid from head-on to grazing (or to the critical angle), both ways, for n from 1.1 to 3;
-    // float64 rounding near 0° allows a change of 1e-15.
-    for (const n of [1.1, 1.33, 1.5, 2, 2.42, 3]) {
+  it('its trend holds at every angle: unpolarized R never falls as the incidence flattens, for ratios below 2 + √3', () => {
+    // Checked on a 0.01° grid from head-on to grazing (or to the critical angle), both ways, for ratios from 1.1 to 3.7
+    // (the panel offers up to 3); float64 rounding near 0° allows a change of 1e-15.
+    for (const n of [1.1, 1.33, 1.5, 2, 2.42, 3, 3.7]) {
       for (const [nI, nT] of [[1, n], [n, 1]]) {
         let previous = -1;
         for (let i = 0; i <= 9000; i += 1) {
@@ -82,9 +85,18 @@ describe('the stone-skipping analogy says how far it holds', async () => {
       }
     }
   });
+  it('past a ratio of 2 + √3 R dips a little before it rises, which is why the comment names the bound', () => {
+    let dips = false;
+    for (let i = 1, previous = fresnelExact(1, 1, 4); i <= 9000; i += 1) {
+      const r = fresnelExact(cosDeg(i / 100), 1, 4);
+      if (r < previous - 1e-12) dips = true;
+      previous = r;
+    }
+    expect(dips).toBe(true);
+  });
   it('from the denser side it points to total internal reflection, far from grazing; equal indices reflect nothing', () => {
     expect(stoneAnalogy(1.5, 1)).toContain('critical angle, 41.8°, far from grazing');
-    expect(stoneAnalogy(1.5, 1)).toContain('R also grows with the angle, from 0.04 head-on, but it passes 0.5 at 41.4° and reaches 1 at the critical angle');
+    expect(stoneAnalogy(1.5, 1)).toContain('R also grows with the angle, from 0.040 head-on, but it passes 0.5 at 41.4° and reaches 1 at the critical angle');
     expect(halfReflectedAngle(1.5, 1.5)).toBeNull();
     expect(stoneAnalogy(1.5, 1.5)).toContain('nothing is reflected at any angle');
   });

@@ -84,7 +84,14 @@ describe('where the lecture\'s "almost no Fresnel factor" falls short', async ()
     expect(grazing.map((x) => x.toFixed(2))).toEqual(['0.99', '0.98', '0.94']);
     expect(text).toContain('0.96, 0.79, 0.41 at 0°, 0.99, 0.98, 0.94 at 89°');
     expect(text).toContain('tint fades towards white');
-    expect(text).toContain('by up to 0.007, red, near 70°');
+    expect(text).toContain('first dips below F0 in red and green (by up to 0.007, red, near 70°)');
+    expect(text).toContain('Head-on its F0 carries its colour');
+    // Copper's blue dips by 1.2e−5 only: not named. A neutral metal's colour is not claimed.
+    const copper = metalById('copper');
+    expect(stats(copper)[2].dip).toBeGreaterThan(0);
+    expect(stats(copper)[2].dip).toBeLessThan(0.001);
+    expect(metalsLectureGap(copper, stats(copper))).toContain('dips below F0 in red and green (');
+    expect(metalsLectureGap(metalById('silver'), stats(metalById('silver')))).toContain('Head-on it reflects every channel nearly alike');
   });
   it('iron: green and blue fall to about 0.49 near 65–70°; silver, aluminium and iron are nearly neutral', () => {
     const iron = stats(metalById('iron'));
@@ -154,5 +161,17 @@ describe('the principal angle, where the p–s phase difference is 90°', async 
       }
     }
     expect(principalAngle(1.5, 0)).toBeNull(); // a dielectric has Brewster's angle instead
+  });
+  it('falls monotonically for the lab\'s metals, so each channel has one principal angle', () => {
+    for (const m of metals) {
+      for (let ch = 0; ch < 3; ch += 1) {
+        let previous = 181;
+        for (let i = 0; i <= 9000; i += 1) {
+          const d = delta(Math.max(i / 100, 1e-6), m.n[ch], m.k[ch]);
+          expect(d, `${m.id} ${ch} at ${i / 100}°`).toBeLessThanOrEqual(previous + 1e-9);
+          previous = d;
+        }
+      }
+    }
   });
 });

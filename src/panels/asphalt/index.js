@@ -92,11 +92,12 @@ export function mount(root, ctx) {
     dom.setBadge(values.fresnel ? 'Fresnel on: F(θd) exact' : `Fresnel off: F = R0 = ${f3(r0)}`, values.fresnel);
     dom.setSummary([
       ['F at the view centre', `${f3(centre.F)} (θd = ${deg(centre.thetaD)})`, true],
-      ['Brightest spot in view', `seen ${deg(peak.below)} below the horizon: luminance ${f3(peak.specular)}, `
+      ['Brightest highlight in view', `seen ${deg(peak.below)} below the horizon: specular luminance ${f3(peak.specular)}, `
         + `θd = ${deg(peak.thetaD)}, F = ${f3(peak.F)}`, true],
       ['Diffuse road there', f3(peak.diffuse)],
       ['Highlight ÷ diffuse', `${fixed(peak.specular / peak.diffuse, 1)}×`],
-      ['Against the road straight below', `${times(growth.total)}: lobe ${times(growth.lobe)}, F ${times(growth.fresnel)}`],
+      ['Highlight against the road straight below', `${times(growth.total)}: lobe ${times(growth.lobe)}, F ${times(growth.fresnel)} `
+        + `(diffuse counted too: ${times(growth.overall)})`],
       [`Sunlight reflected specularly (sun ${deg(values.sunEl)} up)`, `${percent(albedo)} (diffuse albedo ${percent(SCENE.albedo)})`],
       ['R0 (head-on)', f3(r0)],
     ]);
@@ -122,7 +123,7 @@ export function mount(root, ctx) {
     const hit = shadeRoad(pixelRay(values.camEl, ndcX, ndcY, rect.width / rect.height), values);
     dom.setReadout(hit
       ? `Road ${fixed(hit.distance, 1)} m ahead, seen ${deg(hit.below)} below the horizon: θd = ${deg(hit.thetaD)}, `
-        + `F = ${f3(hit.F)}, specular ${f3(hit.specular)}, diffuse ${f3(hit.diffuse)}`
+        + `F = ${f3(hit.F)}, sun's highlight ${f3(hit.specular)}, diffuse ${f3(hit.diffuse)}`
       : 'Sky: no road under the cursor.');
   };
   const onLeave = () => dom.setReadout(hint);
@@ -162,11 +163,13 @@ export function mount(root, ctx) {
       return `Camera ${values.camEl}° above the road, sun ${values.sunEl}° ahead, roughness ${values.roughness}, `
         + `n_t = ${values.nT} (assumed for bitumen), Fresnel ${values.fresnel ? 'on' : 'off'}. `
         + `At the centre of view the sun meets the microfacets at θd = ${deg(centre.thetaD)}, where F is ${f3(centre.F)}; `
-        + `the brightest spot in view, seen ${deg(peak.below)} below the horizon, has luminance ${f3(peak.specular)}, `
+        + `the brightest highlight in view, seen ${deg(peak.below)} below the horizon, has specular luminance ${f3(peak.specular)}, `
         + `${fixed(peak.specular / peak.diffuse, 1)} times the diffuse road there (${f3(peak.diffuse)}). `
-        + `Against the road seen straight down it is ${times(growth.total)} brighter: `
+        + `Its specular part is ${times(growth.total)} that of the road seen straight down: `
         + `${times(growth.lobe)} from the lobe D·G2/(4 cos θl cos θv), which gathers the reflected light into a forward beam, `
-        + `and ${times(growth.fresnel)} from F. The road reflects ${percent(albedo)} of the sunlight specularly, ${share}.`;
+        + `and ${times(growth.fresnel)} from F; counting the diffuse road, the spot is ${times(growth.overall)} brighter. `
+        + `The road reflects ${percent(albedo)} of the sunlight specularly, ${share}. `
+        + 'The sky\'s own mirror image in the road is left out: the lesson is the sun\'s highlight.';
     },
     csv() {
       const { column } = state;

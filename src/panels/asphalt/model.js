@@ -114,17 +114,19 @@ export function sightBelow(belowDeg) {
 export const STRAIGHT_DOWN = 90;
 
 /**
- * How much brighter the brightest spot in view is than the road seen straight down, split into the
- * two factors of its specular luminance E·cosθl·lobe·F (E·cosθl is the same everywhere): the lobe
- * D·G2/(4 cosθl cosθv) and F(θd). total = lobe × fresnel. Both spots are named by the direction
- * they are seen in, so the factors do not depend on the field of view.
+ * How much brighter the sun's highlight at the brightest spot in view is than at the road seen
+ * straight down, split into the two factors of the specular luminance E·cosθl·lobe·F (E·cosθl is
+ * the same everywhere): the lobe D·G2/(4 cosθl cosθv) and F(θd). total = lobe × fresnel; overall
+ * is the ratio of the whole luminance, the diffuse road counted too. Both spots are named by the
+ * direction they are seen in, so the factors do not depend on the field of view.
  */
 export function sheenGrowth(values, aspect) {
   const now = highlightInView(values, aspect).peak;
   const below = shadeRoad(sightBelow(STRAIGHT_DOWN), values);
   const lobe = now.lobe / below.lobe;
   const fresnel = now.F / below.F;
-  return { lobe, fresnel, total: lobe * fresnel, spot: now, reference: below };
+  const overall = (now.specular + now.diffuse) / (below.specular + below.diffuse);
+  return { lobe, fresnel, total: lobe * fresnel, overall, spot: now, reference: below };
 }
 
 /**

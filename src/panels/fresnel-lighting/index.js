@@ -133,8 +133,10 @@ export function mount(root, ctx) {
     }
     // Head-on under an overhead sun: how much of kd's diffuse light each model lets out, per channel.
     const shares = diffuseSharesRgb({ kd: hexToLinear(values.kd), cosV: 1, cosL: 1, n: nT, ri: layers.ri });
-    note.set(`The lecture's k = mix(kd, ks, F) is a heuristic: it weighs the diffuse layer by one F, taken at the view `
-      + `angle, although the light entered at the light's angle, and it loses nothing inside the coat. A diffuse base `
+    const heuristic = 'The lecture\'s k = mix(kd, ks, F) is a heuristic: it weighs the diffuse layer by one F, taken at the view '
+      + 'angle, although the light entered at the light\'s angle, and it loses nothing inside the coat. ';
+    note.set(nT === 1 ? `${heuristic}With n = 1 the coat is no coat: it reflects nothing and traps nothing, and both models `
+      + 'show the bare base.' : `${heuristic}A diffuse base `
       + `under a clear coat of n = ${nT} receives 1 − F(θl) of the sunlight, lets out 1 − F(θv) of what it reflects, `
       + `spread over a wider cone (1/n²), and the coat's underside sends ${fixed(layers.ri, 2)} of that diffuse light back `
       + `to the base. Head-on, under an overhead sun, the lecture's model lets out ${fixed(shares.lecture, 2)} of this kd's `
@@ -142,7 +144,8 @@ export function mount(root, ctx) {
       + `(red, green, blue), ${fixed(shares.layeredLuminance, 2)} of its luminance`
       + `${shares.layeredLuminance < shares.lecture
         ? ': the coated surface looks darker'
-        : ' (light bouncing under the coat makes up for the losses on a bright base)'}. `
+        : ': light trapped under the coat comes out mostly near the normal, so head-on a bright base can look as bright as '
+          + `bare, though all it lets out over every direction is still at most 1 − F(θl) = ${fixed(shares.lecture, 2)}`}. `
       + `"Layered coat" shows it on the same sphere.`, COAT_SOURCE);
     plot.setData([curves.theta, curves.exact, curves.schlick, curves.theta.map(() => weight)]);
     plot.setMarks([thetaMark(RIM_DEG, `${RIM_DEG}°`)]);

@@ -12,6 +12,9 @@ export const SOURCE = 'Lazányi & Szirmay-Kalos, “Fresnel term approximations 
 /** Channels closer than this head-on are called neutral (silver, aluminium, iron in the lab's data). */
 export const NEUTRAL = 0.05;
 
+/** A dip below F0 smaller than this is not named (copper's blue: 1.2e−5); it still shows in the table. */
+export const NAMED_DIP = 0.001;
+
 const spread = (rgb) => Math.max(...rgb) - Math.min(...rgb);
 const list = (rgb) => rgb.map((x) => fixed(x, 2)).join(', ');
 /** Three decimals, or two significant digits where three would read 0.000. */
@@ -32,7 +35,7 @@ export function metalsLectureGap(metal, stats) {
   const head = channelsAt(metal, 0);
   const grazing = channelsAt(metal, GRAZING);
   const deepest = stats.reduce((a, b) => (b.dip > a.dip ? b : a));
-  const dipping = stats.filter((s) => s.dip > 0).map((s) => s.channel);
+  const dipping = stats.filter((s) => s.dip >= NAMED_DIP).map((s) => s.channel);
   const dip = dipping.length > 0
     ? ` first dips below F0 in ${channelNames(dipping)} (by up to ${small(deepest.dip)}, ${deepest.channel}, `
       + `near ${fixed(deepest.minimum.theta, 0)}°), then`
@@ -40,7 +43,8 @@ export function metalsLectureGap(metal, stats) {
   const tint = spread(head) >= NEUTRAL && spread(grazing) < spread(head)
     ? `its tint fades towards white (the channels ${fixed(spread(head), 2)} apart head-on, ${fixed(spread(grazing), 2)} at ${GRAZING}°)`
     : `it is nearly neutral at every angle (its channels within ${fixed(Math.max(spread(head), spread(grazing)), 2)} of each other)`;
-  return `The lecture says a metal has almost no Fresnel factor. Head-on its F0 carries its colour, `
+  const headOn = spread(head) >= NEUTRAL ? 'Head-on its F0 carries its colour' : 'Head-on it reflects every channel nearly alike';
+  return `The lecture says a metal has almost no Fresnel factor. ${headOn}, `
     + `but towards grazing ${metal.name.toLowerCase()}'s R${dip} rises towards 1 in every channel: `
     + `${list(head)} at 0°, ${list(grazing)} at ${GRAZING}° (red, green, blue), and ${tint}. `
     + `Schlick's form cannot dip below F0; F82 models add that term for metals.`;

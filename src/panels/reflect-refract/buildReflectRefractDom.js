@@ -76,10 +76,14 @@ export function buildReflectRefractDom(host) {
     },
     /** The note on the lecture's "No reflection" caption, for a surface of index n with head-on reflectance r0. */
     setNote(n, r0) {
-      note.set(`The lecture captions the steepest view "No reflection", but no view reflects nothing: head-on this surface `
-        + `(n_t = ${n}) still reflects R = ${fixed(r0, 3)} of the light, so below R = 0.1 the panel says "little reflection". `
-        + `The floor also looks dimmer from the air than from under the water: its light spreads into a wider cone as it `
-        + `leaves, which divides its radiance by n_t² (${fixed(1 / (n * n), 2)} here) on top of T.`, NOTE_SOURCE);
+      const caption = n === 1
+        ? 'The lecture captions the steepest view "No reflection". With n_t = 1 there is no interface, and nothing is '
+          + 'reflected at any angle; any other surface reflects something head-on, so below R = 0.1 the panel says "little reflection".'
+        : `The lecture captions the steepest view "No reflection", but no view reflects nothing: head-on this surface `
+          + `(n_t = ${n}) still reflects R = ${fixed(r0, 3)} of the light, so below R = 0.1 the panel says "little reflection". `
+          + `The floor also looks dimmer from the air than from inside the medium: its light spreads into a wider cone as it `
+          + `leaves, which divides its radiance by n_t² (${fixed(1 / (n * n), 2)} here) on top of T.`;
+      note.set(caption, NOTE_SOURCE);
     },
   };
 }

@@ -90,9 +90,9 @@ export function mount(root, ctx) {
     update,
     describe() {
       return `Looking down at ${angle(values.elevation, 1)} above a surface of n_t = ${values.nT}: the centre ray is `
-        + `${angle(ray.thetaDeg, 1)} from the normal, so R = ${fixed(ray.R, 4)} of the light comes from the reflected sky `
-        + `and T = ${fixed(ray.T, 4)} from the floor, refracted to ${angle(ray.thetaTDeg)} (${ray.band.label}); `
-        + `seen from the air the floor's radiance is weighed by T/n_t² = ${fixed(ray.floorWeight, 4)}.`;
+        + `${angle(ray.thetaDeg, 1)} from the normal, so its pixel mixes R = ${fixed(ray.R, 4)} of the sky's radiance, reflected, `
+        + `and T/n_t² = ${fixed(ray.floorWeight, 4)} of the floor's (T = ${fixed(ray.T, 4)}, refracted to `
+        + `${angle(ray.thetaTDeg)}): ${ray.band.label}.`;
     },
     csv() {
       const { elevation, R, T } = splitByElevation(values.nT);

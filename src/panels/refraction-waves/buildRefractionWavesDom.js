@@ -65,7 +65,7 @@ export function buildRefractionWavesDom(host, { onPlayToggle }) {
       setSubscripted(bottom, mediumText('t', s.mT));
       tir.hidden = s.thetaT !== null;
       tirDetail.textContent = s.thetaT === null
-        ? `No propagating transmitted wave; the evanescent field below fades within ${fixed(s.depthNm, 0)} nm (1/e).`
+        ? `No propagating transmitted wave; the evanescent field's amplitude below falls to 1/e within ${fixed(s.depthNm, 0)} nm.`
         : '';
       stage.classList.toggle('rw-is-tir', s.thetaT === null);
       summary.set([

@@ -32,7 +32,7 @@ function practicalNote(alt, rec, rows) {
   if (!alt?.invisible || alt.methodId === rec.methodId) return '';
   const row = rows.find((r) => r.methodId === alt.methodId);
   const where = row.thetaAtMax === null ? '' : ` at ${angle(toDegrees(row.thetaAtMax), 1)}`; // as the advisor's reason writes it
-  return ' If a visible error of up to 5 % of the range is acceptable (the judgement behind the Schlick that engines ship), '
+  return ' If an error of up to 5 % of the display range is acceptable (the judgement behind the Schlick that engines ship), '
     + `${row.label} would do: ${formatCodes(row.maxCodes)} codes at worst${where}, ${formatCodes(row.meanCodes)} on average.`;
 }
 
