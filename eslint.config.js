@@ -1,6 +1,19 @@
 import js from '@eslint/js';
 import globals from 'globals';
 
+// Every locale Intl is given comes through src/ui/safeLocale.js: browsers report some that Intl
+// refuses (`en-US@posix`, `C`), and then the constructor throws. Its first argument (localeCompare's
+// second) must be safeLocale(…), pageLocale() or FALLBACK_LOCALE, never left out.
+const SAFE = (n) => `:not([arguments.${n}.callee.name=/^(safeLocale|pageLocale)$/], [arguments.${n}.name='FALLBACK_LOCALE'])`;
+const LOCALE_RULES = [
+  "NewExpression[callee.object.name='Intl']",
+  "CallExpression[callee.object.name='Intl'][callee.property.name=/^[A-Z]/]",
+  "CallExpression[callee.property.name=/^toLocale(Date|Time)?String$/]",
+].map((selector) => `${selector}${SAFE(0)}`).concat(`CallExpression[callee.property.name='localeCompare']${SAFE(1)}`)
+  .map((selector) => ({
+    selector, message: 'Give Intl its locale through src/ui/safeLocale.js: safeLocale(tag), pageLocale() or FALLBACK_LOCALE.',
+  }));
+
 export default [
   { ignores: ['dist/', 'node_modules/', 'test-results/', 'playwright-report/'] },
   js.configs.recommended,
@@ -12,12 +25,13 @@ export default [
     },
     rules: { 'no-unused-vars': ['error', { argsIgnorePattern: '^_' }] },
   },
+  { files: ['src/**/*.js'], rules: { 'no-restricted-syntax': ['error', ...LOCALE_RULES] } },
   {
     // A number a panel shows goes through src/ui/format.js: a real minus sign (U+2212) and the
     // decimals that column keeps. Markup numbers and TeX have their own helpers there and in tex.js.
     files: ['src/panels/**/*.js'],
     rules: {
-      'no-restricted-syntax': ['error', {
+      'no-restricted-syntax': ['error', ...LOCALE_RULES, {
         selector: "MemberExpression[property.name='toFixed']",
         message: 'Format numbers with src/ui/format.js: fixed, angle or sci for text, markupNumber for SVG or CSS, '
           + 'rounded for a value; texNumber (src/ui/tex.js) inside TeX.',

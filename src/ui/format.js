@@ -21,6 +21,16 @@ export function precise(value, digits = 6) {
   return value.toPrecision(digits).replaceAll('-', MINUS).replace('e+', 'e');
 }
 
+/**
+ * An integer with its thousands apart, SI style (224850.3 → "224 850", a narrow no-break space): the
+ * same in every browser language, where a comma or a point would read as a decimal to half the
+ * readers (SI Brochure, 9th edition, 5.4.4).
+ */
+export function grouped(value) {
+  if (!Number.isFinite(value)) return Number.isNaN(value) ? '—' : String(value);
+  return String(Math.round(value)).replace(/\B(?=(\d{3})+(?!\d))/g, '\u202f').replace('-', MINUS);
+}
+
 /** An angle in degrees, 56.31°. */
 export function angle(deg, digits = 2) {
   return `${fixed(deg, digits)}°`;

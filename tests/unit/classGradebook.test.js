@@ -141,6 +141,11 @@ describe('sorting', () => {
     expect(keys(sortRows(rows, 'name', { locale: 'en' }))).toEqual([5, 4, 1, 0, 2, 3]);
     expect(keys(sortRows(rows, 'name', { locale: 'en', descending: true }))).toEqual([0, 2, 1, 4, 5, 3]);
   });
+  it('by name under a language Intl refuses as the system reports it: English order, no error', () => {
+    for (const locale of ['en-US@posix', 'C', 'en_US.UTF-8', '']) {
+      expect(keys(sortRows(rows, 'name', { locale })), locale).toEqual([5, 4, 1, 0, 2, 3]);
+    }
+  });
   it('by score as numbers, ties in their order; by a question, unanswered last; by time, none last', () => {
     expect(keys(sortRows(rows, 'score'))).toEqual([5, 0, 2, 4, 3, 1]);
     expect(keys(sortRows(rows, 'score', { descending: true }))).toEqual([1, 3, 0, 2, 4, 5]);

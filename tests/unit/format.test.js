@@ -1,5 +1,5 @@
 import { describe, it, expect } from 'vitest';
-import { angle, fixed, markupNumber, MINUS, precise, rounded, sci } from '../../src/ui/format.js';
+import { angle, fixed, grouped, markupNumber, MINUS, precise, rounded, sci } from '../../src/ui/format.js';
 
 describe('format: shown numbers', () => {
   it('writes a negative number with the minus sign U+2212, never a hyphen', () => {
@@ -11,6 +11,16 @@ describe('format: shown numbers', () => {
 
   it('shows an undefined quantity as a dash', () => {
     expect(fixed(NaN)).toBe('—');
+  });
+
+  it('groups the thousands of an integer with a narrow no-break space, whatever the browser language', () => {
+    expect(grouped(224850.3)).toBe('224\u202f850');
+    expect(grouped(299792.458)).toBe('299\u202f792');
+    expect(grouped(1234567)).toBe('1\u202f234\u202f567');
+    expect(grouped(999.5)).toBe('1\u202f000');
+    expect(grouped(42)).toBe('42');
+    expect(grouped(-12345)).toBe(`${MINUS}12\u202f345`);
+    expect(grouped(NaN)).toBe('—');
   });
 });
 

@@ -4,6 +4,7 @@
 // the reader's language's order (Zoë beside Zoe, "Student 9" before "Student 10"), scores and times
 // as numbers. What is missing (no name, no time, an unanswered question, no tries) goes last in
 // either direction, so the students who did answer are the ones at the top.
+import { pageLocale, safeLocale } from '../../ui/safeLocale.js';
 
 /**
  * @typedef {import('./buildGradebook.js').Row} Row
@@ -32,14 +33,14 @@ function valueOf(row, column) {
 
 /**
  * The rows sorted by `column` (a new list; the rows are not copied). locale: the collation's
- * language (the page's), default the runtime's.
+ * language (the page's), default the reader's (pageLocale); a tag Intl would refuse gives English.
  * @param {Row[]} rows
  * @param {Column} column
  * @param {{ descending?: boolean, locale?: string | string[] }} [options]
  * @returns {Row[]}
  */
 export function sortRows(rows, column, { descending = false, locale } = {}) {
-  const collator = new Intl.Collator(locale, { numeric: true, sensitivity: 'base' });
+  const collator = new Intl.Collator(safeLocale(locale ?? pageLocale()), { numeric: true, sensitivity: 'base' });
   const sign = descending ? -1 : 1;
   const decorated = rows.map((row, index) => ({ row, index, value: valueOf(row, column) }));
   decorated.sort((a, b) => {

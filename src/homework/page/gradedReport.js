@@ -3,6 +3,7 @@
 // view's per-student detail. Text only (textContent), never markup.
 import { el } from '../../ui/el.js';
 import { setSubscripted } from '../../ui/subscripts.js';
+import { pageLocale } from '../../ui/safeLocale.js';
 import { questionById } from '../questions.js';
 import { trueOption } from '../gradeAnswer.js';
 import { formatValue } from '../formatAnswer.js';
@@ -39,7 +40,7 @@ export function gradedReport(label, graded, { against }) {
     return box;
   }
   const who = graded.name || 'no name given';
-  const when = graded.time ? new Date(graded.time).toLocaleString() : 'no time given';
+  const when = graded.time ? new Date(graded.time).toLocaleString(pageLocale()) : 'no time given';
   const score = el('p', 'hw-score', `${graded.title}: ${who}, seed ${graded.seed}, handed in ${when}. `
     + `Score ${graded.score} of ${graded.total}, recomputed.`);
   score.setAttribute('role', 'status');

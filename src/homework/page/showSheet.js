@@ -4,6 +4,7 @@
 // reveals a question: the "predict, then show" of a live class.
 import { el } from '../../ui/el.js';
 import { fileSlug } from '../../ui/format.js';
+import { pageLocale } from '../../ui/safeLocale.js';
 import { copyText, downloadText } from '../../host/exporters.js';
 import { questionById } from '../questions.js';
 import { questionParams, readAnswer } from '../gradeAnswer.js';
@@ -171,7 +172,7 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
         + `went to the course's gradebook.`;
       else sent = ' The course did not take the score: hand in the file or the code instead.';
     }
-    status.textContent = `Handed in at ${new Date(record.time).toLocaleTimeString()}: `
+    status.textContent = `Handed in at ${new Date(record.time).toLocaleTimeString(pageLocale())}: `
       + `saved as ${filename}.${open ? ` ${open} of ${record.answers.length} questions have no answer.` : ''}${sent}`;
   });
   copy.addEventListener('click', async () => {

@@ -2,7 +2,7 @@
 // wavelength and speed, the total-internal-reflection banner), a play/pause button, the numbers
 // and Snell's law with live values. Styles: styles.css (all under .rw-panel).
 import { DEG, toDegrees } from '../../optics/angles.js';
-import { angle, fixed } from '../../ui/format.js';
+import { angle, fixed, grouped } from '../../ui/format.js';
 import { setSubscripted } from '../../ui/subscripts.js';
 import { renderTex, texNumber } from '../../ui/tex.js';
 import { el } from '../../ui/el.js';
@@ -14,7 +14,7 @@ import { makeScrollBox } from '../../ui/scrollBox.js';
 const amplitude = (z) => (Math.abs(z.im) < 1e-12
   ? fixed(z.re, 4)
   : `${fixed(Math.hypot(z.re, z.im), 4)} ∠ ${angle(toDegrees(Math.atan2(z.im, z.re)), 1)}`);
-const kmS = (v) => `${Math.round(v).toLocaleString('en-US')} km/s`;
+const kmS = (v) => `${grouped(v)} km/s`;
 
 export function buildRefractionWavesDom(host, { onPlayToggle }) {
   const root = el('div', 'rw-panel');

@@ -2,7 +2,7 @@
 // "Use" button per row, and the custom row in the footer. Rebuilt from data on every render, so the
 // DOM never disagrees with the values.
 import { el } from '../../ui/el.js';
-import { angle, fixed, rounded } from '../../ui/format.js';
+import { angle, fixed, grouped, rounded } from '../../ui/format.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
 
 /** The table's columns, each a sort key of materialRows.js (SORT_KEYS). */
@@ -23,12 +23,11 @@ export function formatIndex(n) {
 }
 
 /**
- * 224850.3 → "224 850" with a narrow no-break space between thousands (SI style), rounded to
- * `step` km/s: the data's n, to 4 or 5 decimals, holds a phase speed to about 10 km/s; a group
- * speed from three wavelengths, to about 1000.
+ * 224850.3 → "224 850" (grouped, SI style), rounded to `step` km/s: the data's n, to 4 or 5
+ * decimals, holds a phase speed to about 10 km/s; a group speed from three wavelengths, to about 1000.
  */
 export function formatKmS(value, step = 10) {
-  return (Math.round(value / step) * step).toString().replace(/\B(?=(\d{3})+(?!\d))/g, '\u202f');
+  return grouped(Math.round(value / step) * step);
 }
 
 /** Long paths may wrap after each '/' and inside the site name (a zero-width space), so the column stays narrow. */

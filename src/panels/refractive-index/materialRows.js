@@ -3,6 +3,7 @@
 import { toDegrees } from '../../optics/angles.js';
 import { dielectrics, dielectricSummary } from '../../optics/materials.js';
 import { SPEED_OF_LIGHT_KM_S } from '../../optics/waves.js';
+import { FALLBACK_LOCALE } from '../../ui/safeLocale.js';
 
 export const SORT_KEYS = ['name', 'n', 'speed', 'r0', 'critical', 'source'];
 
@@ -47,7 +48,7 @@ export function sortMaterialRows(rows, key, direction = 'asc') {
       const x = a.row[key];
       const y = b.row[key];
       if (x === null || y === null) return x === y ? a.index - b.index : x === null ? 1 : -1;
-      const order = typeof x === 'string' ? x.localeCompare(y, 'en') : x - y;
+      const order = typeof x === 'string' ? x.localeCompare(y, FALLBACK_LOCALE) : x - y;
       return order !== 0 ? sign * order : a.index - b.index;
     })
     .map(({ row }) => row);

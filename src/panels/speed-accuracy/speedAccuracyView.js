@@ -13,6 +13,7 @@ import { paretoFront } from '../../methods/paretoFront.js';
 import { sceneById } from '../../methods/scenes.js';
 import { toDegrees } from '../../optics/angles.js';
 import { angle, fixed } from '../../ui/format.js';
+import { pageLocale } from '../../ui/safeLocale.js';
 import {
   glslOf, mediumpNote, PRECISION_WORDS, sourceWords,
 } from './errorSources.js';
@@ -60,7 +61,8 @@ export function deviceText(results) {
   const frames = f ? ` Frame at ${f.width}×${f.height}: hero spheres ${ms(f.spheres.msPerFrame)}, `
     + `three.js MeshPhysicalMaterial ${ms(f.threePhysical.msPerFrame)} (the hero costs ×${fixed(f.ratio, 2)}).` : '';
   const failed = results.device.gpuError ? ` GPU timing failed: ${results.device.gpuError}` : '';
-  return `Measured ${results.date ? new Date(results.date).toLocaleString() : ''} on ${results.device.renderer ?? 'no WebGL2 (CPU only)'}; `
+  const when = results.date ? new Date(results.date).toLocaleString(pageLocale()) : '';
+  return `Measured ${when} on ${results.device.renderer ?? 'no WebGL2 (CPU only)'}; `
     + `timer: ${results.device.timer ?? '–'}.${frames}${failed}`;
 }
 

@@ -7,6 +7,7 @@
 // seconds for a class of 500. Rows are made in slices, and sorting moves the rows that exist
 // instead of making them again. Text only (textContent), never markup.
 import { button, el } from '../../../ui/el.js';
+import { pageLocale } from '../../../ui/safeLocale.js';
 import { sortRows } from '../../class/sortRows.js';
 import { KIND_NAMES } from '../../questions.js';
 
@@ -37,7 +38,7 @@ function markCell(mark) {
 
 // One formatter for every row: toLocaleString with options builds a formatter per call, the
 // largest cost of making a row.
-const DATES = new Intl.DateTimeFormat(undefined, { dateStyle: 'short', timeStyle: 'short' });
+const DATES = new Intl.DateTimeFormat(pageLocale(), { dateStyle: 'short', timeStyle: 'short' });
 const when = (time) => (time ? DATES.format(new Date(time)) : '—');
 export const shownName = (row) => row.name || row.lmsName || '(no name)';
 
