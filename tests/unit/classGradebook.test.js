@@ -121,7 +121,7 @@ describe('the gradebook', () => {
     const kinds = book.rows.map((r) => r.flags.map((f) => f.kind));
     expect(kinds).toEqual([['shared-seed', 'copied'], ['shared-seed', 'copied'], [], ['no-name']]);
     expect(book.rows[0].flags[1].text).toMatch(/same wrong answers as Cy to the same numbers \(seed shared\) on questions 1, 2, 3/);
-    expect(book.rows[3].flags[0].text).toMatch(/the LMS's folder says Eve Ng/);
+    expect(book.rows[3].flags[0].text).toMatch(/the LMS's folder or file name says Eve Ng/);
     expect(book.rows[3].lmsName).toBe('Eve Ng');
     // Two wrong answers in common are not enough; a wrong answer most of the class shares is a common slip.
     const two = buildGradebook(gradeClassSync(sheet, [handIn('Bo', 'k', ['wrong', 'wrong', 'right', 'right', 'right']), handIn('Cy', 'k', ['wrong', 'wrong', 'right', 'right', 'right'])]));

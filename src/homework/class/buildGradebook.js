@@ -10,18 +10,20 @@
 //   copied                    the same wrong numbers to the same numbers: two students on one seed
 //                             with the same wrong answer to several numeric or predict questions;
 //   no-name                   the hand-in gives no name.
-// A student is their name as the file gives it (spaces and case aside), or the LMS's folder name when
-// the file gives none; hand-ins with neither are never taken for one another.
+// A student is their name as the file gives it (spaces and case aside); when the file gives none,
+// their id in the LMS (the participant number in a Moodle folder's name, the user id in a Canvas
+// file's name), or the LMS's folder name; hand-ins with none of them are never taken for one another.
 import { questionById } from '../questions.js';
-import { lmsName } from './lmsName.js';
+import { lmsUser } from './lmsName.js';
 
 /**
  * @typedef {'right' | 'wrong' | 'unanswered'} Mark
  * @typedef {{ kind: 'superseded' | 'resubmitted' | 'shared-seed' | 'class-seed' | 'copied' | 'no-name', text: string,
  *   others: number[] }} Flag
- * @typedef {{ key: number, name: string, lmsName: string, seed: string, score: number, total: number, percent: number,
- *   marks: Mark[], tries: (number | null)[], triesTotal: number | null, time: string | null, source: string,
- *   counted: boolean, flags: Flag[] }} Row  key: the hand-in's index in grades.graded
+ * @typedef {{ key: number, name: string, lmsName: string, lms: import('./lmsName.js').LmsUser['lms'], lmsId: string, seed: string,
+ *   score: number, total: number, percent: number, marks: Mark[], tries: (number | null)[], triesTotal: number | null,
+ *   time: string | null, source: string, counted: boolean, flags: Flag[] }} Row
+ *   key: the hand-in's index in grades.graded; lms, lmsId: the LMS and the student's id there, from the source's path
  * @typedef {{ title: string, fingerprint: string, classSeed: string | null, items: { question: string, kind: string }[],
  *   rows: Row[], students: number, superseded: number }} Gradebook
  */
@@ -130,15 +132,17 @@ export function buildGradebook(grades, { copiedAtLeast = COPIED_AT_LEAST } = {})
   const rows = graded.map(({ source, result }, key) => {
     const tries = result.results.map((r) => r.attempts);
     const known = tries.filter((t) => t !== null);
+    const lms = lmsUser(source);
     return {
-      key, name: result.name, lmsName: lmsName(source), seed: result.seed,
+      key, name: result.name, lmsName: lms.name, lms: lms.lms, lmsId: lms.id, seed: result.seed,
       score: result.score, total: result.total, percent: result.total ? (100 * result.score) / result.total : 0,
       marks: result.results.map((r) => (r.correct ? 'right' : r.answered ? 'wrong' : 'unanswered')),
       tries, triesTotal: known.length ? known.reduce((a, b) => a + b, 0) : null,
       time: result.time, source, counted: true, flags: [],
     };
   });
-  const identity = (row) => (row.name ? normalName(row.name) : row.lmsName ? normalName(row.lmsName) : null);
+  const identity = (row) => (row.name ? normalName(row.name) : row.lmsId ? `${row.lms}\u0000${row.lmsId}`
+    : row.lmsName ? normalName(row.lmsName) : null);
   supersede(rows, identity);
   const counted = rows.filter((row) => row.counted);
   if (sheet.seed === undefined) sharedSeeds(counted, identity);
@@ -147,7 +151,7 @@ export function buildGradebook(grades, { copiedAtLeast = COPIED_AT_LEAST } = {})
   copiedAnswers(counted, graded, items, identity, copiedAtLeast);
   for (const row of rows) {
     if (!row.name) row.flags.push({ kind: 'no-name', text: row.lmsName ? `No name in the hand-in; `
-      + `the LMS's folder says ${row.lmsName}.` : 'No name in the hand-in.', others: [] });
+      + `the LMS's folder or file name says ${row.lmsName}.` : 'No name in the hand-in.', others: [] });
   }
   return {
     title: sheet.title, fingerprint: grades.fingerprint, classSeed: sheet.seed ?? null, items, rows,

@@ -1,12 +1,14 @@
 // @ts-check
 // A class's hand-ins from what a lecturer brings: files picked or a folder dropped (handed-in .json
-// files, .txt files of codes, an LMS's zip of everyone's submissions, zips inside it), and text
-// pasted (codes and handed-in files' JSON, among other text). Each hand-in keeps where it came from
+// files, .txt files of codes, .html pages of an LMS's online text, files without an extension read
+// for what they hold, an LMS's zip of everyone's submissions, zips inside it), and text pasted
+// (codes and handed-in files' JSON, among other text). Each hand-in keeps where it came from
 // (an LMS's folder often names the student: lmsName.js); everything that is not read is refused
 // with its name and the reason. Reading only finds data: gradeClass.js decides what it is.
 import { classCaps, megabytes } from './classCaps.js';
-import { fileKind } from './fileKind.js';
+import { contentKind, fileKind } from './fileKind.js';
 import { findHandIns } from './findHandIns.js';
+import { htmlToText, looksLikeHtml } from './htmlText.js';
 import { unzipBounded } from './unzipBounded.js';
 
 /**
@@ -50,13 +52,28 @@ export function readClassHandIns({ files = [], text = '' } = {}, capsGiven = {})
   const admit = (path, claimed) => {
     const kind = fileKind(path);
     if (kind.reason) return kind.reason;
-    const max = kind.kind === 'zip' ? caps.maxNestedZipBytes : caps.maxFileBytes;
+    // A file without an extension may be a zip: held to a zip's cap here, and to a file's once its bytes say it is text.
+    const max = kind.kind === 'zip' || kind.kind === 'by-content' ? caps.maxNestedZipBytes : caps.maxFileBytes;
     return claimed > max ? `its header says it unpacks to ${megabytes(claimed)}, `
       + `more than the ${megabytes(max)} a ${kind.kind === 'zip' ? 'zip inside a zip' : 'file'} may have.` : null;
   };
 
+  /** A text file's content: an HTML page's text (tags dropped, entities decoded), any other as it is. */
+  const readTextFile = (name, bytes, html) => {
+    if (bytes.length > caps.maxFileBytes) {
+      refused.push({ source: name, reason: `${megabytes(bytes.length)}: more than the ${megabytes(caps.maxFileBytes)} a handed-in `
+        + `file or a text of codes may have.` });
+      return;
+    }
+    const decoded = decodeText(bytes);
+    const content = html || looksLikeHtml(decoded) ? htmlToText(decoded) : decoded;
+    if (content.trim()) readText(content, name);
+    else refused.push({ source: name, reason: html && decoded.trim() ? 'an HTML page with no text in it.' : 'an empty file.' });
+  };
+
   const readFile = (name, bytes, depth) => {
-    const kind = fileKind(name);
+    const named = fileKind(name);
+    const kind = named.kind === 'by-content' ? contentKind(bytes) : named;
     if (kind.reason) {
       refused.push({ source: name, reason: kind.reason });
     } else if (kind.kind === 'zip') {
@@ -71,14 +88,7 @@ export function readClassHandIns({ files = [], text = '' } = {}, capsGiven = {})
         for (const file of zip.files) readFile(file.name, file.bytes, depth + 1);
         if (!zip.files.length && !zip.refused.length) refused.push({ source: name, reason: 'an empty zip: it holds no files.' });
       }
-    } else if (bytes.length > caps.maxFileBytes) {
-      refused.push({ source: name, reason: `${megabytes(bytes.length)}: more than the ${megabytes(caps.maxFileBytes)} a handed-in file or `
-        + `a text of codes may have.` });
-    } else {
-      const content = decodeText(bytes);
-      if (!content.trim()) refused.push({ source: name, reason: 'an empty file.' });
-      else readText(content, name);
-    }
+    } else readTextFile(name, bytes, kind.kind === 'html'); // a text that starts as an HTML page is read as one too
   };
 
   const list = Array.isArray(files) ? files : [];

@@ -65,7 +65,7 @@ export function buildClassSection(root) {
   const sheet = el('input');
   sheet.type = 'text';
   sheet.placeholder = 'the sheet’s link (or its JSON): required, hand-ins for any other sheet are refused';
-  const files = fileInput({ accept: '.json,.txt,.zip,application/json,application/zip,text/plain' });
+  const files = fileInput({ accept: '.json,.txt,.html,.htm,.zip,application/json,application/zip,text/plain,text/html' });
   const folder = fileInput({ folder: true });
   const drop = el('div', 'hw-drop', 'Or drop files, folders or a zip here.');
   const codes = el('textarea');
@@ -79,7 +79,8 @@ export function buildClassSection(root) {
   const showDialog = makeDialog('hw-show-dialog');
   section.append(heading,
     el('p', null, 'Bring everything the class handed in, as it came: handed-in files, a folder of them, '
-      + 'the zip an LMS gives for “download all submissions”, or codes pasted from messages or an export. '
+      + 'the zip an LMS gives for “download all submissions” (codes pasted into its online text are read too), '
+      + 'or codes pasted from messages or an export. '
       + 'Every answer is computed again here; nothing leaves this browser.'),
     field('The sheet the class answered', sheet),
     field('Handed-in files, text files of codes, or zips', files), field('Or a whole folder', folder), drop,

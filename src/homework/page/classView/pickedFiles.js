@@ -3,7 +3,7 @@
 // walked. A file larger than its kind may be is refused here, by name, without being read into
 // memory; a kind that is never read is passed on empty and refused by name there (fileKind.js).
 import { CLASS_CAPS, megabytes } from '../../class/classCaps.js';
-import { fileKind } from '../../class/fileKind.js';
+import { contentKind, fileKind } from '../../class/fileKind.js';
 
 const MAX_WALKED = CLASS_CAPS.maxEntries; // files taken from dropped folders, as from a zip
 
@@ -15,10 +15,22 @@ export async function readPicked(entries) {
   const files = [];
   const refused = [];
   for (const { file, path } of entries) {
-    const kind = fileKind(path);
+    let kind = fileKind(path);
     if (kind.reason) {
       files.push({ name: path, bytes: new Uint8Array(0) });
       continue;
+    }
+    if (kind.kind === 'by-content') {
+      // A file without an extension: its first bytes say whether it is a zip, text, or neither.
+      try {
+        kind = contentKind(new Uint8Array(await file.slice(0, 1024).arrayBuffer()));
+      } catch {
+        kind = { reason: 'the browser could not read it.' };
+      }
+      if (kind.reason) {
+        refused.push({ source: path, reason: kind.reason });
+        continue;
+      }
     }
     const max = kind.kind === 'zip' ? CLASS_CAPS.maxZipBytes : CLASS_CAPS.maxFileBytes;
     if (file.size > max) {

@@ -1,0 +1,108 @@
+// An LMS's "download all submissions" as it comes (src/homework/class/): Moodle's with file and
+// online-text hand-ins, in folders or flat; Canvas's with late and resubmitted files and online
+// text; files without an extension read for what they hold; every student named and given their
+// id in that LMS from the path.
+import { describe, expect, it } from 'vitest';
+import { strToU8, zipSync } from 'fflate';
+import { readClassHandIns } from '../../src/homework/class/readClassHandIns.js';
+import { gradeClassSync } from '../../src/homework/class/gradeClass.js';
+import { buildGradebook } from '../../src/homework/class/buildGradebook.js';
+import { lmsUser } from '../../src/homework/class/lmsName.js';
+import { htmlToText } from '../../src/homework/class/htmlText.js';
+import { handInToCode, makeHandIn } from '../../src/homework/sheetCodes.js';
+
+const sheet = { version: 1, title: 'Week 3', items: [{ question: 'exact-r' }, { question: 'metal-grazing' }] };
+const handIn = (name, seed, time = '2026-01-10T10:00:00.000Z') => makeHandIn({ sheet, seed, name, answers: ['0.05', 'towards-white'], time });
+const json = (data) => strToU8(JSON.stringify(data));
+/** Moodle's online text as its download writes it (assignsubmission_onlinetext: the editor's HTML in a page). */
+const onlineText = (body) => strToU8(`<!DOCTYPE html><html><head><meta charset="UTF-8"></head><body>${body}</body></html>`);
+const graded = (files) => {
+  const read = readClassHandIns({ files });
+  const grades = gradeClassSync(sheet, read.handIns);
+  if (!grades.ok) throw new Error(grades.problems.join(' '));
+  return { read, book: buildGradebook(grades) };
+};
+const who = (book) => book.rows.map((r) => [r.name || r.lmsName, r.lms, r.lmsId, r.counted]);
+
+describe('a Moodle download', () => {
+  it('reads file and online-text hand-ins, in folders and flat, and a file without an extension; every student named', () => {
+    const code = handInToCode(handIn('', 'moodle-2'));
+    const wrapped = handInToCode(handIn('Zoë Müller', 'moodle-4')).match(/.{1,70}/g).join('<br>\n');
+    const zip = zipSync({
+      'Ada Lovelace_100001_assignsubmission_file_': { 'handin.json': json(handIn('Ada Lovelace', 'moodle-1')) },
+      'Seán O Brien_100002_assignsubmission_onlinetext_': {
+        'onlinetext.html': onlineText(`<p>Here is my code &amp; thanks:</p><p>${code}</p>`),
+      },
+      '李伟_100003_assignsubmission_file_': { handin: json(handIn('李伟', 'moodle-3')), scan: strToU8('%PDF-1.7 …') },
+      'Zoë Müller_100004_assignsubmission_onlinetext_onlinetext.html': onlineText(`<div>${wrapped}</div>`),
+    });
+    const { read, book } = graded([{ name: 'Week 3-123.zip', bytes: zip }]);
+    expect(read.refused).toEqual([{ source: 'Week 3-123.zip/李伟_100003_assignsubmission_file_/scan', reason: expect.stringMatching(/a PDF/) }]);
+    expect(who(book).sort()).toEqual([
+      ['Ada Lovelace', 'moodle', '100001', true], ['Seán O Brien', 'moodle', '100002', true],
+      ['Zoë Müller', 'moodle', '100004', true], ['李伟', 'moodle', '100003', true],
+    ]);
+    expect(book.rows.find((r) => r.lmsId === '100002').flags.map((f) => f.text)).toEqual([expect.stringMatching(/says Seán O Brien/)]);
+  });
+
+  it('the participant number tells apart hand-ins with no name, even under blind marking (every folder says "Participant")', () => {
+    const zip = zipSync({
+      'Participant_200001_assignsubmission_file_': { 'h.json': json(handIn('', 'p1')) },
+      'Participant_200002_assignsubmission_file_': { 'h.json': json(handIn('', 'p2')) },
+    });
+    const { book } = graded([{ name: 'blind.zip', bytes: zip }]);
+    expect(book.rows.map((r) => [r.lmsId, r.counted])).toEqual([['200001', true], ['200002', true]]);
+  });
+});
+
+describe('a Canvas download', () => {
+  it('names students from late, resubmitted and online-text files, and keeps the user id', () => {
+    const { read, book } = graded([{ name: 'course-week-3 submissions.zip', bytes: zipSync({
+      'lovelaceada_12345_900001_handin.json': json(handIn('Ada Lovelace', 'c1', '2026-01-10T10:00:00.000Z')),
+      'lovelaceada_LATE_12345_900002_handin-1.json': json(handIn('Ada Lovelace', 'c1', '2026-01-12T10:00:00.000Z')),
+      'obrienseán_LATE_23456_900003_handin.json': json(handIn('', 'c2')),
+      '李伟_34567_text.html': strToU8(`<p>${handInToCode(handIn('', 'c3'))}</p>`),
+    }) }]);
+    expect(read.refused).toEqual([]);
+    expect(who(book)).toEqual([
+      ['Ada Lovelace', 'canvas', '12345', false], ['Ada Lovelace', 'canvas', '12345', true],
+      ['obrienseán', 'canvas', '23456', true], ['李伟', 'canvas', '34567', true],
+    ]);
+  });
+
+  it('reads the published file name forms, and finds no student in a plain name', () => {
+    expect(lmsUser('x.zip/lovelaceada_LATE_12345_67890_handin.json')).toEqual({ lms: 'canvas', name: 'lovelaceada', id: '12345' });
+    expect(lmsUser('lovelaceada_late_12345_67890_handin.json')).toEqual({ lms: 'canvas', name: 'lovelaceada', id: '12345' });
+    expect(lmsUser('smith2john_99_1_h.json')).toEqual({ lms: 'canvas', name: 'smith2john', id: '99' });
+    expect(lmsUser('obrienseán_23456_text.html, line 3')).toEqual({ lms: 'canvas', name: 'obrienseán', id: '23456' });
+    expect(lmsUser('Ada Lovelace_123456_assignsubmission_file_handin.json')).toEqual({ lms: 'moodle', name: 'Ada Lovelace', id: '123456' });
+    expect(lmsUser('g.zip/Homework 3_alovelace_attempt_2026-01-02-10-00-00_h.json')).toEqual({ lms: 'blackboard', name: 'alovelace', id: '' });
+    for (const plain of ['handin.json', 'anon_x1y2z_67890_handin.json', 'week_three.json']) expect(lmsUser(plain)).toEqual({ lms: '', name: '', id: '' });
+  });
+});
+
+describe('HTML and files without an extension', () => {
+  it('an HTML page gives its text: tags dropped, entities decoded, blocks on lines; scripts, styles, comments and attributes left out', () => {
+    const html = '<html><head><title>T</title><style>p{}</style><script>FLH1.x</script></head>'
+      + '<body><p title="FLH1.y">a &amp; b&nbsp;&lt;c&gt;</p><!-- FLH1.z --><ul><li>one</li><li>two</li></ul>x<br>y</body></html>';
+    expect(htmlToText(html).replace(/\n+/g, '\n')).toBe('\nT\na & b\u00a0<c>\none\ntwo\nx\ny\n');
+  });
+
+  it('a file without an extension is read for what it holds: JSON, codes, a zip; binary and empty ones refused by name', () => {
+    const code = handInToCode(handIn('Bo', 'b'));
+    const read = readClassHandIns({ files: [
+      { name: 'handin', bytes: json(handIn('Ada', 'a')) },
+      { name: 'codes', bytes: strToU8(`Mine: ${code}\n`) },
+      { name: 'page', bytes: strToU8(`<!doctype html><p>${handInToCode(handIn('Cy', 'c'))}</p>`) },
+      { name: 'bundle', bytes: zipSync({ 'd.json': json(handIn('Di', 'd')) }) },
+      { name: 'photo', bytes: new Uint8Array([0xff, 0xd8, 0xff, 0xe0, 0, 16, 74, 70]) },
+      { name: 'blank', bytes: new Uint8Array(0) },
+    ] });
+    expect(read.handIns.map((h) => [h.source, h.data.name])).toEqual([
+      ['handin', 'Ada'], ['codes, line 1', 'Bo'], ['page, line 2', 'Cy'], ['bundle/d.json', 'Di'],
+    ]);
+    expect(read.refused).toEqual([
+      { source: 'photo', reason: expect.stringMatching(/binary file/) }, { source: 'blank', reason: 'an empty file.' },
+    ]);
+  });
+});
