@@ -2,8 +2,8 @@
 // hand-ins never holds the page's thread; where a worker cannot start or fails (no Worker, a policy
 // that refuses it), the same code runs on the page's thread, grading in slices of about 50 ms with
 // a yield between them, and the page says so. Files' bytes are copied to the worker, not
-// transferred, so that a worker that fails midway leaves them for the page to grade.
-import { buildClassView } from '../../class/buildClassView.js';
+// transferred, so that a worker that fails midway leaves them for the page to grade. The grading
+// code is loaded on the page only then: the homework page a student opens does not carry it.
 import ClassWorker from '../../class/classWorker.js?worker';
 
 const ON_PAGE = 'graded on the page’s thread instead, in short slices';
@@ -18,7 +18,10 @@ export function createClassRunner({ useWorker = true } = {}) {
   let latest = 0;
   const pending = new Map(); // id → { resolve, reject, request, onProgress }
 
-  const onPage = (request, onProgress) => buildClassView(request, { onProgress, sliceMs: 50 });
+  const onPage = async (request, onProgress) => {
+    const { buildClassView } = await import('../../class/buildClassView.js');
+    return buildClassView(request, { onProgress, sliceMs: 50 });
+  };
 
   function fallBack(reason) {
     problem = `The grading worker failed (${reason}): ${ON_PAGE}.`;
