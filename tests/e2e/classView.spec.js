@@ -113,3 +113,53 @@ test('grading a class needs the sheet that was set, and says so', async ({ page 
   await expect(page.locator('.hw-class-out [role="alert"]')).toContainText('Give the sheet you set');
   await expect(page.locator('.hw-gradebook')).toHaveCount(0);
 });
+
+test('a Moodle and a Canvas download are graded with every student named, and each LMS gets its grade import', async ({ page }) => {
+  test.setTimeout(120_000);
+  const sheet = { version: 1, title: 'Week 5', items: SHEET.items };
+  const hand = (name, seed, time = '2026-11-10T10:00:00Z') => handIn(name, seed, [45, '0.5', 'towards-white'], time);
+  const page1 = (body) => `<!DOCTYPE html><html><head><meta charset="UTF-8"></head><body>${body}</body></html>`;
+  const moodle = zipSync({
+    'Ada Lovelace_100001_assignsubmission_file_/handin.json': strToU8(JSON.stringify(hand('Ada Lovelace', 'm1'))),
+    'Seán O Brien_100002_assignsubmission_onlinetext_/onlinetext.html': strToU8(page1(`<p>My code:</p><p>FLH1.${code(hand('', 'm2'))}</p>`)),
+    '李伟_100003_assignsubmission_file_/handin': strToU8(JSON.stringify(hand('李伟', 'm3'))),
+  });
+  const canvas = zipSync({
+    'bergbo_12345_900001_handin.json': strToU8(JSON.stringify(hand('Bo Berg', 'c1'))),
+    'bergbo_LATE_12345_900002_handin-1.json': strToU8(JSON.stringify(hand('Bo Berg', 'c1', '2026-11-12T10:00:00Z'))),
+    'kicy_LATE_23456_900003_handin.json': strToU8(JSON.stringify(hand('', 'c2'))),
+    'nowakola_34567_text.html': strToU8(`<p>FLH1.${code(hand('Ola Nowak', 'c3'))}</p>`),
+  });
+  await page.goto('homework.html');
+  await page.getByLabel('The sheet the class answered').fill(`homework.html?sheet=${code(sheet)}`);
+  await page.getByLabel('Or paste codes (FLH1.…), one per line or among other text').fill(`FLH1.${code(hand('Di Rossi', 'p1'))}`);
+  await page.getByLabel('Handed-in files, text files of codes, or zips').setInputFiles([
+    { name: 'Week 5-42.zip', mimeType: 'application/zip', buffer: Buffer.from(moodle) },
+    { name: 'course-week-5 submissions.zip', mimeType: 'application/zip', buffer: Buffer.from(canvas) },
+  ]);
+  const status = page.locator('.hw-class-status');
+  await expect(status).toContainText('8 hand-ins graded, 7 students counted (1 earlier hand-in not counted)', { timeout: 60_000 });
+  await page.evaluate(() => window.fresnelLab.homework.classView.table.ready);
+  await expect(page.locator('.hw-refused')).toHaveCount(0);
+  const names = await page.locator('.hw-gradebook .hw-body .hw-name').allTextContents();
+  expect(names.map((n) => n.replace(' (not counted)', '')).sort()).toEqual(
+    ['Ada Lovelace', 'Bo Berg', 'Bo Berg', 'Di Rossi', 'Ola Nowak', 'Seán O Brien', 'kicy', '李伟']);
+
+  const save = async (name) => {
+    const downloading = page.waitForEvent('download');
+    await page.getByRole('button', { name }).click();
+    return readFileSync(await (await downloading).path(), 'utf8').replace(/^\ufeff/, '').trim().split('\r\n').map((line) => line.split(','));
+  };
+  await page.getByLabel(/Out of: the assignment’s maximum grade/).fill('10');
+  const worksheet = await save('Moodle grading worksheet');
+  expect(worksheet[0]).toEqual(['Identifier', 'Full name', 'Grade', 'Maximum grade', 'Last modified (submission)', 'Last modified (grade)']);
+  expect(worksheet.slice(1).map((r) => [r[0], r[1], r[3]]).sort()).toEqual([
+    ['Participant 100001', 'Ada Lovelace', '10'], ['Participant 100002', 'Seán O Brien', '10'], ['Participant 100003', '李伟', '10']]);
+  const lmsStatus = page.locator('.hw-lms-status');
+  await expect(lmsStatus).toHaveText('Saved for Moodle: 3 students, graded out of 10. Not in the file, to grade by hand: 4 students.');
+  await expect(page.locator('.hw-lms-left')).toContainText('Di Rossi: no Moodle participant number in the path of their hand-in (pasted text, line 1).');
+  const imported = await save('Canvas gradebook import');
+  expect(imported.slice(0, 2)).toEqual([['Student', 'ID', 'SIS User ID', 'SIS Login ID', 'Section', 'Week 5'], ['Points Possible', '', '', '', '', '10']]);
+  expect(imported.slice(2).map((r) => [r[0], r[1]]).sort()).toEqual([['Bo Berg', '12345'], ['Ola Nowak', '34567'], ['kicy', '23456']]);
+  await expect(lmsStatus).toContainText('Saved for Canvas: 3 students');
+});

@@ -164,9 +164,9 @@ describe('CSV', () => {
       handIn('-2+3', 's3', ALL_RIGHT, { time: '2026-02-02T10:00:00.000Z' }),
     ]);
     const csv = gradebookToCsv(buildGradebook(grades));
-    expect(csv.startsWith('\ufeffName,LMS name,Seed,Score,Out of,Percent,Q1 exact-r,Q2 r0-value,Q3 snell-angle,Q4 brewster-predict,Q5 metal-grazing,Tries,Handed in,Counted,Flags,Source\r\n')).toBe(true);
+    expect(csv.startsWith('\ufeffName,LMS name,LMS user id,Seed,Score,Out of,Percent,Q1 exact-r,Q2 r0-value,Q3 snell-angle,Q4 brewster-predict,Q5 metal-grazing,Tries,Handed in,Counted,Flags,Source\r\n')).toBe(true);
     expect(csv.endsWith('\r\n')).toBe(true);
-    expect(csv.split('\r\n')[1]).toBe('"Zoë ""Zo"" Müller, Jr.",,s1,3,5,60.0,1,0,,1,1,5,2026-02-01T10:00:00.000Z,yes,,"Zoë ""Zo"" Müller, Jr..json"');
+    expect(csv.split('\r\n')[1]).toBe('"Zoë ""Zo"" Müller, Jr.",,,s1,3,5,60.0,1,0,,1,1,5,2026-02-01T10:00:00.000Z,yes,,"Zoë ""Zo"" Müller, Jr..json"');
     expect(csv.split('\r\n')[2]).toMatch(/^"'=HYPERLINK\(""http:\/\/x"",""y""\)",/);
     expect(csv.split('\r\n')[3]).toMatch(/^'-2\+3,/);
     expect(csv.split('\r\n')).toHaveLength(5);
@@ -180,7 +180,7 @@ describe('CSV', () => {
     const grades = gradeClassSync(sheet, [handIn('Ada', 's1', ALL_RIGHT, { time: '2026-01-01T00:00:00Z' }), handIn('Ada', 's1', ALL_RIGHT)]);
     const book = buildGradebook(grades);
     expect(gradebookCells(book)).toHaveLength(2);
-    expect(gradebookCells(book, { includeSuperseded: true }).map((r) => r[13])).toEqual(['Counted', 'no', 'yes']);
+    expect(gradebookCells(book, { includeSuperseded: true }).map((r) => r[14])).toEqual(['Counted', 'no', 'yes']);
   });
 });
 

@@ -2,14 +2,12 @@
 // (files, a folder, an LMS's zip, dropped or picked; codes pasted; a class view saved before). Every
 // hand-in is graded again from the sheet, the seed and the answers (in a worker: runClassView.js);
 // what cannot be used is listed with its name and reason. Out come a gradebook (a row per student,
-// sortable, CSV for a spreadsheet or an LMS), what the class got wrong per question (a card each,
-// one of which can be shown to the class with no name in it), and each student's report on demand.
+// sortable; files for a spreadsheet and for the LMS's grade import: exportTools.js), what the class
+// got wrong per question (a card each, one of which can be shown to the class with no name in it),
+// and each student's report on demand.
 // Nothing leaves the browser.
 import { button, el } from '../../../ui/el.js';
-import { downloadText } from '../../../host/exporters.js';
-import { fileSlug, fixed } from '../../../ui/format.js';
-import { gradebookToCsv } from '../../class/gradebookToCsv.js';
-import { writeClassFile } from '../../class/classFile.js';
+import { fixed } from '../../../ui/format.js';
 import { field, titledSection } from '../formParts.js';
 import { readSetSheet } from '../readSetSheet.js';
 import { gradedReport, problemBox } from '../gradedReport.js';
@@ -17,6 +15,7 @@ import { createClassRunner } from './runClassView.js';
 import { fromDrop, fromInput, readPicked } from './pickedFiles.js';
 import { createGradebookTable, shownName } from './gradebookTable.js';
 import { questionSummaries } from './questionSummaries.js';
+import { buildExportTools } from './exportTools.js';
 
 const PHASES = { reading: 'Reading the hand-ins…', summarising: 'Summarising…' };
 
@@ -152,10 +151,7 @@ export function buildClassSection(root) {
       box.append(list);
       parts.push(box);
     }
-    const tools = el('div', 'hw-class-tools');
-    const csv = button('Export CSV');
-    const keep = button('Save the class view');
-    tools.append(csv, keep);
+    const exports = buildExportTools(v);
     const table = createGradebookTable(gradebook, {
       onDetails: (row, from) => {
         const graded = v.graded[row.key].result;
@@ -169,10 +165,6 @@ export function buildClassSection(root) {
       },
     });
     state.table = table;
-    csv.addEventListener('click', () => downloadText(`${fileSlug(gradebook.title)}-gradebook.csv`,
-      gradebookToCsv(gradebook, { includeSuperseded: true }), 'text/csv;charset=utf-8'));
-    keep.addEventListener('click', () => downloadText(`${fileSlug(gradebook.title)}-class.json`,
-      writeClassFile({ sheet: v.sheet, handIns: v.handIns }), 'application/json'));
     const gradebookHeading = el('h3', null, 'Gradebook');
     const questionsHeading = el('h3', null, 'What the class got wrong, and why');
     const questionCards = () => questionSummaries(v, {
@@ -184,7 +176,7 @@ export function buildClassSection(root) {
         showDialog.open(copy, `${gradebook.title}: question ${i + 1}`, from);
       },
     });
-    parts.push(tools, gradebookHeading, table.element, questionsHeading);
+    parts.push(exports.files, gradebookHeading, table.element, exports.lms, questionsHeading);
     out.replaceChildren(...parts);
     await table.ready;
     // The cards after the rows, in tasks of their own.
