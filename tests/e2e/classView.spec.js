@@ -79,13 +79,25 @@ test('a class handed in every way is graded at once: gradebook, refusals, report
 
   // The CSV: UTF-8 with a byte-order mark, a column per question, a row per hand-in.
   const csvDownload = page.waitForEvent('download');
-  await page.getByRole('button', { name: 'Export CSV' }).click();
+  await page.getByRole('button', { name: 'Export CSV', exact: true }).click();
   const csv = readFileSync(await (await csvDownload).path(), 'utf8');
   expect(csv.startsWith('\ufeffName,')).toBe(true);
   const lines = csv.trim().split('\r\n');
   expect(lines[0]).toContain('Q1 brewster-predict');
   expect(lines[0]).toContain('Q3 metal-grazing');
   expect(lines).toHaveLength(13);
+  // The same with semicolons, for a spreadsheet that writes 87,5: the percent with a decimal comma, local times.
+  const semiDownload = page.waitForEvent('download');
+  await page.getByRole('button', { name: 'Export CSV with semicolons' }).click();
+  const semi = readFileSync(await (await semiDownload).path(), 'utf8').replace(/^\ufeff/, '').trim().split('\r\n').map((l) => l.split(';'));
+  expect(semi[0].slice(0, 7)).toEqual(['Name', 'LMS name', 'LMS user id', 'Seed', 'Score', 'Out of', 'Percent']);
+  expect(semi).toHaveLength(13);
+  const at = semi[0].indexOf('Handed in (local time)');
+  for (const cells of semi.slice(1)) {
+    expect(cells).toHaveLength(semi[0].length);
+    expect(cells[6]).toMatch(/^\d+,\d$/);
+    expect(cells[at]).toMatch(/^\d{4}-\d\d-\d\d \d\d:\d\d$/);
+  }
 
   // One question shown to the class: its counts, no student's name.
   await page.getByRole('button', { name: 'Show question 3 to the class (no names)' }).click();

@@ -21,7 +21,7 @@ const handIn = (k) => makeHandIn({ sheet, seed: `s${k}`, name: `Student ${k}`, a
 const FORMULA = /^[=+\-@\t\r\uff1d\uff0b\uff0d\uff20]/;
 
 /** RFC 4180, plainly: records end in CRLF, a quoted field may hold anything with its quotes doubled. */
-function parseCsv(text) {
+function parseCsv(text, separator = ',') {
   expect(text.startsWith('\ufeff')).toBe(true);
   const records = [];
   let record = [];
@@ -42,7 +42,7 @@ function parseCsv(text) {
       record = [];
       field = '';
       i += 2;
-    } else if (text[i] === ',') {
+    } else if (text[i] === separator) {
       record.push(field);
       field = '';
       i += 1;
@@ -138,15 +138,20 @@ describe('grading a class', () => {
       expect(book.rows).toHaveLength(grades.graded.length);
       for (const summary of summarizeQuestions(grades, book)) expect(summary.right + summary.wrong + summary.unanswered).toBe(book.students);
       expect(parseCsv(gradebookToCsv(book))).toHaveLength(1 + book.students);
+      const semicolons = parseCsv(gradebookToCsv(book, { semicolons: true }), ';');
+      expect(semicolons).toHaveLength(1 + book.students);
+      for (const record of semicolons) expect(record).toHaveLength(semicolons[0].length);
     }), 200);
   });
 });
 
 describe('CSV', () => {
   it('reads back as its cells through an RFC 4180 parser, whatever they hold', () => {
-    const cell = fc.oneof(fc.string({ unit: 'grapheme', maxLength: 12 }), fc.constantFrom('"', '""', ',', '\r\n', '\n', '\r', ' ', '=1', 'a"b,c\r\nd'));
+    const cell = fc.oneof(fc.string({ unit: 'grapheme', maxLength: 12 }), fc.constantFrom('"', '""', ',', ';', '\r\n', '\n', '\r', ' ', '=1',
+      'a"b,c\r\nd', '1;2'));
     check(fc.property(fc.array(fc.array(cell, { minLength: 1, maxLength: 5 }), { maxLength: 5 }), (cells) => {
       expect(parseCsv(cellsToCsv(cells))).toEqual(cells);
+      expect(parseCsv(cellsToCsv(cells, { separator: ';' }), ';')).toEqual(cells);
     }), 300);
   });
 

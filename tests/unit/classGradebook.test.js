@@ -171,6 +171,18 @@ describe('CSV', () => {
     expect(csv.split('\r\n')[3]).toMatch(/^'-2\+3,/);
     expect(csv.split('\r\n')).toHaveLength(5);
   });
+  it('a semicolon form for spreadsheets that write 87,5: semicolons, a decimal comma, times in local time', () => {
+    const time = '2026-02-01T10:05:00.000Z';
+    const grades = gradeClassSync(sheet, [handIn('Zoë; Müller', 's1', ['right', 'wrong', 'none', 'right', 'right'], { time })]);
+    const [head, line, end] = gradebookToCsv(buildGradebook(grades), { semicolons: true }).split('\r\n');
+    expect(head).toBe('\ufeffName;LMS name;LMS user id;Seed;Score;Out of;Percent;Q1 exact-r;Q2 r0-value;Q3 snell-angle;Q4 brewster-predict;'
+      + 'Q5 metal-grazing;Tries;Handed in (local time);Counted;Flags;Source');
+    const at = new Date(time);
+    const two = (n) => String(n).padStart(2, '0');
+    const local = `${at.getFullYear()}-${two(at.getMonth() + 1)}-${two(at.getDate())} ${two(at.getHours())}:${two(at.getMinutes())}`;
+    expect(line).toBe(`"Zoë; Müller";;;s1;3;5;60,0;1;0;;1;1;5;${local};yes;;"Zoë; Müller.json"`);
+    expect(end).toBe('');
+  });
   it('a cell that would start a formula gets an apostrophe; numbers we write and other text do not', () => {
     for (const text of ['=1+1', '+1', '-1', '@SUM(A1)', '\tx', '\rx', '＝1']) expect(textCell(text)).toBe(`'${text}`);
     for (const text of ['Ada', ' =1', '1-2', '', "'x"]) expect(textCell(text)).toBe(text);

@@ -1,4 +1,5 @@
-// What a graded class can be saved as, with a line on what each file is for: the gradebook as CSV,
+// What a graded class can be saved as, with a line on what each file is for: the gradebook as CSV
+// (commas for a spreadsheet in English and for scripts, semicolons for one that writes 87,5),
 // the class view to open again, and the grades as the file an LMS imports (Moodle's offline grading
 // worksheet, Canvas's gradebook import: lmsGrades.js). An LMS finds each student by their id there,
 // which only a hand-in's path in that LMS's download gives: who has none is listed after the file
@@ -50,16 +51,22 @@ export function buildExportTools(view) {
   const files = el('div', 'hw-exports');
   const tools = el('div', 'hw-class-tools');
   const csv = button('Export CSV');
+  const semicolons = button('Export CSV with semicolons');
   const keep = button('Save the class view');
-  tools.append(csv, keep);
+  tools.append(csv, semicolons, keep);
   csv.addEventListener('click', () => downloadText(`${slug}-gradebook.csv`, gradebookToCsv(gradebook, { includeSuperseded: true }),
     CSV_TYPE));
+  semicolons.addEventListener('click', () => downloadText(`${slug}-gradebook-semicolons.csv`,
+    gradebookToCsv(gradebook, { includeSuperseded: true, semicolons: true }), CSV_TYPE));
   keep.addEventListener('click', () => downloadText(`${slug}-class.json`, writeClassFile({ sheet: view.sheet, handIns: view.handIns }),
     'application/json'));
   const about = el('ul', 'hw-export-about');
   about.append(
     el('li', null, 'Export CSV: every hand-in with its marks per question, for a spreadsheet in English or a script '
-      + '(commas between cells, a point in 87.5).'),
+      + '(commas between cells, a point in 87.5, times in UTC).'),
+    el('li', null, 'Export CSV with semicolons: the same, for Excel or LibreOffice in German, French and other languages '
+      + 'that write 87,5 (semicolons between cells, a comma in 87,5, times in this computer’s time zone); '
+      + 'the other file opens there in one column.'),
     el('li', null, 'Save the class view: the sheet and the hand-ins, to open here again later; every answer is graded again then.'),
   );
 
