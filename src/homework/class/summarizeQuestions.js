@@ -1,13 +1,22 @@
 // @ts-check
 // What the class got wrong, per question of the sheet, as plain data for a plot (bins, counts,
 // labels): the share right; for a choice, how often each option was chosen and, for each wrong one,
-// the misconception it stands for (the option's explanation, as the first student who chose it
-// while it was wrong saw it: the explanations quote that student's numbers); for a number, a
-// histogram of answer ÷ computed value on a log scale, where a slip by a factor shows as a peak at
-// the same place for every student whatever their numbers (×2, ×½, degrees for radians, a
-// percentage for a fraction), plus counts of the question's named slips (questionSlips.js); for a
-// prediction, a histogram of the predicted minus the true angle. Only hand-ins that count are used.
+// the misconception it stands for (the option's explanation); for a number, a histogram of answer ÷
+// computed value on a log scale, where a slip by a factor shows as a peak at the same place for
+// every student whatever their numbers (×2, ×½, degrees for radians, a percentage for a fraction),
+// plus counts of the question's named slips (questionSlips.js); for a prediction, a histogram of the
+// predicted minus the true angle. Only hand-ins that count are used.
+//
+// Numbers differ from student to student, so a card shows one student's instance of the question
+// (`shown`: the first student counted): its prompt, its options and every explanation all come
+// from those parameters, never one from one student and one from another.
+//
+// Every answer is counted once: in the histogram, in one bin (split into right and wrong, so a
+// wrong answer a few per cent off is not hidden in the right answers' column) or outside it; and
+// a wrong answer under at most one slip, the first that fits: a named slip (the closest), a factor,
+// 0, the opposite sign, more than 1000× off.
 import { questionById } from '../questions.js';
+import { trueOption } from '../gradeAnswer.js';
 import { questionSlips } from './questionSlips.js';
 
 const RATIO_STEP = 0.05; // a twentieth of a decade (×1.12): a rounded answer stays in its factor's bin
@@ -24,100 +33,120 @@ const FACTORS = [
 ];
 
 /**
- * @typedef {{ lo: number, hi: number, count: number }} Bin
+ * @typedef {{ lo: number, hi: number, count: number, right: number, wrong: number }} Bin  count = right + wrong
  * @typedef {{ id: string, text: string, chosen: number, chosenWhenRight: number, chosenWhenWrong: number, rightFor: number,
- *   why: string | null }} OptionCount
+ *   rightForShown: boolean, why: string | null }} OptionCount  text, why: for the shown instance's numbers (why: null where
+ *   the option holds for them)
  * @typedef {{ item: number, question: string, kind: string, unit: string | null, tolerance: number | null, students: number,
  *   right: number, wrong: number, unanswered: number, shareRight: number | null,
+ *   shown: { params: any, sameForAll: boolean } | null,
  *   options?: OptionCount[],
  *   ratio?: { step: number, bins: Bin[], labels: { at: number, factor: number, text: string, count: number }[],
  *     below: number, above: number, opposite: number, flipped: number, zero: number, noRatio: number },
  *   slips?: { label: string, count: number }[],
+ *   elsewhere?: { zero: number, opposite: number, far: number },
  *   offset?: { step: number, bins: Bin[] } }} QuestionSummary
+ *   ratio's below, above, opposite, zero, noRatio: answers (right or wrong) outside the histogram's bins;
+ *   labels[].count, slips[].count, elsewhere: wrong answers, each under one of them at most
  */
 
 /** Bins of width `step` centred on multiples of it, from −half·step… to …+half·step. */
 function centredBins(half, step) {
-  return Array.from({ length: 2 * half + 1 }, (_, i) => ({ lo: (i - half - 0.5) * step, hi: (i - half + 0.5) * step, count: 0 }));
+  return Array.from({ length: 2 * half + 1 }, (_, i) => ({
+    lo: (i - half - 0.5) * step, hi: (i - half + 0.5) * step, count: 0, right: 0, wrong: 0,
+  }));
 }
 
-function addTo(bins, x, step) {
+/** Counts an answer in its bin, as right or wrong: 0, or −1 / 1 where it falls below / above every bin. */
+function addTo(bins, x, step, correct) {
   const half = (bins.length - 1) / 2;
   const i = Math.round(x / step) + half;
   if (i < 0) return -1;
   if (i >= bins.length) return 1;
   bins[i].count += 1;
+  if (correct) bins[i].right += 1;
+  else bins[i].wrong += 1;
   return 0;
 }
 
-function choiceSummary(question, entries) {
-  const params = entries[0]?.result.params;
+function choiceSummary(question, entries, params) {
   if (!params) return [];
+  const holds = trueOption(question, params).id;
   return question.options(params).map((option) => {
-    const count = { id: option.id, text: option.text(params), chosen: 0, chosenWhenRight: 0, chosenWhenWrong: 0, rightFor: 0, why: null };
+    const rightForShown = option.id === holds;
+    const count = {
+      id: option.id, text: option.text(params), chosen: 0, chosenWhenRight: 0, chosenWhenWrong: 0, rightFor: 0, rightForShown,
+      why: rightForShown ? null : option.why(params), // the misconception, in the shown instance's numbers
+    };
     for (const { result: r } of entries) {
       if (r.expected === option.id) count.rightFor += 1;
       if (r.answer !== option.id) continue;
       count.chosen += 1;
       if (r.correct) count.chosenWhenRight += 1;
-      else {
-        count.chosenWhenWrong += 1;
-        count.why ??= r.explanation; // the option's why(params), for this student's numbers
-      }
+      else count.chosenWhenWrong += 1;
     }
     return count;
   });
 }
 
-function numericSummary(question, entries) {
+/** The named slip a wrong answer fits (the closest of those that fit), or null. */
+function namedSlip(question, r) {
+  let best = null;
+  for (const slip of questionSlips(question, r.params)) {
+    // A slip that lands within the tolerance of the true value is no slip for this student.
+    if (Math.abs(slip.value - r.expected) <= question.tolerance) continue;
+    const off = Math.abs(r.value - slip.value);
+    if (off <= Math.max(question.tolerance, 0.005 * Math.abs(slip.value)) && (!best || off < best.off)) best = { label: slip.label, off };
+  }
+  return best?.label ?? null;
+}
+
+function numericSummary(question, entries, params) {
   const half = RATIO_DECADES / RATIO_STEP;
   const ratio = {
     step: RATIO_STEP, bins: centredBins(half, RATIO_STEP), labels: [], below: 0, above: 0, opposite: 0, flipped: 0, zero: 0, noRatio: 0,
   };
-  const logs = [];
+  const factors = FACTORS.map(({ factor, text: short, meaning }) => ({
+    at: Math.log10(factor), factor, text: meaning?.[question.unit] ? `${short}: ${meaning[question.unit]}` : short, count: 0,
+  }));
+  const elsewhere = { zero: 0, opposite: 0, far: 0 };
   const slipCounts = new Map();
   for (const { result: r } of entries) {
     if (!r.answered) continue;
-    if (r.expected === 0) {
-      ratio.noRatio += 1;
-      continue;
-    }
-    const q = r.value / r.expected;
-    if (q === 0) ratio.zero += 1;
+    // The histogram: each answer in one bin, or outside them.
+    const q = r.expected === 0 ? NaN : r.value / r.expected;
+    const log = q > 0 ? Math.log10(q) : NaN;
+    let side = 0;
+    if (r.expected === 0) ratio.noRatio += 1;
+    else if (q === 0) ratio.zero += 1;
     else if (q < 0) {
       ratio.opposite += 1;
       if (Math.abs(Math.log10(-q)) <= RATIO_STEP / 2) ratio.flipped += 1;
     } else {
-      const log = Math.log10(q);
-      logs.push(log);
-      const side = addTo(ratio.bins, log, RATIO_STEP);
+      side = addTo(ratio.bins, log, RATIO_STEP, r.correct);
       if (side < 0) ratio.below += 1;
       if (side > 0) ratio.above += 1;
     }
     if (r.correct) continue;
-    for (const slip of questionSlips(question, r.params)) {
-      // A slip that lands within the tolerance of the true value is no slip for this student.
-      if (Math.abs(slip.value - r.expected) <= question.tolerance) continue;
-      if (Math.abs(r.value - slip.value) <= Math.max(question.tolerance, 0.005 * Math.abs(slip.value))) {
-        slipCounts.set(slip.label, (slipCounts.get(slip.label) ?? 0) + 1);
-      }
-    }
+    // The slips: each wrong answer under the first that fits, if any.
+    const slip = namedSlip(question, r);
+    const factor = Number.isFinite(log) ? factors.find((f) => Math.abs(log - f.at) <= RATIO_STEP / 2) : undefined;
+    if (slip) slipCounts.set(slip, (slipCounts.get(slip) ?? 0) + 1);
+    else if (factor) factor.count += 1;
+    else if (q === 0) elsewhere.zero += 1;
+    else if (q < 0) elsewhere.opposite += 1;
+    else if (side !== 0) elsewhere.far += 1;
   }
-  ratio.labels = FACTORS.map(({ factor, text: short, meaning }) => {
-    const at = Math.log10(factor);
-    const text = meaning?.[question.unit] ? `${short}: ${meaning[question.unit]}` : short;
-    return { at, factor, text, count: logs.filter((x) => Math.abs(x - at) <= RATIO_STEP / 2).length };
-  });
+  ratio.labels = factors;
   // Every slip the question names, counted or not (a class with no hand-in has none to name).
-  const slips = (entries.length ? questionSlips(question, entries[0].result.params) : [])
-    .map(({ label }) => ({ label, count: slipCounts.get(label) ?? 0 }));
+  const slips = (params ? questionSlips(question, params) : []).map(({ label }) => ({ label, count: slipCounts.get(label) ?? 0 }));
   for (const [label, count] of slipCounts) if (!slips.some((s) => s.label === label)) slips.push({ label, count });
-  return { ratio, slips };
+  return { ratio, slips, elsewhere };
 }
 
 function predictSummary(entries) {
   const bins = centredBins(90 / OFFSET_STEP, OFFSET_STEP);
-  for (const { result: r } of entries) if (r.answered) addTo(bins, r.answer - r.expected, OFFSET_STEP);
+  for (const { result: r } of entries) if (r.answered) addTo(bins, r.answer - r.expected, OFFSET_STEP, r.correct);
   return { step: OFFSET_STEP, bins };
 }
 
@@ -135,14 +164,18 @@ export function summarizeQuestions(grades, gradebook) {
     const entries = students.map(({ source, result }) => ({ source, result: result.results[i] }));
     const right = entries.filter((e) => e.result.correct).length;
     const unanswered = entries.filter((e) => !e.result.answered).length;
+    // The one instance a card shows: the first student's parameters.
+    const params = entries[0]?.result.params;
+    const same = JSON.stringify(params);
     /** @type {QuestionSummary} */
     const summary = {
       item: i, question: question.id, kind: question.kind, unit: question.unit ?? null, tolerance: question.tolerance ?? null,
       students: entries.length, right, wrong: entries.length - right - unanswered, unanswered,
       shareRight: entries.length ? right / entries.length : null,
+      shown: params ? { params, sameForAll: entries.every((e) => JSON.stringify(e.result.params) === same) } : null,
     };
-    if (question.kind === 'choice') summary.options = choiceSummary(question, entries);
-    else if (question.kind === 'numeric') Object.assign(summary, numericSummary(question, entries));
+    if (question.kind === 'choice') summary.options = choiceSummary(question, entries, params);
+    else if (question.kind === 'numeric') Object.assign(summary, numericSummary(question, entries, params));
     else summary.offset = predictSummary(entries);
     return summary;
   });

@@ -30,9 +30,16 @@ function barItem(label, count, total, className = '') {
   return item;
 }
 
+/** A bin's answers in words: how many, and how many of them right and wrong. */
+function answersText(bin) {
+  if (bin.right && bin.wrong) return `${students(bin.count)}: ${bin.right} right, ${bin.wrong} wrong`;
+  return bin.right ? `${students(bin.right)}, right` : `${students(bin.wrong)}${bin.wrong ? ', wrong' : ''}`;
+}
+
 /**
- * Columns over bins ({ lo, hi, count }), cut to the span that holds answers (and 0), each with its
- * count said; `tick(bin)` gives a label under a column or ''.
+ * Columns over bins ({ lo, hi, count, right, wrong }), cut to the span that holds answers (and 0),
+ * each with its count said; a column's right answers in green under its wrong ones in red, so every
+ * answer is seen where it is. `tick(bin)` gives a label under a column or ''.
  */
 function columns(bins, { caption, binText, tick }) {
   const figure = el('figure', 'hw-histogram');
@@ -43,15 +50,17 @@ function columns(bins, { caption, binText, tick }) {
   const list = el('ol', 'hw-columns');
   for (const bin of bins.slice(from, to + 1)) {
     const item = el('li', `hw-column${bin.lo <= 0 && bin.hi > 0 ? ' hw-column-zero' : ''}`);
-    const bar = el('span', 'hw-column-bar');
-    bar.style.setProperty('--share', String(bin.count / most));
-    bar.setAttribute('aria-hidden', 'true');
-    item.append(bar);
+    for (const [part, count] of [['hw-column-wrong', bin.wrong], ['hw-column-right', bin.right]]) {
+      const bar = el('span', `hw-column-bar ${part}`);
+      bar.style.setProperty('--share', String(count / most));
+      bar.setAttribute('aria-hidden', 'true');
+      item.append(bar);
+    }
     const label = tick(bin);
     item.append(el('span', 'hw-column-tick', label));
-    item.append(el('span', 'sr-only', `${binText(bin)}: ${students(bin.count)}`));
+    item.append(el('span', 'sr-only', `${binText(bin)}: ${answersText(bin)}`));
     if (bin.count === 0) item.setAttribute('aria-hidden', 'true');
-    item.title = `${binText(bin)}: ${students(bin.count)}`;
+    item.title = `${binText(bin)}: ${answersText(bin)}`;
     list.append(item);
   }
   figure.append(list, el('figcaption', null, caption));
@@ -76,20 +85,29 @@ function numericParts(summary) {
     return '';
   };
   parts.push(columns(ratio.bins, {
-    caption: 'Each answer divided by the value computed for that student, on a log scale: right answers stand at ×1, '
+    caption: 'Each answer divided by the value computed for that student, on a log scale: right answers (green) stand at ×1, '
       + 'a slip by a factor as a column at that factor.',
     binText: (bin) => `${ratioText(bin.lo)} to ${ratioText(bin.hi)}`, tick,
   }));
-  const peaks = ratio.labels.filter((l) => l.count > 0).map((l) => `${l.text}: ${students(l.count)}`);
-  const slips = (summary.slips ?? []).filter((s) => s.count > 0).map((s) => `${s.label}: ${students(s.count)}`);
-  const outside = [
+  const outsideBins = [
     ratio.below + ratio.above > 0 ? `${students(ratio.below + ratio.above)} off by more than a factor of 1000` : '',
     ratio.opposite ? `${students(ratio.opposite)} with the opposite sign` : '',
     ratio.zero ? `${students(ratio.zero)} answered 0` : '',
+    ratio.noRatio ? `${students(ratio.noRatio)} where the computed value is 0 (no ratio to plot)` : '',
+  ].filter(Boolean);
+  if (outsideBins.length) parts.push(el('p', 'hw-meta', `Not in the plot: ${outsideBins.join('; ')}.`));
+  // Each wrong answer under one slip at most: a named slip, else a factor, else where it lies.
+  const { elsewhere } = summary;
+  const slips = [
+    ...(summary.slips ?? []).filter((s) => s.count > 0).map((s) => `${s.label}: ${students(s.count)}`),
+    ...ratio.labels.filter((l) => l.count > 0).map((l) => `${l.text}: ${students(l.count)}`),
+    elsewhere.zero ? `0: ${students(elsewhere.zero)}` : '',
+    elsewhere.opposite ? `the opposite sign: ${students(elsewhere.opposite)}` : '',
+    elsewhere.far ? `more than a factor of 1000 off: ${students(elsewhere.far)}` : '',
   ].filter(Boolean);
   const list = el('ul', 'hw-slips');
-  for (const text of [...peaks, ...slips, ...outside]) list.append(el('li', null, text));
-  if (list.childElementCount) parts.push(el('p', 'hw-slips-title', 'Slips seen:'), list);
+  for (const text of slips) list.append(el('li', null, text));
+  if (list.childElementCount) parts.push(el('p', 'hw-slips-title', 'Slips seen (each wrong answer under one at most):'), list);
   return parts;
 }
 
@@ -110,9 +128,11 @@ function choiceParts(summary) {
   for (const option of summary.options) {
     const wrongOnly = option.chosenWhenRight === 0 && option.chosen > 0;
     const item = barItem(option.text, option.chosen, answered, wrongOnly ? 'hw-bar-wrong' : option.chosenWhenRight ? 'hw-bar-right' : '');
-    if (option.chosenWhenWrong && option.why) {
+    if (option.chosenWhenWrong) {
       const why = el('span', 'hw-bar-why');
-      setSubscripted(why, `Why it is wrong: ${option.why}`);
+      // The explanation of the numbers in the prompt above; an option that holds for them was wrong only for others'.
+      setSubscripted(why, option.why ? `Why it is wrong: ${option.why}`
+        : `Right for the numbers above; wrong for the ${students(option.chosenWhenWrong)} who chose it with other numbers.`);
       item.append(why);
     }
     list.append(item);
@@ -120,10 +140,12 @@ function choiceParts(summary) {
   return [list];
 }
 
-/** The prompt as students saw it: the same for all (a class seed, or a question without numbers), else one student's. */
-function promptText(question, params, sameForAll) {
+/** The prompt of the card's one instance: the same for all (a class seed, or a question without numbers), else one student's. */
+function promptText(question, { params, sameForAll }) {
   const text = question.prompt(params);
-  return sameForAll ? text : `${text} (Numbers differ from student to student; these are one student's.)`;
+  if (sameForAll) return text;
+  return `${text} (Numbers differ from student to student; these are one student's${question.kind === 'choice'
+    ? ', and so are the options and explanations below' : ''}.)`;
 }
 
 /**
@@ -132,7 +154,6 @@ function promptText(question, params, sameForAll) {
  */
 export async function questionSummaries(view, { onShow }) {
   const holder = el('div', 'hw-class-questions');
-  const counted = view.gradebook.rows.filter((row) => row.counted);
   for (const [i, summary] of view.summary.entries()) {
     if (i % CARDS_PER_TASK === 0) await nextTask();
     const question = questionById(summary.question);
@@ -144,12 +165,9 @@ export async function questionSummaries(view, { onShow }) {
     setSubscripted(panel, panelEntry(question.panel)?.title ?? question.panel);
     heading.append(el('span', null, `Question ${i + 1}`), el('span', 'hw-kind', KIND_NAMES[question.kind]), panel);
     card.append(heading);
-    const first = counted[0] ? view.graded[counted[0].key].result.results[i] : null;
-    if (first) {
+    if (summary.shown) {
       const prompt = el('p', 'hw-prompt');
-      const same = JSON.stringify(first.params);
-      const sameForAll = counted.every((row) => JSON.stringify(view.graded[row.key].result.results[i].params) === same);
-      setSubscripted(prompt, promptText(question, first.params, sameForAll));
+      setSubscripted(prompt, promptText(question, summary.shown));
       card.append(prompt);
     }
     card.append(el('p', 'hw-share', `${percent(summary.shareRight)} right: ${summary.right} right, ${summary.wrong} wrong, `
