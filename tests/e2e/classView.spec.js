@@ -175,3 +175,25 @@ test('a Moodle and a Canvas download are graded with every student named, and ea
   expect(imported.slice(2).map((r) => [r[0], r[1]]).sort()).toEqual([['Bo Berg', '12345'], ['Ola Nowak', '34567'], ['kicy', '23456']]);
   await expect(lmsStatus).toContainText('Saved for Canvas: 3 students');
 });
+
+test('"Show the class" opens at the question, with the focus on it, on a 1280×720 projector', async ({ page }) => {
+  await page.setViewportSize({ width: 1280, height: 720 });
+  await page.goto('homework.html');
+  await page.getByLabel('The sheet the class answered').fill(`homework.html?sheet=${code(SHEET)}`);
+  await page.getByLabel('Or paste codes (FLH1.…), one per line or among other text').fill(students.map((h) => `FLH1.${code(h)}`).join('\n'));
+  await page.getByRole('button', { name: 'Grade the class' }).click();
+  const show = page.getByRole('button', { name: 'Show question 2 to the class (no names)' });
+  await show.click();
+  const dialog = page.getByRole('dialog', { name: 'Week 5: question 2' });
+  await expect(dialog).toBeVisible();
+  // Taller than the screen (else this shows nothing), yet open at its top: the heading has the focus, the question is in view.
+  expect(await dialog.evaluate((d) => d.scrollHeight > d.clientHeight)).toBe(true);
+  await expect(dialog.getByRole('heading', { name: 'Week 5: question 2' })).toBeFocused();
+  expect(await dialog.evaluate((d) => d.scrollTop)).toBe(0);
+  await expect(dialog.locator('.hw-prompt')).toBeInViewport();
+  await page.keyboard.press('Tab');
+  await expect(dialog.getByRole('button', { name: 'Close' })).toBeFocused();
+  await page.keyboard.press('Enter');
+  await expect(dialog).toBeHidden();
+  await expect(show).toBeFocused();
+});

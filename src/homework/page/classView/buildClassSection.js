@@ -28,11 +28,17 @@ function fileInput({ accept = '', multiple = true, folder = false } = {}) {
   return input;
 }
 
-/** A modal dialog with a heading, a body and Close (and Print where asked); returns { open(body, title, from) }. */
+/**
+ * A modal dialog with a heading, a body and Close (and Print where asked); returns { open(body, title, from) }.
+ * It opens at its top with the focus on its heading: what it shows comes first (on a projector at
+ * 1280×720 a question shown to the class is taller than the screen, and focus on Close, at the end,
+ * scrolled it out of view); Tab goes on to its buttons.
+ */
 function makeDialog(className, { print = false } = {}) {
   const dialog = el('dialog', className);
   const heading = el('h2');
   heading.id = `${className}-title`;
+  heading.tabIndex = -1;
   dialog.setAttribute('aria-labelledby', heading.id);
   const tools = el('div', 'hw-dialog-tools');
   const close = button('Close');
@@ -54,7 +60,8 @@ function makeDialog(className, { print = false } = {}) {
       body.replaceChildren(content);
       returnTo = from ?? null;
       dialog.showModal();
-      close.focus();
+      heading.focus({ preventScroll: true });
+      dialog.scrollTop = 0;
     },
   };
 }
