@@ -88,7 +88,19 @@ test('a student predicts, answers right and wrong, hands in, and the file is che
   await expect(card(page, 1).locator('.predict-true')).toHaveCount(1);
   await expect(card(page, 3).getByRole('radio', { name: /keeps its colour/ })).toBeChecked();
 
-  // Hand in: a file and the same as a code.
+  // Hand in: a file and the same as a code; without a name, the page asks first and saves nothing until told to.
+  let saved = 0;
+  page.on('download', () => { saved += 1; });
+  await page.getByLabel(/Your name/).fill('');
+  await page.getByRole('button', { name: /^Hand in/ }).click();
+  const confirm = page.locator('.hw-confirm');
+  await expect(confirm).toBeVisible();
+  await expect(confirm).toHaveText(/^Your name is empty, so the lecturer cannot tell whose hand-in this is\. Hand in anyway\?/);
+  await expect(confirm.locator('.hw-confirm-text')).toBeFocused();
+  await confirm.getByRole('button', { name: 'Go back' }).click();
+  await expect(confirm).toBeHidden();
+  await expect(page.getByLabel(/Your name/)).toBeFocused();
+  expect(saved).toBe(0);
   await page.getByLabel(/Your name/).fill('Ada');
   const downloading = page.waitForEvent('download');
   await page.getByRole('button', { name: /^Hand in/ }).click();
@@ -256,6 +268,8 @@ test('markup in a sheet\'s title, a start state, a student\'s name and a file na
 
   const downloading = page.waitForEvent('download');
   await page.getByRole('button', { name: /^Hand in/ }).click();
+  await expect(page.locator('.hw-confirm')).toHaveText(/^You have not answered the question\. Hand in anyway\?/); // asked first
+  await page.getByRole('button', { name: 'Hand in anyway' }).click();
   const download = await downloading;
   expect(download.suggestedFilename()).not.toMatch(/[<>"']/);
   const file = JSON.parse(readFileSync(await download.path(), 'utf8'));

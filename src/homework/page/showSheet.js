@@ -149,11 +149,50 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
   codeLabel.hidden = true;
   const copy = button('Copy the code', 'hw-copy');
   copy.hidden = true;
+  // Asked on the page before handing in nothing or without a name (a hand-in cannot be taken back).
+  const confirmBox = el('div', 'notice notice-warning hw-confirm');
+  confirmBox.setAttribute('role', 'group');
+  const confirmText = el('p', 'hw-confirm-text');
+  confirmText.id = 'hw-confirm-text';
+  confirmText.tabIndex = -1;
+  confirmBox.setAttribute('aria-label', 'Before handing in');
+  confirmBox.setAttribute('aria-describedby', confirmText.id);
+  const anyway = button('Hand in anyway', 'hw-anyway');
+  const goBack = button('Go back', 'hw-go-back');
+  confirmBox.append(confirmText, anyway, goBack);
+  confirmBox.hidden = true;
   handIn.append(handInTitle, el('p', null, 'The file and the code hold your answers, your seed, your name and the time; '
-    + 'they are checked by recomputing every answer.'), send, status, codeLabel, copy);
+    + 'they are checked by recomputing every answer.'), send, confirmBox, status, codeLabel, copy);
   root.append(handIn);
 
+  /** What is missing that a student would want to know before handing in: nothing answered, no name. */
+  const missing = () => [
+    !cards.every(({ card }) => card.answer() === null) ? ''
+      : cards.length === 1 ? 'You have not answered the question.' : `You have answered none of the ${cards.length} questions.`,
+    name.value.trim() ? '' : 'Your name is empty, so the lecturer cannot tell whose hand-in this is.',
+  ].filter(Boolean);
   send.addEventListener('click', () => {
+    const problems = missing();
+    if (problems.length) {
+      confirmText.textContent = `${problems.join(' ')} Hand in anyway?`;
+      confirmBox.hidden = false;
+      confirmText.focus();
+      return;
+    }
+    handInNow();
+  });
+  anyway.addEventListener('click', () => {
+    confirmBox.hidden = true;
+    handInNow();
+  });
+  goBack.addEventListener('click', () => {
+    confirmBox.hidden = true;
+    if (!name.value.trim()) name.focus();
+    else send.focus();
+  });
+
+  function handInNow() {
+    confirmBox.hidden = true;
     const record = makeHandIn({
       sheet, seed, name: work.name.trim(),
       answers: cards.map(({ card }) => card.answer()), attempts: cards.map(({ card }) => card.attempts()),
@@ -174,7 +213,7 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
     }
     status.textContent = `Handed in at ${new Date(record.time).toLocaleTimeString(pageLocale())}: `
       + `saved as ${filename}.${open ? ` ${open} of ${record.answers.length} questions have no answer.` : ''}${sent}`;
-  });
+  }
   copy.addEventListener('click', async () => {
     codeField.select();
     status.textContent = (await copyText(codeField.value)) ? 'The code is copied.' : 'Copying was refused here: '
