@@ -36,6 +36,15 @@ export function angle(deg, digits = 2) {
   return `${fixed(deg, digits)}°`;
 }
 
+/**
+ * A time taken, in seconds, as it is shown: one decimal (2.4 s), and "under 0.1 s" below a tenth
+ * of a second (so a time that took something is never shown as 0.0 s).
+ */
+export function seconds(value) {
+  if (!Number.isFinite(value) || value < 0) return '—';
+  return value < 0.1 ? 'under 0.1 s' : `${fixed(value, 1)} s`;
+}
+
 /** A piece of a file name: lower-case letters, digits and dashes (accents dropped). */
 export const fileSlug = (text) => String(text).toLowerCase().normalize('NFKD')
   .replace(/[^a-z0-9]+/g, '-').replace(/^-|-$/g, '').slice(0, 40) || 'sheet';

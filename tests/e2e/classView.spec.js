@@ -46,6 +46,7 @@ test('a class handed in every way is graded at once: gradebook, refusals, report
   // 11 students (12 minus the one cut short) and Student 2's earlier hand-in, kept but not counted.
   await expect(status).toContainText('12 hand-ins graded, 11 students counted (1 earlier hand-in not counted)');
   await expect(status).toContainText('Graded in a worker'); // the page's thread only shows the result
+  await expect(status).toContainText(/Graded in a worker in (under 0\.1 s|\d+\.\d s)\.$/); // never "0.0 s"
   const rows = page.locator('.hw-gradebook .hw-body [role="row"]');
   await expect(rows).toHaveCount(12);
   await expect(page.locator('.hw-superseded')).toHaveCount(1);
@@ -196,4 +197,23 @@ test('"Show the class" opens at the question, with the focus on it, on a 1280×7
   await page.keyboard.press('Enter');
   await expect(dialog).toBeHidden();
   await expect(show).toBeFocused();
+});
+
+test('the flags are explained under the gradebook, the copied-answers rule with its numbers', async ({ page }) => {
+  const sheet = { version: 1, title: 'Week 6', items: [{ question: 'exact-r' }, { question: 'r0-value' }, { question: 'brewster-predict' }] };
+  const same = ['0.9', '0.9', 10]; // the same wrong answers on the same seed: copied, or one sheet under two names
+  const hand = (name, seed, answers) => handIn(name, seed, answers, '2026-11-10T10:00:00Z', sheet);
+  const codes = [hand('Ann', 'twin', same), hand('Ben', 'twin', same), hand('Cy', 'c', same), hand('', 'd', [null, null, null])];
+  await page.goto('homework.html');
+  await page.getByLabel('The sheet the class answered').fill(`homework.html?sheet=${code(sheet)}`);
+  await page.getByLabel('Or paste codes (FLH1.…), one per line or among other text').fill(codes.map((h) => `FLH1.${code(h)}`).join('\n'));
+  await page.getByRole('button', { name: 'Grade the class' }).click();
+  const legend = page.getByRole('list', { name: 'What the flags mean' });
+  await expect(legend.getByRole('listitem')).toHaveText([
+    /^shared seed one seed under two or more names/,
+    /^same wrong answers two students on one seed gave the same wrong answer to 3 or more number or prediction questions, as a copied sheet does\. A wrong answer that 4 or more students give is taken for a common slip and not counted\.$/,
+    /^no name the hand-in gives no name/,
+  ]);
+  await page.getByRole('button', { name: 'Report of Ann' }).click();
+  await expect(page.getByRole('dialog', { name: 'Report: Ann' }).locator('.hw-flag-list')).toContainText('Flagged at 3 or more such questions');
 });

@@ -121,6 +121,9 @@ describe('the gradebook', () => {
     const kinds = book.rows.map((r) => r.flags.map((f) => f.kind));
     expect(kinds).toEqual([['shared-seed', 'copied'], ['shared-seed', 'copied'], [], ['no-name']]);
     expect(book.rows[0].flags[1].text).toMatch(/same wrong answers as Cy to the same numbers \(seed shared\) on questions 1, 2, 3/);
+    // The rule is said with the flag: how many questions flag a pair, how many students make an answer a common slip.
+    expect(book.rows[0].flags[1].text).toMatch(/Flagged at 3 or more such questions; a wrong answer that 4 or more students give is taken for a common slip/);
+    expect(book.copiedRule).toEqual({ atLeast: 3, common: 4 });
     expect(book.rows[3].flags[0].text).toMatch(/the LMS's folder or file name says Eve Ng/);
     expect(book.rows[3].lmsName).toBe('Eve Ng');
     // Two wrong answers in common are not enough; a wrong answer most of the class shares is a common slip.

@@ -1,5 +1,5 @@
 import { describe, it, expect } from 'vitest';
-import { angle, fixed, grouped, markupNumber, MINUS, precise, rounded, sci } from '../../src/ui/format.js';
+import { angle, fixed, grouped, markupNumber, MINUS, precise, rounded, sci, seconds } from '../../src/ui/format.js';
 
 describe('format: shown numbers', () => {
   it('writes a negative number with the minus sign U+2212, never a hyphen', () => {
@@ -21,6 +21,12 @@ describe('format: shown numbers', () => {
     expect(grouped(42)).toBe('42');
     expect(grouped(-12345)).toBe(`${MINUS}12\u202f345`);
     expect(grouped(NaN)).toBe('—');
+  });
+
+  it('shows a time taken in seconds, and one under a tenth of a second as "under 0.1 s", never "0.0 s"', () => {
+    expect([seconds(0), seconds(0.004), seconds(0.0999), seconds(0.1), seconds(0.44), seconds(12.26)])
+      .toEqual(['under 0.1 s', 'under 0.1 s', 'under 0.1 s', '0.1 s', '0.4 s', '12.3 s']);
+    expect([seconds(NaN), seconds(-1)]).toEqual(['—', '—']);
   });
 });
 

@@ -25,7 +25,9 @@ import { lmsUser } from './lmsName.js';
  *   time: string | null, source: string, counted: boolean, flags: Flag[] }} Row
  *   key: the hand-in's index in grades.graded; lms, lmsId: the LMS and the student's id there, from the source's path
  * @typedef {{ title: string, fingerprint: string, classSeed: string | null, items: { question: string, kind: string }[],
- *   rows: Row[], students: number, superseded: number }} Gradebook
+ *   rows: Row[], students: number, superseded: number, copiedRule: { atLeast: number, common: number } }} Gradebook
+ *   copiedRule: the copied flag's rule: how many questions with the same wrong answer flag a pair, and how many
+ *   students giving one wrong answer make it a common slip, left out
  */
 
 const COPIED_AT_LEAST = 3;
@@ -94,7 +96,7 @@ function copiedAnswers(rows, graded, items, identity, atLeast) {
       buckets.get(key).rows.push(row);
     });
   }
-  const common = Math.max(4, Math.ceil(0.05 * rows.length));
+  const common = commonSlip(rows.length);
   const pairs = new Map();
   for (const { item, rows: same } of buckets.values()) {
     if (same.length < 2 || same.length >= common) continue;
@@ -113,10 +115,14 @@ function copiedAnswers(rows, graded, items, identity, atLeast) {
     const questions = shared.sort((a, b) => a - b).map((i) => i + 1).join(', ');
     for (const [row, other] of [[x, y], [y, x]]) {
       row.flags.push({ kind: 'copied', text: `The same wrong answers as ${shown(other)} to the same numbers (seed ${row.seed}) `
-        + `on questions ${questions}: a copied sheet looks like that.`, others: [other.key] });
+        + `on questions ${questions}: a copied sheet looks like that. (Flagged at ${atLeast} or more such questions; a wrong `
+        + `answer that ${common} or more students give is taken for a common slip and not counted.)`, others: [other.key] });
     }
   }
 }
+
+/** How many students giving one wrong answer make it a common slip: 5 % of the class, at least 4. */
+const commonSlip = (students) => Math.max(4, Math.ceil(0.05 * students));
 
 /**
  * The gradebook of a class graded by gradeClass (its { ok: true, … } result). copiedAtLeast: how
@@ -156,5 +162,6 @@ export function buildGradebook(grades, { copiedAtLeast = COPIED_AT_LEAST } = {})
   return {
     title: sheet.title, fingerprint: grades.fingerprint, classSeed: sheet.seed ?? null, items, rows,
     students: counted.length, superseded: rows.length - counted.length,
+    copiedRule: { atLeast: copiedAtLeast, common: commonSlip(counted.length) },
   };
 }

@@ -7,7 +7,7 @@
 // and each student's report on demand.
 // Nothing leaves the browser.
 import { button, el } from '../../../ui/el.js';
-import { fixed } from '../../../ui/format.js';
+import { seconds } from '../../../ui/format.js';
 import { field, titledSection } from '../formParts.js';
 import { readSetSheet } from '../readSetSheet.js';
 import { gradedReport, problemBox } from '../gradedReport.js';
@@ -142,11 +142,11 @@ export function buildClassSection(root) {
 
   async function showView(v, ms) {
     const { gradebook } = v;
-    const seconds = fixed(ms / 1000, 1);
+    const took = seconds(ms / 1000);
     status.textContent = `${gradebook.title}: ${gradebook.rows.length} hand-in${gradebook.rows.length === 1 ? '' : 's'} graded, `
       + `${gradebook.students} student${gradebook.students === 1 ? '' : 's'} counted`
       + `${gradebook.superseded ? ` (${gradebook.superseded} earlier hand-in${gradebook.superseded === 1 ? '' : 's'} not counted)` : ''}`
-      + `${v.refused.length ? `; ${v.refused.length} could not be used (listed below)` : ''}. Graded in ${runner.where()} in ${seconds} s.`
+      + `${v.refused.length ? `; ${v.refused.length} could not be used (listed below)` : ''}. Graded in ${runner.where()} in ${took}.`
       + `${runner.problem() ? ` ${runner.problem()}` : ''}`;
     const parts = [];
     if (v.refused.length) {

@@ -16,6 +16,17 @@ const FLAG_NAMES = {
   superseded: 'not counted', resubmitted: 'handed in again', 'shared-seed': 'shared seed', 'class-seed': 'other seed',
   copied: 'same wrong answers', 'no-name': 'no name',
 };
+/** What each flag means, said under the table for the flags it shows. */
+const FLAG_MEANINGS = {
+  superseded: () => 'the same student handed in again later; the latest hand-in counts.',
+  resubmitted: () => 'the latest of a student’s hand-ins, the one that counts.',
+  'shared-seed': () => 'one seed under two or more names: one sheet handed in under several names.',
+  'class-seed': () => 'a seed other than the one the sheet gives everyone.',
+  copied: (rule) => `two students on one seed gave the same wrong answer to ${rule.atLeast} or more number or prediction `
+    + `questions, as a copied sheet does. A wrong answer that ${rule.common} or more students give is taken for a common slip `
+    + 'and not counted.',
+  'no-name': () => 'the hand-in gives no name (the LMS’s folder or file name is shown where it gives one).',
+};
 const ROWS_PER_SLICE = 50;
 const nextTask = () => new Promise((resolve) => { setTimeout(resolve, 0); });
 
@@ -134,5 +145,20 @@ export function createGradebookTable(gradebook, { onDetails }) {
     }
   })();
 
-  return { element: wrap, ready, rowElement: (key) => made.get(key), sortBy };
+  // The flags in this gradebook, each with what it means (a badge's title is seen only on hover).
+  const element = el('div', 'hw-gradebook-block');
+  element.append(wrap);
+  const kinds = Object.keys(FLAG_MEANINGS).filter((kind) => gradebook.rows.some((row) => row.flags.some((f) => f.kind === kind)));
+  if (kinds.length) {
+    const legend = el('ul', 'hw-flag-legend');
+    legend.setAttribute('aria-label', 'What the flags mean');
+    for (const kind of kinds) {
+      const item = el('li');
+      item.append(el('span', `hw-flag hw-flag-${kind}`, FLAG_NAMES[kind]), ` ${FLAG_MEANINGS[kind](gradebook.copiedRule)}`);
+      legend.append(item);
+    }
+    element.append(legend);
+  }
+
+  return { element, ready, rowElement: (key) => made.get(key), sortBy };
 }
