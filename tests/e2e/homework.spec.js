@@ -5,6 +5,7 @@
 // the s/p Fresnel equations), from the numbers each student's page prints.
 import { readFileSync, writeFileSync } from 'node:fs';
 import { test, expect } from './fixtures.js';
+import { seriousViolations } from './audit.js';
 
 const DEG = Math.PI / 180;
 const sheetLink = (sheet) => `homework.html?sheet=${Buffer.from(JSON.stringify(sheet)).toString('base64url')}`;
@@ -97,6 +98,7 @@ test('a student predicts, answers right and wrong, hands in, and the file is che
   await expect(confirm).toBeVisible();
   await expect(confirm).toHaveText(/^Your name is empty, so the lecturer cannot tell whose hand-in this is\. Hand in anyway\?/);
   await expect(confirm.locator('.hw-confirm-text')).toBeFocused();
+  expect(await seriousViolations(page), 'audit with the question before handing in').toEqual([]);
   await confirm.getByRole('button', { name: 'Go back' }).click();
   await expect(confirm).toBeHidden();
   await expect(page.getByLabel(/Your name/)).toBeFocused();
