@@ -65,7 +65,7 @@ test.describe('reading a picture by touch', () => {
     await expect(readout).toContainText('Hover or tap the road');
     const box = await page.locator('.asphalt-canvas').boundingBox();
     await page.touchscreen.tap(box.x + box.width / 2, box.y + box.height * 0.85); // the near road
-    await expect(readout).toHaveText(/^Road [\d.]+ m ahead: θd = [\d.]+°, F = [\d.]+/);
+    await expect(readout).toHaveText(/^Road [\d.]+ m ahead, seen [\d.]+° below the horizon: θd = [\d.]+°, F = [\d.]+/);
   });
 
   test('a tap on the hero’s sphere reads that pixel, and the reading stays after the finger lifts', async ({ page }) => {

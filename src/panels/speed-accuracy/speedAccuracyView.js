@@ -32,9 +32,10 @@ function caseText(kind, args) {
 function practicalNote(alt, rec, rows) {
   if (!alt?.invisible || alt.methodId === rec.methodId) return '';
   const row = rows.find((r) => r.methodId === alt.methodId);
-  const where = row.thetaAtMax === null ? '' : ` at ${angle(toDegrees(row.thetaAtMax), 1)}`; // as the advisor's reason writes it
+  // The worst codes need not lie where |ΔR| is largest (sRGB is steeper for dark values): that angle is said apart.
+  const where = row.thetaAtMax === null ? '' : ` (its largest |ΔR| at ${angle(toDegrees(row.thetaAtMax), 1)})`;
   return ' If an error of up to 5 % of the display range is acceptable (the judgement behind the Schlick that engines ship), '
-    + `${row.label} would do: ${formatCodes(row.maxCodes)} codes at worst${where}, ${formatCodes(row.meanCodes)} on average.`;
+    + `${row.label} would do: ${formatCodes(row.maxCodes)} codes at worst, ${formatCodes(row.meanCodes)} on average${where}.`;
 }
 
 /** A warning when timings overlap so much that their order is not to be trusted. */
