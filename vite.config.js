@@ -124,6 +124,8 @@ export default defineConfig({
     // The largest chunk is the benchmark's three.js peer (about 540 KB), fetched only when a benchmark
     // run reaches it; the next is the shader lab's editor (about 380 KB), loaded with that panel alone.
     chunkSizeWarningLimit: 700,
+    // dist/.vite/manifest.json: which chunks each page and panel imports, for the first-load budget's test.
+    ...(singleFile ? {} : { manifest: true }),
     rollupOptions: {
       input: singleFile ? pages[singleFile] : pages,
     },

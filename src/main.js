@@ -15,10 +15,8 @@ import { installPageFaults } from './host/panelFaults.js';
 import { contextStats, MAX_LIVE_CONTEXTS } from './gl/contextBudget.js';
 import { describeProblem, readParams, withDefaults } from './host/params.js';
 import { itemLectureUrl } from './host/shareLinks.js';
-import { LECTURE_ELEMENT_ID, itemKeys, openLecture } from './lecture/openLecture.js';
-import { lectureToCode } from './lecture/lectureLink.js';
-import { mountLecture } from './lecture/mountLecture.js';
 import { texReady } from './ui/tex.js';
+import { LECTURE_ELEMENT_ID } from './lecture/lectureElement.js';
 import { audioTraceOn, installAudioKey, onAudioTrace, setAudioTrace, traceLog } from './ui/createAudioTrace.js';
 
 const hosts = {};
@@ -66,22 +64,17 @@ onAudioTrace((on) => {
 });
 
 // A composed lecture, from the link or the page; what it holds that cannot be used is named, and
-// the rest opens. One that cannot be read at all is named, and the lab's own lecture is shown.
+// the rest opens. One that cannot be read at all is named, and the lab's own lecture is shown. Its
+// code (reading, Markdown, KaTeX) comes only with a lecture: the lab's own needs none of it.
+const search = new URLSearchParams(window.location.search);
 const element = document.getElementById(LECTURE_ELEMENT_ID);
 const carried = element instanceof HTMLScriptElement && element.type === 'application/json' ? element.textContent : null;
-const opened = openLecture(new URLSearchParams(window.location.search), carried);
-if (opened.refused) {
-  const what = opened.given === 'link' ? 'This lecture link' : 'The lecture in this page';
-  showNotice(main, `${what} cannot be opened, so the lab’s own lecture is shown:`, opened.problems, { kind: 'error' });
-} else {
-  showNotice(main, 'Parts of this lecture could not be used, so they are left out:', opened.problems);
-}
-const composed = opened.lecture ? mountLecture(main, opened.lecture, itemKeys(opened.lecture.items, lecturePrefix)) : null;
-const lectureCode = opened.lecture ? lectureToCode(opened.lecture) : null;
-window.fresnelLab.lecture = { source: opened.source, title: opened.lecture?.title ?? null, code: lectureCode };
+const given = search.has('lecture') || carried !== null
+  ? import('./lecture/composedLecture.js').then(({ showComposedLecture }) => showComposedLecture(main, search, carried))
+  : null;
+// Until it is read, the lab's own sections wait unseen: a lecture given does not flash the default one first.
+if (given) main.classList.add('lecture-pending');
 // The composer runs from the site (it reads the offline page beside it): a page opened from disk has none beside it.
-const composeLink = document.querySelector('a.compose-link');
-if (composeLink instanceof HTMLAnchorElement && lectureCode) composeLink.href = `./compose.html?lecture=${lectureCode}`;
 if (window.location.protocol === 'file:') document.querySelector('.compose-offer')?.remove();
 
 /** The lab's own lecture: its panels, each in the section the build wrote for it. */
@@ -108,11 +101,11 @@ function ownPanels() {
  * code, or this page where the page holds it) with this item's state, and its embed code the
  * item's locks and hidden controls.
  */
-function itemOptions({ item, key, prefix }, schema) {
+function itemOptions({ item, key, prefix }, schema, opened) {
   if (!item) return {};
   const start = item.state ?? {};
   const page = opened.source === 'data' ? window.location.href : './index.html';
-  const code = opened.source === 'data' ? null : lectureCode;
+  const code = opened.source === 'data' ? null : opened.code;
   return {
     start,
     lectureLink: (values) => itemLectureUrl({ page, code, schema: withDefaults(schema, start), prefix, key }, values),
@@ -120,17 +113,25 @@ function itemOptions({ item, key, prefix }, schema) {
   };
 }
 
-const { sections, panels } = composed ?? ownPanels();
-
 // Every panel's host (values, link, messages) at once; each panel's module when it comes near.
 window.fresnelLab.ready = (async () => {
+  const opened = given ? await given.catch((error) => {
+    showNotice(main, 'The lecture in the link could not load, so the lab’s own lecture is shown:', [error.message], { kind: 'error' });
+    return null;
+  }) : null;
+  window.fresnelLab.lecture = { source: opened?.source ?? 'default', title: opened?.title ?? null, code: opened?.code ?? null };
+  const composeLink = document.querySelector('a.compose-link');
+  if (composeLink instanceof HTMLAnchorElement && opened?.code) composeLink.href = `./compose.html?lecture=${opened.code}`;
+  const composed = opened?.composed ?? null;
+  main.classList.remove('lecture-pending');
+  const { sections, panels } = composed ?? ownPanels();
   const entries = panels.map((placed) => {
     const { section, key } = placed;
     const id = section.dataset.panel;
     try {
       const definition = panelDefinition(id);
       hosts[key] = createPanelHost(section.querySelector('.panel-mount'), definition, {
-        prefix: placed.prefix, noticeHost: section, applyMaterial, ...itemOptions(placed, definition.schema),
+        prefix: placed.prefix, noticeHost: section, applyMaterial, ...itemOptions(placed, definition.schema, opened),
       });
       if (placed.item?.lock) hosts[key].controls('lock', placed.item.lock);
       if (placed.item?.hide) hosts[key].controls('hide', placed.item.hide);

@@ -11,7 +11,7 @@
 // script runs. A question item's panel is a frame of ./embed.html: the file belongs beside it, so the
 // composer offers the lecture with embed.html in one .zip (offlineLectureZip).
 import { readLecture } from './readLecture.js';
-import { LECTURE_ELEMENT_ID } from './openLecture.js';
+import { LECTURE_ELEMENT_ID } from './lectureElement.js';
 import { escapeHtml } from './lectureTextHtml.js';
 
 export { LECTURE_ELEMENT_ID };

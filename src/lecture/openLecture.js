@@ -4,8 +4,7 @@
 import { lectureFromCode } from './lectureLink.js';
 import { readLecture } from './readLecture.js';
 
-/** The id of the element that carries a lecture in the page: <script type="application/json" id=…>. */
-export const LECTURE_ELEMENT_ID = 'fresnel-lab-lecture';
+export { LECTURE_ELEMENT_ID } from './lectureElement.js';
 const MAX_ELEMENT = 400_000; // characters, as much as a code may unpack to (lectureLink.js)
 
 /**

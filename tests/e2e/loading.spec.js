@@ -165,3 +165,39 @@ test.describe('the built pages\' Content-Security-Policy meta', () => {
     await expectInjectionRefused(page);
   });
 });
+
+/** The chunks a manifest key imports statically, itself included, as dist paths (dist/.vite/manifest.json). */
+function staticClosure(manifest, key, seen = new Set()) {
+  const entry = manifest[key];
+  if (!entry || seen.has(entry.file)) return seen;
+  seen.add(entry.file);
+  for (const next of entry.imports ?? []) staticClosure(manifest, next, seen);
+  return seen;
+}
+
+test('before its first picture the lecture page fetches only what that picture needs, at most 100 KB of gzipped JS', async ({ page }) => {
+  const { readFileSync } = await import('node:fs');
+  const { gzipSync } = await import('node:zlib');
+  const dist = resolve(import.meta.dirname, '../../dist');
+  const manifest = JSON.parse(readFileSync(resolve(dist, '.vite/manifest.json'), 'utf8'));
+  // Needed: the page's module and what it imports, the hero's module and what it imports, and the
+  // worker that compiles the hero's shaders ahead (gl/warmGpu.js). Nothing else may come first:
+  // not the Markdown renderer or KaTeX (no lecturer text on the lab's own lecture), not the
+  // lecture reader, the questions, the audio of other panels, or another panel's module.
+  const needed = new Set([...staticClosure(manifest, 'index.html'), ...staticClosure(manifest, 'src/panels/spheres/index.js')]);
+  await openLab(page, './');
+  await expect.poll(() => page.evaluate(() => performance.getEntriesByName('fresnel-lab:first-frame:spheres').length)).toBe(1);
+  const before = await page.evaluate(() => {
+    const first = performance.getEntriesByName('fresnel-lab:first-frame:spheres')[0].startTime;
+    return performance.getEntriesByType('resource').filter((r) => r.startTime <= first && /\.js$/.test(new URL(r.name).pathname))
+      .map((r) => new URL(r.name).pathname.replace(/^\//, ''));
+  });
+  const unneeded = before.filter((file) => !needed.has(file) && !/gpuWarmWorker/.test(file));
+  expect(unneeded, 'fetched before the first picture, though it does not need them').toEqual([]);
+  // And what the lab's own lecture never needs is not imported by the page either, statically or not.
+  const lectureOnly = /\/(lectureTextDom|composedLecture|openLecture|mountLecture|questions|katex|typesetTex)-[\w-]+\.js$/;
+  expect(before.filter((file) => lectureOnly.test(`/${file}`)), 'the lecture reader, Markdown or KaTeX before the first picture').toEqual([]);
+  const kb = before.reduce((sum, file) => sum + gzipSync(readFileSync(resolve(dist, file))).length, 0) / 1024;
+  console.log(`[first load] lecture page: ${kb.toFixed(1)} KB of gzipped JS before the hero's first frame (${before.length} files)`);
+  expect(kb).toBeLessThanOrEqual(100);
+});
