@@ -1,7 +1,7 @@
 // The phase a conductor adds between p- and s-polarized reflection, and the two angles that stand in
 // for Brewster's on a metal: the pseudo-Brewster angle, where Rp is least (metalCurves.js finds it),
 // and the principal angle, where the p–s phase difference is 90° (Born & Wolf, Principles of
-// Optics, 7th ed., §14.4.1; the two differ by a few degrees: Azzam, JOSA A 25, 2858, 2008).
+// Optics, 7th ed., §14.2; the two differ by a few degrees: Azzam, JOSA A 25, 2858, 2008).
 // Pure float64 math, from air (index 1) into n + ik.
 import { checkCos, checkExtinction, checkIndex } from './validate.js';
 import { DEG, toDegrees } from './angles.js';
@@ -35,7 +35,7 @@ export function conductorPhaseDifference(cosThetaI, n, k) {
 }
 
 /**
- * The principal angle of incidence in degrees, where Δ = 90° (Born & Wolf §14.4.1), found by
+ * The principal angle of incidence in degrees, where Δ = 90° (Born & Wolf §14.2), found by
  * bisection between Δ = 180° head-on and Δ = 0° at grazing. For the lab's metals Δ falls
  * monotonically, so there is one (a unit test checks it); a weakly absorbing medium with n < 1 can
  * have three (Azzam 2008), of which bisection finds one. Null for k = 0, where Δ jumps from 180°

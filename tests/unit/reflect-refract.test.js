@@ -37,7 +37,9 @@ describe('the centre ray', () => {
 
 describe('bands and the CSV table', () => {
   it('bands cover [0, 1] in order', () => {
-    expect(reflectionBand(0).id).toBe('none');
+    expect(reflectionBand(0).id).toBe('nothing'); // n_t = 1: no interface, no reflection at all
+    expect(reflectionBand(0).label).toBe('no reflection');
+    expect(reflectionBand(1e-9).id).toBe('none');
     expect(reflectionBand(0.0999).id).toBe('none');
     expect(reflectionBand(0.1).id).toBe('some');
     expect(reflectionBand(0.3999).id).toBe('some');

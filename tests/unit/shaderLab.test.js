@@ -118,6 +118,9 @@ describe('the code in the link', () => {
   it('is compact, round-trips, and a link not of the compact form is refused', async () => {
     const { encodeCode, decodeCode, useDeflate } = await import('../../src/panels/shader-lab/codeCodec.js');
     const { deflateSync } = await import('fflate');
+    // Modules are shared between test files (isolate: false), and a file that imports the panel's
+    // module has given deflate already: start from a page where it has not.
+    useDeflate(null);
     expect(encodeCode('float x;')).toBe('float x;'); // before the panel gives deflate: plain text, which reads back
     useDeflate((bytes) => deflateSync(bytes, { level: 9 }));
     const { parseValue, formatValue } = await import('../../src/host/params.js');

@@ -24,15 +24,19 @@ export function stoneAnalogy(nI, nT) {
   // Head-on R can be small (0.0035 from water into glass): two significant digits, never 0.00.
   const head = precise(fresnelExact(1, nI, nT), 2);
   const critical = criticalAngle(nI, nT);
+  // R on either side of the half-way angle, to show it passing 0.5 (left out where that is within
+  // two degrees of grazing, where no whole degree lies beyond it to show).
+  const below = Math.floor(half / 10) * 10;
+  const beyond = Math.ceil(half) + 1;
+  const bracket = half !== null && beyond < 90 ? ` (R = ${R(below)} at ${below}°, ${R(beyond)} at ${beyond}°)` : '';
   const reach = half === null
     ? 'With equal indices nothing is reflected at any angle.'
     : critical !== null
       ? `From the denser side R also grows with the angle, from ${head} head-on, but it passes 0.5 at ${fixed(half, 1)}° `
-        + `and reaches 1 at the critical angle, ${fixed(critical / DEG, 1)}°, far from grazing: the analogy does not describe that.`
+        + `and reaches 1 at the critical angle, ${fixed(critical / DEG, 1)}°, ${fixed(90 - critical / DEG, 1)}° short of grazing: `
+        + 'a stone has no such angle.'
       : `Its trend holds at every angle: R grows from ${head} head-on to 1 at grazing. What needs a grazing angle is `
-      + `"mostly reflects": light reflects more than it transmits only past ${fixed(half, 1)}° from the normal `
-      + `(R = ${R(Math.floor(half / 10) * 10)} at ${Math.floor(half / 10) * 10}°, ${R(Math.min(89, Math.ceil(half) + 1))} at `
-      + `${Math.min(89, Math.ceil(half) + 1)}°).`;
+      + `"mostly reflects": light reflects more than it transmits only past ${fixed(half, 1)}° from the normal${bracket}.`;
   return 'The lecture likens this to skipping a stone. Its slide says the greater the angle between the stone\'s velocity '
     + 'and the water\'s surface, the more it skips; it is the other way round: the flatter a stone meets the water, the more '
     + 'likely it skips, as light is reflected more the further it is from the normal. '

@@ -96,8 +96,9 @@ export function mount(root, ctx) {
         + `θd = ${deg(peak.thetaD)}, F = ${f3(peak.F)}`, true],
       ['Diffuse road there', f3(peak.diffuse)],
       ['Highlight ÷ diffuse', `${fixed(peak.specular / peak.diffuse, 1)}×`],
-      ['Highlight against the road straight below', `${times(growth.total)}: lobe ${times(growth.lobe)}, F ${times(growth.fresnel)} `
-        + `(diffuse counted too: ${times(growth.overall)})`],
+      ['Highlight against the road straight below', Number.isFinite(growth.total)
+        ? `${times(growth.total)}: lobe ${times(growth.lobe)}, F ${times(growth.fresnel)} (diffuse counted too: ${times(growth.overall)})`
+        : 'none: with n_t = 1 nothing is reflected specularly'],
       [`Sunlight reflected specularly (sun ${deg(values.sunEl)} up)`, `${percent(albedo)} (diffuse albedo ${percent(SCENE.albedo)})`],
       ['R0 (head-on)', f3(r0)],
     ]);
@@ -156,12 +157,17 @@ export function mount(root, ctx) {
     update,
     describe() {
       const { peak, centre } = state;
+      const setting = `Camera ${values.camEl}° above the road, sun ${values.sunEl}° ahead, roughness ${values.roughness}, `
+        + `n_t = ${values.nT} (assumed for bitumen), Fresnel ${values.fresnel ? 'on' : 'off'}. `;
+      if (values.fresnel && values.nT === 1) {
+        return `${setting}With n_t = 1 the binder matches air: F = 0 at every angle, so the road has no specular reflection, `
+          + `only its diffuse part (${f3(peak.diffuse)} at the view's brightest spot).`;
+      }
       const share = albedo < SCENE.albedo
         ? `less than its diffuse albedo of ${percent(SCENE.albedo)}: the sheen is concentrated, not plentiful`
-        : `no less than its diffuse albedo of ${percent(SCENE.albedo)}: with the sun this low, the specular layer reflects as `
-          + 'much as the diffuse one, and it is concentrated too';
-      return `Camera ${values.camEl}° above the road, sun ${values.sunEl}° ahead, roughness ${values.roughness}, `
-        + `n_t = ${values.nT} (assumed for bitumen), Fresnel ${values.fresnel ? 'on' : 'off'}. `
+        : `more than its diffuse albedo of ${percent(SCENE.albedo)} (×${fixed(albedo / SCENE.albedo, 1)}): here the specular `
+          + 'layer reflects more of the sunlight than the diffuse one, and concentrates it too';
+      return setting
         + `At the centre of view the sun meets the microfacets at θd = ${deg(centre.thetaD)}, where F is ${f3(centre.F)}; `
         + `the brightest highlight in view, seen ${deg(peak.below)} below the horizon, has specular luminance ${f3(peak.specular)}, `
         + `${fixed(peak.specular / peak.diffuse, 1)} times the diffuse road there (${f3(peak.diffuse)}). `

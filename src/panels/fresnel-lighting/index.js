@@ -144,8 +144,10 @@ export function mount(root, ctx) {
       + `(red, green, blue), ${fixed(shares.layeredLuminance, 2)} of its luminance`
       + `${shares.layeredLuminance < shares.lecture
         ? ': the coated surface looks darker'
-        : ': light trapped under the coat comes out mostly near the normal, so head-on a bright base can look as bright as '
-          + `bare, though all it lets out over every direction is still at most 1 − F(θl) = ${fixed(shares.lecture, 2)}`}. `
+        : ': on a bright base the light trapped under the coat is not lost; it bounces until it leaves, a little more near '
+          + 'the normal than from a bare Lambertian base (its radiance falls as 1 − F(θv) towards grazing), so head-on the coat '
+          + `lets out more than the lecture's 1 − F${shares.layeredLuminance >= 1 ? ', as much as the bare base' : ''}, `
+          + `though over every direction at most 1 − F(θl) = ${fixed(shares.lecture, 2)}`}. `
       + `"Layered coat" shows it on the same sphere.`, COAT_SOURCE);
     plot.setData([curves.theta, curves.exact, curves.schlick, curves.theta.map(() => weight)]);
     plot.setMarks([thetaMark(RIM_DEG, `${RIM_DEG}°`)]);

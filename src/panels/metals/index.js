@@ -14,7 +14,7 @@ import { angle, fixed } from '../../ui/format.js';
 import { createLinePlot } from '../../ui/createLinePlot.js';
 import { createTwinStage } from '../shared/createTwinStage.js';
 import { buildMetalsDom } from './buildMetalsDom.js';
-import { SOURCE, metalsLectureGap } from './lectureGap.js';
+import { NAMED_DIP, SOURCE, metalsLectureGap } from './lectureGap.js';
 import fragment from './metals.frag.glsl?raw';
 import './styles.css';
 import { schema } from './schema.js';
@@ -94,7 +94,7 @@ export function mount(root, ctx) {
       stats = metalCurveStats(curves, metal);
       plot.setData([curves.theta, ...curves.exact, ...curves.schlick]);
       // Where each channel's exact curve is lowest, when that is visibly below F0.
-      plot.setMarks(stats.filter((s) => s.dip > 0.002).map((s) => ({
+      plot.setMarks(stats.filter((s) => s.dip >= NAMED_DIP).map((s) => ({
         x: s.minimum.theta, color: CHANNEL_VARS[CHANNELS.indexOf(s.channel)],
         label: `${SHORT[s.channel]} dips ${fixed(s.dip, 3)} below F0`,
       })));

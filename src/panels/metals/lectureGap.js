@@ -27,25 +27,56 @@ export function channelsAt(metal, theta) {
   return metal.n.map((n, ch) => fresnelConductor(cosDeg(theta), n, metal.k[ch]));
 }
 
+/** The widest spread of the channels over 0° to 89° (a 0.25° grid): { spread, theta, cool } (cool: blue above red there). */
+export function widestSpread(metal) {
+  let widest = { spread: -1, theta: 0, cool: false };
+  for (let i = 0; i <= 4 * GRAZING; i += 1) {
+    const rgb = channelsAt(metal, i / 4);
+    if (spread(rgb) > widest.spread) widest = { spread: spread(rgb), theta: i / 4, cool: rgb[2] > rgb[0] };
+  }
+  return widest;
+}
+
+/** How far R strays from F0 in any channel between 0° and 89°: below this, the lecture's words hold. */
+export const CLOSE_TO_F0 = 0.02;
+const strayFromF0 = (metal, head) => Math.max(...Array.from({ length: 4 * GRAZING + 1 }, (_, i) =>
+  Math.max(...channelsAt(metal, i / 4).map((r, ch) => Math.abs(r - head[ch])))));
+
 /**
  * The note's sentence for `metal` ({ name, n, k }) with its stats (metalCurveStats): what the
  * lecture says, what the exact curves do, and the tint, each number computed here.
  */
 export function metalsLectureGap(metal, stats) {
+  const name = metal.name.toLowerCase();
   const head = channelsAt(metal, 0);
   const grazing = channelsAt(metal, GRAZING);
+  const stray = strayFromF0(metal, head);
+  if (stray < CLOSE_TO_F0) {
+    return `The lecture says a metal has almost no Fresnel factor, and for ${name} it is close: in every channel R stays within `
+      + `${fixed(stray, 3)} of F0 from 0° to ${GRAZING}° (${list(head)} at 0°, ${list(grazing)} at ${GRAZING}°, red, green, blue) `
+      + 'and climbs to 1 only in the last degree. Other metals show more of their Fresnel factor.';
+  }
   const deepest = stats.reduce((a, b) => (b.dip > a.dip ? b : a));
   const dipping = stats.filter((s) => s.dip >= NAMED_DIP).map((s) => s.channel);
+  const slight = stats.filter((s) => s.dip > 0 && s.dip < NAMED_DIP).map((s) => s.channel);
   const dip = dipping.length > 0
     ? ` first dips below F0 in ${channelNames(dipping)} (by up to ${small(deepest.dip)}, ${deepest.channel}, `
-      + `near ${fixed(deepest.minimum.theta, 0)}°), then`
+      + `near ${fixed(deepest.minimum.theta, 0)}°${slight.length ? `; ${slight.join(' and ')} by under ${NAMED_DIP}` : ''}), then`
     : '';
-  const tint = spread(head) >= NEUTRAL && spread(grazing) < spread(head)
-    ? `its tint fades towards white (the channels ${fixed(spread(head), 2)} apart head-on, ${fixed(spread(grazing), 2)} at ${GRAZING}°)`
-    : `it is nearly neutral at every angle (its channels within ${fixed(Math.max(spread(head), spread(grazing)), 2)} of each other)`;
+  const widest = widestSpread(metal);
+  let tint;
+  if (spread(head) >= NEUTRAL && spread(grazing) < spread(head)) {
+    tint = `its tint fades towards white (the channels ${fixed(spread(head), 2)} apart head-on, ${fixed(spread(grazing), 2)} at ${GRAZING}°)`;
+  } else if (widest.spread < NEUTRAL) {
+    tint = `it is nearly neutral at every angle (its channels within ${fixed(widest.spread, 2)} of each other)`;
+  } else {
+    tint = `it is nearly neutral head-on and at ${GRAZING}° (channels within ${fixed(Math.max(spread(head), spread(grazing)), 2)}), `
+      + `but near ${fixed(widest.theta, 0)}° its channels are up to ${fixed(widest.spread, 2)} apart, a faint `
+      + `${widest.cool ? 'cool' : 'warm'} cast`;
+  }
   const headOn = spread(head) >= NEUTRAL ? 'Head-on its F0 carries its colour' : 'Head-on it reflects every channel nearly alike';
   return `The lecture says a metal has almost no Fresnel factor. ${headOn}, `
-    + `but towards grazing ${metal.name.toLowerCase()}'s R${dip} rises towards 1 in every channel: `
+    + `but towards grazing ${name}'s R${dip} rises towards 1 in every channel: `
     + `${list(head)} at 0°, ${list(grazing)} at ${GRAZING}° (red, green, blue), and ${tint}. `
     + `Schlick's form cannot dip below F0; F82 models add that term for metals.`;
 }

@@ -55,7 +55,7 @@ export function metalCurves(metal, count = 361) {
  * angle, and the lowest exact value with its angle, each refined off the grid (refinedMax.js);
  * `dip` is how far that lowest value lies below F0 (0 when the curve never drops). A conductor has
  * no Brewster angle (Rp = 0) but two stand-ins: `pseudoBrewster`, where Rp is least, and `principal`,
- * where the p–s phase difference is 90° (Born & Wolf, Principles of Optics, 7th ed., §14.4.1; they
+ * where the p–s phase difference is 90° (Born & Wolf, Principles of Optics, 7th ed., §14.2; they
  * differ by a few degrees, Azzam, JOSA A 25, 2858, 2008; conductorPhase.js).
  */
 export function metalCurveStats({ theta, f0, exact, error }, metal) {

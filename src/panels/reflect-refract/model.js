@@ -18,7 +18,11 @@ export const REFLECTION_BANDS = Object.freeze([
   Object.freeze({ id: 'lots', label: 'lots of reflection', below: Infinity }),
 ]);
 
+/** Where nothing is reflected at all (n_t = 1: no interface), the caption says so. */
+export const NO_REFLECTION = Object.freeze({ id: 'nothing', label: 'no reflection', below: 0 });
+
 export function reflectionBand(R) {
+  if (R === 0) return NO_REFLECTION;
   return REFLECTION_BANDS.find((band) => R < band.below);
 }
 

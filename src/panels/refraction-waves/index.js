@@ -132,7 +132,7 @@ export function mount(root, ctx) {
       return media + (state.thetaT === null
         ? `At ${angle(state.thetaI)} incidence, past the critical angle of ${angle(state.critical)}: `
           + 'total internal reflection, no propagating transmitted wave: only an evanescent field below the interface, '
-          + `fading to 1/e within ${fixed(state.depthNm, 0)} nm, that carries no light away.`
+          + `its amplitude fading to 1/e within ${fixed(state.depthNm, 0)} nm, that carries no light away.`
         : `At ${angle(state.thetaI)} incidence the transmitted wave travels at ${angle(state.thetaT)} (${critical}); `
           + `R = ${fixed(state.R, 4)}, T = ${fixed(state.T, 4)}.`);
     },
