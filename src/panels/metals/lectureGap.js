@@ -66,7 +66,8 @@ export function metalsLectureGap(metal, stats) {
   const widest = widestSpread(metal);
   let tint;
   if (spread(head) >= NEUTRAL && spread(grazing) < spread(head)) {
-    tint = `its tint fades towards white (the channels ${fixed(spread(head), 2)} apart head-on, ${fixed(spread(grazing), 2)} at ${GRAZING}°)`;
+    tint = `its tint fades towards white (the channels ${fixed(spread(head), 2)} apart head-on, `
+      + `${fixed(spread(grazing), 2)} at ${GRAZING}°)`;
   } else if (widest.spread < NEUTRAL) {
     tint = `it is nearly neutral at every angle (its channels within ${fixed(widest.spread, 2)} of each other)`;
   } else {
