@@ -192,7 +192,7 @@ export const FRESNEL_QUESTIONS = [
     graded: 'Twice F(85°) for the given coat index exceeds 1, more light than arrives; the panel\'s plot gives F at every angle '
       + '(at its marked 80° twice F is still under 1: it passes 1 beyond about 83°, which is why the prompt names 85°).',
     params: (rng) => ({ nT: rng.pick([1.33, 1.5]) }),
-    prompt: (p) => `A coat of n = ${p.nT} looks too dull at the rim, where the view meets it at about 85°. `
+    prompt: (p) => `A coat of n = ${p.nT} looks too dull at the rim, where the view is about 85° from the surface normal. `
       + 'Should you scale F up (say ×2) to brighten it? Read F at 85° off the panel\'s plot.',
     options: () => [
       {

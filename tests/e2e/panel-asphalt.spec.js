@@ -25,7 +25,7 @@ test('mounts in an embed with a labelled canvas and the key numbers', async ({ p
   await expect(entry('Brightest highlight in view')).toContainText('seen 0.0° below the horizon');
   await expect(entry('Highlight against the road straight below')).toHaveText(/^×21\d\.\d: lobe ×18\.5, F ×11\.7 \(diffuse counted too: ×3\d\.\d\)$/);
   await expect(entry('Sunlight reflected specularly')).toHaveText('7.3 % (diffuse albedo 9.0 %)');
-  await expect(page.locator('.panel-description')).toContainText('the sheen is concentrated, not plentiful');
+  await expect(page.locator('.panel-description')).toContainText('less than its diffuse albedo of 9.0 %; that light is concentrated');
 });
 
 test('the highlight is bright near grazing, absent overhead, and weak without Fresnel', async ({ page }) => {

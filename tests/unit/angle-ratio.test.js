@@ -95,7 +95,8 @@ describe('the stone-skipping analogy says how far it holds', async () => {
     expect(dips).toBe(true);
   });
   it('from the denser side it points to total internal reflection, far from grazing; equal indices reflect nothing', () => {
-    expect(stoneAnalogy(1.5, 1)).toContain('critical angle, 41.8°, 48.2° short of grazing: a stone has no such angle');
+    expect(stoneAnalogy(1.5, 1)).toContain('critical angle, 41.8°, 48.2° short of grazing. A stone also skips only when');
+    expect(stoneAnalogy(1.0001, 1)).toMatch(/passes 0\.5 at 89\.\d\d° and reaches 1 at the critical angle, 89\.\d\d°/);
     expect(stoneAnalogy(1.5, 1)).toContain('R also grows with the angle, from 0.040 head-on, but it passes 0.5 at 41.4° and reaches 1 at the critical angle');
     expect(halfReflectedAngle(1.5, 1.5)).toBeNull();
     expect(stoneAnalogy(1.5, 1.5)).toContain('nothing is reflected at any angle');

@@ -29,12 +29,16 @@ export function stoneAnalogy(nI, nT) {
   const below = Math.floor(half / 10) * 10;
   const beyond = Math.ceil(half) + 1;
   const bracket = half !== null && beyond < 90 ? ` (R = ${R(below)} at ${below}°, ${R(beyond)} at ${beyond}°)` : '';
+  // Two decimals where the two angles would print alike (nearly matched indices).
+  const digits = critical !== null && half !== null && Math.abs(critical / DEG - half) < 0.1 ? 2 : 1;
   const reach = half === null
     ? 'With equal indices nothing is reflected at any angle.'
     : critical !== null
-      ? `From the denser side R also grows with the angle, from ${head} head-on, but it passes 0.5 at ${fixed(half, 1)}° `
-        + `and reaches 1 at the critical angle, ${fixed(critical / DEG, 1)}°, ${fixed(90 - critical / DEG, 1)}° short of grazing: `
-        + 'a stone has no such angle.'
+      ? `From the denser side R also grows with the angle, from ${head} head-on, but it passes 0.5 at ${fixed(half, digits)}° `
+        + `and reaches 1 at the critical angle, ${fixed(critical / DEG, digits)}°, ${fixed(90 - critical / DEG, 1)}° short of grazing. `
+        + 'A stone also skips only when it meets the water flat enough, but its limit depends on its speed, spin and shape '
+        + '(Clanet, Hersen & Bocquet, Nature 427, 29, 2004); light\'s depends on n_i/n_t alone, and light going the stone\'s '
+        + 'way, into the denser side, has none.'
       : `Its trend holds at every angle: R grows from ${head} head-on to 1 at grazing. What needs a grazing angle is `
       + `"mostly reflects": light reflects more than it transmits only past ${fixed(half, 1)}° from the normal${bracket}.`;
   return 'The lecture likens this to skipping a stone. Its slide says the greater the angle between the stone\'s velocity '

@@ -13,7 +13,7 @@ import { startWebGL } from '../shared/startWebGL.js';
 import { readByPointer } from '../../ui/readByPointer.js';
 import { fixed } from '../../ui/format.js';
 import {
-  SCENE, cameraBasis, highlightInView, pixelRay, shadeRoad, sheenGrowth, specularAlbedo, sunDirection,
+  SCENE, cameraBasis, highlightInView, lambertianEquivalent, pixelRay, shadeRoad, sheenGrowth, specularAlbedo, sunDirection,
 } from './model.js';
 import { buildAsphaltDom } from './buildAsphaltDom.js';
 import fragment from './asphalt.frag.glsl?raw';
@@ -159,14 +159,21 @@ export function mount(root, ctx) {
       const { peak, centre } = state;
       const setting = `Camera ${values.camEl}° above the road, sun ${values.sunEl}° ahead, roughness ${values.roughness}, `
         + `n_t = ${values.nT} (assumed for bitumen), Fresnel ${values.fresnel ? 'on' : 'off'}. `;
-      if (values.fresnel && values.nT === 1) {
-        return `${setting}With n_t = 1 the binder matches air: F = 0 at every angle, so the road has no specular reflection, `
-          + `only its diffuse part (${f3(peak.diffuse)} at the view's brightest spot).`;
+      if (values.nT === 1) {
+        return `${setting}With n_t = 1 the binder matches air: F = 0 at every angle (R0 = 0 too), so the road has no specular `
+          + `reflection, only its diffuse part, ${f3(peak.diffuse)} everywhere on the road (Lambertian, the same from every direction).`;
       }
-      const share = albedo < SCENE.albedo
-        ? `less than its diffuse albedo of ${percent(SCENE.albedo)}: the sheen is concentrated, not plentiful`
-        : `more than its diffuse albedo of ${percent(SCENE.albedo)} (×${fixed(albedo / SCENE.albedo, 1)}): here the specular `
-          + 'layer reflects more of the sunlight than the diffuse one, and concentrates it too';
+      // Concentrated: the brightest spot is at least three times as bright as a matte road reflecting the same share.
+      const concentration = peak.specular / lambertianEquivalent(albedo, values.sunEl);
+      const shape = concentration >= 3
+        ? `concentrated (its brightest spot ${fixed(concentration, 1)} times a matte road reflecting as much)`
+        : 'spread out much as a matte road\'s would be';
+      const ratio = albedo / SCENE.albedo;
+      const share = ratio < 0.95
+        ? `less than its diffuse albedo of ${percent(SCENE.albedo)}; that light is ${shape}`
+        : ratio <= 1.05
+          ? `about as much as its diffuse albedo of ${percent(SCENE.albedo)}; that light is ${shape}`
+          : `more than its diffuse albedo of ${percent(SCENE.albedo)} (×${fixed(ratio, 2)}), and that light is ${shape}`;
       return setting
         + `At the centre of view the sun meets the microfacets at θd = ${deg(centre.thetaD)}, where F is ${f3(centre.F)}; `
         + `the brightest highlight in view, seen ${deg(peak.below)} below the horizon, has specular luminance ${f3(peak.specular)}, `

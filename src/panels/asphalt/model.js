@@ -104,6 +104,15 @@ export function highlightInView(values, aspect, rows = 241) {
   return { peak, centre, column };
 }
 
+/**
+ * The radiance of a matte (Lambertian) road that reflected the same share `albedo` of the sunlight,
+ * albedo·E·cosθl/π, the same from every direction: what the specular layer's brightest spot is set
+ * against to say whether its light is concentrated.
+ */
+export function lambertianEquivalent(albedo, sunEl) {
+  return (albedo * SUN_Y * Math.max(0, Math.sin(sunEl * DEG))) / Math.PI;
+}
+
 /** The line of sight `belowDeg` below the horizon, straight towards the sun (the camera's +z). */
 export function sightBelow(belowDeg) {
   const b = belowDeg * DEG;

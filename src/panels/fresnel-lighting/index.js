@@ -144,9 +144,10 @@ export function mount(root, ctx) {
       + `(red, green, blue), ${fixed(shares.layeredLuminance, 2)} of its luminance`
       + `${shares.layeredLuminance < shares.lecture
         ? ': the coated surface looks darker'
-        : ': on a bright base the light trapped under the coat is not lost; it bounces until it leaves, a little more near '
-          + 'the normal than from a bare Lambertian base (its radiance falls as 1 − F(θv) towards grazing), so head-on the coat '
-          + `lets out more than the lecture's 1 − F${shares.layeredLuminance >= 1 ? ', as much as the bare base' : ''}, `
+        : ': on a near-white base little of the light trapped under the coat is lost; it bounces until it leaves, a little '
+          + 'more near the normal than from a bare Lambertian base (its radiance falls as 1 − F(θv) towards grazing), so head-on '
+          + `the coat lets out more than the lecture's 1 − F${shares.layeredLuminance >= 1
+            ? `, as much as the bare base or slightly more (${fixed(shares.layeredLuminance, 2)})` : ''}, `
           + `though over every direction at most 1 − F(θl) = ${fixed(shares.lecture, 2)}`}. `
       + `"Layered coat" shows it on the same sphere.`, COAT_SOURCE);
     plot.setData([curves.theta, curves.exact, curves.schlick, curves.theta.map(() => weight)]);

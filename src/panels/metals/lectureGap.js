@@ -51,12 +51,16 @@ export function metalsLectureGap(metal, stats) {
   const head = channelsAt(metal, 0);
   const grazing = channelsAt(metal, GRAZING);
   const stray = strayFromF0(metal, head);
-  if (stray < CLOSE_TO_F0) {
-    return `The lecture says a metal has almost no Fresnel factor, and for ${name} it is close: in every channel R stays within `
-      + `${fixed(stray, 3)} of F0 from 0° to ${GRAZING}° (${list(head)} at 0°, ${list(grazing)} at ${GRAZING}°, red, green, blue) `
-      + 'and climbs to 1 only in the last degree. Other metals show more of their Fresnel factor.';
-  }
   const deepest = stats.reduce((a, b) => (b.dip > a.dip ? b : a));
+  if (stray < CLOSE_TO_F0) {
+    const three = (rgb) => rgb.map((x) => fixed(x, 3)).join(', ');
+    const dips = deepest.dip >= NAMED_DIP
+      ? `, dipping at most ${small(deepest.dip)} below F0 (${deepest.channel}, near ${fixed(deepest.minimum.theta, 0)}°)` : '';
+    return `The lecture says a metal has almost no Fresnel factor, and for ${name} it is close: in every channel R stays within `
+      + `${fixed(stray, 3)} of F0 from 0° to ${GRAZING}° (${three(head)} at 0°, ${three(grazing)} at ${GRAZING}°, red, green, blue)`
+      + `${dips}, and gains its last ${small(1 - Math.min(...grazing))} towards 1 only in the final degree. `
+      + 'Other metals show more of their Fresnel factor.';
+  }
   const dipping = stats.filter((s) => s.dip >= NAMED_DIP).map((s) => s.channel);
   const slight = stats.filter((s) => s.dip > 0 && s.dip < NAMED_DIP).map((s) => s.channel);
   const dip = dipping.length > 0

@@ -78,8 +78,14 @@ export function buildReflectRefractDom(host) {
     setNote(n, r0) {
       const caption = n === 1
         ? 'The lecture captions the steepest view "No reflection". With n_t = 1 there is no interface, and nothing is '
-          + 'reflected at any angle; any other surface reflects something head-on, so below R = 0.1 the panel says "little reflection".'
-        : `The lecture captions the steepest view "No reflection", but no view reflects nothing: head-on this surface `
+          + 'reflected at any angle, so none of the lecture\'s captions applies; any other surface reflects something head-on, '
+          + 'so below R = 0.1 the panel says "little reflection".'
+        : r0 >= 0.1
+          ? `The lecture captions the steepest view "No reflection", but no view reflects nothing: this surface (n_t = ${n}) `
+            + `reflects R = ${fixed(r0, 3)} even head-on, so no view of it is captioned "little reflection"; the steepest reads `
+            + `"some reflection". The floor also looks dimmer from the air than from inside the medium: its light spreads into a `
+            + `wider cone as it leaves, which divides its radiance by n_t² (${fixed(1 / (n * n), 2)} here) on top of T.`
+          : `The lecture captions the steepest view "No reflection", but no view reflects nothing: head-on this surface `
           + `(n_t = ${n}) still reflects R = ${fixed(r0, 3)} of the light, so below R = 0.1 the panel says "little reflection" `
           + '(the captions sort the views by R alone, not by which layer looks brighter). '
           + `The floor also looks dimmer from the air than from inside the medium: its light spreads into a wider cone as it `
