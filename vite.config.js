@@ -3,8 +3,9 @@ import { readdirSync, existsSync, readFileSync } from 'node:fs';
 import { dirname, resolve } from 'node:path';
 import { createRequire } from 'node:module';
 import { viteSingleFile } from 'vite-plugin-singlefile';
-import { PANELS, PLACES_MARKER, SECTIONS_MARKER, manifestProblems, placesCss, sectionHtml } from './src/panels/manifest.js';
+import { PANELS, PLACES_MARKER, SECTIONS_MARKER, manifestProblems, panelTextFrom, placesCss, sectionHtml } from './src/panels/manifest.js';
 import { contentSecurityPolicy, inlineTexts, withPolicyMeta } from './scripts/contentSecurityPolicy.js';
+import { messagesPlugin } from './scripts/messagesPlugin.js';
 
 const root = import.meta.dirname;
 
@@ -23,8 +24,10 @@ function panelFiles() {
  */
 function panelManifest() {
   const placesFile = resolve(root, 'src/panelPlaces.css');
+  // The panels' words: the English catalogue's "panels" namespace (read afresh, so an edit shows).
+  const panelWords = () => JSON.parse(readFileSync(resolve(root, 'locales/en.json'), 'utf8')).panels ?? {};
   const check = () => {
-    const problems = manifestProblems(panelFiles(), readFileSync(resolve(root, 'index.html'), 'utf8'));
+    const problems = manifestProblems(panelFiles(), panelWords(), readFileSync(resolve(root, 'index.html'), 'utf8'));
     if (problems.length) throw new Error(`Panel manifest (src/panels/manifest.js):\n  ${problems.join('\n  ')}`);
   };
   return {
@@ -43,7 +46,8 @@ function panelManifest() {
       handler(html, { filename }) {
         if (!filename.endsWith('index.html') || filename.endsWith('embed.html')) return html;
         check();
-        return html.replace(SECTIONS_MARKER, PANELS.map(sectionHtml).join('\n\n    '));
+        const words = panelWords();
+        return html.replace(SECTIONS_MARKER, PANELS.map((entry) => sectionHtml(entry, panelTextFrom(words, entry.id))).join('\n\n    '));
       },
     },
   };
@@ -115,7 +119,11 @@ const pages = {
 // Relative base: the built site works from any sub-path (a course page, a USB stick).
 export default defineConfig({
   base: './',
-  plugins: singleFile ? [panelManifest(), offlineAssets(), viteSingleFile(), policyMeta()] : [panelManifest(), policyMeta()],
+  // The message catalogues (locales/*.json) first: the pages' own words are written from them, and
+  // the manifest's sections after them.
+  plugins: singleFile
+    ? [messagesPlugin({ dir: resolve(root, 'locales') }), panelManifest(), offlineAssets(), viteSingleFile(), policyMeta()]
+    : [messagesPlugin({ dir: resolve(root, 'locales') }), panelManifest(), policyMeta()],
   build: {
     ...(singleFile ? { outDir: 'dist/offline', emptyOutDir: false } : {}),
     target: 'es2022',
@@ -128,6 +136,19 @@ export default defineConfig({
     ...(singleFile ? {} : { manifest: true }),
     rollupOptions: {
       input: singleFile ? pages[singleFile] : pages,
+      // The code every page loads at once (the host, the panels' schemas and words, the physics they
+      // check values with) in one chunk rather than in one per combination of pages that share it:
+      // dozens of small files cost the first load more than their contents (each is compressed
+      // alone). Only what an entry imports statically ($initial), and only the lab's shared layers.
+      output: singleFile ? {} : {
+        codeSplitting: {
+          groups: [{
+            name: 'core',
+            tags: ['$initial'],
+            test: (id) => /src[\\/](host|ui|i18n)[\\/]|src[\\/]panels[\\/]([\w-]+[\\/]schema|shared[\\/]indexPair|manifest|panelText|panelSchema|loadPanel)\.js|virtual:messages[\\/]en[\\/](panels|controls|page|host|ui)$|node_modules[\\/]lil-gui[\\/]/.test(id),
+          }],
+        },
+      },
     },
   },
   resolve: {

@@ -9,6 +9,9 @@ import { createPanelHost } from './host/createPanelHost.js';
 import { connectMessages, parseMessage } from './host/messageApi.js';
 import { readEmbedOptions } from './host/readEmbedOptions.js';
 import { fitToFrame } from './host/fitToFrame.js';
+import { startPageLanguage } from './i18n/pageLanguage.js';
+import { matchLanguage } from './i18n/languages.js';
+import { currentLanguage } from './i18n/messages.js';
 import { describeProblem } from './host/params.js';
 import { applyTheme, loadTheme } from './ui/theme.js';
 import { setSubscripted } from './ui/subscripts.js';
@@ -16,7 +19,10 @@ import { showNotice } from './host/showNotice.js';
 import { installPageFaults } from './host/panelFaults.js';
 import { contextStats } from './gl/contextBudget.js';
 import { audioTraceOn, installAudioKey, onAudioTrace, setAudioTrace, traceLog } from './ui/createAudioTrace.js';
+import { panelTitle } from './panels/panelText.js';
 
+// The language first (?lang=, a deck's option, read by language.js from the link): every word below is in it.
+const language = await startPageLanguage();
 const root = document.getElementById('embed');
 installPageFaults((title, lines) => showNotice(root, title, lines, { kind: 'error' }));
 const search = new URLSearchParams(window.location.search);
@@ -39,6 +45,7 @@ if (options.theme) theme.scheme = options.theme;
 if (options.projector !== null) theme.projector = options.projector;
 applyTheme(theme, { remember: false });
 showNotice(root, 'Some embed options in the link were not usable:', problems.map(describeProblem));
+if (language.problem) showNotice(root, 'The panel could not load its language, so it is in English:', [language.problem]);
 setAudioTrace(options.audio, 'url');
 installAudioKey();
 
@@ -54,6 +61,15 @@ const early = (event) => {
 };
 window.addEventListener('message', early);
 
+/** The embed again in `lang` (a deck's message): the values are in the link, which keeps them. */
+function restartIn(lang) {
+  const id = matchLanguage(lang);
+  if (!id || id === currentLanguage()) return;
+  const url = new URL(window.location.href);
+  url.searchParams.set('lang', id);
+  window.location.replace(url.toString());
+}
+
 window.fresnelLab.ready = (async () => {
   const entry = id ? panelEntry(id) : undefined;
   if (!entry) {
@@ -62,16 +78,16 @@ window.fresnelLab.ready = (async () => {
     ], { kind: 'error' });
     return null;
   }
-  document.title = `Fresnel Lab: ${entry.title}`;
+  document.title = `Fresnel Lab: ${panelTitle(entry.id)}`;
   const heading = document.createElement('h1');
   heading.className = 'embed-title';
-  setSubscripted(heading, entry.title); // n_t with a real subscript, as the lecture page's heading
+  setSubscripted(heading, panelTitle(entry.id)); // n_t with a real subscript, as the lecture page's heading
   root.append(heading);
   let panel;
   try {
     panel = await loadPanel(id);
   } catch (error) {
-    showNotice(root, `The ${entry.title} panel could not load.`, [error.message], { kind: 'error' });
+    showNotice(root, `The ${panelTitle(entry.id)} panel could not load.`, [error.message], { kind: 'error' });
     return null;
   }
   let messages = null;
@@ -114,6 +130,7 @@ window.fresnelLab.ready = (async () => {
       projector: (on) => applyTheme(Object.assign(theme, { projector: on }), { remember: false }),
       reducedMotion: (on) => host.setReducedMotion(on),
       audio: (on) => setAudioTrace(on, 'api'),
+      language: (lang) => restartIn(lang),
       pause() { paused = true; show(); },
       resume() { paused = false; show(); },
     },

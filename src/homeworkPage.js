@@ -17,9 +17,13 @@ import { buildClassSection } from './homework/page/classView/buildClassSection.j
 import './homework/page/classView/classView.css';
 import { connectScorm } from './homework/page/connectScorm.js';
 import { readTextFile } from './homework/page/formParts.js';
+import { startPageLanguage } from './i18n/pageLanguage.js';
 
+// The language first, so every word below is in it.
+const language = await startPageLanguage();
 setupPageControls(document.querySelector('.page-controls'), {});
 const root = document.getElementById('homework');
+if (language.problem) showNotice(root, 'The page could not load its language, so it is in English:', [language.problem]);
 installPageFaults((title, lines) => showNotice(root, title, lines, { kind: 'error' }));
 const search = new URLSearchParams(window.location.search);
 window.fresnelLab = { homework: null };

@@ -18,6 +18,24 @@ import { itemLectureUrl } from './host/shareLinks.js';
 import { texReady } from './ui/tex.js';
 import { LECTURE_ELEMENT_ID } from './lecture/lectureElement.js';
 import { audioTraceOn, installAudioKey, onAudioTrace, setAudioTrace, traceLog } from './ui/createAudioTrace.js';
+import { panelTitle } from './panels/panelText.js';
+import { startPageLanguage } from './i18n/pageLanguage.js';
+
+// The page's language first: every word below is written in it. An offline lecture carries its own
+// (its data element's "lang"), which the reader's choice and the link's ?lang= still beat.
+const language = await startPageLanguage({ carried: carriedLectureLanguage() });
+
+/** The language of a lecture written into the page (offline/index.html), read without reading the rest. */
+function carriedLectureLanguage() {
+  const data = document.getElementById(LECTURE_ELEMENT_ID);
+  if (!(data instanceof HTMLScriptElement) || data.type !== 'application/json') return null;
+  try {
+    const lang = JSON.parse(data.textContent ?? '')?.lang;
+    return typeof lang === 'string' ? lang : null;
+  } catch {
+    return null;
+  }
+}
 
 const hosts = {};
 window.fresnelLab = {
@@ -52,6 +70,7 @@ const main = document.querySelector('main');
 // An error nobody caught is said in its panel, or once at the top of the page (panelFaults.js).
 installPageFaults((title, lines) => showNotice(main, title, lines, { kind: 'error' }));
 showNotice(main, 'A page setting in the link was not usable:', page.problems.map(describeProblem));
+if (language.problem) showNotice(main, 'The page could not load its language, so it is in English:', [language.problem]);
 const maxLive = Math.round(page.values.maxContexts);
 // The audio trace (A, or the button under a plot) is kept in the link, so a shared link keeps it.
 setAudioTrace(page.values.audio, 'url');
@@ -137,7 +156,7 @@ window.fresnelLab.ready = (async () => {
       if (placed.item?.hide) hosts[key].controls('hide', placed.item.hide);
       return { section, host: hosts[key] };
     } catch (error) {
-      showNotice(section, `The ${panelEntry(id)?.title ?? id} panel could not load.`, [error.message], { kind: 'error' });
+      showNotice(section, `The ${panelEntry(id) ? panelTitle(id) : id} panel could not load.`, [error.message], { kind: 'error' });
       return null;
     }
   });

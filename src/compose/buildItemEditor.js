@@ -10,6 +10,7 @@ import { LECTURE_CAPS } from '../lecture/readLecture.js';
 import { panelEntry } from '../panels/manifest.js';
 import { questionCatalogue, questionPrompt } from './catalogue.js';
 import { buildPanelStart } from './buildPanelStart.js';
+import { panelTitle } from '../panels/panelText.js';
 
 const TEXT_HINT = 'Markdown: a blank line between paragraphs, *emphasis*, **strong**, - lists, [a link](https://…), '
   + '$n_1 \\sin θ_1$ and $$display math$$.';
@@ -83,7 +84,7 @@ function questionFields(item, patch) {
     const { panel } = questionCatalogue()
       .flatMap((g) => g.questions.map((q) => ({ ...q, panel: g.panel })))
       .find((q) => q.id === select.value) ?? {};
-    where.textContent = panel ? `On the panel “${panelEntry(panel).title}”; the room predicts or answers, then you reveal.` : '';
+    where.textContent = panel ? `On the panel “${panelTitle(panel)}”; the room predicts or answers, then you reveal.` : '';
   };
   select.addEventListener('change', () => { patch({ question: select.value }); show(); });
   seed.addEventListener('input', () => { patch({ seed: seed.value }); show(); });
@@ -97,7 +98,7 @@ export function buildItemEditor(item, { patch }) {
   if (item.type === 'panel') {
     const entry = panelEntry(item.panel);
     // The lecture page shows the panel's own title and paragraph always; these come above them.
-    box.append(headingField(item, patch, `optional: yours, above “${entry?.title ?? item.panel}”`),
+    box.append(headingField(item, patch, `optional: yours, above “${entry ? panelTitle(item.panel) : item.panel}”`),
       markdownField(item, patch, 'optional: your words before the panel'), buildPanelStart(item, { patch }));
   } else if (item.type === 'question') {
     box.append(...questionFields(item, patch), headingField(item, patch, 'optional'),

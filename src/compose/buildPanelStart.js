@@ -7,19 +7,20 @@ import { button, el } from '../ui/el.js';
 import { setSubscripted } from '../ui/subscripts.js';
 import { fixed } from '../ui/format.js';
 import { field } from '../homework/page/formParts.js';
-import { applyParams, defaults, describeProblem, formatValue, optionLabel, writeParams } from '../host/params.js';
+import { applyParams, defaults, describeProblem, formatValue, writeParams } from '../host/params.js';
 import { loadTheme } from '../ui/theme.js';
 import { panelEntry } from '../panels/manifest.js';
 import { panelSchema } from '../panels/panelSchema.js';
 import { readPastedLink } from './pastedLink.js';
+import { controlLabel, optionLabel, panelTitle } from '../panels/panelText.js';
 
 const ANSWER_MS = 5000;
 const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
 
-/** A value as the panel's controls would show it (numbers through ui/format.js, to the link's decimals). */
-export function shownValue(spec, value) {
+/** A value of panel `id`'s `key` as its controls would show it (numbers through ui/format.js, to the link's decimals). */
+export function shownValue(id, key, spec, value) {
   if (spec.type === 'number') return fixed(value, formatValue(spec, value).split('.')[1]?.length ?? 0);
-  if (spec.type === 'enum') return optionLabel(spec, value);
+  if (spec.type === 'enum') return optionLabel(id, key, value);
   if (spec.type === 'boolean') return value ? 'on' : 'off';
   if (spec.type === 'text') return `a text of ${fixed(String(value).length, 0)} characters`;
   return String(value);
@@ -45,7 +46,7 @@ function embedAddress(item) {
 export function buildPanelStart(initial, { patch }) {
   const item = { ...initial, state: { ...initial.state }, lock: [...initial.lock], hide: [...initial.hide] };
   const schema = panelSchema(item.panel) ?? {};
-  const title = panelEntry(item.panel)?.title ?? item.panel;
+  const title = panelEntry(item.panel) ? panelTitle(item.panel) : item.panel;
   const box = el('div', 'cp-start');
   const summary = el('p', 'cp-start-summary');
   const result = el('div', 'cp-start-result');
@@ -60,7 +61,8 @@ export function buildPanelStart(initial, { patch }) {
       summary.append('Starts from: ');
       keys.forEach((key, i) => {
         const part = el('span', 'cp-value');
-        setSubscripted(part, `${schema[key]?.label ?? key} = ${schema[key] ? shownValue(schema[key], item.state[key]) : ''}`);
+        const name = schema[key] ? controlLabel(item.panel, key) : key;
+        setSubscripted(part, `${name} = ${schema[key] ? shownValue(item.panel, key, schema[key], item.state[key]) : ''}`);
         summary.append(part, i < keys.length - 1 ? '; ' : '.');
       });
     }
@@ -158,14 +160,14 @@ export function buildPanelStart(initial, { patch }) {
   const grid = el('div', 'cp-control-grid');
   controls.append(legend, grid);
   const selects = new Map();
-  for (const [key, spec] of Object.entries(schema)) {
+  for (const key of Object.keys(schema)) {
     const select = /** @type {HTMLSelectElement} */ (el('select'));
     for (const [value, text] of [['free', 'free'], ['lock', 'locked (shown, fixed)'], ['hide', 'hidden']]) {
       select.add(new Option(text, value));
     }
     const label = el('label', 'cp-control');
     const name = el('span');
-    setSubscripted(name, spec.label ?? key);
+    setSubscripted(name, controlLabel(item.panel, key));
     label.append(name, select);
     grid.append(label);
     selects.set(key, select);

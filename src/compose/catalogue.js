@@ -3,6 +3,7 @@
 // manifest's ledes are HTML written for the lecture page; the composer shows them as text only),
 // and every question of the homework bank by its prompt, with the numbers the room gets (ROOM_SEED) or its seed gives.
 import { PANELS, panelEntry } from '../panels/manifest.js';
+import { panelLede, panelTitle } from '../panels/panelText.js';
 import { KIND_NAMES, QUESTIONS as BANK } from '../homework/questions.js';
 import { questionParams } from '../homework/gradeAnswer.js';
 import { ROOM_SEED } from '../lecture/readLecture.js';
@@ -35,14 +36,14 @@ export function shortText(text, max = 220) {
 
 /** The panels, in lecture order: { id, title, lede } (lede: plain text, shortened). */
 export function panelCatalogue() {
-  return PANELS.map((p) => ({ id: p.id, title: p.title, lede: shortText(plainText(p.lede)) }));
+  return PANELS.map((p) => ({ id: p.id, title: panelTitle(p.id), lede: shortText(plainText(panelLede(p.id))) }));
 }
 
 /** The questions, grouped by panel in lecture order: [{ panel, title, questions: [{ id, kind, prompt }] }]. */
 export function questionCatalogue() {
   return PANELS.map((p) => ({
     panel: p.id,
-    title: p.title,
+    title: panelTitle(p.id),
     questions: QUESTIONS.filter((q) => q.panel === p.id)
       .map((q) => ({ id: q.id, kind: KIND_NAMES[q.kind], prompt: q.prompt(questionParams(q, ROOM_SEED)) })),
   })).filter((group) => group.questions.length);
@@ -55,4 +56,7 @@ export function questionPrompt(id, seed = '') {
 }
 
 /** The title of a question's panel. */
-export const questionPanelTitle = (id) => panelEntry(QUESTIONS.find((q) => q.id === id)?.panel ?? '')?.title ?? '';
+export const questionPanelTitle = (id) => {
+  const panel = QUESTIONS.find((q) => q.id === id)?.panel ?? '';
+  return panelEntry(panel) ? panelTitle(panel) : '';
+};

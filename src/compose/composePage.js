@@ -6,6 +6,7 @@ import '../styles.css';
 import '../homework/page/homework.css';
 import './compose.css';
 import { setupPageControls } from '../host/setupPageControls.js';
+import { startPageLanguage } from '../i18n/pageLanguage.js';
 import { showNotice } from '../host/showNotice.js';
 import { installPageFaults } from '../host/panelFaults.js';
 import { button, el } from '../ui/el.js';
@@ -23,10 +24,13 @@ import { buildLectureList } from './buildLectureList.js';
 import { buildItemEditor } from './buildItemEditor.js';
 import { buildShare } from './buildShare.js';
 
+// The language first, so every word below is in it.
+const language = await startPageLanguage();
 setupPageControls(document.querySelector('.page-controls'), {});
 const root = document.getElementById('composer');
 const notices = el('div', 'cp-notices');
 installPageFaults((title, lines) => showNotice(notices, title, lines, { kind: 'error' }));
+if (language.problem) showNotice(notices, 'The page could not load its language, so it is in English:', [language.problem]);
 
 const intro = el('section', 'hw-intro cp-intro');
 intro.append(el('h1', null, 'Compose a lecture'),

@@ -7,6 +7,7 @@
 import { LECTURE_CAPS, LECTURE_KIND, LECTURE_VERSION, readLecture } from '../lecture/readLecture.js';
 import { panelEntry } from '../panels/manifest.js';
 import { questionById } from '../homework/questions.js';
+import { panelTitle } from '../panels/panelText.js';
 
 /**
  * @typedef {{ key: string, type: 'panel', panel: string, state: Record<string, unknown>, lock: string[], hide: string[],
@@ -126,14 +127,20 @@ export function draftFromLecture(lecture) {
   return draft;
 }
 
+/** The title of a question's panel, or '?' for a question the lab does not have. */
+const questionPanelName = (id) => {
+  const panel = /** @type {any} */ (questionById(id))?.panel;
+  return panelEntry(panel) ? panelTitle(panel) : '?';
+};
+
 /** A short plain-text name of an item, for the list and what a screen reader is told. @param {ItemDraft} item */
 export function itemName(item) {
   // A heading of the lecturer's own names the item, and the panel stays named beside it: two cards
   // of one panel must not differ by their headings alone.
   const withHeading = (name) => (item.heading.trim() ? `${item.heading.trim()} (${name})` : name);
-  if (item.type === 'panel') return withHeading(panelEntry(item.panel)?.title || item.panel);
+  if (item.type === 'panel') return withHeading(panelEntry(item.panel) ? panelTitle(item.panel) : item.panel);
   if (item.type === 'question') {
-    return withHeading(`Question on “${panelEntry(/** @type {any} */ (questionById(item.question))?.panel)?.title ?? '?'}”`);
+    return withHeading(`Question on “${questionPanelName(item.question)}”`);
   }
   return item.heading.trim() || item.text.trim().split('\n', 1)[0].slice(0, 60) || '(no text yet)';
 }

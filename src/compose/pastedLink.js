@@ -12,11 +12,12 @@ import { lecturePrefix, panelEntry } from '../panels/manifest.js';
 import { panelSchema } from '../panels/panelSchema.js';
 import { lectureFromCode } from '../lecture/lectureLink.js';
 import { itemKeys } from '../lecture/openLecture.js';
+import { panelTitle } from '../panels/panelText.js';
 
 export const MAX_PASTED = 120_000; // characters: a shader lab link with its code is a few kilobytes
 const MAX_PAIRS = 200;
 
-const titleOf = (id) => panelEntry(id)?.title ?? rawText(id);
+const titleOf = (id) => (panelEntry(id) ? panelTitle(id) : rawText(id));
 
 /**
  * The query of a pasted text: a whole link, a relative one, an <iframe> snippet, or bare pairs.

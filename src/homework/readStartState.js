@@ -10,8 +10,9 @@ import { EMBED_KEYS } from '../host/readEmbedOptions.js';
 import { parseValue, rawText, resolveKey } from '../host/params.js';
 import { lecturePrefix, panelEntry } from '../panels/manifest.js';
 import { panelSchema } from '../panels/panelSchema.js';
+import { panelTitle } from '../panels/panelText.js';
 
-const titleOf = (panelId) => panelEntry(panelId)?.title ?? rawText(panelId);
+const titleOf = (panelId) => (panelEntry(panelId) ? panelTitle(panelId) : rawText(panelId));
 
 /** { ok: true, state } (possibly empty) or { ok: false, problem }. */
 export function readStartState(text, panelId) {
@@ -28,7 +29,7 @@ export function readStartState(text, panelId) {
   const prefix = lecturePrefix(panelId);
   const fromLecture = !search.has('panel') && prefix && [...search.keys()].some((k) => k.startsWith(prefix));
   if (search.has('panel') && search.get('panel') !== panelId) {
-    const other = panelEntry(search.get('panel'))?.title ?? 'another page';
+    const other = panelEntry(search.get('panel')) ? panelTitle(search.get('panel')) : 'another page';
     return { ok: false, problem: `This link is for “${other}”, not “${titleOf(panelId)}”.` };
   }
   const schema = panelSchema(panelId) ?? {};

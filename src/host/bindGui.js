@@ -1,31 +1,33 @@
 // lil-gui controls generated from a params schema. The schema is the single source of truth and
 // the host owns the values: a controller edits a draft copy and hands each change to the host
 // (validated there), which then writes the draft back and refreshes the controller.
+// Each control's name and each option's are the panel's words from the catalogue (panelText.js).
 import GUI from 'lil-gui';
 import { phoneWidth } from '../ui/phoneWidth.js';
+import { controlLabel, optionLabel } from '../panels/panelText.js';
+import { localNumberInput } from './localNumberInput.js';
 
-/** lil-gui's options ({ label: value }) from a schema's (an array of values, or { value: label }). */
-export function guiOptions(spec) {
-  return Array.isArray(spec.options)
-    ? spec.options
-    : Object.fromEntries(Object.entries(spec.options).map(([value, label]) => [label, value]));
+/** lil-gui's options ({ label: value }) for panel `id`'s enum `key`, in the page's language. */
+export function guiOptions(id, key, spec) {
+  const values = Array.isArray(spec.options) ? spec.options : Object.keys(spec.options);
+  return Object.fromEntries(values.map((value) => [optionLabel(id, key, value), value]));
 }
 
 /**
- * Adds one controller per key in `keys` to `gui`, editing `draft` (a copy of the values).
+ * Adds one controller per key in `keys` to `gui`, editing `draft` (a copy of panel `id`'s values).
  * onChange(key, value) runs on every change; returns { key: controller }.
  */
-export function bindGui(gui, schema, draft, onChange, keys = Object.keys(schema)) {
+export function bindGui(gui, id, schema, draft, onChange, keys = Object.keys(schema)) {
   const controllers = Object.create(null);
   for (const key of keys) {
     const spec = schema[key];
     if (!spec) throw new Error(`bindGui: ${key} is not in the schema`);
     let controller;
-    if (spec.type === 'number') controller = gui.add(draft, key, spec.min, spec.max, spec.step);
-    else if (spec.type === 'enum') controller = gui.add(draft, key, guiOptions(spec));
+    if (spec.type === 'number') localNumberInput(controller = gui.add(draft, key, spec.min, spec.max, spec.step));
+    else if (spec.type === 'enum') controller = gui.add(draft, key, guiOptions(id, key, spec));
     else if (spec.type === 'color') controller = gui.addColor(draft, key);
     else controller = gui.add(draft, key);
-    controller.name(spec.label ?? key).onChange((value) => onChange(key, value));
+    controller.name(controlLabel(id, key)).onChange((value) => onChange(key, value));
     controllers[key] = controller;
   }
   return controllers;

@@ -18,6 +18,7 @@ import { embedCode, embedUrl, lectureUrl } from './shareLinks.js';
 import { checkInstance } from './panelContract.js';
 import { el } from '../ui/el.js';
 import { cssVar } from '../ui/theme.js';
+import { panelTitle } from '../panels/panelText.js';
 
 let nextDescriptionId = 0;
 
@@ -73,7 +74,7 @@ export function createPanelHost(container, panel, {
   shell.append(content, side);
   container.append(shell, description);
   // Faults once the panel runs (an error in its code, a lost context) are said on this line.
-  const faults = createPanelFaults({ title: panel.title, restart: () => restart() });
+  const faults = createPanelFaults({ title: panelTitle(panel.id), restart: () => restart() });
   shell.before(faults.element);
   watchInputs(container, faults);
   /** Runs the panel's own code: what it makes is the panel's, and what it throws is said in the panel. */
@@ -162,7 +163,7 @@ export function createPanelHost(container, panel, {
     const { makePoster } = await import('./makePoster.js');
     return makePoster({
       picture,
-      title: `Fresnel Lab: ${panel.title.replace(/_([it])\b/g, (_, c) => ({ i: 'ᵢ', t: 'ₜ' })[c])}`,
+      title: `Fresnel Lab: ${panelTitle(panel.id).replace(/_([it])\b/g, (_, c) => ({ i: 'ᵢ', t: 'ₜ' })[c])}`,
       link: lectureLink(values),
       colours: { background: cssVar('--bg', '#0d1117'), text: cssVar('--text', '#f0f3f6'), muted: cssVar('--muted', '#c2cad3') },
     });
@@ -224,7 +225,7 @@ export function createPanelHost(container, panel, {
     const result = { ...applyParams(schema, values, touchesLocked ? {} : update), refused: touchesLocked };
     if (result.rejected.length) {
       rejectedNotice?.remove();
-      rejectedNotice = showNotice(noticeHost, `Some values for the ${panel.title} panel were not usable:`,
+      rejectedNotice = showNotice(noticeHost, `Some values for the ${panelTitle(panel.id)} panel were not usable:`,
         result.rejected.map(describeProblem));
       for (const { key } of result.rejected) {
         if (Object.hasOwn(values, key)) {
@@ -242,7 +243,7 @@ export function createPanelHost(container, panel, {
     if (mountPanel) return Promise.resolve();
     // A WebGL panel also waits for the GPU channel to open off the page's thread (warmGpu.js).
     loading ??= Promise.all([panel.load(), panel.webgl ? warmGpu() : null]).then(([fn]) => { mountPanel = fn; }, (error) => {
-      showNotice(noticeHost, `The ${panel.title} panel could not load.`, [error.message], { kind: 'error' });
+      showNotice(noticeHost, `The ${panelTitle(panel.id)} panel could not load.`, [error.message], { kind: 'error' });
       throw error;
     });
     return loading;
@@ -251,7 +252,7 @@ export function createPanelHost(container, panel, {
   function mountNow() {
     wanted = true;
     container.style.minHeight = '';
-    gui = createPanelGui(guiHost, `${panel.title}: controls`);
+    gui = createPanelGui(guiHost, `${panelTitle(panel.id)}: controls`);
     toolbar.hidden = false;
     controllers = Object.create(null);
     controlState.clear();
@@ -265,7 +266,7 @@ export function createPanelHost(container, panel, {
       gui = null;
       toolbar.hidden = true;
       content.replaceChildren();
-      showNotice(noticeHost, `The ${panel.title} panel could not start.`,
+      showNotice(noticeHost, `The ${panelTitle(panel.id)} panel could not start.`,
         [error.message, 'The other panels are not affected; reload the page to try again.'], { kind: 'error' });
       throw error;
     } finally {
@@ -324,7 +325,7 @@ export function createPanelHost(container, panel, {
     values: view,
     get gui() { return gui; },
     bind(folder, keys) {
-      const made = bindGui(folder ?? gui, schema, draft, (key, value) => set({ [key]: value }, { source: 'user' }), keys);
+      const made = bindGui(folder ?? gui, panel.id, schema, draft, (key, value) => set({ [key]: value }, { source: 'user' }), keys);
       Object.assign(controllers, made);
       controlState.bind(controllers);
       return made;

@@ -6,6 +6,7 @@
 //   {type:'fresnel-lab:snapshot', width?, height?, id?}  answers fresnel-lab:snapshot {png, csv, params}
 //   {type:'fresnel-lab:lock' | 'unlock' | 'hide' | 'show', keys?}  controls; no keys: all of them
 //   {type:'fresnel-lab:theme', theme} · {type:'fresnel-lab:projector', on} · {type:'fresnel-lab:reducedMotion', on}
+//   {type:'fresnel-lab:language', lang}          the panel starts again in that language (its state is in its link)
 //   {type:'fresnel-lab:audio', on}                the audio trace of the R(θ) plots
 //   {type:'fresnel-lab:pause'} · {type:'fresnel-lab:resume'}, and reveal.js's plain 'slide:stop' / 'slide:start'
 // Panel → deck: fresnel-lab:ready {apiVersion, panel, params}; fresnel-lab:changed {source, keys,
@@ -62,6 +63,9 @@ export function parseMessage(data) {
     }
     case 'theme':
       return data.theme === 'light' || data.theme === 'dark' ? { kind, theme: data.theme } : null;
+    case 'language':
+      // A language tag, checked by the page against the languages it speaks (src/i18n/languages.js).
+      return typeof data.lang === 'string' && /^[A-Za-z]{2,3}(-[A-Za-z0-9]{2,8})*$/.test(data.lang) ? { kind, lang: data.lang } : null;
     case 'projector':
     case 'reducedMotion':
     case 'audio':
@@ -124,7 +128,7 @@ export function connectMessages(host, { parent = window.parent, origin = '*', pa
         return;
       }
       default:
-        page[message.kind]?.(message.theme ?? message.on);
+        page[message.kind]?.(message.theme ?? message.lang ?? message.on);
     }
   }
 

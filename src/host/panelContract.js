@@ -11,12 +11,11 @@
  * @typedef {object} ParamSpec
  * @property {'number'|'enum'|'color'|'boolean'|'text'} type
  * @property {number|string|boolean} default
- * @property {string} label        the control's visible label (and its accessible name)
  * @property {number} [min]
  * @property {number} [max]
  * @property {number} [step]       also sets how many decimals the URL keeps
  * @property {boolean} [integer]   numbers: whole numbers only (an index or a count)
- * @property {string[]|Record<string, string>} [options]  enum values, or { value: label }
+ * @property {string[]} [options]  enum values (their names, and the control's, are the catalogue's: panelText.js)
  * @property {string[]} [aliases]  older keys that still read, so links made before a rename work
  * @property {number} [maxLength]  texts: the longest accepted
  * @property {(text: string) => string} [encode]  texts: the compact form the link writes

@@ -3,9 +3,10 @@
 // its messages. Pure functions; a bad value never throws, it is reported and replaced by the default
 // (in the manner of PhET's query-parameter tables).
 //
-// Spec fields: type ('number' | 'enum' | 'color' | 'boolean' | 'text'), default, label, and
+// Spec fields: type ('number' | 'enum' | 'color' | 'boolean' | 'text'), default, and
 // for numbers min, max, step and, for an index or a count, integer: true (a whole number only);
-// for enums options (an array of values, or { value: label });
+// for enums options (an array of values); the names of a control and of its options are the
+// panel's words, in the catalogue (src/panels/panelText.js);
 // for texts maxLength and optionally encode/decode, a compact form for the link (decode also
 // takes the plain text, which messages send; it returns null for a form it cannot read);
 // optionally aliases: older keys that still read (links and decks made before a rename keep working).
@@ -23,11 +24,6 @@ export function readNumber(text) {
 
 function enumValues(spec) {
   return Array.isArray(spec.options) ? spec.options.map(String) : Object.keys(spec.options);
-}
-
-/** The label an enum shows for a value (the value itself when the options are a plain list). */
-export function optionLabel(spec, value) {
-  return Array.isArray(spec.options) || !Object.hasOwn(spec.options, value) ? String(value) : spec.options[value];
 }
 
 /**

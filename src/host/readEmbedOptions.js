@@ -3,13 +3,16 @@
 //   audio=1|0                                             the audio trace of the R(θ) plots on or off (off by default)
 //   lock=nI,nT  hide=nI,nT  controls=0                    controls shown but fixed, hidden, or none
 //   fit=1                                                 scaled down to show whole in its frame (a slide)
+//   lang=es                                               the language (else the reader's, else the browser's)
 //   parentOrigin=https://deck.example                     the only origin messages go to and come from
 // A value that cannot be used is named in `problems` and left out, but for parentOrigin: an
 // author who asked for a restriction gets one, so an unusable origin leaves the panel deaf and
 // mute to every page (`parentOrigin: 'none'`) rather than open to all.
 
 /** These names belong to the embed page, so no panel's schema may use them. */
-export const EMBED_KEYS = ['panel', 'theme', 'projector', 'reducedMotion', 'audio', 'lock', 'hide', 'controls', 'fit', 'parentOrigin'];
+export const EMBED_KEYS = [
+  'panel', 'theme', 'projector', 'reducedMotion', 'audio', 'lock', 'hide', 'controls', 'fit', 'lang', 'parentOrigin',
+];
 
 const flag = (raw) => (raw === '1' || raw === 'true' ? true : raw === '0' || raw === 'false' ? false : undefined);
 const list = (raw) => raw.split(',').map((k) => k.trim()).filter(Boolean).slice(0, 64);

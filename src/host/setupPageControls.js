@@ -1,7 +1,31 @@
-// The lecture page's own controls: theme (dark/light), projector mode, one material for every
-// panel, and hiding all controls for a clean projected picture (also the `h` key).
+// The lecture page's own controls: the language, theme (dark/light), projector mode, one material
+// for every panel, and hiding all controls for a clean projected picture (also the `h` key).
 import { applyTheme, loadTheme } from '../ui/theme.js';
 import { dielectrics } from '../optics/materials.js';
+import { languageChoices, rememberLanguage } from '../i18n/language.js';
+import { currentLanguage } from '../i18n/messages.js';
+
+/**
+ * A select of the languages the lab speaks, each by its own name. A change is kept in this browser
+ * and the page starts again in it, with ?lang= in its link: the reader's choice then beats a
+ * language the page carries (a sheet's, a lecture's) as well as the browser's.
+ */
+export function languageSelect() {
+  const select = document.createElement('select');
+  select.lang = ''; // each option names its language in that language (its own lang below)
+  for (const language of languageChoices()) {
+    const option = new Option(language.name, language.id, false, language.id === currentLanguage());
+    option.lang = language.id;
+    select.add(option);
+  }
+  select.addEventListener('change', () => {
+    rememberLanguage(select.value);
+    const url = new URL(window.location.href);
+    url.searchParams.set('lang', select.value);
+    window.location.assign(url.toString());
+  });
+  return select;
+}
 
 export function setupPageControls(bar, { onMaterial = null } = {}) {
   const theme = loadTheme();
@@ -41,7 +65,7 @@ export function setupPageControls(bar, { onMaterial = null } = {}) {
 
   // A page without panels of its own (the homework page, whose panels sit in frames) has no
   // material or controls to set.
-  bar.append(label('Theme ', scheme), label('Projector ', projector),
+  bar.append(label('Language ', languageSelect()), label('Theme ', scheme), label('Projector ', projector),
     ...(onMaterial ? [label('Material in every panel ', material), hide] : []));
   return { toggleControls, material };
 }

@@ -1,6 +1,7 @@
 // Links that reproduce a panel: the lecture page scrolled to it, or the embed page alone.
 import { writeParams } from './params.js';
 import { lecturePrefix } from '../panels/manifest.js';
+import { panelTitle } from '../panels/panelText.js';
 
 function pageUrl(page) {
   return new URL(page, window.location.href);
@@ -25,14 +26,15 @@ export function embedUrl(panel, values, { lock = [], hide = [] } = {}) {
 
 /**
  * An <iframe> snippet; attribute values are escaped, so no state can break out of the tag.
- * @param {{ id: string, title: string, schema: object }} panel
+ * @param {{ id: string, schema: object }} panel
  * @param {object} values
  * @param {{ width?: number, height?: number, lock?: string[], hide?: string[] }} [options]
  */
 export function embedCode(panel, values, { width = 960, height = 720, ...options } = {}) {
   const escape = (s) => String(s).replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;');
   return `<iframe src="${escape(embedUrl(panel, values, options))}" width="${width}" height="${height}" `
-    + `style="border:0" loading="lazy" title="${escape(`Fresnel Lab: ${panel.title}`)}" allow="fullscreen; clipboard-write"></iframe>`;
+    + `style="border:0" loading="lazy" title="${escape(`Fresnel Lab: ${panelTitle(panel.id)}`)}" `
+    + 'allow="fullscreen; clipboard-write"></iframe>';
 }
 
 /**

@@ -18,6 +18,7 @@ import { expectedValue, questionParams, trueOption } from '../homework/gradeAnsw
 import { formatTolerance, formatValue } from '../homework/formatAnswer.js';
 import { escapeHtml, lectureTextHtml, subscriptedHtml } from './lectureTextHtml.js';
 import { ROOM_SEED } from './readLecture.js';
+import { panelTitle } from '../panels/panelText.js';
 
 /** Plot-only panels that create a WebGL context for a while (the manifest's webgl is false). */
 const HOLDS_CONTEXT_AT_TIMES = ['speed-accuracy'];
@@ -50,7 +51,7 @@ function frameHtml(src, id, { short }) {
   const entry = panelEntry(id);
   const preload = entry.webgl || HOLDS_CONTEXT_AT_TIMES.includes(id) ? '' : ' data-preload';
   return `<iframe class="fl-embed${short ? ' fl-short' : ''}"${preload} data-src="${escapeHtml(src)}" `
-    + `title="${escapeHtml(`Fresnel Lab: ${entry.title}`)}" allow="fullscreen; clipboard-write"></iframe>`;
+    + `title="${escapeHtml(`Fresnel Lab: ${panelTitle(id)}`)}" allow="fullscreen; clipboard-write"></iframe>`;
 }
 
 // Math as KaTeX's HTML, with the deck carrying KaTeX's CSS and fonts (deckExport.js): it looks as on the site.
@@ -93,7 +94,6 @@ function answerHtml(question, params) {
 function questionSlide(item, n, frame) {
   const question = questionById(item.question);
   const params = questionParams(question, item.seed ?? DEFAULT_QUESTION_SEED);
-  const entry = panelEntry(question.panel);
   const optionItems = question.kind === 'choice' ? question.options(params).map((o) => `<li>${subscriptedHtml(o.text(params))}</li>`) : [];
   const options = optionItems.length ? `\n    <ol class="fl-options" type="A">${optionItems.join('')}</ol>` : '';
   const { embedUrl, theme, projector } = frame;
@@ -101,7 +101,7 @@ function questionSlide(item, n, frame) {
   return `<section data-item="${n}" data-item-type="question" data-question="${escapeHtml(question.id)}">
   <section class="fl-question">
     <h2>${item.heading ? escapeHtml(item.heading) : 'A question for the room'}</h2>${textHtml(item.text)}
-    <p class="fl-kind">${escapeHtml(KIND_NAMES[question.kind])} · ${subscriptedHtml(entry.title)}</p>
+    <p class="fl-kind">${escapeHtml(KIND_NAMES[question.kind])} · ${subscriptedHtml(panelTitle(question.panel))}</p>
     <p class="fl-prompt">${subscriptedHtml(question.prompt(params))}</p>${options}
   </section>
   <section class="fl-answer" data-item-type="answer">

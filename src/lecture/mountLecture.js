@@ -4,6 +4,7 @@
 // lecturer's heading and text above it; a text item is its heading and text; a question item is a
 // homework question asked of the room (questionItem.js, loaded only for a lecture that has one).
 import { PLACE_LAYOUTS, panelEntry, sectionHtml } from '../panels/manifest.js';
+import { panelText } from '../panels/panelText.js';
 import { el } from '../ui/el.js';
 import { showNotice } from '../host/showNotice.js';
 import { lectureTextFragment } from './lectureTextDom.js';
@@ -31,7 +32,7 @@ function ownText(item, key, className) {
 function panelSection(item, key) {
   const entry = panelEntry(item.panel);
   const template = document.createElement('template');
-  template.innerHTML = sectionHtml(entry);
+  template.innerHTML = sectionHtml(entry, panelText(item.panel));
   const section = /** @type {HTMLElement} */ (template.content.firstElementChild);
   section.id = key;
   section.dataset.item = key;

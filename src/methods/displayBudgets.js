@@ -15,6 +15,7 @@ import { displayCodes, recommend } from './advisor.js';
 import { sweepDomain } from './errorMetrics.js';
 import { contextFor } from './rounding.js';
 import { referenceFor } from './scenes.js';
+import { DEFAULT_BUDGET } from './ids.js';
 
 export const DISPLAY_BUDGETS = Object.freeze([
   { id: 'invisible', codes: 0.5, label: 'Within rounding: ½ an 8-bit step' }, // the id stays: links use it
@@ -24,7 +25,7 @@ export const DISPLAY_BUDGETS = Object.freeze([
   { id: 'ten-percent', codes: 25.5, label: '10 % of the range (25.5 codes)' },
 ].map((budget) => Object.freeze(budget)));
 
-export const DEFAULT_BUDGET = 'invisible';
+export { DEFAULT_BUDGET };
 
 /** The budget with this id; throws on an unknown id. */
 export function displayBudget(id) {

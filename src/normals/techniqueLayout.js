@@ -23,7 +23,9 @@
 // 3-channel data is padded to RGBA: textures are RGBA, RG or R only (createMipTexture.js), the
 // layouts the upload and its read-back test (every level sampled exactly) cover.
 
-export const TECHNIQUES = Object.freeze(['naive', 'renormalized', 'toksvig', 'lean', 'clean', 'vmf']);
+import { TECHNIQUES } from './techniques.js';
+
+export { TECHNIQUES };
 
 /** What each technique is called where a reader sees it (ids stay in URLs and files). */
 export const TECHNIQUE_NAMES = Object.freeze({

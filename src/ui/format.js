@@ -1,24 +1,58 @@
-// Numbers as the panels show them: fixed decimals (a column keeps its width as a slider moves)
-// and a real minus sign (U+2212), which a hyphen is not.
+// Numbers as the panels show them: fixed decimals (a column keeps its width as a slider moves),
+// a real minus sign (U+2212), which a hyphen is not, and the decimal separator of the page's
+// language (es: 0,04), which Intl gives (setNumberLocale, from src/i18n/language.js). The digits are
+// toFixed's, whatever the language. Numbers a program reads (CSV cells, links, code, markup) do not
+// come through here: markupNumber and rounded keep the point.
+import { safeLocale } from './safeLocale.js';
 
 export const MINUS = '\u2212';
+
+let decimal = '.';
+
+/** The decimal separator of `locale` as Intl writes it ('.' where it cannot tell). */
+export function decimalSeparator(locale) {
+  try {
+    return new Intl.NumberFormat(safeLocale(locale)).formatToParts(0.5).find((p) => p.type === 'decimal')?.value ?? '.';
+  } catch {
+    return '.';
+  }
+}
+
+/** Shown numbers follow `locale`'s decimal separator from now on. */
+export function setNumberLocale(locale) {
+  decimal = decimalSeparator(locale);
+}
+
+/** The separator shown numbers use now (a typed number may use it too: readNumber). */
+export const shownDecimal = () => decimal;
+
+const local = (text) => (decimal === '.' ? text : text.replace('.', decimal));
+
+/**
+ * A number typed by a reader, with a point or the page's decimal comma ('1,5' and '1.5' alike), or
+ * NaN. Only a bare decimal number: no grouping, no exponent word, no unit.
+ */
+export function readNumber(text) {
+  const clean = String(text).trim().replace(MINUS, '-').replace(',', '.');
+  return /^[-+]?(\d+\.?\d*|\.\d+)(e[-+]?\d+)?$/i.test(clean) ? Number(clean) : NaN;
+}
 
 /** Fixed decimals with a real minus sign; NaN (an undefined quantity) as a dash. */
 export function fixed(value, digits = 4) {
   if (Number.isNaN(value)) return '—';
-  return value.toFixed(digits).replace('-', MINUS);
+  return local(value.toFixed(digits)).replace('-', MINUS);
 }
 
 /** Scientific notation with a real minus sign, 1.234567e−8 (e+ written as e). */
 export function sci(value, digits = 6) {
   if (Number.isNaN(value)) return '—';
-  return value.toExponential(digits).replaceAll('-', MINUS).replace('e+', 'e');
+  return local(value.toExponential(digits)).replaceAll('-', MINUS).replace('e+', 'e');
 }
 
 /** `digits` significant digits, as toPrecision writes them (3.14, 2.9e−7), with a real minus sign. */
 export function precise(value, digits = 6) {
   if (!Number.isFinite(value)) return Number.isNaN(value) ? '—' : String(value).replace('-', MINUS);
-  return value.toPrecision(digits).replaceAll('-', MINUS).replace('e+', 'e');
+  return local(value.toPrecision(digits)).replaceAll('-', MINUS).replace('e+', 'e');
 }
 
 /**
@@ -62,7 +96,7 @@ export function tickDecimals(incr) {
 
 /** A tick label on an axis of step `incr`: the decimals the step needs, trailing zeros dropped (0.5, 1, 1.5), real minus sign. */
 export function tickLabel(value, incr) {
-  return String(+value.toFixed(tickDecimals(incr))).replaceAll('-', MINUS);
+  return local(String(+value.toFixed(tickDecimals(incr)))).replaceAll('-', MINUS);
 }
 
 /** `value` rounded to `digits` decimals as a number (a control's step), as toFixed rounds: 0.0400 → 0.04. */

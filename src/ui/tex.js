@@ -3,6 +3,7 @@
 // when the page is next idle after the first formula is asked for, and until it arrives each
 // formula shows its TeX source. Live numbers are best shown with a fixed number of decimals
 // (toFixed) so a formula keeps its width as sliders move.
+import { shownDecimal } from './format.js';
 
 /** @type {null | ((element: HTMLElement, tex: string, display: boolean) => void)} */
 let typeset = null;
@@ -48,8 +49,13 @@ export function texElement(tex, { display = true, tag = 'div', className = 'tex'
   return renderTex(element, tex, { display });
 }
 
-/** A number for TeX with fixed decimals (in TeX's math mode a hyphen is typeset as the minus sign). */
+/**
+ * A number for TeX with fixed decimals (in TeX's math mode a hyphen is typeset as the minus sign),
+ * its decimal separator the page's: a comma as {,}, which TeX sets with no space after it.
+ */
 export function texNumber(value, digits = 4) {
   if (!Number.isFinite(value)) return '\\text{—}';
-  return value.toFixed(digits);
+  const text = value.toFixed(digits);
+  const separator = shownDecimal();
+  return separator === '.' ? text : text.replace('.', separator === ',' ? '{,}' : separator);
 }

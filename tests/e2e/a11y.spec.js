@@ -5,6 +5,7 @@ import { test, expect, openLab, settledFrames } from './fixtures.js';
 import { PANELS } from '../../src/panels/manifest.js';
 import { seriousViolations } from './audit.js';
 import { mountedHeight, reservedHeight } from './layout.js';
+import { englishPanelTitle } from './englishText.js';
 
 // One walk down the lecture page with reduced motion: every panel has its section, its place kept
 // before it mounts and never taller than it, mounts when it comes near and then settles (nothing
@@ -20,7 +21,7 @@ test('the lecture page, scrolled through: every panel mounts and settles, reduce
   expect(sections.map((s) => s.id)).toEqual(PANELS.map((p) => p.id));
   await expect(page.locator('main > .notice-error')).toHaveCount(0);
   for (const [i, entry] of PANELS.entries()) {
-    expect(sections[i].heading.replace(/\s+/g, ' ')).toBe(entry.title.replace(/_([a-z])/g, '$1'));
+    expect(sections[i].heading.replace(/\s+/g, ' ')).toBe(englishPanelTitle(entry.id).replace(/_([a-z])/g, '$1'));
     expect(sections[i].lede).toContain('(');
     const reserved = await reservedHeight(page, entry.id); // read before it mounts (loading.spec.js: other widths)
     await page.locator(`section[data-panel="${entry.id}"]`).scrollIntoViewIfNeeded();
@@ -34,7 +35,7 @@ test('the lecture page, scrolled through: every panel mounts and settles, reduce
   expect(await page.evaluate(() => window.fresnelLab.hosts['refraction-waves'].values.play)).toBe(false);
   expect(await page.evaluate(() => document.getAnimations().length)).toBe(0);
   expect(await seriousViolations(page), 'dark').toEqual([]);
-  await page.locator('.page-controls select').first().selectOption('light');
+  await page.locator('.page-controls').getByLabel('Theme').selectOption('light');
   await expect(page.locator('html')).toHaveAttribute('data-theme', 'light');
   expect(await seriousViolations(page), 'light').toEqual([]);
 });

@@ -197,7 +197,7 @@ test('a panel’s current view taken from its preview, the exports, and the audi
   }
 
   expect(await seriousViolations(page), 'dark').toEqual([]);
-  await page.locator('.page-controls select').first().selectOption('light');
+  await page.locator('.page-controls').getByLabel('Theme').selectOption('light');
   await expect(page.locator('html')).toHaveAttribute('data-theme', 'light');
   expect(await seriousViolations(page), 'light').toEqual([]);
 });

@@ -191,7 +191,7 @@ test('a link full of garbage loads with notices and defaults; markup in it is qu
 
 test('theme and projector mode are remembered across reloads', async ({ page }) => {
   await openLab(page);
-  await page.locator('.page-controls select').first().selectOption('light');
+  await page.locator('.page-controls').getByLabel('Theme').selectOption('light');
   await page.locator('.page-controls input[type="checkbox"]').check();
   await page.reload();
   await page.evaluate(() => window.fresnelLab.ready);

@@ -104,7 +104,7 @@ test('a composed lecture opens from its link as composed, steps item by item, an
   // The page's own settings reach every item: projector mode, and one material for every panel.
   await page.locator('.page-controls input[type="checkbox"]').check();
   await expect(page.locator('html')).toHaveClass(/projector/);
-  await page.locator('.page-controls select').nth(1).selectOption('water');
+  await page.locator('.page-controls').getByLabel('Material in every panel').selectOption('water');
   await expect.poll(async () => (await values(page, 'spheres')).nT).toBeCloseTo(1.3333, 4);
   for (const key of ['spheres--2', 'r0-derivation']) expect((await values(page, key)).nT, key).toBeCloseTo(1.3333, 4);
 });

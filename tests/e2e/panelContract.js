@@ -4,6 +4,7 @@
 // disposed and comes back with its values when remounted.
 import { expect, expectIdle, settledFrames } from './fixtures.js';
 import { stepDecimals } from '../../src/host/params.js';
+import { english, englishPanelTitle } from './englishText.js';
 
 /** The first parameter, a value for it other than the default, and how the link writes it. */
 export function probeValue(spec) {
@@ -27,8 +28,9 @@ export const schemaOf = (page, id) => page.evaluate((i) => JSON.parse(JSON.strin
 /** The contract, on the embed of manifest `entry` already open in `page`. */
 export async function expectPanelContract(page, entry) {
   const { id } = entry;
-  await expect(page.locator('.embed-title')).toHaveText(entry.title.replace(/_([a-z])/g, '$1')); // n_t as n with subscript t
-  await expect(page).toHaveTitle(`Fresnel Lab: ${entry.title}`);
+  const title = englishPanelTitle(id);
+  await expect(page.locator('.embed-title')).toHaveText(title.replace(/_([a-z])/g, '$1')); // n_t as n with subscript t
+  await expect(page).toHaveTitle(`Fresnel Lab: ${title}`);
   const host = (fn, arg) => page.evaluate(fn, [id, arg]);
   expect(await host(([i]) => window.fresnelLab.hosts[i].mounted)).toBe(true);
 
@@ -98,11 +100,11 @@ export async function expectPanelContract(page, entry) {
   expect(await host(([i]) => ({ ...window.fresnelLab.hosts[i].values }))).toEqual(valuesBefore);
   if (entry.webgl) expect(await host(() => window.fresnelLab.contexts.live)).toBeGreaterThan(0);
   await expect(description).toHaveText(/\d/);
-  const control = page.locator('.lil-controller', { hasText: schema[key].label }).first();
+  const control = page.locator('.lil-controller', { hasText: english.controls[`${id}.${key}`] }).first();
   if (schema[key].type === 'number') {
     expect(Number(await control.locator('input').first().inputValue())).toBeCloseTo(value, 6);
   } else if (schema[key].type === 'enum') {
-    const label = Array.isArray(schema[key].options) ? String(value) : schema[key].options[value];
+    const label = english.controls[`${id}.${key}.${value}`] ?? String(value);
     await expect(control.locator('.lil-display')).toHaveText(label);
   }
 }

@@ -75,8 +75,8 @@ describe('the composer’s list', () => {
   });
 
   it('names items in plain text for the list and the announcements', () => {
-    expect(itemName({ ...panelItem('spheres'), key: 'k' })).toBe(PANELS[0].title);
-    expect(itemName({ ...panelItem('spheres'), heading: ' Mine ', key: 'k' })).toBe(`Mine (${PANELS[0].title})`);
+    expect(itemName({ ...panelItem('spheres'), key: 'k' })).toBe('Exact Fresnel vs Schlick\'s approximation');
+    expect(itemName({ ...panelItem('spheres'), heading: ' Mine ', key: 'k' })).toBe('Mine (Exact Fresnel vs Schlick\'s approximation)');
     expect(itemName({ ...questionItem('critical-angle'), heading: 'Ask', key: 'k' })).toBe('Ask (Question on “The ratio of reflection '
       + 'to refraction depends on the angle”)');
     expect(itemName({ ...textItem('', 'Agenda\nthen more'), key: 'k' })).toBe('Agenda');

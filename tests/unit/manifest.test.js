@@ -1,7 +1,9 @@
 import { readFileSync, readdirSync, existsSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { describe, expect, it } from 'vitest';
-import { PANELS, PANEL_IDS, PLACES_MARKER, lecturePrefix, manifestProblems, placesCss, sectionHtml } from '../../src/panels/manifest.js';
+import {
+  PANELS, PANEL_IDS, PLACES_MARKER, lecturePrefix, manifestProblems, panelTextFrom, placesCss, sectionHtml,
+} from '../../src/panels/manifest.js';
 import { formatValue, parseValue, readParams } from '../../src/host/params.js';
 import { FIXED_PANEL_IDS } from './fixedPanelIds.js';
 
@@ -9,30 +11,37 @@ const root = resolve(import.meta.dirname, '../..');
 const files = readdirSync(resolve(root, 'src/panels'), { withFileTypes: true }).filter((d) => d.isDirectory())
   .flatMap((d) => ['index.js', 'schema.js'].filter((f) => existsSync(resolve(root, 'src/panels', d.name, f))).map((f) => `${d.name}/${f}`));
 const indexHtml = readFileSync(resolve(root, 'index.html'), 'utf8');
+const catalogue = JSON.parse(readFileSync(resolve(root, 'locales/en.json'), 'utf8'));
+const words = catalogue.panels;
+const { controls } = catalogue;
 const modules = Object.fromEntries(await Promise.all(PANEL_IDS.map(async (id) => [id, await import(`../../src/panels/${id}/index.js`)])));
 const schemas = Object.fromEntries(await Promise.all(PANEL_IDS.map(async (id) => [id, (await import(`../../src/panels/${id}/schema.js`)).schema])));
 
 describe('the panel manifest', () => {
   it('agrees with the panel folders and the lecture page', () => {
-    expect(manifestProblems(files, indexHtml)).toEqual([]);
+    expect(manifestProblems(files, words, indexHtml)).toEqual([]);
   });
   it('names what is wrong: a missing module or schema, a stray folder, a hand-written section', () => {
     const problems = manifestProblems([...files.filter((f) => f !== 'metals/index.js' && f !== 'schlick/schema.js'), 'stray/index.js'],
-      indexHtml.replace('<main>', '<main><section data-panel="metals"></section>'));
+      words, indexHtml.replace('<main>', '<main><section data-panel="metals"></section>'));
     expect(problems).toEqual([
       'The panel “schlick” has no src/panels/schlick/schema.js: its parameters (export const schema) come with the page, apart from its module.',
       'The panel “metals” has no module src/panels/metals/index.js.',
       'src/panels/stray/ (index.js) is not in the manifest.',
       'index.html has a hand-written section “metals”: sections come from the manifest.',
     ]);
-    expect(manifestProblems(files, '<main></main>')).toEqual(['index.html has no place for the panel sections.']);
+    expect(manifestProblems(files, words, '<main></main>')).toEqual(['index.html has no place for the panel sections.']);
+    // A panel's words come from the catalogue: one without its lede there is named.
+    const without = Object.fromEntries(Object.entries(words).filter(([key]) => key !== 'asphalt.lede'));
+    expect(manifestProblems(files, without)).toEqual(['The panel “asphalt” has no lede (“asphalt.lede” in locales/en.json, namespace "panels").']);
   });
   it('names a place the entry does not give', () => {
     const { place, ...entry } = PANELS[0];
-    expect(manifestProblems(files.filter((f) => f.startsWith(`${entry.id}/`)), undefined, [{ ...entry, place: { ...place, wide: undefined } }])).toEqual([
+    expect(manifestProblems(files.filter((f) => f.startsWith(`${entry.id}/`)), words, undefined, [{ ...entry, place: { ...place, wide: undefined } }]))
+      .toEqual([
       `The panel “${entry.id}” has no place.wide: the height in px the lecture page keeps for it before it mounts (docs/panels.md).`,
     ]);
-    expect(manifestProblems(files.filter((f) => f.startsWith(`${entry.id}/`)), undefined, [entry])).toHaveLength(3);
+    expect(manifestProblems(files.filter((f) => f.startsWith(`${entry.id}/`)), words, undefined, [entry])).toHaveLength(3);
   });
   it('keeps every id that links and embeds already use', () => {
     // Renaming or removing an id breaks every link and embed made with it; a new panel adds one.
@@ -56,7 +65,7 @@ describe('the panel manifest', () => {
     expect(lecturePrefix('metals')).toBe('metals.');
   });
   it('writes each section with its id, heading, lede and citation', () => {
-    const html = sectionHtml(PANELS.find((p) => p.id === 'r0-derivation'));
+    const html = sectionHtml(PANELS.find((p) => p.id === 'r0-derivation'), panelTextFrom(words, 'r0-derivation'));
     expect(html).toContain('data-panel="r0-derivation"');
     expect(html).toContain('aria-labelledby="r0-derivation-title"');
     expect(html).toContain('n<sub>t</sub>');
@@ -77,7 +86,10 @@ describe.each(PANEL_IDS)('the %s module', (id) => {
   it('has a schema whose defaults are valid values with labels', () => {
     const keys = new Set(Object.keys(module.schema));
     for (const [key, spec] of Object.entries(module.schema)) {
-      expect(spec.label, `${id}.${key} label`).toBeTruthy();
+      // The control's name is the catalogue's (controls namespace), and every option that is a word has one.
+      expect(controls[`${id}.${key}`], `${id}.${key} has a name in locales/en.json`).toBeTruthy();
+      expect(spec.label, `${id}.${key}: names are in the catalogue, not the schema`).toBeUndefined();
+      if (spec.type === 'enum') expect(Array.isArray(spec.options), `${id}.${key} options are ids`).toBe(true);
       expect(parseValue(spec, spec.default), `${id}.${key} default`).toEqual({ ok: true, value: spec.default });
       for (const alias of spec.aliases ?? []) expect(keys.has(alias), `${id}: alias ${alias} is also a key`).toBe(false);
     }
@@ -106,8 +118,8 @@ describe.each(PANEL_IDS)('the %s module', (id) => {
   });
   it('labels its indices in the lecture notation, n_i and n_t', () => {
     for (const key of ['nI', 'nT']) {
-      if (module.schema[key]) expect(module.schema[key].label).toMatch(key === 'nI' ? /^n_i\b/ : /^n_t\b/);
+      if (module.schema[key]) expect(controls[`${id}.${key}`]).toMatch(key === 'nI' ? /^n_i\b/ : /^n_t\b/);
     }
-    for (const spec of Object.values(module.schema)) expect(spec.label).not.toMatch(/n₁|n₂|θ₁|θ₂/);
+    for (const key of Object.keys(module.schema)) expect(controls[`${id}.${key}`]).not.toMatch(/n₁|n₂|θ₁|θ₂/);
   });
 });

@@ -4,7 +4,7 @@
 // offered as a link or a file is exactly what a student's page will accept.
 import { el } from '../../ui/el.js';
 import { setSubscripted } from '../../ui/subscripts.js';
-import { PANELS, panelEntry } from '../../panels/manifest.js';
+import { PANELS } from '../../panels/manifest.js';
 import { copyText, downloadBlob, downloadText } from '../../host/exporters.js';
 import { fileSlug } from '../../ui/format.js';
 import { KIND_NAMES, QUESTIONS } from '../questions.js';
@@ -14,6 +14,7 @@ import { readStartState } from '../readStartState.js';
 import { sheetToCode } from '../sheetCodes.js';
 import { buildScormPackage } from './buildScormPackage.js';
 import { button, field, titledSection } from './formParts.js';
+import { panelTitle } from '../../panels/panelText.js';
 
 /** The page's address for a sheet: homework.html?sheet=CODE. */
 export function sheetUrl(sheet) {
@@ -45,7 +46,7 @@ export function buildComposer(root) {
     if (!questions.length) continue;
     const group = el('fieldset', 'hw-pick-group');
     const legend = el('legend');
-    setSubscripted(legend, panel.title);
+    setSubscripted(legend, panelTitle(panel.id));
     group.append(legend);
     for (const question of questions) {
       const row = el('div', 'hw-pick');
@@ -93,7 +94,7 @@ export function buildComposer(root) {
     const itemProblems = [];
     const items = picks.filter((p) => p.box.checked).map(({ question, state, note }, i) => {
       const read = readStartState(state.value, question.panel);
-      if (!read.ok) itemProblems.push(`Question ${i + 1} (${panelEntry(question.panel).title}): ${read.problem}`);
+      if (!read.ok) itemProblems.push(`Question ${i + 1} (${panelTitle(question.panel)}): ${read.problem}`);
       // The question's own values win over a start state (its numbers depend on them): say which.
       const own = Object.keys(question.state(questionParams(question, 'example')));
       const overridden = Object.keys(read.state ?? {}).filter((k) => own.includes(k));

@@ -6,7 +6,6 @@
 import { el } from '../../ui/el.js';
 import { angle } from '../../ui/format.js';
 import { setSubscripted } from '../../ui/subscripts.js';
-import { panelEntry } from '../../panels/manifest.js';
 import { EMBED_KEYS } from '../../host/readEmbedOptions.js';
 import { KIND_NAMES } from '../questions.js';
 import { MAX_TYPED, gradeAnswer, trueOption } from '../gradeAnswer.js';
@@ -15,6 +14,7 @@ import { createPredictFigure } from './createPredictFigure.js';
 import { watchPanelFrame } from '../../ui/watchPanelFrame.js';
 import { showNotice } from '../../host/showNotice.js';
 import { button, field } from './formParts.js';
+import { panelTitle } from '../../panels/panelText.js';
 
 const UNIT_HINTS = { deg: 'in degrees, e.g. 41.8 or 41.8°', fraction: 'a fraction, e.g. 0.042 or 4.2 %' };
 
@@ -26,7 +26,7 @@ function panelFrame(panelId, state) {
   const frame = el('iframe', 'hw-frame');
   frame.src = url.toString();
   frame.loading = 'lazy';
-  frame.title = `Fresnel Lab: ${panelEntry(panelId).title}`;
+  frame.title = `Fresnel Lab: ${panelTitle(panelId)}`;
   frame.allow = 'fullscreen; clipboard-write';
   return frame;
 }
@@ -42,14 +42,13 @@ function panelFrame(panelId, state) {
 export function buildQuestionCard({
   number, item, question, params, saved, attempts: savedAttempts = 0, lecture, panelsAllowed, onAnswer, onFrame,
 }) {
-  const entry = panelEntry(question.panel);
   const element = el('article', `hw-item hw-${question.kind}`);
   element.id = `question-${number}`;
   const heading = el('h2', 'hw-heading');
   heading.id = `question-${number}-title`;
   heading.append(el('span', 'hw-number', `Question ${number}`), el('span', 'hw-kind', KIND_NAMES[question.kind]));
   const where = el('span', 'hw-panel-name');
-  setSubscripted(where, entry.title);
+  setSubscripted(where, panelTitle(question.panel));
   heading.append(where);
   element.setAttribute('aria-labelledby', heading.id);
   const prompt = el('p', 'hw-prompt');

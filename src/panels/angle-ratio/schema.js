@@ -3,6 +3,6 @@
 import { indexPair } from '../shared/indexPair.js';
 
 export const schema = {
-  theta: { type: 'number', default: 45, min: 0, max: 90, step: 0.1, label: 'Angle of incidence θ_i (°)' },
+  theta: { type: 'number', default: 45, min: 0, max: 90, step: 0.1 },
   ...indexPair({ aliases: { nI: ['n1'], nT: ['n2'] } }),
 };

@@ -5,9 +5,9 @@ import { transmittedIndex } from '../shared/indexPair.js';
 // No published refractive index of bitumen was found; 1.55 is an assumption in the range of
 // organic binders and plastics (1.5–1.6).
 export const schema = {
-  camEl: { type: 'number', default: 6, min: 2, max: 90, step: 0.5, label: 'Camera elevation °' },
-  sunEl: { type: 'number', default: 10, min: 2, max: 45, step: 0.5, label: 'Sun elevation °' },
-  roughness: { type: 'number', default: 0.8, min: 0.2, max: 1, step: 0.01, label: 'Roughness (α = r²)' },
-  ...transmittedIndex({ what: 'binder, assumed', nT: 1.55, aliases: ['n'] }),
-  fresnel: { type: 'boolean', default: true, label: 'Fresnel on' },
+  camEl: { type: 'number', default: 6, min: 2, max: 90, step: 0.5 },
+  sunEl: { type: 'number', default: 10, min: 2, max: 45, step: 0.5 },
+  roughness: { type: 'number', default: 0.8, min: 0.2, max: 1, step: 0.01 },
+  ...transmittedIndex({ nT: 1.55, aliases: ['n'] }),
+  fresnel: { type: 'boolean', default: true },
 };

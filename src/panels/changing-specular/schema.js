@@ -3,9 +3,9 @@
 import { transmittedIndex } from '../shared/indexPair.js';
 
 export const schema = {
-  lightEl: { type: 'number', default: 30, min: 1, max: 90, step: 0.5, label: 'Light elevation °' },
-  viewEl: { type: 'number', default: 30, min: 1, max: 90, step: 0.5, label: 'View elevation °' },
-  linked: { type: 'boolean', default: true, label: 'View follows light (mirror)' },
-  s: { type: 'number', default: 60, min: 1, max: 500, step: 1, label: 'Phong exponent s' },
-  ...transmittedIndex({ what: 'surface', aliases: ['n'] }),
+  lightEl: { type: 'number', default: 30, min: 1, max: 90, step: 0.5 },
+  viewEl: { type: 'number', default: 30, min: 1, max: 90, step: 0.5 },
+  linked: { type: 'boolean', default: true },
+  s: { type: 'number', default: 60, min: 1, max: 500, step: 1 },
+  ...transmittedIndex({ aliases: ['n'] }),
 };

@@ -3,6 +3,6 @@
 import { indexPair } from '../shared/indexPair.js';
 
 export const schema = {
-  theta: { type: 'number', default: 60, min: 0, max: 90, step: 0.01, label: 'θ, angle of incidence (°)' },
+  theta: { type: 'number', default: 60, min: 0, max: 90, step: 0.01 },
   ...indexPair(),
 };

@@ -4,7 +4,7 @@ import { metals } from '../../optics/materials.js';
 import { transmittedIndex } from '../shared/indexPair.js';
 
 export const schema = {
-  metal: { type: 'enum', default: 'gold', options: Object.fromEntries(metals.map((m) => [m.id, m.name])), label: 'Metal (second sphere)' },
-  fresnel: { type: 'enum', default: 'exact', options: { exact: 'Exact', schlick: 'Schlick' }, label: 'Metal sphere uses' },
-  ...transmittedIndex({ what: 'dielectric, first sphere', aliases: ['n'] }),
+  metal: { type: 'enum', default: 'gold', options: metals.map((m) => m.id) },
+  fresnel: { type: 'enum', default: 'exact', options: ['exact', 'schlick'] },
+  ...transmittedIndex({ aliases: ['n'] }),
 };

@@ -6,10 +6,9 @@ import { exponentFromAlpha } from '../../normals/lobeFormulas.js';
 import { levelCount } from '../../normals/momentPyramid.js';
 import { TECHNIQUE_NAMES, TECHNIQUES } from '../../normals/techniqueLayout.js';
 import { normalIncidence } from '../../optics/fresnel.js';
-import { optionLabel } from '../../host/params.js';
+import { optionLabel } from '../panelText.js';
 import { fixed } from '../../ui/format.js';
 import { IOR } from './sceneSettings.js';
-import { schema } from './schema.js';
 
 /** The maps as a sentence names them. */
 const MAP_PHRASES = { bumps: 'bumps', grooves: 'V-grooves', checker: 'the slope checker', noise: 'value noise', mixed: 'the mixed map' };
@@ -30,7 +29,7 @@ export function summaryText(values, { built, maxAnisotropy, floatLinear, problem
   const level = values.level < 0 ? `automatic, ${anisoText}` : `forced to ${Math.min(values.level, levels - 1)}`;
   const chains = built.size ? `all six chains of the ${built.size}² map built in ${fixed(built.ms, 0)} ms (${built.where})`
     : `the six chains of the ${size}² map are being built`;
-  return `${TECHNIQUE_NAMES[values.technique]}, ${optionLabel(schema.precision, values.precision)}, ${values.channels} channels; `
+  return `${TECHNIQUE_NAMES[values.technique]}, ${optionLabel('normal-mips', 'precision', values.precision)}, ${values.channels} channels; `
     + `base Beckmann α = ${values.alpha} (Blinn-Phong s = ${fixed(exponentFromAlpha(values.alpha), 1)}); mip level ${level} `
     + `of 0–${levels - 1}; R0 = ${fixed(normalIncidence(1, IOR), 3)}; ${chains}.`
     + (values.precision === 'f32' && floatLinear === false ? ' This GPU cannot filter 32-bit float textures: pick 16-bit float.' : '')

@@ -5,7 +5,7 @@
 // the state and the runs are the model's (model.js), the words describeNormalMips.js's.
 import { createChainBuilder } from '../../normals/createChainBuilder.js';
 import { levelCount } from '../../normals/momentPyramid.js';
-import { optionLabel } from '../../host/params.js';
+import { optionLabel } from '../panelText.js';
 import { startWebGL } from '../shared/startWebGL.js';
 import { benchChainBuild, watchLongTasks } from './benchChainBuild.js';
 import { buildNormalMipsDom } from './buildNormalMipsDom.js';
@@ -99,7 +99,7 @@ export function mount(root, ctx) {
     const levels = levelCount(size);
     const { chains, pyramid } = model;
     if (has([...CHAIN_KEYS, 'technique', 'alpha']) || !stripStats) {
-      const precisionName = optionLabel(schema.precision, values.precision);
+      const precisionName = optionLabel('normal-mips', 'precision', values.precision);
       const storage = { precision: values.precision, precisionName, channels: Number(values.channels) };
       stripStats = strip.draw(chains, values.technique, values.alpha, storage);
     }

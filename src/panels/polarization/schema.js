@@ -4,5 +4,5 @@ import { indexPair } from '../shared/indexPair.js';
 
 export const schema = {
   ...indexPair({ aliases: { nI: ['n1'], nT: ['n2'] } }),
-  theta: { type: 'number', default: 60, min: 0, max: 90, step: 0.01, label: 'Readout angle θ (°)' },
+  theta: { type: 'number', default: 60, min: 0, max: 90, step: 0.01 },
 };

@@ -3,11 +3,11 @@
 import { transmittedIndex } from '../shared/indexPair.js';
 
 export const schema = {
-  elevation: { type: 'number', default: 30, min: 2, max: 90, step: 0.1, label: 'View elevation ° (90 = straight down)' },
-  ...transmittedIndex({ what: 'surface', nT: 1.333, step: 0.0001, aliases: ['n'] }),
-  depth: { type: 'number', default: 1.5, min: 0.2, max: 5, step: 0.1, label: 'Pool depth (tiles)' },
+  elevation: { type: 'number', default: 30, min: 2, max: 90, step: 0.1 },
+  ...transmittedIndex({ nT: 1.333, step: 0.0001, aliases: ['n'] }),
+  depth: { type: 'number', default: 1.5, min: 0.2, max: 5, step: 0.1 },
   layer: {
-    type: 'enum', default: 'both', label: 'Show F·sky, (1−F)/n²·floor or both',
-    options: { both: 'Both', reflected: 'F·sky only', refracted: '(1 − F)/n²·floor only' },
+    type: 'enum', default: 'both',
+    options: ['both', 'reflected', 'refracted'],
   },
 };

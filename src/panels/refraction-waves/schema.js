@@ -3,9 +3,9 @@
 import { indexPair } from '../shared/indexPair.js';
 
 export const schema = {
-  angle: { type: 'number', default: 30, min: 0, max: 89, step: 0.1, label: 'Incidence angle θ_i °' },
-  ...indexPair({ incident: 'top medium', transmitted: 'bottom medium', step: 0.001, aliases: { nI: ['n1'], nT: ['n2'] } }),
-  reflected: { type: 'boolean', default: false, label: 'Show the reflected wave' },
-  play: { type: 'boolean', default: true, label: 'Play' },
-  speed: { type: 'number', default: 0.5, min: 0.05, max: 2, step: 0.05, label: 'Speed (periods per second)' },
+  angle: { type: 'number', default: 30, min: 0, max: 89, step: 0.1 },
+  ...indexPair({ step: 0.001, aliases: { nI: ['n1'], nT: ['n2'] } }),
+  reflected: { type: 'boolean', default: false },
+  play: { type: 'boolean', default: true },
+  speed: { type: 'number', default: 0.5, min: 0.05, max: 2, step: 0.05 },
 };

@@ -4,5 +4,5 @@ import { indexPair } from '../shared/indexPair.js';
 
 export const schema = {
   ...indexPair(),
-  theta: { type: 'number', default: 60, min: 0, max: 90, step: 0.01, label: 'θ for the readout (°)' },
+  theta: { type: 'number', default: 60, min: 0, max: 90, step: 0.01 },
 };

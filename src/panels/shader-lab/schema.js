@@ -4,13 +4,13 @@ import { EXERCISE_TITLES, MAX_CODE } from './exerciseTitles.js';
 import { decodeCode, encodeCode } from './codeCodec.js';
 
 export const schema = {
-  exercise: { type: 'enum', default: 'schlick', options: EXERCISE_TITLES, label: 'Exercise' },
+  exercise: { type: 'enum', default: 'schlick', options: Object.keys(EXERCISE_TITLES) },
   // Empty: the exercise's starting code. The editor shows the code; the link keeps it compact.
   // Twice the panel's own limit: longer code reaches the panel, which refuses it in its own words.
   code: {
-    type: 'text', default: '', maxLength: 2 * MAX_CODE, encode: encodeCode, decode: decodeCode, label: 'GLSL code',
+    type: 'text', default: '', maxLength: 2 * MAX_CODE, encode: encodeCode, decode: decodeCode,
     defaultText: 'the exercise’s starting code',
   },
-  precision: { type: 'enum', default: 'highp', options: { highp: 'highp', mediump: 'mediump' }, label: 'Map precision' },
-  homework: { type: 'boolean', default: false, label: 'Homework mode (no reference answers)' },
+  precision: { type: 'enum', default: 'highp', options: ['highp', 'mediump'] },
+  homework: { type: 'boolean', default: false },
 };

@@ -8,26 +8,24 @@ const INDEX_RANGE = { min: 1, max: 3 };
 /**
  * { nI, nT } schema entries. aliases: older URL keys of each ({ nI: ['n1'], nT: ['n2'] }), so
  * links shared before the rename still open the same view.
- * @param {{ incident?: string, transmitted?: string, nI?: number, nT?: number, step?: number,
- *   aliases?: { nI?: string[], nT?: string[] } }} [options]
+ * Their labels are the panel's words (the catalogue's "controls" namespace, `<panel>.nI`).
+ * @param {{ nI?: number, nT?: number, step?: number, aliases?: { nI?: string[], nT?: string[] } }} [options]
  * @returns {import('../../host/panelContract.js').Schema}
  */
-export function indexPair({
-  incident = 'incident side', transmitted = 'transmitted side', nI = 1, nT = 1.5, step = 0.0001, aliases = {},
-} = {}) {
+export function indexPair({ nI = 1, nT = 1.5, step = 0.0001, aliases = {} } = {}) {
   return {
-    nI: { type: 'number', default: nI, ...INDEX_RANGE, step, label: `n_i (${incident})`, aliases: aliases.nI },
-    nT: { type: 'number', default: nT, ...INDEX_RANGE, step, label: `n_t (${transmitted})`, aliases: aliases.nT },
+    nI: { type: 'number', default: nI, ...INDEX_RANGE, step, aliases: aliases.nI },
+    nT: { type: 'number', default: nT, ...INDEX_RANGE, step, aliases: aliases.nT },
   };
 }
 
 /**
  * { nT } for a medium lit from air (n_i = 1): a coat, a road, a pool. aliases: older keys (['n']).
- * @param {{ what: string, nT?: number, step?: number, aliases?: string[] }} options
+ * @param {{ nT?: number, step?: number, aliases?: string[] }} options
  * @returns {import('../../host/panelContract.js').Schema}
  */
-export function transmittedIndex({ what, nT = 1.5, step = 0.001, aliases }) {
-  return { nT: { type: 'number', default: nT, ...INDEX_RANGE, step, label: `n_t (${what})`, aliases } };
+export function transmittedIndex({ nT = 1.5, step = 0.001, aliases }) {
+  return { nT: { type: 'number', default: nT, ...INDEX_RANGE, step, aliases } };
 }
 
 /**

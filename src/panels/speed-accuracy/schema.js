@@ -1,18 +1,15 @@
 // Parameters of the `speed-accuracy` panel: controls, URL keys and messages all use them. Pure data
 // (no DOM), loaded with the page so the panel's link and state work before its module arrives.
-import { DEFAULT_BUDGET, DISPLAY_BUDGETS } from '../../methods/displayBudgets.js';
-import { SCENES } from '../../methods/scenes.js';
-import { ERROR_SOURCES } from './errorSources.js';
+import { BUDGET_IDS, DEFAULT_BUDGET, SCENE_IDS } from '../../methods/ids.js';
 
 export const schema = {
-  scene: { type: 'enum', default: 'plastic', options: Object.fromEntries(SCENES.map((s) => [s.id, s.label])), label: 'Scene' },
+  scene: { type: 'enum', default: 'plastic', options: [...SCENE_IDS] },
   budget: {
-    type: 'enum', default: DEFAULT_BUDGET, options: Object.fromEntries(DISPLAY_BUDGETS.map((b) => [b.id, b.label])), label: 'Error budget',
+    type: 'enum', default: DEFAULT_BUDGET, options: [...BUDGET_IDS],
   },
-  errors: { type: 'enum', default: 'js', options: ERROR_SOURCES, label: 'Error measured by' },
+  errors: { type: 'enum', default: 'js', options: ['js', 'gpu-highp', 'gpu-mediump'] },
   cost: {
     type: 'enum', default: 'gpu',
-    options: { gpu: 'GPU ns per evaluation', cpu: 'CPU ns per evaluation (JS)', static: 'Static instruction count' },
-    label: 'Cost axis',
+    options: ['gpu', 'cpu', 'static'],
   },
 };

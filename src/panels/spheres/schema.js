@@ -5,15 +5,15 @@ import { indexPair } from '../shared/indexPair.js';
 const ERROR_SCALES = ['auto', '0.005', '0.01', '0.02', '0.05', '0.1', '0.2', '0.5', '1'];
 
 export const schema = {
-  ...indexPair({ transmitted: 'sphere' }),
-  kd: { type: 'color', default: '#a3241c', label: 'kd (diffuse)' },
-  ks: { type: 'color', default: '#ffffff', label: 'ks (coating)' },
-  lightAz: { type: 'number', default: 35, min: -180, max: 180, step: 1, label: 'Light azimuth °' },
-  lightEl: { type: 'number', default: 40, min: -10, max: 90, step: 1, label: 'Light elevation °' },
-  env: { type: 'number', default: 1, min: 0, max: 2, step: 0.01, label: 'Environment strength' },
-  errScale: { type: 'enum', default: 'auto', options: ERROR_SCALES, label: 'Heatmap top (error)' },
-  viewAz: { type: 'number', default: 0, min: -180, max: 180, step: 0.1, label: 'View azimuth °' },
-  viewEl: { type: 'number', default: 12, min: -85, max: 85, step: 0.1, label: 'View elevation °' },
-  viewDist: { type: 'number', default: 6, min: 2.2, max: 10, step: 0.01, label: 'View distance' },
+  ...indexPair(),
+  kd: { type: 'color', default: '#a3241c' },
+  ks: { type: 'color', default: '#ffffff' },
+  lightAz: { type: 'number', default: 35, min: -180, max: 180, step: 1 },
+  lightEl: { type: 'number', default: 40, min: -10, max: 90, step: 1 },
+  env: { type: 'number', default: 1, min: 0, max: 2, step: 0.01 },
+  errScale: { type: 'enum', default: 'auto', options: ERROR_SCALES },
+  viewAz: { type: 'number', default: 0, min: -180, max: 180, step: 0.1 },
+  viewEl: { type: 'number', default: 12, min: -85, max: 85, step: 0.1 },
+  viewDist: { type: 'number', default: 6, min: 2.2, max: 10, step: 0.01 },
 };
 

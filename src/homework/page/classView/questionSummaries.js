@@ -10,6 +10,7 @@ import { fixed } from '../../../ui/format.js';
 import { setSubscripted } from '../../../ui/subscripts.js';
 import { KIND_NAMES, questionById } from '../../questions.js';
 import { panelEntry } from '../../../panels/manifest.js';
+import { panelTitle } from '../../../panels/panelText.js';
 
 const CARDS_PER_TASK = 8;
 const nextTask = () => new Promise((resolve) => { setTimeout(resolve, 0); });
@@ -162,7 +163,7 @@ export async function questionSummaries(view, { onShow }) {
     heading.id = `class-q${i + 1}`;
     card.setAttribute('aria-labelledby', heading.id);
     const panel = el('span', 'hw-panel-name');
-    setSubscripted(panel, panelEntry(question.panel)?.title ?? question.panel);
+    setSubscripted(panel, panelEntry(question.panel) ? panelTitle(question.panel) : question.panel);
     heading.append(el('span', null, `Question ${i + 1}`), el('span', 'hw-kind', KIND_NAMES[question.kind]), panel);
     card.append(heading);
     if (summary.shown) {

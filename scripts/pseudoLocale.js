@@ -1,0 +1,53 @@
+// Pseudo-locales made from the English catalogue, so that a test can see every word the lab shows
+// come from the catalogue and fit its place: each message's text accented (the letters stay
+// readable), about 35 % longer (the growth of a long translation) and bracketed ⟦ … ⟧, so a word
+// outside brackets on screen was never in the catalogue. Arguments, plural and select branches and
+// markup tags (<sub>…</sub>) are kept as they are. Parsed with @messageformat/parser and written
+// back in ICU MessageFormat.
+import { parse } from '@messageformat/parser';
+
+export const OPEN = '⟦';
+export const CLOSE = '⟧';
+const ACCENTS = Object.fromEntries([...'aáeéiíoóuúyýcçnñAÁEÉIÍOÓUÚYÝCÇNÑ'].reduce((pairs, ch, i, all) => (i % 2 ? pairs : [...pairs, [ch, all[i + 1]]]), []));
+const GROWTH = 0.35;
+
+/** Letters accented, markup tags and entities left alone. */
+function accent(text) {
+  return text.replace(/(<[^>]*>|&[a-z#0-9]+;)|([A-Za-z])/g, (whole, tag, letter) => (tag ? tag : ACCENTS[letter] ?? letter));
+}
+
+/** Text as it must be written inside an ICU message (apostrophes doubled; braces and # quoted). */
+const quote = (text, inPlural) => text.replace(/'/g, "''").replace(inPlural ? /[{}#]+/g : /[{}]+/g, (m) => `'${m}'`);
+
+function write(tokens, inPlural = false) {
+  return tokens.map((token) => {
+    switch (token.type) {
+      case 'content': return quote(accent(token.value), inPlural);
+      case 'argument': return `{${token.arg}}`;
+      case 'function': return `{${token.arg}, ${token.key}${token.param ? `, ${write(token.param)}` : ''}}`;
+      case 'octothorpe': return '#';
+      default: {
+        const offset = token.pluralOffset ? ` offset:${token.pluralOffset}` : '';
+        const cases = token.cases.map((c) => `${c.key} {${write(c.tokens, token.type !== 'select')}}`).join(' ');
+        return `{${token.arg}, ${token.type},${offset} ${cases}}`;
+      }
+    }
+  }).join('');
+}
+
+/** Letters in a message's text (not its arguments), for the growth. */
+const textLength = (tokens) => tokens.reduce((n, t) => n + (t.type === 'content' ? t.value.replace(/<[^>]*>/g, '').length
+  : t.cases ? Math.max(0, ...t.cases.map((c) => textLength(c.tokens))) : 0), 0);
+
+/** One message, pseudo-localised. */
+export function pseudoMessage(message) {
+  const tokens = parse(message);
+  const pad = '·'.repeat(Math.ceil(GROWTH * textLength(tokens)));
+  return `${OPEN}${write(tokens)}${pad ? ` ${pad}` : ''}${CLOSE}`;
+}
+
+/** A whole catalogue ({ namespace: { key: message } }), pseudo-localised. */
+export function pseudoCatalogue(english) {
+  return Object.fromEntries(Object.entries(english).map(([namespace, messages]) => [namespace,
+    Object.fromEntries(Object.entries(messages).map(([key, message]) => [key, pseudoMessage(message)]))]));
+}

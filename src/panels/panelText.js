@@ -1,0 +1,41 @@
+// A panel's words in the page's language, from the catalogue's "panels" namespace (the manifest,
+// src/panels/manifest.js, holds what is not words): its title as plain text, its title with markup
+// for a heading, its lede and its citation (markup as the catalogue has it: richText.js); and from
+// its "controls" namespace the names of its controls and of their options (`<panel>.<key>`,
+// `<panel>.<key>.<value>`), which come with the page, before any panel's module, since a notice
+// about a value in the link names its control.
+import english from 'virtual:messages/en/panels';
+import controlWords from 'virtual:messages/en/controls';
+import { messages } from '../i18n/messages.js';
+import { plainText } from '../i18n/richText.js';
+
+const t = messages('panels', english);
+const controls = messages('controls', controlWords);
+const has = (key) => Object.hasOwn(english, key);
+
+/** Plain text: the embed heading, window titles, the controls' title. */
+export const panelTitle = (id) => plainText(t(`${id}.title`));
+
+/** The heading with its markup (n<sub>t</sub>), where the catalogue has one; else the title. */
+export const panelTitleHtml = (id) => (has(`${id}.titleHtml`) ? t(`${id}.titleHtml`) : t(`${id}.title`));
+
+/** The lede (markup) under the heading. */
+export const panelLede = (id) => t(`${id}.lede`);
+
+/** Where in the lecture, or beyond it, the concept comes from (markup). */
+export const panelCite = (id) => t(`${id}.cite`);
+
+/** All four, as sectionHtml takes them. */
+export const panelText = (id) => ({ title: panelTitle(id), titleHtml: panelTitleHtml(id), lede: panelLede(id), cite: panelCite(id) });
+
+/** The name of a panel's control (a schema key), in the page's language. */
+export const controlLabel = (id, key) => controls(`${id}.${key}`);
+
+/**
+ * The name an enum control shows for one of its values: its own words where the catalogue has
+ * them, else the value itself (a size, a number of taps).
+ */
+export function optionLabel(id, key, value) {
+  const path = `${id}.${key}.${value}`;
+  return Object.hasOwn(controlWords, path) ? controls(path) : String(value);
+}
