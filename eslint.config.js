@@ -25,7 +25,16 @@ export default [
     },
     rules: { 'no-unused-vars': ['error', { argsIgnorePattern: '^_' }] },
   },
-  { files: ['src/**/*.js'], rules: { 'no-restricted-syntax': ['error', ...LOCALE_RULES] } },
+  {
+    // No line of the sources is longer than 140 characters (scripts/lintLines.js holds CSS, GLSL and
+    // HTML to the same): a page that reads on a laptop beside the running lab, and a review diff
+    // that needs no sideways scrolling.
+    files: ['src/**/*.js'],
+    rules: {
+      'no-restricted-syntax': ['error', ...LOCALE_RULES],
+      'max-len': ['error', { code: 140, tabWidth: 2, ignoreUrls: false, ignoreStrings: false, ignoreTemplateLiterals: false }],
+    },
+  },
   {
     // A number a panel shows goes through src/ui/format.js: a real minus sign (U+2212) and the
     // decimals that column keeps. Markup numbers and TeX have their own helpers there and in tex.js.
