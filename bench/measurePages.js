@@ -81,30 +81,43 @@ function timeUpdates(page, url, { width, height, key, values, updates, warmup, r
   }, { url, width, height, key, values, updates, warmup, runs });
 }
 
-/** The hero embed against the peer, both width × height, in `rounds` interleaved rounds. */
+/**
+ * The hero embed against two peers, all width × height, in `rounds` interleaved rounds: three.js's
+ * MeshPhysicalMaterial with a clear coat (bench/peer.html, the look of the hero's coated plastic)
+ * and without one (?clearcoat=0, the plainer and cheaper material).
+ */
 export async function heroVsPeer(browser, base, { width = 1500, height = 600, rounds = 5, updates = 16, warmup = 6 } = {}) {
   const { context, page } = await hostPage(browser, base, { width: width + 40, height: height + 40 });
   const spec = { width, height, key: 'nT', values: [1.45, 1.55, 1.65, 1.75], updates, warmup };
   const hero = [];
   const peer = [];
+  const plain = [];
   const ratios = [];
+  const plainRatios = [];
   try {
     for (let r = 0; r < rounds; r += 1) {
       const h = await timeUpdates(page, `${base}embed.html?panel=spheres`, spec);
       const p = await timeUpdates(page, `${base}bench/peer.html`, spec);
+      const q = await timeUpdates(page, `${base}bench/peer.html?clearcoat=0`, spec);
       hero.push(...h);
       peer.push(...p);
+      plain.push(...q);
       ratios.push(h[0] / p[0]);
+      plainRatios.push(h[0] / q[0]);
     }
   } finally {
     await context.close();
   }
+  const scene = 'three.js MeshPhysicalMaterial, 3 spheres of 64×32 segments, RoomEnvironment through PMREM, antialias';
   return {
     width, height, rounds, updates,
     hero: { msPerUpdate: spread(hero), samples: hero },
-    peer: { msPerUpdate: spread(peer), samples: peer, scene: 'three.js MeshPhysicalMaterial, 3 spheres of 64×32 segments, RoomEnvironment through PMREM, antialias' },
+    peer: { msPerUpdate: spread(peer), samples: peer, scene: `${scene}, clear coat` },
+    plainPeer: { msPerUpdate: spread(plain), samples: plain, scene: `${scene}, no clear coat` },
     ratio: median(hero) / median(peer),
     ratioPerRound: ratios,
+    plainRatio: median(hero) / median(plain),
+    plainRatioPerRound: plainRatios,
   };
 }
 

@@ -9,6 +9,8 @@ export function pagesTable(pages) {
     `Hero embed ${hero.width}×${hero.height} vs three.js peer, ms per update (runs of ${hero.updates} set → rendered), median [min, max] over ${hero.rounds} interleaved rounds:`,
     `  hero ${ms(hero.hero.msPerUpdate)}, peer ${ms(hero.peer.msPerUpdate)}, hero/peer ${hero.ratio.toFixed(2)} `
       + `(per round ${hero.ratioPerRound.map((r) => r.toFixed(2)).join(', ')})`,
+    ...(hero.plainPeer ? [`  peer without clear coat ${ms(hero.plainPeer.msPerUpdate)}, hero/plain peer ${hero.plainRatio.toFixed(2)} `
+      + `(per round ${hero.plainRatioPerRound.map((r) => r.toFixed(2)).join(', ')})`] : []),
     `WebGL panels in a ${panels.width}×${panels.height} embed, ms per update and its ratio to the hero's in the same round, `
       + `median [min, max] over ${panels.runs ?? 3} interleaved rounds:`,
     ...Object.entries(panels.panels).map(([id, p]) => `  ${id.padEnd(18)} ${ms(p.msPerUpdate)} (${p.key})`

@@ -1,10 +1,11 @@
 // An RGBA32F render target (a texture and its framebuffer, no depth) for passes whose results are
 // read back or accumulated in float. Needs EXT_color_buffer_float, which the caller enables.
+// With internalFormat RGBA8 it keeps a picture as the canvas would show it (always renderable).
 
 /** A read-back that cannot finish: the context was lost while it waited (even if it is back now). */
 export class ContextLostError extends Error {}
 
-export function createFloatTarget(gl) {
+export function createFloatTarget(gl, internalFormat = gl.RGBA32F) {
   let texture = null;
   let framebuffer = null;
   const target = {
@@ -19,7 +20,7 @@ export function createFloatTarget(gl) {
       target.height = height;
       texture = gl.createTexture();
       gl.bindTexture(gl.TEXTURE_2D, texture);
-      gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA32F, width, height);
+      gl.texStorage2D(gl.TEXTURE_2D, 1, internalFormat, width, height);
       gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
       gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
       gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);

@@ -3,6 +3,7 @@
 // no geometry, no depth or stencil buffer, no MSAA (shaders anti-alias their own edges). Renders on
 // demand, counts against the context budget, survives a lost context, and reads pixels back for
 // tests and exports.
+import { createBackdrop } from './createBackdrop.js';
 import { cappedPixelRatio } from './cappedPixelRatio.js';
 import { createContext } from './createContext.js';
 import { createFloatTarget } from './createFloatTarget.js';
@@ -21,12 +22,19 @@ import { onDemand } from './onDemand.js';
  * uniform costs the finishing pass alone. Without float render targets (EXT_color_buffer_float) the
  * fragment is compiled with neither define and does everything in one pass. shaders/keptTerms.glsl
  * holds the fragment's side of this.
+ * backdrop: { live, regions(width, height) } for a fragment whose live uniforms show only inside
+ * some rectangles (createBackdrop.js): the rest is kept and copied, and the fragment is drawn
+ * inside the rectangles alone. Not with cache.
  * @param {HTMLCanvasElement} canvas
  * @param {{
- *   fragment: string, uniforms?: Record<string, { value: any }>, onFrame?: () => void, maxPixels?: number, cache?: { live: string[] }
+ *   fragment: string, uniforms?: Record<string, { value: any }>, onFrame?: () => void, maxPixels?: number,
+ *   cache?: { live: string[] }, backdrop?: { live: string[], regions: (width: number, height: number) => number[][] }
  * }} options
  */
-export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, maxPixels = 1_500_000, cache = null }) {
+export function createShaderView(canvas, {
+  fragment, uniforms = {}, onFrame, maxPixels = 1_500_000, cache = null, backdrop = null,
+}) {
+  if (cache && backdrop) throw new TypeError('A shader view keeps either terms (cache) or a backdrop, not both.');
   const context = createContext(canvas);
   const { gl } = context;
   const source = assembleShader(fragment);
@@ -36,12 +44,16 @@ export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, max
   let terms = null; // the float target of the cached terms
   let termsKey = null; // the uniforms (but the live ones) and the size they were drawn for
   let termsDrawn = 0;
+  let kept = null; // the backdrop (createBackdrop.js)
+  let onePass = null; // the fragment without a backdrop, compiled when asked for (drawOnePass)
   function build() {
     const split = cached();
-    program = createProgram(gl, split ? `#define CACHED\n${source}` : source);
+    program = createProgram(gl, split ? `#define CACHED\n${source}` : backdrop ? `#define BACKDROP\n${source}` : source);
     termsProgram = split ? createProgram(gl, `#define CACHE_PASS\n${source}`) : null;
     terms = split ? createFloatTarget(gl) : null;
     termsKey = null;
+    kept = backdrop ? createBackdrop(gl, source, backdrop) : null;
+    onePass = null;
   }
   build();
   const allUniforms = { ...uniforms, uResolution: { value: [1, 1] } };
@@ -62,8 +74,25 @@ export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, max
     termsDrawn += 1;
   }
 
+  // The kept pixels, then the fragment inside each region (the scissor keeps it there).
+  function drawOverBackdrop() {
+    const regions = kept.copy(allUniforms);
+    program.setUniforms({ ...allUniforms, uBackdrop: { value: 0 } });
+    gl.enable(gl.SCISSOR_TEST);
+    for (const [x, y, w, h] of regions) {
+      gl.scissor(x, y, w, h);
+      program.draw();
+    }
+    gl.disable(gl.SCISSOR_TEST);
+  }
+
   function draw() {
     if (gl.isContextLost()) return;
+    if (kept) {
+      drawOverBackdrop();
+      onFrame?.();
+      return;
+    }
     if (terms) {
       drawTerms();
       gl.activeTexture(gl.TEXTURE0);
@@ -110,6 +139,19 @@ export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, max
     get program() { return program.program; },
     /** How many times the cached terms were drawn (0 without a cache). */
     get termsDrawn() { return termsDrawn; },
+    /** How many times the kept backdrop was drawn (0 without one). */
+    get backdropDrawn() { return kept?.drawn ?? 0; },
+    /**
+     * Draws the whole picture in one full-screen pass, backdrop or no (the benchmark times it
+     * against the kept backdrop; tests compare the two pictures). Not counted as a frame.
+     */
+    drawOnePass() {
+      if (gl.isContextLost()) return;
+      onePass ??= createProgram(gl, source);
+      gl.viewport(0, 0, gl.drawingBufferWidth, gl.drawingBufferHeight);
+      onePass.setUniforms(allUniforms);
+      onePass.draw();
+    },
     /** Drawing-buffer pixels per CSS pixel. */
     get pixelRatio() { return size.ratio; },
     /** Schedules one frame (coalesced with any others this animation frame). */
@@ -136,6 +178,8 @@ export function createShaderView(canvas, { fragment, uniforms = {}, onFrame, max
       program.dispose();
       termsProgram?.dispose();
       terms?.dispose();
+      kept?.dispose();
+      onePass?.dispose();
       context.dispose();
     },
   };

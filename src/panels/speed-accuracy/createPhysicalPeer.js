@@ -13,7 +13,9 @@ import { createRenderer } from '../../gl/createRenderer.js';
 import { onDemand } from '../../gl/onDemand.js';
 
 /** canvas: sized by CSS (width × height); the peer draws at its size, capped like the hero. */
-export function createPhysicalPeer(canvas, { width, height, nT = 1.5, color = '#a3241c', onFrame } = {}) {
+export function createPhysicalPeer(canvas, {
+  width, height, nT = 1.5, color = '#a3241c', clearcoat = true, onFrame,
+} = {}) {
   const renderer = createRenderer(canvas, { antialias: true });
   renderer.autoClear = true;
   renderer.setPixelRatio(cappedPixelRatio(width, height, window.devicePixelRatio));
@@ -25,7 +27,7 @@ export function createPhysicalPeer(canvas, { width, height, nT = 1.5, color = '#
   scene.background = new Color(0x8fa9c8); // a flat sky: the peer is spared the hero's environment background
   const geometry = new SphereGeometry(1, 64, 32);
   const material = new MeshPhysicalMaterial({
-    color: new Color(color), roughness: 0.5, clearcoat: 1, clearcoatRoughness: 0.02, ior: nT,
+    color: new Color(color), roughness: 0.5, clearcoat: clearcoat ? 1 : 0, clearcoatRoughness: 0.02, ior: nT,
   });
   for (const x of [-2.3, 0, 2.3]) {
     const sphere = new Mesh(geometry, material);

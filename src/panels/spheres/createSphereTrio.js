@@ -5,7 +5,7 @@
 import { createShaderView } from '../../gl/createShaderView.js';
 import { hexToLinear } from '../../ui/srgb.js';
 import fragment from './spheres.frag.glsl?raw';
-import { hitSphere, rayThrough, trioCamera, VIEW_COUNT } from './trioCamera.js';
+import { hitSphere, rayThrough, sphereSquares, trioCamera, VIEW_COUNT } from './trioCamera.js';
 
 export const SPHERE_MODES = ['exact', 'schlick', 'error'];
 
@@ -18,9 +18,17 @@ export function createSphereTrio(canvas, { onChange, onFrame } = {}) {
     uSunDir: { value: [0, 1, 0] }, uEnvStrength: { value: 1 }, uErrScale: { value: 0.05 },
     uSingle: { value: -1 },
   };
-  const shaderView = createShaderView(canvas, { fragment, uniforms, onFrame, maxPixels: 1_500_000 });
   const view = { azimuth: 0, elevation: 15, distance: 6 };
   let camera = trioCamera(view);
+  // The sky depends on the camera, the sun and the environment's strength only: it is kept, and a
+  // change of the optics or the colours redraws the squares round the spheres alone.
+  const backdrop = {
+    live: ['uNI', 'uNT', 'uKd', 'uKs', 'uErrScale'],
+    regions: (width, height) => sphereSquares(
+      { distance: view.distance, tanHalfFov: camera.tanHalfFov }, width, height, uniforms.uSingle.value < 0 ? VIEW_COUNT : 1,
+    ),
+  };
+  const shaderView = createShaderView(canvas, { fragment, uniforms, onFrame, maxPixels: 1_500_000, backdrop });
 
   function placeCamera() {
     camera = trioCamera(view);

@@ -4,6 +4,8 @@
 // coverage of the pixel, the background is the environment the spheres reflect. The sphere is a
 // coated diffuse surface, k = mix(kd, ks, F) (lecture, "Fresnel reflection in lighting"): the
 // lecture's heuristic, one F at the view angle; fresnel-lighting shows the layered coat beside it.
+// The sky around the spheres depends on no optical constant: it is kept between frames, and a
+// change of n redraws only the square round each sphere (createSphereTrio.js).
 precision highp float;
 #include <fresnel>
 #include <environment>
@@ -23,6 +25,9 @@ uniform vec3 uKd;          // linear RGB
 uniform vec3 uKs;          // linear RGB
 uniform float uEnvStrength;
 uniform float uErrScale;   // the error that maps to the top of the legend
+#ifdef BACKDROP
+uniform sampler2D uBackdrop; // the sky, kept (createBackdrop.js)
+#endif
 out vec4 fragColor;
 
 // Each view evaluates only what it shows (the mode is the same over a whole view, so the branch
@@ -52,6 +57,18 @@ void main() {
   float b = dot(uEye, dir);
   float d = sqrt(max(dot(uEye, uEye) - b * b, 0.0));
   float coverage = clamp(0.5 + (1.0 - d) / max(fwidth(d), 1e-6), 0.0, 1.0);
+#ifdef BACKDROP_PASS
+  // The kept sky (createBackdrop.js): outside the squares round the spheres it is the picture.
+  fragColor = vec4(linearToSrgb(environment(dir) * max(uEnvStrength, 0.15)), 1.0);
+  return;
+#endif
+#ifdef BACKDROP
+  // Drawn only in the square round each sphere: the sky beside the disc is the kept pixel itself.
+  if (coverage <= 0.0) {
+    fragColor = texelFetch(uBackdrop, ivec2(gl_FragCoord.xy), 0);
+    return;
+  }
+#endif
   // The background (the environment the spheres reflect) only where the sphere does not cover the pixel.
   vec3 background = coverage < 1.0 ? linearToSrgb(environment(dir) * max(uEnvStrength, 0.15)) : vec3(0.0);
   if (coverage <= 0.0) {

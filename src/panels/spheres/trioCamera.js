@@ -49,3 +49,32 @@ export function hitSphere(eye, dir) {
   const normal = [0, 1, 2].map((i) => eye[i] + t * dir[i]);
   return { normal, cosTheta: Math.min(1, Math.max(0, -dot(normal, dir))) };
 }
+
+/**
+ * The square round each view's sphere, in drawing-buffer pixels [x, y, width, height] (origin
+ * bottom left), clipped to its view: outside them every pixel is sky. The camera looks at the
+ * sphere's centre, so its silhouette is a circle about the view's centre whose rays make the angle
+ * α = asin(1/distance) with the axis: a radius of tan α / tan(fov/2) half-heights. A pixel belongs to
+ * the view that spheres.frag.glsl gives it (floor of its centre over the view width); the margin
+ * holds the anti-aliased rim, which reaches about a pixel past the silhouette.
+ * @param {{ distance: number, tanHalfFov: number }} camera distance: |eye|
+ * @param {number} width drawing-buffer pixels
+ * @param {number} height
+ * @param {number} count views side by side (1 or VIEW_COUNT)
+ */
+export function sphereSquares({ distance, tanHalfFov }, width, height, count, margin = 3) {
+  const radius = (Math.tan(Math.asin(Math.min(1, 1 / distance))) / tanHalfFov) * (height / 2) + margin;
+  const viewWidth = width / count;
+  // Pixel x has its centre x + 0.5 in view floor((x + 0.5) / viewWidth) (the last view takes the rest).
+  const firstPixel = (slot) => (slot >= count ? width : Math.max(0, Math.ceil(slot * viewWidth - 0.5)));
+  const squares = [];
+  for (let slot = 0; slot < count; slot += 1) {
+    const cx = (slot + 0.5) * viewWidth;
+    const x0 = Math.max(firstPixel(slot), Math.floor(cx - radius - 0.5));
+    const x1 = Math.min(firstPixel(slot + 1), Math.ceil(cx + radius + 0.5));
+    const y0 = Math.max(0, Math.floor(height / 2 - radius - 0.5));
+    const y1 = Math.min(height, Math.ceil(height / 2 + radius + 0.5));
+    if (x1 > x0 && y1 > y0) squares.push([x0, y0, x1 - x0, y1 - y0]);
+  }
+  return squares;
+}
