@@ -112,8 +112,10 @@ const pages = {
   compose: resolve(root, 'compose.html'),
   // An example reveal.js deck with embedded panels (examples/deck.html), shipped with the site.
   deck: resolve(root, 'examples/deck.html'),
-  // npm run bench also builds the three.js peer the hero is measured against (not shipped).
-  ...(process.env.FRESNEL_LAB_BENCH_PEER === '1' ? { peer: resolve(root, 'bench/peer.html') } : {}),
+  // npm run bench also builds the three.js peer the hero is measured against, and the real-GPU
+  // check's page (bench/gpu/); neither is shipped.
+  ...(process.env.FRESNEL_LAB_BENCH_PEER === '1'
+    ? { peer: resolve(root, 'bench/peer.html'), gpu: resolve(root, 'bench/gpu/gpu.html') } : {}),
 };
 
 // Relative base: the built site works from any sub-path (a course page, a USB stick).
