@@ -5,7 +5,8 @@ import { expect, openDeck } from './fixtures.js';
 /**
  * Opens the deck page with embed.html?<query> in an iframe (#panel) and waits for `ready`.
  * Returns helpers: send(message), all(type) (the data of every message of that type so far),
- * count(type), waitFor(type, count) (resolves the newest one) and frame (the embed's Frame).
+ * count(type), waitFor(type, count) (resolves the newest one), delivered(message) and frame (the
+ * embed's Frame).
  */
 export async function embedInDeck(page, baseURL, query, { width = 900, height = 700, waitReady = true } = {}) {
   await openDeck(page);
@@ -30,6 +31,22 @@ export async function embedInDeck(page, baseURL, query, { width = 900, height = 
       return (await all(type)).at(-1);
     },
     get frame() { return page.frames().find((f) => f.url().includes('embed.html')); },
+    /**
+     * Sends a message and waits until the embed's window has dispatched it: a listener added now,
+     * after the lab's own, hears it once the lab's has run. The acknowledgement that a message the
+     * lab must ignore has reached it, for panels that answer nothing.
+     */
+    async delivered(message) {
+      const heard = () => api.frame.evaluate(() => window.__heard?.length ?? 0);
+      await api.frame.evaluate(() => {
+        if (window.__heard) return;
+        window.__heard = [];
+        window.addEventListener('message', (event) => window.__heard.push(event.data));
+      });
+      const before = await heard();
+      await api.send(message);
+      await expect.poll(heard, { message: 'the embed received the message' }).toBe(before + 1);
+    },
   };
   await expect.poll(() => Boolean(api.frame), { message: 'the embed frame' }).toBe(true);
   if (waitReady) await api.waitFor('fresnel-lab:ready');

@@ -61,20 +61,32 @@ export async function settledFrames(page, id, { ticks = 10, timeout = 60_000 } =
 export const hostFrames = (page, id) => page.evaluate((panelId) => window.fresnelLab.hosts[panelId].frames, id);
 
 /**
- * Lets panel `id` settle, then checks that it draws nothing for `windowMs`: the one fixed wait
- * these tests allow, the window in which nothing may happen. Returns the frame count.
+ * Waits `count` animation frames of the page. The page's own frames, not the clock: a frame a
+ * panel requests is drawn on the next one, and on a slow or busy machine the window grows with the
+ * page rather than passing before the page has done anything.
  */
-export async function expectIdle(page, id, windowMs = 800) {
+export const animationFrames = (page, count) => page.evaluate(async (n) => {
+  for (let i = 0; i < n; i += 1) await new Promise((resolve) => { requestAnimationFrame(resolve); });
+}, count);
+
+/**
+ * Lets panel `id` settle, then checks that it draws nothing for `frames` more animation frames.
+ * Returns the frame count.
+ */
+export async function expectIdle(page, id, frames = 40) {
   const idle = await settledFrames(page, id);
-  await page.waitForTimeout(windowMs);
+  await animationFrames(page, frames);
   expect(await hostFrames(page, id), `${id} drew while nothing changed`).toBe(idle);
   return idle;
 }
 
-/** After a change: waits for its frame, then checks that it was one frame and no more followed. */
-export async function expectOneFrame(page, id, from, windowMs = 500) {
+/**
+ * After a change: waits for its frame, then checks over `frames` animation frames that it was one
+ * frame and no more followed.
+ */
+export async function expectOneFrame(page, id, from, frames = 30) {
   await expect.poll(() => hostFrames(page, id), { message: `${id} drew the change` }).toBeGreaterThan(from);
-  await page.waitForTimeout(windowMs);
+  await animationFrames(page, frames);
   expect(await hostFrames(page, id), `${id} drew the change once`).toBe(from + 1);
 }
 

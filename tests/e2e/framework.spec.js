@@ -1,7 +1,8 @@
 // The lecture page as a whole: lecture-mode keys, the context budget while scrolling, the message
 // API of embeds, bad links, themes. (Every panel mounting, here and alone: contract.spec.js; markup
 // through each embed's message door: embeds.spec.js.)
-import { test, expect, openDeck, openLab, nextFrames } from './fixtures.js';
+import { test, expect, animationFrames, openLab, nextFrames } from './fixtures.js';
+import { embedInDeck } from './deckFrame.js';
 import { XSS, injected } from './doorFuzz.js';
 
 /**
@@ -131,46 +132,25 @@ test('lecture-mode keys move between panels and keep the panel in the hash', asy
   }))).toBe(true);
   const offset = () => page.locator(`section#${deep}`).evaluate((s) => Math.abs(s.getBoundingClientRect().top));
   expect(await offset()).toBeLessThan(40);
-  await page.waitForTimeout(500);
+  await animationFrames(page, 30); // the page's own frames: layout and scroll anchoring happen in them
   expect(await offset()).toBeLessThan(40);
 });
 
 test('the message API sets, gets and rejects, and announces ready and rendered frames', async ({ page, baseURL }) => {
-  await openDeck(page);
-  const log = await page.evaluate(async (src) => {
-    const messages = [];
-    window.addEventListener('message', (e) => messages.push(e.data));
-    const frame = document.createElement('iframe');
-    frame.src = src;
-    frame.width = 900;
-    frame.height = 700;
-    document.body.append(frame);
-    const waitFor = async (type, count = 1) => {
-      for (let i = 0; i < 600; i += 1) {
-        if (messages.filter((m) => m.type === type).length >= count) return;
-        await new Promise((r) => setTimeout(r, 50));
-      }
-      throw new Error(`no ${type}`);
-    };
-    await waitFor('fresnel-lab:ready');
-    await waitFor('fresnel-lab:rendered');
-    frame.contentWindow.postMessage({ type: 'fresnel-lab:set', params: { nT: 2.4 } }, '*');
-    frame.contentWindow.postMessage({ type: 'fresnel-lab:set', params: { nI: 'abc', bogus: 1 } }, '*');
-    frame.contentWindow.postMessage({ type: 'fresnel-lab:get' }, '*');
-    await waitFor('fresnel-lab:error');
-    await waitFor('fresnel-lab:state', 3);
-    // A change made in the panel itself (here as a control would make it) is announced too.
-    frame.contentWindow.fresnelLab.hosts.spheres.set({ nT: 1.9 }, { source: 'user' });
-    await waitFor('fresnel-lab:state', 4);
-    return messages;
-  }, `${baseURL}embed.html?panel=spheres`);
-  const ready = log.find((m) => m.type === 'fresnel-lab:ready');
-  expect(ready).toMatchObject({ panel: 'spheres', params: { nI: 1, nT: 1.5 } });
-  expect(log.some((m) => m.type === 'fresnel-lab:rendered' && m.frame >= 1)).toBe(true);
-  const error = log.find((m) => m.type === 'fresnel-lab:error');
+  const api = await embedInDeck(page, baseURL, 'panel=spheres');
+  expect(await api.waitFor('fresnel-lab:ready')).toMatchObject({ panel: 'spheres', params: { nI: 1, nT: 1.5 } });
+  expect((await api.waitFor('fresnel-lab:rendered')).frame).toBeGreaterThanOrEqual(1);
+  await api.send({ type: 'fresnel-lab:set', params: { nT: 2.4 } });
+  await api.send({ type: 'fresnel-lab:set', params: { nI: 'abc', bogus: 1 } });
+  await api.send({ type: 'fresnel-lab:get' });
+  const error = await api.waitFor('fresnel-lab:error');
   expect(error.message).toContain('nI');
   expect(error.message).toContain('bogus');
-  const states = log.filter((m) => m.type === 'fresnel-lab:state');
+  await api.waitFor('fresnel-lab:state', 3);
+  // A change made in the panel itself (here as a control would make it) is announced too.
+  await api.frame.evaluate(() => window.fresnelLab.hosts.spheres.set({ nT: 1.9 }, { source: 'user' }));
+  await api.waitFor('fresnel-lab:state', 4);
+  const states = await api.all('fresnel-lab:state');
   expect(states.at(-2).params).toMatchObject({ nI: 1, nT: 2.4 });
   expect(states.at(-1).params).toMatchObject({ nI: 1, nT: 1.9 });
 });

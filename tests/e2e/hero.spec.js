@@ -102,7 +102,7 @@ test('bad values in the URL fall back to defaults and say so', async ({ page }) 
 
 test('nothing draws while nothing changes; a change draws once', async ({ page }) => {
   await openLab(page);
-  const idle = await expectIdle(page, 'spheres', 1000);
+  const idle = await expectIdle(page, 'spheres', 60);
   await page.evaluate(() => { window.fresnelLab.hosts.spheres.set({ nT: 1.7, env: 0.5 }); });
   await expectOneFrame(page, 'spheres', idle);
 });

@@ -18,7 +18,9 @@ test('ready carries the API version; every change is announced with its source a
     for (let i = 1; i <= 10; i += 1) window.fresnelLab.hosts.spheres.set({ viewAz: 10 + i }, { source: 'user' });
   });
   expect(await api.waitFor('fresnel-lab:changed', 3)).toMatchObject({ source: 'user', keys: ['viewAz'], params: { viewAz: 20 } });
-  await page.waitForTimeout(400); // the window in which no second message may arrive
+  // A later change of the deck's is announced after anything still gathered from the drag.
+  await api.send({ type: 'fresnel-lab:set', params: { nI: 1.3 } });
+  expect(await api.waitFor('fresnel-lab:changed', 4)).toMatchObject({ source: 'api', keys: ['nI'] });
   expect((await api.all('fresnel-lab:changed')).filter((m) => m.source === 'user')).toHaveLength(1);
   expect((await api.all('fresnel-lab:state')).at(-1).params.viewAz).toBe(20);
 });
@@ -175,8 +177,10 @@ test('keys no control used go to the deck; keys a control or the canvas uses do 
   await page.keyboard.press('ArrowUp');
   await api.frame.getByRole('button', { name: 'Export CSV' }).focus();
   await page.keyboard.press(' '); // presses the button, so it must not turn the slide as well
-  await page.waitForTimeout(300); // the window in which nothing more may arrive
-  expect(await api.count('fresnel-lab:key')).toBe(2);
+  // A key that does go to the deck, pressed last, arrives after any the others sent.
+  await api.frame.locator('.embed-title').click();
+  await page.keyboard.press('End');
+  await expect.poll(async () => (await api.all('fresnel-lab:key')).map((m) => m.key)).toEqual(['PageDown', 'ArrowRight', 'End']);
 });
 
 test('parentOrigin: messages go only to that origin and only its messages are heard', async ({ page, baseURL }) => {
@@ -187,15 +191,13 @@ test('parentOrigin: messages go only to that origin and only its messages are he
   await expect.poll(async () => (await hero(api)).nT).toBe(2.1);
   const other = await embedInDeck(page, baseURL, 'panel=spheres&parentOrigin=https://deck.example', { waitReady: false });
   await expect.poll(() => inFrame(other, () => window.fresnelLab?.hosts.spheres?.frames ?? 0)).toBeGreaterThan(0);
-  await other.send({ type: 'fresnel-lab:set', params: { nT: 2.1 } });
-  await page.waitForTimeout(400); // the window in which the message may not be acted on
+  await other.delivered({ type: 'fresnel-lab:set', params: { nT: 2.1 } });
   expect((await hero(other)).nT).toBe(1.5);
   expect(await other.count('fresnel-lab:ready')).toBe(0);
   // An origin that cannot be used leaves the panel to no page rather than to every page.
   const closed = await embedInDeck(page, baseURL, 'panel=spheres&parentOrigin=deck.example', { waitReady: false });
   await expect(closed.frame.locator('.notice')).toContainText('no page may drive this panel');
-  await closed.send({ type: 'fresnel-lab:set', params: { nT: 2.1 } });
-  await page.waitForTimeout(400); // the window in which the message may not be acted on
+  await closed.delivered({ type: 'fresnel-lab:set', params: { nT: 2.1 } });
   expect((await hero(closed)).nT).toBe(1.5);
   expect(await closed.count('fresnel-lab:ready')).toBe(0);
 });
@@ -208,8 +210,14 @@ test('malformed messages are ignored without an answer', async ({ page, baseURL 
     { type: 'fresnel-lab:projector', on: 'yes' }, { type: 'fresnel-lab:set', params: [1] }, { type: 'fresnel-lab:nonsense' },
     'slide:later', 42, null, [],
   ]) await api.send(message);
-  await page.waitForTimeout(400); // the window in which no answer may come
-  for (const type of ['fresnel-lab:state', 'fresnel-lab:error', 'fresnel-lab:snapshot', 'fresnel-lab:changed']) expect(await api.count(type), type).toBe(0);
+  // Answers go out in the order the messages came: the answers to a get and a snapshot sent last
+  // come after any the malformed ones drew (a snapshot is drawn after those asked before it).
+  await api.send({ type: 'fresnel-lab:get' });
+  await api.send({ type: 'fresnel-lab:snapshot', id: 'last' });
+  expect(await api.waitFor('fresnel-lab:snapshot')).toMatchObject({ id: 'last' });
+  expect(await api.count('fresnel-lab:state')).toBe(1);
+  expect(await api.count('fresnel-lab:snapshot')).toBe(1);
+  for (const type of ['fresnel-lab:error', 'fresnel-lab:changed']) expect(await api.count(type), type).toBe(0);
   expect(await hero(api)).toMatchObject({ nI: 1, nT: 1.5 });
 });
 

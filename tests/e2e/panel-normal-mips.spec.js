@@ -91,7 +91,7 @@ test('far bumps: variance-keeping techniques beat renormalized and naive, and th
   expect(Math.abs(twoChannel.toksvig - twoChannel.renormalized)).toBeLessThan(0.05 * twoChannel.renormalized);
   expect(twoChannel.lean).toBeCloseTo(errors.lean.rmse, 6); // LEAN stores slopes, not normals
   // Rendering stops once the truth has converged and the errors are measured.
-  await expectIdle(page, PANEL, 400);
+  await expectIdle(page, PANEL, 24);
 });
 
 test('controls change the picture', async ({ page }) => {

@@ -107,7 +107,7 @@ test('reduced motion starts on a still frame', async ({ page }) => {
   await openLab(page, `./embed.html?panel=${PANEL}&nT=1.333`);
   await expect(page.locator('.rw-play')).toHaveText(/Play/);
   await expect(page.locator('.rw-medium-2')).toContainText('0.750 c');
-  const still = await expectIdle(page, PANEL, 700);
+  const still = await expectIdle(page, PANEL, 42);
   expect(still).toBeGreaterThanOrEqual(1);
   expect(await page.evaluate((id) => window.fresnelLab.panels[id].playing, PANEL)).toBe(false);
 });

@@ -1,4 +1,4 @@
-import { test, expect, openLab } from './fixtures.js';
+import { test, expect, animationFrames, openLab } from './fixtures.js';
 import { thetaSamples } from '../../src/methods/errorMetrics.js';
 import { fresnelExact } from '../../src/optics/fresnel.js';
 
@@ -189,7 +189,7 @@ test('a running benchmark pauses while the panel is off screen and goes on when 
   }, PANEL);
   await expect(page.locator('.sa-status')).toContainText('Paused while the panel is off screen');
   const paused = await page.locator('.sa-progress').evaluate((p) => p.value);
-  await page.waitForTimeout(1000); // a window in which a paused run must not move
+  await animationFrames(page, 60); // a window of the page's own frames in which a paused run must not move
   expect(await page.locator('.sa-progress').evaluate((p) => p.value)).toBe(paused);
   expect(paused).toBeLessThan(1);
   await page.locator('.sa-run').scrollIntoViewIfNeeded();

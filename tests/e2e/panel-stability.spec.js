@@ -158,7 +158,7 @@ test('URL and controls: method, precision and tolerance; CSV, description, on-de
   expect(csv.columns.gpu_highp).toEqual([CELLS, 0, 0, 0]);
   await expect(page.locator('.panel-description')).toContainText(`in JavaScript float64: ${CELLS} fine, 0 with error above 0.00100`);
   // Nothing is evaluated again while nothing changes.
-  await expectIdle(page, 'stability', 400);
+  await expectIdle(page, 'stability', 24);
   expect(await page.evaluate(() => window.fresnelLab.panels.stability.png())).toMatch(/^data:image\/png;base64,/);
   const live = await page.evaluate(() => {
     const before = window.fresnelLab.contexts.live;
