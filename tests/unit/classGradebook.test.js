@@ -10,7 +10,8 @@ import { readClassFile, writeClassFile } from '../../src/homework/class/classFil
 import { buildClassView } from '../../src/homework/class/buildClassView.js';
 import { syntheticClass } from '../../src/homework/class/syntheticClass.js';
 import { serveClassView } from '../../src/homework/class/classWorker.js';
-import { expectedValue, questionParams, trueOption } from '../../src/homework/gradeAnswer.js';
+import { questionParams } from '../../src/homework/gradeAnswer.js';
+import { rightAnswer } from './oracle/rightAnswers.js';
 import { questionById } from '../../src/homework/questions.js';
 import { formatValue } from '../../src/homework/formatAnswer.js';
 import { makeHandIn } from '../../src/homework/sheetCodes.js';
@@ -20,16 +21,16 @@ const sheet = { version: 1, title: 'Fresnel', items: ['exact-r', 'r0-value', 'sn
 const question = (i) => questionById(sheet.items[i].question);
 const params = (seed, i) => questionParams(question(i), seed);
 
-/** The right answer to item i for a seed, or a wrong one: the true value times `factor`. */
+/** The right answer to item i for a seed (worked out apart from the lab), or a wrong one: the true value times `factor`. */
 function answer(seed, i, how = 'right', factor = 2) {
   const q = question(i);
   const p = params(seed, i);
   if (how === 'none') return null;
   if (q.kind === 'choice') {
-    const right = trueOption(q, p).id;
+    const right = rightAnswer(q.id, p);
     return how === 'right' ? right : q.options(p).find((o) => o.id !== right).id;
   }
-  const value = expectedValue(q, p) * (how === 'right' ? 1 : factor);
+  const value = rightAnswer(q.id, p) * (how === 'right' ? 1 : factor);
   return q.kind === 'predict' ? Math.min(90, value) : formatValue(q, value);
 }
 const handIn = (name, seed, hows, more = {}) => ({
@@ -206,7 +207,7 @@ describe('what the class got wrong', () => {
       const hows = k < 2 ? ALL_RIGHT : ['wrong', 'wrong', 'none', 'wrong', 'wrong'];
       const h = handIn(`S${k}`, seed, hows);
       if (k === 5) h.data.answers[0] = formatValue(question(0), normalIncidence(1, params(seed, 0).nT)); // R(0°) for R(θ)
-      if (k === 4) h.data.answers[2] = formatValue(question(2), (expectedValue(question(2), params(seed, 2)) * Math.PI) / 180); // radians
+      if (k === 4) h.data.answers[2] = formatValue(question(2), (rightAnswer(question(2).id, params(seed, 2)) * Math.PI) / 180); // radians
       return h;
     });
     const grades = gradeClassSync(sheet, handIns);

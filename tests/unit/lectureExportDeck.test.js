@@ -8,7 +8,7 @@ import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { DEFAULT_EMBED_URL, lectureDeckHtml } from '../../src/lecture/deckExport.js';
 import { DEFAULT_QUESTION_SEED, embedSource } from '../../src/lecture/deckSlides.js';
-import { escapeHtml, lectureTextHtml, subscriptedHtml } from '../../src/lecture/lectureTextHtml.js';
+import { escapeHtml, subscriptedHtml } from '../../src/lecture/lectureTextHtml.js';
 import { LECTURE_KIND, readLecture } from '../../src/lecture/readLecture.js';
 import { PANELS, panelEntry } from '../../src/panels/manifest.js';
 import { panelSchema } from '../../src/panels/panelSchema.js';
@@ -104,7 +104,9 @@ describe('the reveal.js deck of a lecture', () => {
     // No heading of the lecturer's: no slide heading, the embed shows the panel's title (not twice).
     expect(html).not.toContain(`<h2>${subscriptedHtml(panelEntry('schlick').title)}</h2>`);
     expect(html).toMatch(/data-panel="schlick">\s*<iframe/);
-    expect(html).toContain(lectureTextHtml(composed.items[0].text, { math: 'html' }));
+    // The lecturer's Markdown as HTML: the list, the paragraph, the link opening elsewhere, the math.
+    expect(html).toContain('<ol><li>Into glass</li><li>Out of it</li></ol><p>See <a href="https://book.example" target="_blank" '
+      + 'rel="noopener noreferrer">the book</a> and <span class="lecture-math">');
     expect(html).toContain('<a href="https://book.example" target="_blank" rel="noopener noreferrer">the book</a>');
     // KaTeX's HTML, as on the site, with MathML for screen readers; the deck then carries KaTeX's CSS and fonts.
     expect(html).toMatch(/<span class="lecture-math"><span class="katex"><span class="katex-mathml"><math [^>]*>.*<annotation encoding="application\/x-tex">R_0</);
