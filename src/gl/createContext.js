@@ -3,6 +3,10 @@
 // triangles that anti-alias themselves, and read-back contexts draw into float targets.
 import { countContext, WebGL2Unavailable } from './contextBudget.js';
 import { currentOwner } from './faultOwner.js';
+import english from 'virtual:messages/en/gl';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('gl', english);
 
 /**
  * @param {HTMLCanvasElement} canvas
@@ -13,11 +17,11 @@ import { currentOwner } from './faultOwner.js';
 export function createContext(canvas, attributes = {}) {
   // No probe on a canvas of its own first (hasWebGL2): making a context costs a software GPU a
   // good part of a second, and the context itself answers the question.
-  if (typeof WebGL2RenderingContext === 'undefined') throw new WebGL2Unavailable('This browser has no WebGL2.');
+  if (typeof WebGL2RenderingContext === 'undefined') throw new WebGL2Unavailable(t('noWebgl2'));
   const gl = canvas.getContext('webgl2', {
     alpha: false, antialias: false, depth: false, stencil: false, powerPreference: 'high-performance', ...attributes,
   });
-  if (!gl) throw new WebGL2Unavailable('WebGL2 could not start on this canvas.');
+  if (!gl) throw new WebGL2Unavailable(t('webgl2NotOnCanvas'));
   const release = countContext();
   // The panel that made the context says so while it is gone (panelFaults.js). Asking for the
   // restore (preventDefault) is what makes the browser give it back; the users rebuild on restore.

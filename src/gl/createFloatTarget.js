@@ -1,6 +1,10 @@
 // An RGBA32F render target (a texture and its framebuffer, no depth) for passes whose results are
 // read back or accumulated in float. Needs EXT_color_buffer_float, which the caller enables.
 // With internalFormat RGBA8 it keeps a picture as the canvas would show it (always renderable).
+import english from 'virtual:messages/en/gl';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('gl', english);
 
 /** A read-back that cannot finish: the context was lost while it waited (even if it is back now). */
 export class ContextLostError extends Error {}
@@ -69,7 +73,7 @@ export function createFloatTarget(gl, internalFormat = gl.RGBA32F) {
           }
           gl.canvas.removeEventListener('webglcontextlost', onLost);
           if (status === gl.WAIT_FAILED) {
-            reject(new ContextLostError('The graphics context was lost during a read-back.'));
+            reject(new ContextLostError(t('lostDuringReadBack')));
             return;
           }
           gl.deleteSync(sync);

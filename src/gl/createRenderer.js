@@ -3,15 +3,19 @@
 // spheres) uses three.js; the panels draw with createContext / createShaderView.
 import { WebGLRenderer } from 'three';
 import { countContext, hasWebGL2, WebGL2Unavailable } from './contextBudget.js';
+import english from 'virtual:messages/en/gl';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('gl', english);
 
 /** A WebGLRenderer whose dispose() also releases the context and its place in the budget. */
 export function createRenderer(canvas, options = {}) {
-  if (!hasWebGL2()) throw new WebGL2Unavailable('This browser has no WebGL2.');
+  if (!hasWebGL2()) throw new WebGL2Unavailable(t('noWebgl2'));
   let renderer;
   try {
     renderer = new WebGLRenderer({ canvas, antialias: true, powerPreference: 'high-performance', ...options });
   } catch (error) {
-    throw new WebGL2Unavailable(`WebGL2 could not start: ${error.message}`);
+    throw new WebGL2Unavailable(t('webgl2NotStarted', { reason: error.message }));
   }
   renderer.autoClear = false;
   const release = countContext();

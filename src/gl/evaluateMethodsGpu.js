@@ -13,6 +13,10 @@ import { resolveIncludes } from './resolveIncludes.js';
 import { shaderChunks } from './shaderChunks.js';
 import { GPU_PRECISIONS, methodIndex } from './methodIndex.js';
 import { f82Coefficients, methodById } from '../methods/methods.js';
+import english from 'virtual:messages/en/gl';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('gl', english);
 
 export class GpuFloatUnavailable extends Error {}
 
@@ -136,7 +140,7 @@ function extraFor(methodId, inputs, extra, count) {
  */
 export function createMethodsGpu(gl) {
   if (!gl.getExtension('EXT_color_buffer_float')) {
-    throw new GpuFloatUnavailable('This GPU cannot render to float32 textures (no EXT_color_buffer_float).');
+    throw new GpuFloatUnavailable(t('noFloatTargets'));
   }
   const programs = new Map();
   const triangle = createFullScreenTriangle(gl);
@@ -156,8 +160,8 @@ export function createMethodsGpu(gl) {
   }
 
   function run(entry, inputs, extra, count, channels = 1) {
-    if (disposed) throw new Error('the GPU method evaluator was disposed');
-    if (gl.isContextLost()) throw new Error('the WebGL context was lost');
+    if (disposed) throw new Error(t('evaluatorDisposed'));
+    if (gl.isContextLost()) throw new Error(t('contextLost'));
     const width = Math.min(count, MAX_WIDTH);
     const height = Math.ceil(count / width);
     if (height > gl.getParameter(gl.MAX_TEXTURE_SIZE)) throw new RangeError(`${count} samples do not fit one texture`);
@@ -175,7 +179,7 @@ export function createMethodsGpu(gl) {
       gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
       gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, target, 0);
       if (gl.checkFramebufferStatus(gl.FRAMEBUFFER) !== gl.FRAMEBUFFER_COMPLETE) {
-        throw new GpuFloatUnavailable('An RGBA32F render target is incomplete on this GPU.');
+        throw new GpuFloatUnavailable(t('floatTargetIncomplete'));
       }
       gl.bindTexture(gl.TEXTURE_2D, inputsTex); // unit 0 back to the inputs (the target is attached)
       gl.useProgram(entry.program);

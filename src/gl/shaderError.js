@@ -1,6 +1,11 @@
 // The one error a shader the driver refuses throws (compileProgram.js), whoever compiled it: a
 // panel's picture, the method evaluator, the timing passes or a student's code. Pure (no WebGL),
-// so the wording and the line mapping are tested in Node.
+// so the wording and the line mapping are tested in Node. The lab's words around the driver's log
+// are the catalogue's ("gl"); the log stays as the driver wrote it.
+import english from 'virtual:messages/en/gl';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('gl', english);
 
 // A #line directive: "#line line" or "#line line source-string-number" (GLSL ES 3.00 §3.4).
 const LINE_DIRECTIVE = /^\s*#\s*line\s+(\d+)(?:\s+(\d+))?\s*(?:\/\/.*)?$/;
@@ -54,10 +59,12 @@ export function refusalLine(error) {
  * source lines it names). label, if any, names the program (the timing pass of a method, say).
  */
 export function shaderErrorMessage({ stage, log = '', source = '', label = '' }) {
-  const which = label ? ` (${label})` : '';
-  return stage === 'link'
-    ? `The shader program${which} did not link:\n${log}`
-    : `The ${stage} shader${which} did not compile:\n${explainLog(log, source)}`;
+  if (stage === 'link') return label ? t('programNotLinkedNamed', { label, log }) : t('programNotLinked', { log });
+  // A message per stage, without a select: these words come with the first picture, and a select
+  // would bring the message runtime with them.
+  const args = { label, log: explainLog(log, source) };
+  const which = stage === 'vertex' ? 'vertex' : 'fragment';
+  return t(label ? `${which}NotCompiledNamed` : `${which}NotCompiled`, args);
 }
 
 /**

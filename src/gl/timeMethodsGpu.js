@@ -18,10 +18,18 @@ import { checkProgram, compileProgram, createFullScreenTriangle } from './compil
 import { glslFunctionName, GPU_PRECISIONS } from './methodIndex.js';
 import { resolveIncludes } from './resolveIncludes.js';
 import { shaderChunks } from './shaderChunks.js';
+import english from 'virtual:messages/en/gl';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('gl', english);
 
 export { GPU_PRECISIONS };
 export const TIMER_QUERY = 'EXT_disjoint_timer_query_webgl2';
+// The timer as results record it (data: the same in every language); timerName says it in words.
 export const WALL_TIMER = 'wall clock around passes fenced by a 1-pixel readPixels';
+
+/** A recorded timer in the page's language: the wall clock in words, an extension by its name. */
+export const timerName = (timer) => (timer === WALL_TIMER ? t('wallClock') : timer);
 
 /**
  * GLSL for one evaluation of a method on c and the per-pixel arguments v (vec4), calling its own
@@ -135,9 +143,10 @@ export async function timeMethodsGpu(gl, {
       start(precision, 'baseline', null, null);
       for (const m of methods) start(precision, m.id, m.kind, methodCall(m));
     }
-    for (const e of entries) checkProgram(gl, e.program, { label: `timing ${e.id}, ${e.precision}` });
+    const passName = (id) => (id === 'baseline' ? t('baselinePass') : methods.find((m) => m.id === id).label);
+    for (const e of entries) checkProgram(gl, e.program, { label: t('timingPass', { method: passName(e.id), precision: e.precision }) });
     // A lost context refuses nothing (checkProgram), but its timer query would never answer.
-    if (gl.isContextLost()) throw new Error('the WebGL context was lost');
+    if (gl.isContextLost()) throw new Error(t('contextLost'));
     const find = (precision, id) => entries.find((e) => e.precision === precision && e.id === id);
 
     let loopCount = loops;
@@ -205,7 +214,7 @@ export async function timeMethodsGpu(gl, {
           baseline.push(base);
           samples[precision][m.id].push(((ms - base) * 1e6) / evaluations);
           done += 1;
-          onProgress?.(done, total, `${m.label} (${precision})`);
+          onProgress?.(done, total, t('timingProgress', { method: m.label, precision }));
           await pause();
           await whenVisible?.();
         }
