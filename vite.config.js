@@ -126,6 +126,9 @@ export default defineConfig({
   plugins: singleFile
     ? [messagesPlugin({ dir: resolve(root, 'locales') }), panelManifest(), offlineAssets(), viteSingleFile(), policyMeta()]
     : [messagesPlugin({ dir: resolve(root, 'locales') }), panelManifest(), policyMeta()],
+  // Workers are bundled apart, with these plugins only: the modules they share with the page (the
+  // methods and their scenes, the class view's grading) import their words from the catalogue too.
+  worker: { plugins: () => [messagesPlugin({ dir: resolve(root, 'locales') })] },
   build: {
     ...(singleFile ? { outDir: 'dist/offline', emptyOutDir: false } : {}),
     target: 'es2022',

@@ -14,12 +14,19 @@
 // largest at white (4.45e-3, where it is flattest); invisibleThreshold(level) gives it at any
 // level, by default at the top end, where a Fresnel term ends up near grazing and where the
 // largest errors of every method here occur.
+// The reason is said in the page's language: each sentence one message of the catalogue
+// ("methods"), its numbers written by src/ui/format.js.
+import english from 'virtual:messages/en/methods';
+import { messages } from '../i18n/messages.js';
 import { sweepDomain } from './errorMetrics.js';
 import { HALF_STEP_CODES, invisibleThreshold, srgbDecode, srgbEncode } from './displayThreshold.js';
 import { methodsOfKind } from './methods.js';
 import { contextFor } from './rounding.js';
 import { referenceFor } from './scenes.js';
 import { toDegrees } from '../optics/angles.js';
+import { angle, fixed, precise, tickLabel } from '../ui/format.js';
+
+const t = messages('methods', english);
 
 export { HALF_STEP_CODES, invisibleThreshold, srgbDecode, srgbEncode };
 
@@ -69,14 +76,17 @@ export function sceneErrors(scene, evaluate) {
   return Object.freeze({ ...linear, maxCodes: also.codes.max, meanCodes: also.codes.mean });
 }
 
-
+/** A row of the table in words: its method, largest |ΔR| and where, and its display error. */
 function describe(row) {
-  const where = row.thetaAtMax === null ? '' : ` at ${toDegrees(row.thetaAtMax).toFixed(1)}°`;
-  if (row.nanCount > 0) return `${row.label} (NaN or Infinity at ${row.nanCount} samples)`;
-  // A real minus sign in the exponent, as src/ui/format.js writes shown numbers (methods stays apart from ui).
-  const max = row.max.toPrecision(2).replace('e+', 'e').replaceAll('-', '\u2212');
+  if (row.nanCount > 0) return t('rowNotFinite', { method: row.label, count: row.nanCount, shown: String(row.nanCount) });
   // The largest display error need not lie where |ΔR| is largest (sRGB is steeper for dark values): said apart.
-  return `${row.label} (max |ΔR| ${max}${where}; at most ${row.maxCodes.toFixed(2)} codes)`;
+  const args = { method: row.label, max: precise(row.max, 2), codes: fixed(row.maxCodes, 2) };
+  return row.thetaAtMax === null ? t('rowErrorNoAngle', args) : t('rowError', { ...args, angle: angle(toDegrees(row.thetaAtMax), 1) });
+}
+
+/** A budget in words: the display's own rounding, or a number of codes (as few decimals as it has). */
+function budgetText(codes) {
+  return codes === HALF_STEP_CODES ? t('budgetHalfStep') : t('budgetCodes', { count: codes, codes: tickLabel(codes, 1e-6) });
 }
 
 /**
@@ -111,24 +121,22 @@ export function recommend(scene, costs = {}, {
   const byAccuracy = (a, b) => a.maxCodes - b.maxCodes || a.max - b.max;
   table.sort((a, b) => a.cost - b.cost || byAccuracy(a, b));
   const passing = table.filter((row) => row.passes && row.recommendable);
-  const budget = budgetCodes === HALF_STEP_CODES ? 'half an 8-bit sRGB step (the display\'s own rounding)' : `${budgetCodes} 8-bit codes`;
-  const where = place ?? `${scene.label}, ${contextFor(precision).label}`;
+  const budget = budgetText(budgetCodes);
+  const where = place ?? t('sceneIn', { scene: scene.label, precision: contextFor(precision).label });
   let choice;
   let reason;
   if (passing.length > 0) {
     choice = passing[0];
     const cheaper = table.filter((row) => row.cost < choice.cost);
-    reason = `${describe(choice)} is the cheapest method whose largest error over "${where}" stays under ${budget}.`;
+    const sentences = [t('reasonCheapest', { method: describe(choice), where, budget })];
     const over = cheaper.filter((row) => !row.passes);
-    if (over.length > 0) reason += ` Cheaper but over the budget: ${over.map(describe).join('; ')}.`;
+    if (over.length > 0) sentences.push(t('reasonCheaperOver', { methods: over.map(describe).join('; ') }));
     const demos = table.filter((row) => row.passes && !row.recommendable && row.cost <= choice.cost);
-    if (demos.length > 0) {
-      reason += ` ${demos.map((row) => row.label).join(', ')} costs no more here but is not recommended:`
-        + ' it is the lecture\'s literal order, which fails for matched media at grazing (see the stability map).';
-    }
+    if (demos.length > 0) sentences.push(t('reasonNotRecommended', { methods: demos.map((row) => row.label).join(', ') }));
+    reason = sentences.join(' ');
   } else {
     choice = [...table].sort(byAccuracy)[0];
-    reason = `No method stays under ${budget} for "${where}"; ${describe(choice)} is the most accurate.`;
+    reason = t('reasonNone', { budget, where, method: describe(choice) });
   }
   const precisionName = errors ? precision : contextFor(precision).name;
   return { methodId: choice.methodId, invisible: passing.length > 0, reason, budgetCodes, precision: precisionName, table };

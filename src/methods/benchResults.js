@@ -10,6 +10,10 @@ import { METHODS } from './methods.js';
 import { PRECISION_IDS } from './rounding.js';
 import { SCENES, sceneById } from './scenes.js';
 import { toDegrees } from '../optics/angles.js';
+import english from 'virtual:messages/en/methods';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('methods', english);
 
 export const RESULTS_VERSION = 1;
 export const DEFAULT_DOMAIN = Object.freeze({ dielectric: 'plastic', conductor: 'metal' });
@@ -120,7 +124,7 @@ export function benchResults({ gpu = null, cpu = null, frames = null, gpuErrors 
   };
   results.recommendations = Object.fromEntries(SCENES.map((scene) => {
     const costs = measuredCosts(results, scene);
-    const costSource = Object.keys(costs).length ? `measured GPU ns (${gpuPrecisionFor(scene.precision)})` : 'static count';
+    const costSource = Object.keys(costs).length ? t('costMeasuredGpu', { precision: gpuPrecisionFor(scene.precision) }) : t('costStatic');
     const pick = (budget) => {
       const r = recommendWithin(scene, costs, budget);
       return { methodId: r.methodId, invisible: r.invisible, budgetCodes: r.budgetCodes, reason: r.reason };

@@ -16,14 +16,19 @@ import { sweepDomain } from './errorMetrics.js';
 import { contextFor } from './rounding.js';
 import { referenceFor } from './scenes.js';
 import { DEFAULT_BUDGET } from './ids.js';
+import english from 'virtual:messages/en/methods';
+import { messages } from '../i18n/messages.js';
 
+const t = messages('methods', english);
+
+/** The budgets; each one's label is the catalogue's (budget.<id>), in the page's language. */
 export const DISPLAY_BUDGETS = Object.freeze([
-  { id: 'invisible', codes: 0.5, label: 'Within rounding: ½ an 8-bit step' }, // the id stays: links use it
-  { id: 'one-code', codes: 1, label: '1 code (0.4 % of the range)' },
-  { id: 'one-percent', codes: 2.55, label: '1 % of the range (2.55 codes)' },
-  { id: 'acceptable', codes: 12.75, label: 'Acceptable: 5 % of the range (12.75 codes)' },
-  { id: 'ten-percent', codes: 25.5, label: '10 % of the range (25.5 codes)' },
-].map((budget) => Object.freeze(budget)));
+  { id: 'invisible', codes: 0.5 }, // the id stays: links use it (the label says "within rounding")
+  { id: 'one-code', codes: 1 },
+  { id: 'one-percent', codes: 2.55 },
+  { id: 'acceptable', codes: 12.75 },
+  { id: 'ten-percent', codes: 25.5 },
+].map(({ id, codes }) => Object.freeze({ id, codes, get label() { return t(`budget.${id}`); } })));
 
 export { DEFAULT_BUDGET };
 
@@ -35,7 +40,7 @@ export function displayBudget(id) {
 }
 
 /** The criterion in words, for the panel and the recommendation. */
-export const CRITERION = 'worst pixel over the scene (θ and indices), lit at display white, sRGB, 8-bit codes';
+export const criterionText = () => t('criterion');
 
 const meanCache = new WeakMap();
 
@@ -68,5 +73,5 @@ export function meanDisplayCodes(scene, method, precision = scene.precision) {
  */
 export function recommendWithin(scene, costs, budgetId = DEFAULT_BUDGET, options = {}) {
   const budget = displayBudget(budgetId);
-  return { ...recommend(scene, costs, { ...options, budgetCodes: budget.codes }), budget, criterion: CRITERION };
+  return { ...recommend(scene, costs, { ...options, budgetCodes: budget.codes }), budget, criterion: criterionText() };
 }

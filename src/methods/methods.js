@@ -6,9 +6,15 @@
 // out for the stability map to classify. Formulas: fresnel.js (sources there) and the source
 // named at each method; cost hints: static SPIR-V instruction counts (computed: each method's
 // GLSL through glslangValidator -V and spirv-opt -O, fp arithmetic, ext-inst, compare, select and
-// branch instructions counted), with a rough ALU + SFU estimate alongside.
+// branch instructions counted), with a rough ALU + SFU estimate alongside. A method's names are the
+// catalogue's ("methods": method.<id>, methodShort.<id>), read when they are shown; its note, on how
+// its cost was counted, is for whoever reads this table, not shown.
+import english from 'virtual:messages/en/methods';
+import { messages } from '../i18n/messages.js';
 import { conductorNormalIncidence, fresnelConductor } from '../optics/fresnel.js';
 import { contextFor } from './rounding.js';
+
+const t = messages('methods', english);
 
 /** g² = cos²θt in fresnel.glsl's safe order: ((nT − nI)/nT)((nT + nI)/nT) + c², c = nI·ci/nT. */
 function cosTransmittedSq(P, ci, nI, nT) {
@@ -29,11 +35,12 @@ function schlickMul(P, c, r0) {
   return P.add(r0, P.mul(P.sub(1, r0), P.mul(P.mul(x2, x2), x)));
 }
 
-/** label: the method's name; props.short: a shorter one for crowded charts. */
-function dielectric(id, label, cost, props, body) {
+/** label: the method's name; short: a shorter one for crowded charts (both in the page's language). */
+function dielectric(id, cost, props, body) {
   return {
     id,
-    label,
+    get label() { return t(`method.${id}`); },
+    get short() { return t(`methodShort.${id}`); },
     kind: 'dielectric',
     cost,
     ...props,
@@ -128,10 +135,11 @@ function schlickExp2(P, ci, nI, nT) {
   return P.add(P.mul(r0, P.sub(1, f)), f);
 }
 
-function conductor(id, label, cost, props, body) {
+function conductor(id, cost, props, body) {
   return {
     id,
-    label,
+    get label() { return t(`method.${id}`); },
+    get short() { return t(`methodShort.${id}`); },
     kind: 'conductor',
     cost,
     ...props,
@@ -214,33 +222,32 @@ function conductorF82(P, c, _n, _k, f0, cpu) {
 
 /** The method table. cost: static SPIR-V count (computed, see the top of the file); alu/sfu: rough estimate. */
 export const METHODS = Object.freeze([
-  dielectric('exact-cg', 'Exact c/g (safe order)', { static: 16, alu: 14, sfu: 3 },
-    { short: 'Exact c/g', tirAware: true, note: 'SPIR-V count: 8 fp-arith + 6 fma + 1 sqrt + 1 branch' }, exactCg),
-  dielectric('exact-cg-literal', 'Exact c/g (lecture order 1 + c² − m²)', { static: 17, alu: 15, sfu: 3 },
+  dielectric('exact-cg', { static: 16, alu: 14, sfu: 3 },
+    { tirAware: true, note: 'SPIR-V count: 8 fp-arith + 6 fma + 1 sqrt + 1 branch' }, exactCg),
+  dielectric('exact-cg-literal', { static: 17, alu: 15, sfu: 3 },
     {
-      short: 'Lecture order',
       tirAware: true,
       // Charted to show why the order matters; never recommended (it fails for matched media).
       demonstratesFailure: true,
       note: 'SPIR-V count + 1 add: 1 + c² − m² where the safe form adds c² to a precomputed 1 − m²',
     }, exactCgLiteral),
-  dielectric('exact-sp', 'Exact s/p (Snell)', { static: 18, alu: 16, sfu: 3 },
-    { short: 'Exact s/p', tirAware: true, note: 'SPIR-V count: 9 fp-arith + 7 fma + 1 sqrt + 1 branch' }, exactSp),
-  dielectric('schlick-pow', 'Schlick, pow(1 − c, 5)', { static: 4, alu: 3, sfu: 2 },
-    { short: 'Schlick, pow', tirAware: false, note: 'SPIR-V count: 2 fp-arith + 1 fma + 1 pow (pow = log2, mul, exp2)' }, schlickPow),
-  dielectric('schlick-mul', 'Schlick, multiplications only', { static: 6, alu: 5, sfu: 0 },
-    { short: 'Schlick, mul', tirAware: false, note: 'SPIR-V count: 5 fp-arith + 1 fma' }, schlickMulOnly),
-  dielectric('schlick-tir', 'Schlick on cos θt (TIR-correct)', { static: 14, alu: 10, sfu: 1 },
-    { short: 'Schlick on cos θt', tirAware: true, note: 'SPIR-V count: 8 fp-arith + 3 fma + 1 sqrt + 2 branches' }, schlickTir),
-  dielectric('schlick-exp2', 'Schlick, exp2 form (three.js, UE4)', { static: 5, alu: 3, sfu: 1 },
-    { short: 'Schlick, exp2', tirAware: false, note: 'SPIR-V count: 2 fp-arith + 2 fma + 1 exp2' }, schlickExp2),
-  conductor('conductor-exact', 'Exact conductor (n + ik)', { static: 32, alu: 20, sfu: 4 },
-    { short: 'Exact conductor', note: 'SPIR-V count: 26 fp-arith + 3 fma + 2 sqrt + 1 max (vec3)' }, conductorExact),
-  conductor('conductor-schlick', 'Schlick with F0 per channel', { static: 6, alu: 5, sfu: 0 },
-    { short: 'Schlick, F0 per channel', note: 'SPIR-V count: the multiplications-only Schlick on vec3 F0' },
+  dielectric('exact-sp', { static: 18, alu: 16, sfu: 3 },
+    { tirAware: true, note: 'SPIR-V count: 9 fp-arith + 7 fma + 1 sqrt + 1 branch' }, exactSp),
+  dielectric('schlick-pow', { static: 4, alu: 3, sfu: 2 },
+    { tirAware: false, note: 'SPIR-V count: 2 fp-arith + 1 fma + 1 pow (pow = log2, mul, exp2)' }, schlickPow),
+  dielectric('schlick-mul', { static: 6, alu: 5, sfu: 0 },
+    { tirAware: false, note: 'SPIR-V count: 5 fp-arith + 1 fma' }, schlickMulOnly),
+  dielectric('schlick-tir', { static: 14, alu: 10, sfu: 1 },
+    { tirAware: true, note: 'SPIR-V count: 8 fp-arith + 3 fma + 1 sqrt + 2 branches' }, schlickTir),
+  dielectric('schlick-exp2', { static: 5, alu: 3, sfu: 1 },
+    { tirAware: false, note: 'SPIR-V count: 2 fp-arith + 2 fma + 1 exp2' }, schlickExp2),
+  conductor('conductor-exact', { static: 32, alu: 20, sfu: 4 },
+    { note: 'SPIR-V count: 26 fp-arith + 3 fma + 2 sqrt + 1 max (vec3)' }, conductorExact),
+  conductor('conductor-schlick', { static: 6, alu: 5, sfu: 0 },
+    { note: 'SPIR-V count: the multiplications-only Schlick on vec3 F0' },
     (P, c, _n, _k, f0) => schlickMul(P, c, f0)),
-  conductor('conductor-f82', 'F82-tint (Hoffman 2019, Kutz et al. 2021)', { static: 13, alu: 9, sfu: 0 },
-    { short: 'F82-tint', note: 'SPIR-V count: 11 fp-arith + 2 clamp (vec3), b precomputed' }, conductorF82),
+  conductor('conductor-f82', { static: 13, alu: 9, sfu: 0 },
+    { note: 'SPIR-V count: 11 fp-arith + 2 clamp (vec3), b precomputed' }, conductorF82),
 ].map((method) => Object.freeze(method)));
 
 const BY_ID = new Map(METHODS.map((m) => [m.id, m]));

@@ -5,7 +5,12 @@
 // SIGNUM Newsletter 30(3), 1995). float32 rounding is Math.fround; float16 is @petamoriken/float16's
 // f16round (IEEE 754 binary16, round-to-nearest-even, subnormals, overflow to ±Infinity).
 // Rounding after every operation models a GPU, which rounds each instruction's result to its format.
+// A context's label (its name in words) is the catalogue's ("methods": precision.<name>).
 import { f16round } from '@petamoriken/float16';
+import english from 'virtual:messages/en/methods';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('methods', english);
 
 const identity = (x) => x;
 
@@ -21,10 +26,11 @@ function makePow(round) {
   };
 }
 
-function makeContext(name, label, round, bits) {
+function makeContext(name, round, bits) {
   return Object.freeze({
     name,
-    label,
+    /** The format in words, float32 (highp), in the page's language. */
+    get label() { return t(`precision.${name}`); },
     /** Significand bits including the hidden one (53, 24, 11). */
     bits,
     /** Rounds a float64 value (an input, a uniform, a literal) to this format. */
@@ -43,11 +49,11 @@ function makeContext(name, label, round, bits) {
 }
 
 /** float64: the reference arithmetic, no rounding beyond JavaScript's own. */
-export const fp64 = makeContext('fp64', 'float64', identity, 53);
+export const fp64 = makeContext('fp64', identity, 53);
 /** float32: GLSL highp on every WebGL2 GPU. */
-export const fp32 = makeContext('fp32', 'float32 (highp)', Math.fround, 24);
+export const fp32 = makeContext('fp32', Math.fround, 24);
 /** float16: GLSL mediump where the GPU really runs it at half precision (many phones). */
-export const fp16 = makeContext('fp16', 'float16 (mediump)', f16round, 11);
+export const fp16 = makeContext('fp16', f16round, 11);
 
 export const PRECISIONS = Object.freeze({ fp64, fp32, fp16 });
 export const PRECISION_IDS = Object.freeze(Object.keys(PRECISIONS));

@@ -3,6 +3,10 @@
 // material classes each scene stands for; the indices are refractiveindex.info values (Polyanskiy,
 // Scientific Data 11, 94 (2024)) at 589 nm, rounded: water 1.333 (Daimon & Masumura, Appl. Opt.
 // 46, 3811 (2007)), ice 1.31 (Warren & Brandt, JGR 113, D14220 (2008)); metals from materials.json.
+// A scene's label and note (its domain in words) are the catalogue's ("methods": scene.<id>,
+// sceneNote.<id>), read when they are shown.
+import english from 'virtual:messages/en/methods';
+import { messages } from '../i18n/messages.js';
 import { fresnelConductor, fresnelExact } from '../optics/fresnel.js';
 import { linspace } from './errorMetrics.js';
 import { metalById, metalF0 } from '../optics/materials.js';
@@ -22,55 +26,52 @@ function metalCases(ids) {
   });
 }
 
+const t = messages('methods', english);
+
 function scene(props) {
-  return Object.freeze({ thetaCount: THETA_COUNT, ...props, cases: Object.freeze(props.cases.map(Object.freeze)) });
+  const { id } = props;
+  const made = { thetaCount: THETA_COUNT, ...props, cases: Object.freeze(props.cases.map(Object.freeze)) };
+  return Object.freeze(Object.defineProperties(made, {
+    label: { get: () => t(`scene.${id}`), enumerable: true },
+    note: { get: () => t(`sceneNote.${id}`), enumerable: true },
+  }));
 }
 
 export const SCENES = Object.freeze([
   scene({
     id: 'plastic',
-    label: 'Opaque plastic seen from air',
     kind: 'dielectric',
     precision: 'fp32',
     weighting: 'cosine',
     cases: PLASTIC,
-    note: 'air → n 1.3–1.7, external reflection only: no total internal reflection can occur.',
   }),
   scene({
     id: 'glass-inside',
-    label: 'Glass or water seen from inside',
     kind: 'dielectric',
     precision: 'fp32',
     weighting: 'uniform',
     cases: linspace(1.33, 1.5, 5).map((n) => [n, 1]),
-    note: 'n 1.33–1.5 → air: total internal reflection past 41.8°–48.8°.',
   }),
   scene({
     id: 'ice-water',
-    label: 'Ice in water (nearly matched)',
     kind: 'dielectric',
     precision: 'fp32',
     weighting: 'uniform',
     cases: [[1.31, 1.333], [1.333, 1.31]],
-    note: 'ice 1.31 ↔ water 1.333 both ways; R0 is 7.6e-5 and the critical angle from the water side is 79.3°.',
   }),
   scene({
     id: 'metal',
-    label: 'A metal (gold, aluminium)',
     kind: 'conductor',
     precision: 'fp32',
     weighting: 'cosine',
     cases: metalCases(['gold', 'aluminium']),
-    note: 'air → gold and aluminium, n + ik at 650, 550, 450 nm (materials.json).',
   }),
   scene({
     id: 'phone-mediump',
-    label: 'Phone GPU with mediump (plastic)',
     kind: 'dielectric',
     precision: 'fp16',
     weighting: 'cosine',
     cases: PLASTIC,
-    note: 'the plastic scene with every operation in float16, as on GPUs that run mediump at half precision.',
   }),
 ]);
 

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { HALF_STEP_CODES, methodError } from '../../src/methods/advisor.js';
 import {
-  CRITERION, DEFAULT_BUDGET, DISPLAY_BUDGETS, displayBudget, meanDisplayCodes, recommendWithin,
+  criterionText, DEFAULT_BUDGET, DISPLAY_BUDGETS, displayBudget, meanDisplayCodes, recommendWithin,
 } from '../../src/methods/displayBudgets.js';
 import { methodById } from '../../src/methods/methods.js';
 import { paretoFront } from '../../src/methods/paretoFront.js';
@@ -43,7 +43,7 @@ describe('display budgets', () => {
     const codes = DISPLAY_BUDGETS.map((b) => b.codes);
     expect(codes).toEqual([...codes].sort((a, b) => a - b));
     expect(() => displayBudget('whatever')).toThrow(RangeError);
-    expect(CRITERION).toMatch(/worst pixel/);
+    expect(criterionText()).toMatch(/worst pixel/);
   });
 
   it('invisible: no Schlick variant passes for plastic, not even on the average pixel', () => {

@@ -4,9 +4,7 @@
 // its reason, the chart's data and the lines of words around it, the description and the CSV.
 // Pure: the model (model.js) supplies the benchmark's results and the GPU's read-back errors.
 import { gpuPrecisionFor, measuredCosts } from '../../methods/benchResults.js';
-import {
-  CRITERION, displayBudget, recommendWithin,
-} from '../../methods/displayBudgets.js';
+import { criterionText, displayBudget, recommendWithin } from '../../methods/displayBudgets.js';
 import { recommendWithErrors } from '../../methods/gpuErrors.js';
 import { methodById } from '../../methods/methods.js';
 import { paretoFront } from '../../methods/paretoFront.js';
@@ -87,7 +85,7 @@ export function speedAccuracyView(values, { source: src, results, problem, probe
         budgetCodes: b.codes, where: `${scene.label}, this GPU in ${src.glsl} (read back)`, precision: src.glsl,
       }),
       budget: b,
-      criterion: CRITERION,
+      criterion: criterionText(),
     }
     : recommendWithin(scene, costs, b.id));
   const rec = recommendFor(budget);
@@ -127,7 +125,7 @@ export function speedAccuracyView(values, { source: src, results, problem, probe
       label: chosen.label,
       sceneLabel: `${scene.label.toLowerCase()}, ${src.measured ? words.short : PRECISION_WORDS[rec.precision] ?? rec.precision}`,
       reasonText: `${rec.reason} ${words.sentence}${practicalNote(alt, rec, rows)}`,
-      criterionText: `Criterion: ${CRITERION}. Budget: ${budget.label}. ${costNote} Domain: ${scene.note}`,
+      criterionText: `Criterion: ${criterionText()}. Budget: ${budget.label}. ${costNote} Domain: ${scene.note}`,
     },
     /** The line about the error source: the read-back under way, or why it failed (a warning). */
     sourceLine: src.waiting
