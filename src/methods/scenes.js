@@ -3,8 +3,8 @@
 // material classes each scene stands for; the indices are refractiveindex.info values (Polyanskiy,
 // Scientific Data 11, 94 (2024)) at 589 nm, rounded: water 1.333 (Daimon & Masumura, Appl. Opt.
 // 46, 3811 (2007)), ice 1.31 (Warren & Brandt, JGR 113, D14220 (2008)); metals from materials.json.
-// A scene's label and note (its domain in words) are the catalogue's ("methods": scene.<id>,
-// sceneNote.<id>), read when they are shown.
+// A scene's label, its name inside a sentence (inText) and its note (its domain in words) are the
+// catalogue's ("methods": scene.<id>, sceneInText.<id>, sceneNote.<id>), read when they are shown.
 import english from 'virtual:messages/en/methods';
 import { messages } from '../i18n/messages.js';
 import { fresnelConductor, fresnelExact } from '../optics/fresnel.js';
@@ -33,6 +33,7 @@ function scene(props) {
   const made = { thetaCount: THETA_COUNT, ...props, cases: Object.freeze(props.cases.map(Object.freeze)) };
   return Object.freeze(Object.defineProperties(made, {
     label: { get: () => t(`scene.${id}`), enumerable: true },
+    inText: { get: () => t(`sceneInText.${id}`), enumerable: true },
     note: { get: () => t(`sceneNote.${id}`), enumerable: true },
   }));
 }

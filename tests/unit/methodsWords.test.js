@@ -24,7 +24,7 @@ describe('the words of src/methods in another language', () => {
 
   it('names every method, scene, budget and precision, and says the criterion, from the catalogue', () => {
     const names = [
-      ...METHODS.flatMap((m) => [m.label, m.short]), ...SCENES.flatMap((s) => [s.label, s.note]),
+      ...METHODS.flatMap((m) => [m.label, m.short]), ...SCENES.flatMap((s) => [s.label, s.inText, s.note]),
       ...DISPLAY_BUDGETS.map((b) => b.label), ...Object.values(PRECISIONS).map((p) => p.label), criterionText(),
     ];
     for (const name of names) {

@@ -4,8 +4,15 @@
 import { button, el } from '../../ui/el.js';
 import { toDegrees } from '../../optics/angles.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
-import { angle, sci } from '../../ui/format.js';
+import { angle, sci, tickLabel } from '../../ui/format.js';
 import { formatCodes } from './formatMeasures.js';
+import english from 'virtual:messages/en/speed-accuracy';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('speed-accuracy', english);
+
+/** A number as short as it is (0.5, 12.75), with the page's decimal separator. */
+const plain = (v) => tickLabel(v, 1e-6);
 
 export function buildSpeedAccuracyDom(host, { onRun, onCancel, onJson }) {
   const root = el('div', 'sa-panel');
@@ -21,21 +28,19 @@ export function buildSpeedAccuracyDom(host, { onRun, onCancel, onJson }) {
   source.hidden = true;
 
   const chartHost = el('div', 'sa-chart-host');
-  const legend = el('p', 'sa-legend',
-    'Filled dot: within the budget. Hollow dot: over it. ★ ringed: the recommendation. Bars: min to max over repeats. '
-    + 'The Pareto front joins the methods nothing else beats on both cost and error.');
+  const legend = el('p', 'sa-legend', t('legend'));
 
   const bench = el('div', 'sa-bench');
-  const run = button('Run benchmark', 'sa-run');
-  const cancel = button('Cancel', 'sa-cancel');
+  const run = button(t('run'), 'sa-run');
+  const cancel = button(t('cancel'), 'sa-cancel');
   cancel.disabled = true;
   const progress = el('progress', 'sa-progress');
   progress.max = 1;
   progress.value = 0;
-  progress.setAttribute('aria-label', 'Benchmark progress');
+  progress.setAttribute('aria-label', t('progress'));
   const status = el('span', 'sa-status');
   status.setAttribute('role', 'status');
-  const json = button('Export JSON', 'sa-json');
+  const json = button(t('exportJson'), 'sa-json');
   bench.append(run, cancel, progress, status, json);
   run.addEventListener('click', onRun);
   cancel.addEventListener('click', onCancel);
@@ -47,7 +52,7 @@ export function buildSpeedAccuracyDom(host, { onRun, onCancel, onJson }) {
   const thead = el('thead');
   const tbody = el('tbody');
   table.append(caption, thead, tbody);
-  const tableWrap = makeScrollBox(el('div', 'sa-table-wrap'), 'Table of methods');
+  const tableWrap = makeScrollBox(el('div', 'sa-table-wrap'), t('tableOfMethods'));
   tableWrap.append(table);
   const stage = el('div', 'sa-stage'); // off-screen: the frame-timing canvases live here while they run
   stage.setAttribute('aria-hidden', 'true');
@@ -58,8 +63,9 @@ export function buildSpeedAccuracyDom(host, { onRun, onCancel, onJson }) {
   return {
     chartHost,
     stage,
-    setAdvice({ label, sceneLabel, reasonText, criterionText }) {
-      pick.replaceChildren(el('span', 'sa-pick-scene', `Recommended for ${sceneLabel}: `), el('strong', 'sa-pick-method', label));
+    /** pickBefore and pickAfter: the pick's sentence on either side of the method's name (label). */
+    setAdvice({ label, pickBefore, pickAfter, reasonText, criterionText }) {
+      pick.replaceChildren(el('span', 'sa-pick-scene', pickBefore), el('strong', 'sa-pick-method', label), pickAfter);
       reason.textContent = reasonText;
       criterion.textContent = criterionText;
     },
@@ -88,7 +94,8 @@ export function buildSpeedAccuracyDom(host, { onRun, onCancel, onJson }) {
     setTable(rows, { costHeader, captionText, budgetCodes }) {
       caption.textContent = captionText;
       const head = el('tr');
-      for (const h of ['Method', costHeader, 'Worst error (codes)', 'Where', 'Average (codes)', 'Max |ΔR|', 'Verdict']) {
+      const after = ['columnWorst', 'columnWhere', 'columnAverage', 'columnMaxError', 'columnVerdict'].map((key) => t(key));
+      for (const h of [t('columnMethod'), costHeader, ...after]) {
         const th = el('th', '', h);
         th.scope = 'col';
         head.append(th);
@@ -98,10 +105,12 @@ export function buildSpeedAccuracyDom(host, { onRun, onCancel, onJson }) {
         const tr = el('tr', r.recommended ? 'sa-recommended' : '');
         const name = el('th', '', r.label);
         name.scope = 'row';
-        const where = r.nanCount > 0 ? `NaN at ${r.nanCount} samples`
-          : r.thetaAtMax === null ? '–' : `${angle(toDegrees(r.thetaAtMax), 1)}, ${r.caseText}`;
-        const verdict = `${r.passes ? 'within' : 'over'} ${budgetCodes} codes${r.onFront ? ', on the front' : ''}`;
-        const max = Number.isFinite(r.max) ? sci(r.max, 2) : 'NaN/∞';
+        const where = r.nanCount > 0 ? t('whereNotFinite', { count: r.nanCount, shown: String(r.nanCount) })
+          : r.thetaAtMax === null ? '–' : t('whereAt', { angle: angle(toDegrees(r.thetaAtMax), 1), case: r.caseText });
+        const budget = { count: budgetCodes, codes: plain(budgetCodes) };
+        const within = t(r.passes ? 'verdictWithin' : 'verdictOver', budget);
+        const verdict = r.onFront ? t('verdictOnFront', { verdict: within }) : within;
+        const max = Number.isFinite(r.max) ? sci(r.max, 2) : t('notFinite');
         const cells = [r.costText, formatCodes(r.maxCodes), where, formatCodes(r.meanCodes), max, verdict];
         tr.append(name, ...cells.map((t) => el('td', '', t)));
         return tr;

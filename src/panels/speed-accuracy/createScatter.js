@@ -10,7 +10,8 @@ import { drawLabels } from './scatterLabels.js';
 
 /**
  * data: { points: [{ id, name, x, xMin, xMax, y, nan, recommended, passes }], front: [point index],
- * budget: { codes, label }, xLabel, yLabel, title }. y is in 8-bit codes (0 is drawn at the floor).
+ * budget: { codes, label (the line's words) }, xLabel, yLabel, title, words: { front (the key), nan
+ * (the band of NaN) } }: every word drawn comes in data. y is in 8-bit codes (0 is drawn at the floor).
  */
 export function createScatter(container, { ariaLabel }) {
   const canvas = document.createElement('canvas');

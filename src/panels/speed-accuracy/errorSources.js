@@ -1,14 +1,12 @@
 // Where the speed-accuracy panel's errors come from: the JS emulation at the scene's precision
 // (rounding.js contexts, advisor.methodError), or values read back from this GPU in highp or
-// mediump (measureGpuErrors.js). The options of the "Error measured by" control, and the words
-// the chart, the recommendation, describe() and the CSV use to say which one was used.
+// mediump (measureGpuErrors.js). The words the chart, the recommendation, describe() and the CSV
+// use to say which one was used (the control's options are the catalogue's "controls").
+import english from 'virtual:messages/en/speed-accuracy';
+import { messages } from '../../i18n/messages.js';
+import { contextFor } from '../../methods/rounding.js';
 
-// Short labels: lil-gui's select is narrow. The chart title and the reason give the details.
-export const ERROR_SOURCES = Object.freeze({
-  js: 'JS emulation',
-  'gpu-highp': 'This GPU, highp',
-  'gpu-mediump': 'This GPU, mediump',
-});
+const t = messages('speed-accuracy', english);
 
 const GLSL = Object.freeze({ 'gpu-highp': 'highp', 'gpu-mediump': 'mediump' });
 
@@ -17,7 +15,8 @@ export function glslOf(source) {
   return GLSL[source] ?? null;
 }
 
-export const PRECISION_WORDS = Object.freeze({ fp32: 'float32 (highp)', fp16: 'float16 (mediump)' });
+/** A scene precision in words ('fp32' → float32 (highp)); anything else as it is. */
+export const precisionWords = (precision) => (precision === 'fp32' || precision === 'fp16' ? contextFor(precision).label : precision);
 
 /**
  * Words for an error source. source: 'js' | 'gpu-highp' | 'gpu-mediump'; scene: for its
@@ -27,18 +26,13 @@ export const PRECISION_WORDS = Object.freeze({ fp32: 'float32 (highp)', fp16: 'f
 export function sourceWords(source, scene, renderer = '') {
   const glsl = glslOf(source);
   if (!glsl) {
-    const words = PRECISION_WORDS[scene.precision] ?? scene.precision;
-    return {
-      short: `${words}, JS emulation`,
-      phrase: `in ${words} (JS emulation)`,
-      sentence: `Errors: JavaScript emulation of ${words}, every operation rounded to that format.`,
-    };
+    const precision = precisionWords(scene.precision);
+    return { short: t('jsShort', { precision }), phrase: t('jsPhrase', { precision }), sentence: t('jsSentence', { precision }) };
   }
   return {
-    short: `this GPU's ${glsl}`,
-    phrase: `with errors measured on this GPU in ${glsl}`,
-    sentence: `Errors: measured on this GPU${renderer ? ` (${renderer})` : ''} in ${glsl}: every sample rendered to an `
-      + 'RGBA32F target and read back, against the float64 reference.',
+    short: t('gpuShort', { precision: glsl }),
+    phrase: t('gpuPhrase', { precision: glsl }),
+    sentence: renderer ? t('gpuSentenceNamed', { renderer, precision: glsl }) : t('gpuSentence', { precision: glsl }),
   };
 }
 
@@ -51,10 +45,7 @@ export function sourceWords(source, scene, renderer = '') {
 export function mediumpNote(known) {
   if (!known?.probe) return '';
   const { probe, claimed } = known;
-  const claim = claimed?.mediump ? ` (the driver claims ${claimed.mediump.precision + 1})` : '';
-  if (probe.mediumpIsFullPrecision) {
-    return `mediump runs at full precision on this GPU: ${probe.mediumpBits} significand bits measured${claim}, `
-      + 'so its errors equal highp\'s. The phone scene\'s JS float16 shows true half precision.';
-  }
-  return `mediump runs at reduced precision on this GPU: ${probe.mediumpBits} significand bits measured${claim}; float16 has 11.`;
+  const args = { bits: String(probe.mediumpBits), claimed: claimed?.mediump ? String(claimed.mediump.precision + 1) : '' };
+  if (probe.mediumpIsFullPrecision) return t(args.claimed ? 'mediumpFullClaimed' : 'mediumpFull', args);
+  return t(args.claimed ? 'mediumpReducedClaimed' : 'mediumpReduced', args);
 }

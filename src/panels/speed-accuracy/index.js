@@ -18,6 +18,10 @@ import { cachedGpuErrors, gpuPrecisionProbe, measureGpuErrors } from './measureG
 import { createSpeedAccuracyModel } from './model.js';
 import './styles.css';
 import { schema } from './schema.js';
+import english from 'virtual:messages/en/speed-accuracy';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('speed-accuracy', english);
 
 export { schema };
 
@@ -37,7 +41,7 @@ export function mount(root, ctx) {
   });
   // A run pauses between its steps while the panel is off screen, and says so.
   const gate = createVisibilityGate(root, {
-    onPause: () => dom.setStatus('Paused while the panel is off screen; it goes on when you scroll back.'),
+    onPause: () => dom.setStatus(t('paused')),
   });
   const model = createSpeedAccuracyModel({
     values,
@@ -52,11 +56,8 @@ export function mount(root, ctx) {
       status: (text) => dom.setStatus(text),
     },
   });
-  const chart = createScatter(dom.chartHost, {
-    ariaLabel: 'Scatter of every Fresnel method: cost across, worst display error up (log scale), with the Pareto '
-      + 'front and the error budget as a line. The table below lists the same numbers.',
-  });
-  const controllers = ctx.bind(ctx.gui.addFolder('Scene and budget'), ['scene', 'budget', 'errors', 'cost']);
+  const chart = createScatter(dom.chartHost, { ariaLabel: t('chartLabel') });
+  const controllers = ctx.bind(ctx.gui.addFolder(t('folder')), ['scene', 'budget', 'errors', 'cost']);
   // Beside the "Error measured by" control: what mediump really is on this GPU, once measured.
   const gpuNote = document.createElement('p');
   gpuNote.className = 'sa-gui-note';

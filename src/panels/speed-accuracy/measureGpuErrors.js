@@ -9,6 +9,10 @@ import { createMethodsGpu, GpuFloatUnavailable, gpuPrecisionInfo } from '../../g
 import { deviceInfo } from '../../gl/timeMethodsGpu.js';
 import { domainExtra, domainInputs, errorsFromValues } from '../../methods/gpuErrors.js';
 import { methodsOfKind } from '../../methods/methods.js';
+import english from 'virtual:messages/en/speed-accuracy';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('speed-accuracy', english);
 
 const yieldToPage = () => new Promise((resolve) => { setTimeout(resolve, 0); });
 
@@ -34,7 +38,7 @@ export async function gpuErrorsOn(gl, scenes, precisions, { signal, onProgress, 
           const values = gpu.evaluate({ methodId: method.id, precision, inputs, extra: domainExtra(scene, method.id) });
           errors[scene.id][precision][method.id] = errorsFromValues(scene, values);
           done += 1;
-          onProgress?.(done, total, `Reading back ${method.label} (${precision}) on this GPU`);
+          onProgress?.(done, total, t('readingBack', { method: method.label, precision }));
           await yieldToPage(); // one program compile at a time: the page stays responsive
           await whenVisible?.();
         }

@@ -12,6 +12,10 @@ import { createRunGate, isStaleRun } from '../shared/createRunGate.js';
 import { glslOf } from './errorSources.js';
 import { readBackProblem } from './readBackProblem.js';
 import { describeView, speedAccuracyView, viewCsv } from './speedAccuracyView.js';
+import english from 'virtual:messages/en/speed-accuracy';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('speed-accuracy', english);
 
 /**
  * The GPU read-back as the model uses it (measureGpuErrors.js), so a stand-in can take its place.
@@ -99,12 +103,12 @@ export function createSpeedAccuracyModel({
       run.throwIfStale(); // cancelled as it ended: dropped as any cancelled run
       results = next;
       storage.save(next);
-      hooks.status(`Done in ${fixed((now() - started) / 1000, 1)} s`);
+      hooks.status(t('doneIn', { seconds: fixed((now() - started) / 1000, 1) }));
       hooks.invalidate(); // redraws and refreshes the description
       return next;
     } catch (error) {
       const stale = isStaleRun(error);
-      if (!disposed) hooks.status(stale ? 'Cancelled' : `Benchmark failed: ${error?.message ?? error}`);
+      if (!disposed) hooks.status(stale ? t('cancelled') : t('benchmarkFailed', { error: String(error?.message ?? error) }));
       if (!stale) console.warn(error);
       throw error;
     } finally {

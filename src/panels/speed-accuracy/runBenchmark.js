@@ -12,6 +12,10 @@ import { timeCpu } from './timeCpu.js';
 import { readCachedResults } from './cachedResults.js';
 import { timeFrames } from './timeFrames.js';
 import { gpuErrorsOn, rememberGpuErrors } from './measureGpuErrors.js';
+import english from 'virtual:messages/en/speed-accuracy';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('speed-accuracy', english);
 
 /** Run sizes: 'normal' takes a few seconds on a GPU (longer on SwiftShader); 'tiny' is for tests. */
 export const BENCH_SIZES = Object.freeze({
@@ -29,10 +33,7 @@ export const BENCH_SIZES = Object.freeze({
 
 const PHASES = { gpu: [0, 0.5], errors: [0.5, 0.6], cpu: [0.6, 0.8], frames: [0.8, 1] }; // share of the progress bar
 // What the progress line says during a phase whose steps carry no label of their own.
-const PHASE_NAMES = {
-  gpu: 'Timing every method on this GPU…', errors: 'Reading errors back from this GPU…', cpu: 'Timing every method in JavaScript…',
-  frames: 'Timing frames…',
-};
+const PHASE_WORDS = { gpu: 'phaseGpu', errors: 'phaseErrors', cpu: 'phaseCpu', frames: 'phaseFrames' };
 const CACHE_KEY = 'fresnel-lab:speed-accuracy:results';
 
 /**
@@ -51,7 +52,7 @@ export async function runBenchmark(host, { size = 'normal', onProgress, signal, 
   if (!config) throw new RangeError(`unknown benchmark size ${size}`);
   const report = (phase) => (done, total, label) => {
     const [a, b] = PHASES[phase];
-    onProgress?.(a + ((b - a) * done) / Math.max(1, total), label ?? PHASE_NAMES[phase]);
+    onProgress?.(a + ((b - a) * done) / Math.max(1, total), label ?? t(PHASE_WORDS[phase]));
   };
   let gpu = null;
   let gpuError = null;
@@ -69,7 +70,7 @@ export async function runBenchmark(host, { size = 'normal', onProgress, signal, 
     if (context) {
       device = deviceInfo(context.gl);
       try {
-        onProgress?.(0, 'Compiling the timing shaders');
+        onProgress?.(0, t('compilingTimers'));
         gpu = await timeMethodsGpu(context.gl, { ...config.gpu, signal, whenVisible, onProgress: report('gpu') });
       } catch (error) {
         // A shader this GPU cannot compile must not hide the other numbers: say so instead.
@@ -94,7 +95,7 @@ export async function runBenchmark(host, { size = 'normal', onProgress, signal, 
   await whenVisible?.();
   const cpu = await timeCpu({ ...config.cpu, signal, onProgress: report('cpu') });
   if (context) frames = await timeFrames(host, { ...config.frames, signal, whenVisible, onProgress: report('frames') });
-  onProgress?.(1, 'Done');
+  onProgress?.(1, t('done'));
   return benchResults({
     gpu, cpu, frames, gpuErrors,
     meta: { date: new Date().toISOString(), userAgent: navigator.userAgent, config: { size }, gpuError, gpuReadbackError, device },

@@ -49,8 +49,8 @@ export function scatterFrame(g, data, width, height, s) {
   // wraps onto rows of its own above the key, and the x title wraps below the ticks.
   const left = 92 * s;
   const right = width - 24;
-  const keyWidth = 150 * s;
   g.font = font(15, true);
+  const keyWidth = (60 * s) + g.measureText(data.words.front).width; // the front's swatch and name, and a gap
   const titleBesideKey = !data.title || g.measureText(data.title).width + keyWidth <= right - left;
   const titleLines = titleBesideKey ? [] : wrapText(g, data.title, right - 8);
   const headerRows = titleLines.length + 1;
@@ -101,7 +101,7 @@ export function drawAxes(g, frame, colors) {
     g.stroke();
     g.fillText(powerLabel(e), box.left - 8, Y(10 ** e));
   }
-  if (frame.hasNan) g.fillText('NaN', box.left - 8, box.top + frame.nanBand / 2);
+  if (frame.hasNan) g.fillText(data.words.nan, box.left - 8, box.top + frame.nanBand / 2);
   g.textAlign = 'center';
   g.textBaseline = 'top';
   const { ticks, step } = linearTicks(frame.xLo, frame.xHi);

@@ -42,7 +42,7 @@ export function drawLabels(g, frame, colors, drawn) {
   g.font = font(15, true);
   g.textBaseline = 'middle';
   g.textAlign = 'left';
-  const budgetText = `Budget: ${data.budget.label}`;
+  const budgetText = data.budget.label;
   const budgetY = Y(data.budget.codes);
   const budgetRect = {
     x0: box.left + 4, x1: box.left + 12 + g.measureText(budgetText).width, y0: budgetY - 4 - 18 * s, y1: budgetY + 2 * s,

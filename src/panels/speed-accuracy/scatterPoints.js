@@ -37,7 +37,7 @@ export function drawPoints(g, frame, colors) {
     g.textBaseline = 'middle';
     g.fillStyle = colors.front;
     g.fillRect(box.left, frame.keyY - 1.5 * s, 28 * s, 3 * s);
-    g.fillText('Pareto front', box.left + 36 * s, frame.keyY);
+    g.fillText(data.words.front, box.left + 36 * s, frame.keyY);
   }
 
   const drawn = points.filter((p) => Number.isFinite(p.x)).map((p) => ({ p, px: X(p.x), py: pointY(p) }));

@@ -2,7 +2,11 @@
 // What the speed-accuracy panel shows for its values: every method of the scene as a row (cost,
 // worst and mean display error, the Pareto front, the budget's verdict), the advisor's pick with
 // its reason, the chart's data and the lines of words around it, the description and the CSV.
-// Pure: the model (model.js) supplies the benchmark's results and the GPU's read-back errors.
+// Pure: the model (model.js) supplies the benchmark's results and the GPU's read-back errors. Its
+// words are the catalogue's ("speed-accuracy"), each sentence one message.
+import english from 'virtual:messages/en/speed-accuracy';
+import { messages } from '../../i18n/messages.js';
+import { timerName } from '../../gl/timeMethodsGpu.js';
 import { gpuPrecisionFor, measuredCosts } from '../../methods/benchResults.js';
 import { criterionText, displayBudget, recommendWithin } from '../../methods/displayBudgets.js';
 import { recommendWithErrors } from '../../methods/gpuErrors.js';
@@ -10,16 +14,22 @@ import { methodById } from '../../methods/methods.js';
 import { paretoFront } from '../../methods/paretoFront.js';
 import { sceneById } from '../../methods/scenes.js';
 import { toDegrees } from '../../optics/angles.js';
-import { angle, fixed } from '../../ui/format.js';
+import { angle, fixed, tickLabel } from '../../ui/format.js';
 import { pageLocale } from '../../ui/safeLocale.js';
 import {
-  glslOf, mediumpNote, PRECISION_WORDS, sourceWords,
+  glslOf, mediumpNote, precisionWords, sourceWords,
 } from './errorSources.js';
 import { formatCodes, formatNs, shortDecimal } from './formatMeasures.js';
 
+const t = messages('speed-accuracy', english);
+const METHOD_MARK = '\u0001'; // where the method's name goes in the pick's sentence
+
+/** A number as short as it is (1.3725, 0.5, 12.75), with the page's decimal separator. */
+const plain = (v) => tickLabel(v, 1e-6);
+
 function caseText(kind, args) {
   if (!args) return '';
-  return kind === 'dielectric' ? `n ${args[0]} → ${shortDecimal(args[1])}` : `n ${args[0]}, k ${args[1]}`;
+  return kind === 'dielectric' ? `n ${plain(args[0])} → ${shortDecimal(args[1])}` : `n ${plain(args[0])}, k ${plain(args[1])}`;
 }
 
 /**
@@ -30,17 +40,16 @@ function caseText(kind, args) {
 function practicalNote(alt, rec, rows) {
   if (!alt?.invisible || alt.methodId === rec.methodId) return '';
   const row = rows.find((r) => r.methodId === alt.methodId);
+  const args = { method: row.label, worst: formatCodes(row.maxCodes), mean: formatCodes(row.meanCodes) };
   // The worst codes need not lie where |ΔR| is largest (sRGB is steeper for dark values): that angle is said apart.
-  const where = row.thetaAtMax === null ? '' : ` (its largest |ΔR| at ${angle(toDegrees(row.thetaAtMax), 1)})`;
-  return ' If an error of up to 5 % of the display range is acceptable (the judgement behind the Schlick that engines ship), '
-    + `${row.label} would do: ${formatCodes(row.maxCodes)} codes at worst, ${formatCodes(row.meanCodes)} on average${where}.`;
+  if (row.thetaAtMax === null) return ` ${t('practicalNoAngle', args)}`;
+  return ` ${t('practical', { ...args, angle: angle(toDegrees(row.thetaAtMax), 1) })}`;
 }
 
 /** A warning when timings overlap so much that their order is not to be trusted. */
 function noiseNote(rows) {
   const noisy = rows.filter((r) => Number.isFinite(r.xMin) && (r.xMax - r.xMin > Math.abs(r.x) || r.x <= 0));
-  return noisy.length ? ` ${noisy.length} of ${rows.length} timings vary by more than their median (or are ≤ 0): `
-    + 'the machine was busy, so the order of close methods is uncertain; run again when it is idle.' : '';
+  return noisy.length ? ` ${t('noisy', { count: noisy.length, noisy: String(noisy.length), all: String(rows.length) })}` : '';
 }
 
 /** A method's cost: the static count, or the measured median with its spread (null when it was not measured). */
@@ -54,15 +63,21 @@ function costOf(results, method, glsl, mode) {
 
 /** The device line under the benchmark bar. */
 export function deviceText(results) {
-  if (!results) return 'No benchmark run yet on this device: the costs are static instruction counts.';
+  if (!results) return t('noRunYet');
   const f = results.frames;
-  const ms = (spread) => formatNs(spread).replace(' ns', ' ms');
-  const frames = f ? ` Frame at ${f.width}×${f.height}: hero spheres ${ms(f.spheres.msPerFrame)}, `
-    + `three.js MeshPhysicalMaterial ${ms(f.threePhysical.msPerFrame)} (the hero costs ×${fixed(f.ratio, 2)}).` : '';
-  const failed = results.device.gpuError ? ` GPU timing failed: ${results.device.gpuError}` : '';
-  const when = results.date ? new Date(results.date).toLocaleString(pageLocale()) : '';
-  return `Measured ${when} on ${results.device.renderer ?? 'no WebGL2 (CPU only)'}; `
-    + `timer: ${results.device.timer ?? '–'}.${frames}${failed}`;
+  const sentences = [t('measuredOn', {
+    when: results.date ? new Date(results.date).toLocaleString(pageLocale()) : '',
+    device: results.device.renderer ?? t('noWebgl2Device'),
+    timer: results.device.timer ? timerName(results.device.timer) : '–',
+  })];
+  if (f) {
+    sentences.push(t('frameCost', {
+      width: String(f.width), height: String(f.height), hero: formatNs(f.spheres.msPerFrame, 'ms'),
+      peer: formatNs(f.threePhysical.msPerFrame, 'ms'), ratio: fixed(f.ratio, 2),
+    }));
+  }
+  if (results.device.gpuError) sentences.push(t('gpuTimingFailed', { error: results.device.gpuError }));
+  return sentences.join(' ');
 }
 
 /**
@@ -82,7 +97,7 @@ export function speedAccuracyView(values, { source: src, results, problem, probe
   const recommendFor = (b) => (src.measured
     ? {
       ...recommendWithErrors(scene, src.measured.errors, costs, {
-        budgetCodes: b.codes, where: `${scene.label}, this GPU in ${src.glsl} (read back)`, precision: src.glsl,
+        budgetCodes: b.codes, where: t('gpuWhere', { scene: scene.label, precision: src.glsl }), precision: src.glsl,
       }),
       budget: b,
       criterion: criterionText(),
@@ -106,38 +121,40 @@ export function speedAccuracyView(values, { source: src, results, problem, probe
   }));
   const front = paretoFront(points.map((p) => ({ x: p.x, y: p.nan ? Infinity : p.y })));
   rows.forEach((r, i) => { r.onFront = front.includes(i); });
-  const unit = mode === 'static' ? 'static instruction count (SPIR-V)'
-    : mode === 'cpu' ? 'CPU ns per evaluation (JS, float64; median, min–max)'
-      : `GPU ns per evaluation, ${glsl} (median, min–max)`;
   const chosen = rows.find((r) => r.recommended);
   const costNote = mode === 'static'
-    ? (wanted === 'static' ? 'Costs: static instruction counts.' : 'Costs: static instruction counts until you run the benchmark.')
-    : `Costs: measured here (${mode === 'cpu' ? 'CPU, JavaScript' : `GPU, ${glsl}`}).${noiseNote(rows)}`;
+    ? t(wanted === 'static' ? 'costsStatic' : 'costsStaticUntilRun')
+    : `${mode === 'cpu' ? t('costsMeasuredCpu') : t('costsMeasuredGpu', { precision: glsl })}${noiseNote(rows)}`;
   const shownProblem = glslOf(values.errors) ? '' : problem; // said until the GPU is chosen again
+  // The pick's sentence with the method in its own element: split where the method goes, so a
+  // language may put it anywhere in the sentence.
+  const pickSource = src.measured ? words.short : precisionWords(rec.precision);
+  const pick = t('recommendedFor', { scene: scene.inText, source: pickSource, method: METHOD_MARK });
+  const [pickBefore, pickAfter = ''] = pick.split(METHOD_MARK);
   return {
     scene, budget, rec, rows, mode, chosen, source: src.source, glsl: src.glsl, words,
     chart: {
-      points, front, budget: { codes: budget.codes, label: `${budget.codes} codes` },
-      xLabel: `Cost: ${unit}`, yLabel: 'Worst display error, 8-bit codes (log)',
-      title: `${scene.label}, ${words.short}`,
+      points, front, budget: { codes: budget.codes, label: t('budgetLine', { count: budget.codes, codes: plain(budget.codes) }) },
+      xLabel: mode === 'static' ? t('xStatic') : mode === 'cpu' ? t('xCpu') : t('xGpu', { precision: glsl }),
+      yLabel: t('yLabel'),
+      title: t('chartTitle', { scene: scene.label, source: words.short }),
+      words: { front: t('paretoFront'), nan: t('nanAxis') },
     },
     advice: {
       label: chosen.label,
-      sceneLabel: `${scene.label.toLowerCase()}, ${src.measured ? words.short : PRECISION_WORDS[rec.precision] ?? rec.precision}`,
+      pickBefore,
+      pickAfter,
       reasonText: `${rec.reason} ${words.sentence}${practicalNote(alt, rec, rows)}`,
-      criterionText: `Criterion: ${criterionText()}. Budget: ${budget.label}. ${costNote} Domain: ${scene.note}`,
+      criterionText: t('criterionLine', { criterion: criterionText(), budget: budget.label, costs: costNote, domain: scene.note }),
     },
     /** The line about the error source: the read-back under way, or why it failed (a warning). */
     sourceLine: src.waiting
-      ? {
-        text: `Measuring the errors on this GPU in ${src.waiting}… The chart shows the JavaScript emulation until the read-back is done.`,
-        warning: false,
-      }
+      ? { text: t('measuring', { precision: src.waiting }), warning: false }
       : { text: shownProblem, warning: Boolean(shownProblem) },
     gpuNote: mediumpNote(probe),
     table: {
-      costHeader: mode === 'static' ? 'Cost (static count)' : `Cost (${mode === 'cpu' ? 'CPU' : 'GPU'} ns/eval)`,
-      captionText: `${scene.label}: every method, cheapest first (errors: ${words.short})`,
+      costHeader: mode === 'static' ? t('costStaticHeader') : mode === 'cpu' ? t('costCpuHeader') : t('costGpuHeader'),
+      captionText: t('caption', { scene: scene.label, source: words.short }),
       budgetCodes: budget.codes,
     },
     device: deviceText(results),
@@ -148,13 +165,14 @@ export function speedAccuracyView(values, { source: src, results, problem, probe
 export function describeView(view, probe) {
   const { scene, budget, chosen, rows, mode, words, glsl } = view;
   const worst = rows.filter((r) => r.methodId !== chosen.methodId).sort((a, b) => b.maxCodes - a.maxCodes)[0];
-  const full = glsl === 'mediump' && probe?.probe.mediumpIsFullPrecision
-    ? ' mediump runs at full precision on this GPU, so these are float32 errors.' : '';
-  return `For ${scene.label.toLowerCase()} ${words.phrase}, with a budget of ${budget.codes} `
-    + `8-bit codes at the worst pixel, the recommendation is ${chosen.label}: worst error ${formatCodes(chosen.maxCodes)} codes, `
-    + `cost ${chosen.costText}${mode === 'static' ? ' (static count)' : ''}. `
-    + `${rows.filter((r) => r.passes).length} of ${rows.length} methods are within the budget; `
-    + `the worst is ${worst?.label ?? '–'} at ${formatCodes(worst?.maxCodes)} codes.${full}`;
+  const text = t('describe', {
+    scene: scene.inText, phrase: words.phrase, count: budget.codes, codes: plain(budget.codes), method: chosen.label,
+    worst: formatCodes(chosen.maxCodes), cost: chosen.costText, static: mode === 'static' ? 'yes' : 'no',
+    passing: String(rows.filter((r) => r.passes).length), all: String(rows.length),
+    worstMethod: worst?.label ?? '–', worstCodes: formatCodes(worst?.maxCodes),
+  });
+  const full = glsl === 'mediump' && probe?.probe.mediumpIsFullPrecision;
+  return full ? `${text} ${t('describeFullMediump')}` : text;
 }
 
 /** The plotted rows as CSV columns. */

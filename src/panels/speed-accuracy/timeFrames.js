@@ -12,6 +12,10 @@ import { TIMER_QUERY, WALL_TIMER } from '../../gl/timeMethodsGpu.js';
 import { spreadOf } from '../../methods/timeMethodsCpu.js';
 import { schema as heroSchema } from '../spheres/schema.js';
 import { defaults as defaultValues } from '../../host/params.js';
+import english from 'virtual:messages/en/speed-accuracy';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('speed-accuracy', english);
 
 const defaults = defaultValues(heroSchema);
 const SUN = directionFromAngles(defaults.lightAz, defaults.lightEl);
@@ -108,13 +112,13 @@ export async function timeFrames(host, {
 } = {}) {
   const size = { width, height };
   const options = { frames, warmup, signal, now };
-  onProgress?.(0, 2, 'Frame cost: the hero spheres');
+  onProgress?.(0, 2, t('frameHero'));
   await whenVisible?.();
   const spheres = await heroFrames(host, size, options);
   signal?.throwIfAborted();
   await whenVisible?.();
-  onProgress?.(1, 2, 'Frame cost: three.js MeshPhysicalMaterial');
+  onProgress?.(1, 2, t('framePeer'));
   const threePhysical = await physicalFrames(host, size, options);
-  onProgress?.(2, 2, 'Frame cost done');
+  onProgress?.(2, 2, t('frameDone'));
   return { spheres, threePhysical, ratio: spheres.msPerFrame.median / threePhysical.msPerFrame.median, width, height };
 }
