@@ -164,7 +164,7 @@ export function createMethodsGpu(gl) {
     if (gl.isContextLost()) throw new Error(t('contextLost'));
     const width = Math.min(count, MAX_WIDTH);
     const height = Math.ceil(count / width);
-    if (height > gl.getParameter(gl.MAX_TEXTURE_SIZE)) throw new RangeError(`${count} samples do not fit one texture`);
+    if (height > gl.getParameter(gl.MAX_TEXTURE_SIZE)) throw new RangeError(t('tooManySamples', { count: String(count) }));
     const padded = (data) => {
       if (data.length === width * height * 4) return data;
       const out = new Float32Array(width * height * 4);

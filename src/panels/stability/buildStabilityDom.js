@@ -3,19 +3,23 @@
 import { el } from '../../ui/el.js';
 import { CLASS_NAMES } from '../../methods/stabilityMap.js';
 import { CLASS_LABELS, createMapFigure, swatch } from '../shared/createMapFigure.js';
+import english from 'virtual:messages/en/stability';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('stability', english);
 
 export function buildStabilityDom(host) {
   const root = el('div', 'st-panel');
   const note = el('p', 'st-note');
   const legend = el('ul', 'st-legend');
-  legend.setAttribute('aria-label', 'Map legend');
+  legend.setAttribute('aria-label', t('legend'));
   for (const cls of CLASS_NAMES) {
     const item = el('li');
     item.append(swatch(cls), CLASS_LABELS[cls]);
     legend.append(item);
   }
   const critical = el('li');
-  critical.append(el('span', 'st-line st-line-critical'), 'critical angle θc (total internal reflection to its right)');
+  critical.append(el('span', 'st-line st-line-critical'), t('criticalLine'));
   legend.append(critical);
   const maps = el('div', 'st-maps');
   const gpu = createMapFigure('gpu');
@@ -23,7 +27,6 @@ export function buildStabilityDom(host) {
   maps.append(gpu.figure, js.figure);
   const readout = el('p', 'st-readout');
   readout.setAttribute('aria-live', 'polite');
-  const hint = 'Hover or tap a map, or focus it and use the arrow keys (Shift: 10 cells), to read θ, n_i/n_t, the value and the exact R.';
   root.append(note, legend, maps, readout);
   host.append(root);
   return {
@@ -32,6 +35,6 @@ export function buildStabilityDom(host) {
     gpu,
     js,
     setNote(text) { note.textContent = text; note.hidden = !text; },
-    setReadout(text) { readout.textContent = text || hint; },
+    setReadout(text) { readout.textContent = text || t('hint'); },
   };
 }

@@ -12,6 +12,10 @@ import { composePng } from '../shared/composePng.js';
 import './styles.css';
 import { schema } from './schema.js';
 import { readByPointer } from '../../ui/readByPointer.js';
+import english from 'virtual:messages/en/stability';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('stability', english);
 
 export { schema, pairFor };
 
@@ -29,7 +33,7 @@ export function mount(root, ctx) {
   // not yet evaluated wait for the restore (createReadBackGpu makes the evaluator anew then).
   const gpu = createReadBackGpu({ words: readBackWords, onChange: () => ctx.invalidate() });
   const model = createStabilityModel({ values: ctx.values, gpu, onRead: () => ctx.frameDrawn() });
-  ctx.bind(ctx.gui.addFolder('Map'), ['method', 'precision', 'tolerance']);
+  ctx.bind(ctx.gui.addFolder(t('folder')), ['method', 'precision', 'tolerance']);
 
   /** @type {Partial<Record<Side, ReturnType<typeof drawMap>>>} */
   const layouts = {};

@@ -5,12 +5,14 @@
 // every sentence the panel says. The GPU is a read-back GPU (createReadBackGpu.js); in Node a
 // stand-in. Whether mediump really is half precision here is measured by rendering 1 + 2^-f, not
 // taken from the driver, whose answer Safari/iOS has got wrong (webglfundamentals "WebGL Precision
-// Issues").
+// Issues"). Every sentence is the catalogue's ("stability"), numbers through src/ui/format.js.
+import english from 'virtual:messages/en/stability';
+import { messages } from '../../i18n/messages.js';
 import { cellAt, classifyGrid, criticalAngleDeg, gridInputs } from '../../methods/classifyGrid.js';
 import { methodById } from '../../methods/methods.js';
 import { contextFor } from '../../methods/rounding.js';
 import { classify, classifyValue, CLASS_NAMES } from '../../methods/stabilityMap.js';
-import { fixed, precise as significant } from '../../ui/format.js';
+import { angle, fixed, precise as significant } from '../../ui/format.js';
 import { CLASS_LABELS } from '../shared/createMapFigure.js';
 import { isStaleRun } from '../shared/createRunGate.js';
 
@@ -18,13 +20,14 @@ import { isStaleRun } from '../shared/createRunGate.js';
 /** @typedef {'gpu' | 'js'} Side */
 /** @typedef {{ i: number, j: number }} Cell */
 
-/** What the panel says about its GPU (createReadBackGpu's words). */
+const t = messages('stability', english);
+
+/** What the panel says about its GPU (createReadBackGpu's words), in the page's language when read. */
 export const readBackWords = Object.freeze({
-  unavailable: 'The GPU map needs WebGL2 with float render targets; the JavaScript map still works.',
-  refused: (/** @type {string} */ line) => 'This GPU could not compile the evaluation shader, so there is no GPU map: '
-    + `${line}. The JavaScript map still works.`,
-  lost: 'The graphics context was lost; the GPU map comes back when it is restored.',
-  restartFailed: (/** @type {Error} */ error) => `The GPU evaluator could not start again: ${error.message}`,
+  get unavailable() { return t('unavailable'); },
+  refused: (/** @type {string} */ line) => t('refused', { line }),
+  get lost() { return t('lost'); },
+  restartFailed: (/** @type {Error} */ error) => t('restartFailed', { error: error.message }),
 });
 
 /** The two maps a precision shows: the GPU qualifier, the JS context, and which one was chosen. */
@@ -75,7 +78,7 @@ export function createStabilityModel({ values, gpu, onRead = () => {} }) {
         const read = (evaluator) => evaluator.evaluate({ methodId: values.method, precision: pair.gpu, inputs });
         gpuValues.set(key, gpu.read(reading.begin(), read));
       } catch (error) { // the JavaScript map still stands
-        gpuProblem = isStaleRun(error) ? gpu.problem : `The GPU evaluation failed: ${error.message}`;
+        gpuProblem = isStaleRun(error) ? gpu.problem : t('evaluationFailed', { error: error.message });
         return null;
       }
       onRead();
@@ -86,8 +89,8 @@ export function createStabilityModel({ values, gpu, onRead = () => {} }) {
   const probe = () => gpu.precision?.probe ?? null;
   const fullMediump = () => Boolean(probe()?.mediumpIsFullPrecision && pair.gpu === 'mediump');
   const sideTitle = (/** @type {Side} */ side) => (side === 'gpu'
-    ? `On this GPU · ${pair.gpu}`
-    : `JavaScript · ${contextFor(pair.js).name}`);
+    ? t('titleGpu', { precision: pair.gpu })
+    : t('titleJs', { precision: contextFor(pair.js).name }));
 
   return {
     get maps() { return maps; },
@@ -105,12 +108,9 @@ export function createStabilityModel({ values, gpu, onRead = () => {} }) {
     note() {
       if (!maps.gpu) return gpuProblem;
       const { probe: measured, claimed } = /** @type {import('../shared/createReadBackGpu.js').PrecisionFacts} */ (gpu.precision);
-      const claim = claimed?.mediump ? ` (the driver claims ${claimed.mediump.precision + 1} bits; not trusted, measured instead)` : '';
-      if (measured.mediumpIsFullPrecision) {
-        return `mediump runs at full precision on this GPU: 1 + 2⁻¹² ≠ 1, ${measured.mediumpBits} significand bits${claim}. `
-          + 'Its map matches highp; the JavaScript float16 map shows what a phone GPU with true half precision does.';
-      }
-      return `mediump runs at reduced precision on this GPU: ${measured.mediumpBits} significand bits (float16 has 11)${claim}.`;
+      const args = { bits: String(measured.mediumpBits), claimed: claimed?.mediump ? String(claimed.mediump.precision + 1) : '' };
+      if (measured.mediumpIsFullPrecision) return t(args.claimed ? 'mediumpFullClaimed' : 'mediumpFull', args);
+      return t(args.claimed ? 'mediumpReducedClaimed' : 'mediumpReduced', args);
     },
     /** The message in place of the GPU map ('' when there is one). */
     gpuMessage: () => (maps.gpu ? '' : gpuProblem),
@@ -120,8 +120,8 @@ export function createStabilityModel({ values, gpu, onRead = () => {} }) {
     mapLabel(/** @type {Side} */ side) {
       const map = maps[side];
       if (!map) return null;
-      return `Stability map of ${methodById(values.method).label}, ${sideTitle(side)}: `
-        + `${failing(map)} of ${map.width * map.height} cells fail. Arrow keys move the probe.`;
+      const method = methodById(values.method).label;
+      return t('mapLabel', { method, side: sideTitle(side), failing: String(failing(map)), cells: String(map.width * map.height) });
     },
     setProbe(/** @type {Cell | null} */ cell) { probeCell = cell; },
     /**
@@ -146,23 +146,32 @@ export function createStabilityModel({ values, gpu, onRead = () => {} }) {
       const cell = cellAt(maps.js, probeCell.i, probeCell.j);
       const method = methodById(values.method);
       const critical = criticalAngleDeg(cell.ratio);
-      const parts = [`θ = ${fixed(cell.thetaDeg, 2)}°, n_i/n_t = ${fixed(cell.ratio, 3)}`
-        + `${critical === null ? '' : ` (θc = ${fixed(critical, 2)}°)`}`, `exact R = ${precise(cell.reference)}`];
+      const where = { theta: angle(cell.thetaDeg, 2), ratio: fixed(cell.ratio, 3) };
+      const parts = [
+        critical === null ? t('readoutCell', where) : t('readoutCellCritical', { ...where, critical: angle(critical, 2) }),
+        t('readoutExact', { value: precise(cell.reference) }),
+      ];
       const k = cell.j * maps.js.width + cell.i;
-      if (maps.gpu) parts.push(`GPU ${pair.gpu}: ${precise(maps.gpu.values[k])} (${CLASS_LABELS[CLASS_NAMES[maps.gpu.cells[k]]]})`);
+      if (maps.gpu) {
+        const value = precise(maps.gpu.values[k]);
+        parts.push(t('readoutGpu', { precision: pair.gpu, value, class: CLASS_LABELS[CLASS_NAMES[maps.gpu.cells[k]]] }));
+      }
       const jsValue = method.evaluate(pair.js, cell.cos, cell.ratio, 1);
       const jsClass = CLASS_NAMES[classifyValue(jsValue, cell.reference, values.tolerance)];
-      parts.push(`JS ${contextFor(pair.js).label}: ${precise(jsValue)} (${CLASS_LABELS[jsClass]})`);
+      parts.push(t('readoutJs', { precision: contextFor(pair.js).label, value: precise(jsValue), class: CLASS_LABELS[jsClass] }));
       return parts.join(' · ');
     },
     describe() {
-      const method = methodById(values.method);
-      const words = (map) => `${map.counts.fine} fine, ${map.counts.aboveTolerance} with error above ${significant(values.tolerance, 3)}, `
-        + `${map.counts.outOfRange} outside [0, 1] and ${map.counts.notFinite} NaN or infinite`;
-      const gpuText = maps.gpu ? `on this GPU in ${pair.gpu}: ${words(maps.gpu)}` : 'no GPU map (no float render targets)';
-      const mediump = fullMediump() ? ' mediump runs at full precision on this GPU.' : '';
-      return `${method.label} over ${maps.js.width} angles × ${maps.js.height} index ratios: ${gpuText}; `
-        + `in JavaScript ${contextFor(pair.js).label}: ${words(maps.js)}.${mediump}`;
+      const words = (map) => t('counts', {
+        fine: String(map.counts.fine), above: String(map.counts.aboveTolerance), tolerance: significant(values.tolerance, 3),
+        outside: String(map.counts.outOfRange), notFinite: String(map.counts.notFinite),
+      });
+      const args = {
+        method: methodById(values.method).label, width: String(maps.js.width), height: String(maps.js.height),
+        js: contextFor(pair.js).label, jsCounts: words(maps.js),
+      };
+      const text = maps.gpu ? t('describe', { ...args, gpu: pair.gpu, gpuCounts: words(maps.gpu) }) : t('describeNoGpu', args);
+      return fullMediump() ? `${text} ${t('describeFullMediump')}` : text;
     },
     csv() {
       /** @type {Record<string, Array<number | string>>} */
@@ -172,7 +181,7 @@ export function createStabilityModel({ values, gpu, onRead = () => {} }) {
       return { filename: `stability-${values.method}-${values.precision}.csv`, columns };
     },
     /** The caption of the exported picture. */
-    pngCaption: () => `${methodById(values.method).label}${fullMediump() ? ' (mediump runs at full precision on this GPU)' : ''}`,
+    pngCaption: () => (fullMediump() ? t('pngCaptionFull', { method: methodById(values.method).label }) : methodById(values.method).label),
     /** Frees the GPU (its runs, evaluator and context) and the values read back. */
     dispose() {
       gpu.dispose();
