@@ -4,6 +4,11 @@
 import { button, el } from '../../ui/el.js';
 import { createMapFigure } from '../shared/createMapFigure.js';
 import '../shared/twinStage.css';
+import english from 'virtual:messages/en/shader-lab';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('shader-lab', english);
+const SIGNATURE_MARK = '\u0001'; // where the signature goes in the task's sentence
 
 export function buildShaderLabDom(host) {
   const root = el('div', 'sl-panel st-panel');
@@ -11,13 +16,13 @@ export function buildShaderLabDom(host) {
   const title = el('h3', 'sl-title');
   const signature = el('p', 'sl-signature');
   const criteria = el('ol', 'sl-criteria');
-  criteria.setAttribute('aria-label', 'Criteria');
+  criteria.setAttribute('aria-label', t('criteria'));
   task.append(title, signature, criteria);
   const editor = el('div', 'sl-editor');
   const actions = el('div', 'sl-actions');
-  const grade = button('Grade (Ctrl+Enter, ⌘Enter)');
-  const restart = button('Start over');
-  const reference = button('Show a reference answer');
+  const grade = button(t('grade'));
+  const restart = button(t('startOver'));
+  const reference = button(t('showReference'));
   actions.append(grade, restart, reference);
   const errors = el('ul', 'sl-errors');
   errors.setAttribute('aria-live', 'polite'); // said when it changes, not at every grade
@@ -28,7 +33,7 @@ export function buildShaderLabDom(host) {
   const spheresCanvas = el('canvas', 'twin-stage-canvas');
   spheresCanvas.setAttribute('role', 'img');
   const labels = el('div', 'twin-stage-labels');
-  labels.append(el('span', null, 'Your function'), el('span', null, 'The exact function'));
+  labels.append(el('span', null, t('yourFunction')), el('span', null, t('exactFunction')));
   const spheresMessage = el('p', 'sl-spheres-message');
   spheres.append(spheresCanvas, labels, spheresMessage);
   const maps = el('div', 'st-maps');
@@ -58,18 +63,20 @@ export function buildShaderLabDom(host) {
     referenceMap,
     setTask(exercise, rows) {
       title.textContent = exercise.title;
-      signature.replaceChildren('Write ', el('code', null, exercise.signature),
-        '. It is compiled into a shader on this GPU and checked against the float64 optics core:');
+      // The sentence split where the signature goes, so a language may put the code anywhere in it.
+      const [before, after = ''] = t('task', { signature: SIGNATURE_MARK }).split(SIGNATURE_MARK);
+      signature.replaceChildren(before, el('code', null, exercise.signature), after);
       criteria.replaceChildren(...rows.map(({ label, precision, result }) => {
         const item = el('li', `sl-criterion${result ? (result.pass ? ' sl-pass' : ' sl-fail') : ''}`);
-        const state = result ? (result.pass ? 'passed' : 'failed') : 'not graded';
-        item.append(el('span', 'sl-state', state), ' ', el('span', null, `${label}${precision === 'mediump' ? ' (mediump)' : ''}`));
+        const state = t(result ? (result.pass ? 'passed' : 'failed') : 'notGraded');
+        const named = precision === 'mediump' ? t('criterionMediump', { criterion: label }) : label;
+        item.append(el('span', 'sl-state', state), ' ', el('span', null, named));
         if (result) item.append(el('span', 'sl-reason', result.reason));
         return item;
       }));
     },
     setErrors(list) {
-      const texts = list.map(({ line, message }) => (line ? `Line ${line}: ${message}` : message));
+      const texts = list.map(({ line, message }) => (line ? t('errorLine', { line: String(line), message }) : message));
       const shown = [...errors.children].map((li) => li.textContent);
       if (texts.join('\n') !== shown.join('\n')) errors.replaceChildren(...texts.map((t) => el('li', null, t)));
       errors.hidden = list.length === 0;

@@ -8,7 +8,7 @@
 // (useDeflate). Until then a link keeps the code as plain text, or in stored blocks when it starts
 // with "*" (RFC 1951 §3.2.4), so that it reads back the same.
 import { inflateSync } from 'fflate';
-import { MAX_CODE } from './exerciseTitles.js';
+import { MAX_CODE } from './exerciseIds.js';
 
 const COMPACT = /^\*([0-9a-z]{1,6})\.([A-Za-z0-9_-]*)$/;
 export const MAX_BYTES = 4 * MAX_CODE * 2; // UTF-8 of the longest code the schema takes, with room: larger is refused before inflating

@@ -3,9 +3,14 @@
 // Tolerances are chosen so that a careful float32 implementation passes on any GPU (the lab's own
 // GLSL twin stays within 2e-6 of the core away from the critical angle), and within 1° of the
 // critical angle, where R is ill-conditioned and float32 cannot follow it, only sanity is asked
-// (finite, in [0, 1]), except past it, where R = 1 is exact.
+// (finite, in [0, 1]), except past it, where R = 1 is exact. A criterion's words are the
+// catalogue's ("shader-lab": criterion.<id>), an exercise's title the exercise control's option.
+import english from 'virtual:messages/en/shader-lab';
+import { messages } from '../../i18n/messages.js';
 import { metalById } from '../../optics/materials.js';
-import { EXERCISE_TITLES } from './exerciseTitles.js';
+import { optionLabel } from '../panelText.js';
+
+const t = messages('shader-lab', english);
 
 const awayFromCritical = (c) => c.critical === null || Math.abs(c.thetaDeg - c.critical) >= 1;
 const inRange = (c) => c.tag !== 'outside';
@@ -13,58 +18,46 @@ const inRange = (c) => c.tag !== 'outside';
 /** Criterion kinds: 'exact' compares with the core's exact R, 'schlick' with Schlick's formula. */
 const CRITERIA = {
   schlickFromAir: {
-    label: 'Schlick’s formula, from air at every angle (0° to 90°)',
     precision: 'highp', target: 'schlick', tolerance: 1e-5, select: (c) => c.family === 'fromAir' && inRange(c),
   },
   schlickClamped: {
-    label: 'cos θ a hair above 1 or below 0 gives Schlick at the clamped cos θ (no NaN)',
     precision: 'highp', target: 'schlick', tolerance: 1e-5, select: (c) => c.tag === 'outside',
   },
   exactFromAir: {
-    label: 'The exact R from air at every angle, grazing included',
     precision: 'highp', target: 'exact', tolerance: 1e-5, select: (c) => c.family === 'fromAir' && inRange(c),
   },
   // Nearly matched indices are ill-conditioned at grazing (float32 keeps R to about 1e-4 there);
   // the lecture's order fails by 1, not by 1e-3.
   matched: {
-    label: 'Matched indices: R = 0 at every angle, grazing included (θ = 90° too); nearly matched: within 0.001 of the exact R',
     precision: 'highp', target: 'exact', tolerance: 1e-3,
     select: (c) => (c.family === 'matched' || c.family === 'nearlyMatched') && inRange(c),
   },
   // From 0.001° past θc: closer, g² is below float32's rounding of the index terms on some GPUs.
   tir: {
-    label: 'From inside glass, water and diamond: R = 1 past the critical angle (from 0.001° past it)',
     precision: 'highp', target: 'exact', tolerance: 1e-6,
     select: (c) => c.family === 'fromInside' && inRange(c) && c.thetaDeg - c.critical >= 1e-3,
   },
   fromInside: {
-    label: 'From inside, below the critical angle (more than 1° from it): the exact R',
     precision: 'highp', target: 'exact', tolerance: 1e-4,
     select: (c) => c.family === 'fromInside' && inRange(c) && c.thetaDeg < c.critical && awayFromCritical(c),
   },
   nearCritical: {
-    label: 'Within 1° of the critical angle, to ±0.00001°: finite and in [0, 1]',
     precision: 'highp', target: 'sane', select: (c) => c.critical !== null && inRange(c) && !awayFromCritical(c),
   },
   clamped: {
-    label: 'cos θ a hair above 1 or below 0 gives the exact R at the clamped cos θ (no NaN, nothing above 1)',
     precision: 'highp', target: 'exact', tolerance: 1e-5, select: (c) => c.tag === 'outside',
   },
   mediumpCritical: {
-    label: 'In mediump, 1° to 3° below the critical angle: within 0.01 of the exact R',
     precision: 'mediump', target: 'exact', tolerance: 0.01,
     select: (c) => c.family === 'fromInside' && c.tag === 'sweep' && c.critical - c.thetaDeg >= 1 && c.critical - c.thetaDeg <= 3,
   },
   mediumpSane: {
-    label: 'In mediump, everywhere with cos θ in [0, 1]: finite and in [0, 1]',
     precision: 'mediump', target: 'sane', select: inRange,
   },
   conductor: {
-    label: 'Each of red, green and blue within 1e-4 of the exact conductor R, 0° to 90°',
     precision: 'highp', target: 'exact', tolerance: 1e-4, select: inRange,
   },
   conductorClamped: {
-    label: 'cos θ a hair above 1 or below 0: the clamped value, no NaN',
     precision: 'highp', target: 'exact', tolerance: 1e-4, select: (c) => c.tag === 'outside',
   },
 };
@@ -143,33 +136,41 @@ const START = `${DIELECTRIC_SIGNATURE} {
   return 0.0;
 }`;
 
+/** An exercise with its signature, and its title in the page's language (read when it is shown). */
+function withWords(exercise) {
+  const made = { ...exercise, signature: exercise.kind === 'conductor' ? CONDUCTOR_SIGNATURE : DIELECTRIC_SIGNATURE };
+  const title = { get: () => optionLabel('shader-lab', 'exercise', exercise.id), enumerable: true };
+  return Object.freeze(Object.defineProperty(made, 'title', title));
+}
+
 export const EXERCISES = Object.freeze([
   {
-    id: 'schlick', title: EXERCISE_TITLES.schlick, kind: 'dielectric',
+    id: 'schlick', kind: 'dielectric',
     criteria: ['schlickFromAir', 'schlickClamped'], reference: SCHLICK, start: START,
   },
-  { id: 'exact', title: EXERCISE_TITLES.exact, kind: 'dielectric', criteria: ['exactFromAir', 'matched'], reference: EXACT, start: START },
+  { id: 'exact', kind: 'dielectric', criteria: ['exactFromAir', 'matched'], reference: EXACT, start: START },
   {
-    id: 'tir', title: EXERCISE_TITLES.tir, kind: 'dielectric',
+    id: 'tir', kind: 'dielectric',
     criteria: ['exactFromAir', 'tir', 'fromInside', 'nearCritical'], reference: EXACT, start: START,
   },
-  { id: 'safe', title: EXERCISE_TITLES.safe, kind: 'dielectric', criteria: ['exactFromAir', 'clamped'], reference: EXACT, start: START },
+  { id: 'safe', kind: 'dielectric', criteria: ['exactFromAir', 'clamped'], reference: EXACT, start: START },
   {
-    id: 'mediump', title: EXERCISE_TITLES.mediump, kind: 'dielectric',
+    id: 'mediump', kind: 'dielectric',
     criteria: ['mediumpCritical', 'mediumpSane', 'tir'], reference: EXACT_MEDIUMP, start: START,
   },
   {
-    id: 'gold', title: EXERCISE_TITLES.gold, kind: 'conductor', metal: 'gold',
+    id: 'gold', kind: 'conductor', metal: 'gold',
     criteria: ['conductor', 'conductorClamped'], reference: CONDUCTOR,
     start: `${CONDUCTOR_SIGNATURE} {\n`
       + '  // n + ik: gold\'s complex index per channel (red 650 nm, green 550 nm, blue 450 nm).\n'
       + '  return vec3(0.0);\n}',
   },
-].map((e) => Object.freeze({ ...e, signature: e.kind === 'conductor' ? CONDUCTOR_SIGNATURE : DIELECTRIC_SIGNATURE })));
+].map(withWords));
 
 export const EXERCISE_IDS = EXERCISES.map((e) => e.id);
 export const exerciseById = (id) => EXERCISES.find((e) => e.id === id);
-export const criterion = (id) => ({ id, ...CRITERIA[id] });
+/** A criterion with its words (label) in the page's language. */
+export const criterion = (id) => ({ id, label: t(`criterion.${id}`), ...CRITERIA[id] });
 /** The exact function for an exercise's kind: what the right-hand sphere is shaded with. */
 export const exactReference = (exercise) => (exercise.kind === 'conductor' ? CONDUCTOR : EXACT);
 export const exerciseMetal = (exercise) => (exercise.metal ? metalById(exercise.metal) : null);

@@ -4,7 +4,11 @@
 // come from the GPU (evaluateSource in src/gl/evaluateMethodsGpu.js), the cases from gradingCases.js.
 import { caseText } from './gradingCases.js';
 import { criterion } from './exercises.js';
-import { fixed, sci } from '../../ui/format.js';
+import { fixed, sci, tickLabel } from '../../ui/format.js';
+import english from 'virtual:messages/en/shader-lab';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('shader-lab', english);
 
 const SLACK = 1e-6;
 // A value in a reason: four decimals, a tiny one in two digits (1.2e-5), NaN and ±Infinity by name.
@@ -14,6 +18,10 @@ const num = (x) => (!Number.isFinite(x) ? String(x) : x === 0 ? '0' : Math.abs(x
 const channelsOf = (values, i, width) => (width === 1 ? [values[i]] : Array.from(values.subarray(i * 3, i * 3 + 3)));
 const targetsOf = (c, target) => (Array.isArray(c.exact) ? c.exact : [target === 'schlick' ? c.schlick : c.exact]);
 const CHANNEL = ['red', 'green', 'blue'];
+/** Where a case is, with its colour channel if it has one. */
+const whereOf = (c, channel) => (channel ? t('whereChannel', { case: caseText(c), channel }) : caseText(c));
+/** A tolerance as written in the criterion (0.00001, 0.001), with the page's decimal separator. */
+const toleranceText = (v) => tickLabel(v, 1e-9);
 const outside = (c) => Math.abs(c.cos - Math.min(1, Math.max(0, c.cos)));
 const tieBefore = (a, b) => (outside(a) !== outside(b) ? outside(a) < outside(b) : a.cos > b.cos);
 
@@ -47,21 +55,16 @@ export function gradeCriterion(crit, cases, values) {
       }
     });
   });
-  const where = worst ? `${caseText(worst.case)}${worst.channel ? ` (${worst.channel})` : ''}` : '';
-  const what = crit.target === 'schlick' ? 'Schlick’s formula' : 'the exact R';
+  const args = {
+    where: worst ? whereOf(worst.case, worst.channel) : '', target: crit.target, checked: String(checked), failed: String(failed),
+    tolerance: crit.tolerance === undefined ? '' : toleranceText(crit.tolerance), value: worst ? num(worst.value) : '',
+  };
   let reason;
-  if (!checked) reason = 'No case to check.';
-  else if (!failed) {
-    reason = crit.target === 'sane'
-      ? `All ${checked} values finite and in [0, 1].`
-      : `All ${checked} values within ${crit.tolerance} of ${what}; the largest difference ${num(worst.error)}, at ${where}.`;
-  }
-  else if (worst.kind === 'notFinite') reason = `${num(worst.value)} at ${where} (${failed} of ${checked} fail).`;
-  else if (worst.kind === 'outOfRange') reason = `${num(worst.value)}, outside [0, 1], at ${where} (${failed} of ${checked} fail).`;
-  else {
-    reason = `${num(worst.value)} where ${what} is ${num(worst.reference)} (off by ${num(worst.error)}, more than ${crit.tolerance}) `
-      + `at ${where}; ${failed} of ${checked} fail.`;
-  }
+  if (!checked) reason = t('noCase');
+  else if (!failed) reason = crit.target === 'sane' ? t('allSane', args) : t('allWithin', { ...args, difference: num(worst.error) });
+  else if (worst.kind === 'notFinite') reason = t('notFinite', args);
+  else if (worst.kind === 'outOfRange') reason = t('outOfRange', args);
+  else reason = t('aboveTolerance', { ...args, reference: num(worst.reference), error: num(worst.error) });
   return { id: crit.id, label: crit.label, precision: crit.precision, pass: checked > 0 && failed === 0, checked, failed, worst, reason };
 }
 
@@ -93,5 +96,5 @@ export function errorSummary(cases, values, target = 'exact') {
       }
     });
   });
-  return { max, mean: sum / count, worst, where: worst ? `${caseText(worst.case)}${worst.channel ? ` (${worst.channel})` : ''}` : '' };
+  return { max, mean: sum / count, worst, where: worst ? whereOf(worst.case, worst.channel) : '' };
 }

@@ -18,6 +18,10 @@ import { useDeflate } from './codeCodec.js';
 import { deflateSync } from 'fflate';
 import './styles.css';
 import { schema } from './schema.js';
+import english from 'virtual:messages/en/shader-lab';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('shader-lab', english);
 
 export { schema };
 
@@ -34,7 +38,7 @@ export function mount(root, ctx) {
   const { values } = ctx;
   const dom = buildShaderLabDom(root);
   // Homework mode comes from the link or a message only: a student cannot switch it off here.
-  ctx.bind(ctx.gui.addFolder('Exercise'), ['exercise', 'precision']);
+  ctx.bind(ctx.gui.addFolder(t('folder')), ['exercise', 'precision']);
   // A link or a message without code: the code this browser kept for the exercise, if any.
   if (!values.code && readStored(values.exercise)) ctx.set({ code: readStored(values.exercise) });
 
@@ -55,7 +59,7 @@ export function mount(root, ctx) {
   };
   const editor = createCodeEditor(dom.editor, {
     doc: model.code(),
-    label: 'GLSL code of the Fresnel function',
+    label: t('editorLabel'),
     onChange(text) {
       clearTimeout(typing);
       typing = window.setTimeout(() => submit(text), 400);
@@ -147,11 +151,11 @@ export function mount(root, ctx) {
     png() {
       const { state } = model;
       const sides = /** @type {Array<{ side: MapSide, title: string }>} */ ([
-        { side: 'student', title: 'Your function' }, { side: 'reference', title: 'A reference answer' },
+        { side: 'student', title: t('yourFunction') }, { side: 'reference', title: t('referenceAnswer') },
       ]);
       const parts = sides.filter(({ side }) => state.maps[side])
         .map(({ side, title }) => ({ canvas: figures[side].canvas, title, map: state.maps[side] }));
-      if (parts.length) return composePng(parts, `${model.exercise().title} · ${values.precision}`);
+      if (parts.length) return composePng(parts, t('pngCaption', { exercise: model.exercise().title, precision: values.precision }));
       return state.summary && !state.spheres ? dom.spheresCanvas.toDataURL('image/png') : null; // the conductor: its spheres
     },
     dispose() {

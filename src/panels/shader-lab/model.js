@@ -5,7 +5,9 @@
 // the spheres painted with it, and every sentence the lab says. The GPU is a read-back GPU
 // (createReadBackGpu.js) whose prepared part is the sphere painter; in Node a stand-in. The code is
 // only ever compiled by the GPU driver, never run as JavaScript (studentShader.js refuses loops,
-// directives and line continuations first).
+// directives and line continuations first). Every sentence is the catalogue's ("shader-lab").
+import english from 'virtual:messages/en/shader-lab';
+import { messages } from '../../i18n/messages.js';
 import { refusalLine, ShaderError } from '../../gl/shaderError.js';
 import { classifyGrid, gridInputs } from '../../methods/classifyGrid.js';
 import { classify } from '../../methods/stabilityMap.js';
@@ -22,16 +24,14 @@ import { checkStudentCode, readCompileLog, studentFragment } from './studentShad
 
 export const PRECISIONS = Object.freeze(['highp', 'mediump']);
 const MAP_GRID = { width: 91, height: 54 }; // θ every 1°, n_i/n_t from 0.4 to 2.5
-const NO_SPHERES = 'No spheres until the code compiles and runs.';
-const NO_MAP = 'No map until the code compiles and runs.';
-const STALLED = 'The graphics card stopped responding while this code was graded, and the browser reset it. '
-  + 'Change the code, or press Grade to try it once more.';
 
-/** What the lab says about its GPU (createReadBackGpu's words). */
+const t = messages('shader-lab', english);
+
+/** What the lab says about its GPU (createReadBackGpu's words), in the page's language when read. */
 export const readBackWords = Object.freeze({
-  unavailable: 'Grading needs WebGL2 with float render targets.',
-  refused: (/** @type {string} */ line) => `This GPU could not compile the lab’s own shaders, so nothing can be graded here: ${line}.`,
-  lost: 'The graphics context was lost; grading resumes when it is back.',
+  get unavailable() { return t('unavailable'); },
+  refused: (/** @type {string} */ line) => t('refused', { line }),
+  get lost() { return t('lost'); },
 });
 
 /** An error in three significant digits, e+0 as before; NaN (and an infinite error) as NaN. */
@@ -93,11 +93,13 @@ export function createShaderLabModel({ values, gpu, onRead = () => {} }) {
     const text = code();
     const refused = checkStudentCode(text);
     /** @type {Grade} */
-    const next = { results: [], summary: null, errors: refused, values: {}, maps: { student: null, reference: null }, spheres: NO_SPHERES };
+    const next = {
+      results: [], summary: null, errors: refused, values: {}, maps: { student: null, reference: null }, spheres: t('noSpheres'),
+    };
     state = next;
     if (refused.length || !gpu.ready) return;
     if (stalled === text) {
-      next.errors = [{ line: null, message: STALLED }];
+      next.errors = [{ line: null, message: t('stalled') }];
       return;
     }
     const run = grading.begin();
@@ -159,32 +161,32 @@ export function createShaderLabModel({ values, gpu, onRead = () => {} }) {
     summary() {
       if (gpu.problem) return gpu.problem;
       if (state.summary) {
-        return `${passed()} of ${state.results.length} criteria pass. Against the exact R (highp): largest error `
-          + `${errorText(state.summary.max)} at ${state.summary.where}; mean ${errorText(state.summary.mean)}.`;
+        return t('summary', {
+          passed: String(passed()), count: String(state.results.length), max: errorText(state.summary.max),
+          where: state.summary.where, mean: errorText(state.summary.mean),
+        });
       }
-      return state.errors.length ? 'Not graded: see what stopped it above.' : '';
+      return state.errors.length ? t('notGradedSeeAbove') : '';
     },
     /** Where mediump runs at full precision, the mediump criteria cannot fail here: said, when the exercise has one. */
     note() {
       const hasMediump = exercise().criteria.some((id) => criterion(id).precision === 'mediump');
-      return hasMediump && fullMediump()
-        ? 'This GPU runs mediump at full float32 precision, so the mediump criteria cannot fail here; '
-          + 'on a phone with half precision they can.'
-        : '';
+      return hasMediump && fullMediump() ? t('mediumpCannotFail') : '';
     },
     /** In place of the spheres: the loss, why they could not be drawn, or '' to show them. */
     spheresMessage: () => (gpu.lost ? readBackWords.lost : state.spheres),
-    spheresLabel: () => (exercise().kind === 'conductor'
-      ? 'Two gold spheres reflecting the sky: the first with your function, the second with the exact conductor Fresnel.'
-      : 'Two red spheres under a clear coat of n = 1.5: the first with your function, the second with the exact Fresnel reflectance.'),
-    mapTitle: (/** @type {MapSide} */ side) => `${side === 'student' ? 'Your function' : 'A reference answer'} · ${values.precision}`,
+    spheresLabel: () => t(exercise().kind === 'conductor' ? 'spheresGold' : 'spheresCoat'),
+    mapTitle: (/** @type {MapSide} */ side) => t(side === 'student' ? 'mapTitleStudent' : 'mapTitleReference', {
+      precision: values.precision,
+    }),
     /** In place of a map: the loss, or that there is none until the code runs; '' with a map. */
-    mapMessage: (/** @type {MapSide} */ side) => (state.maps[side] ? '' : gpu.lost ? readBackWords.lost : NO_MAP),
+    mapMessage: (/** @type {MapSide} */ side) => (state.maps[side] ? '' : gpu.lost ? readBackWords.lost : t('noMap')),
     mapLabel(/** @type {MapSide} */ side) {
       const map = state.maps[side];
-      if (!map) return 'No map';
-      return `Stability map of ${side === 'student' ? 'your function' : 'a reference answer'}: `
-        + `${map.width * map.height - map.counts.fine} of ${map.width * map.height} cells fail`;
+      if (!map) return t('noMapLabel');
+      const cells = map.width * map.height;
+      const args = { failing: String(cells - map.counts.fine), cells: String(cells) };
+      return t(side === 'student' ? 'mapLabelStudent' : 'mapLabelReference', args);
     },
     /**
      * Paints both spheres into `target` (a 2D canvas) with the graded code; returns what to say in
@@ -200,24 +202,24 @@ export function createShaderLabModel({ values, gpu, onRead = () => {} }) {
       } catch (error) {
         if (!(error instanceof ShaderError)) throw error;
         // It compiled alone but not beside the page's lighting code: say what the driver said.
-        const said = refusalLine(error) || 'the shader did not compile';
-        state.spheres = `The spheres could not be drawn beside the page’s lighting code: ${said} `
-          + '(is one of your names environment, skyLight, castStage or linearToSrgb?).';
+        state.spheres = t('spheresRefused', { said: refusalLine(error) || t('shaderDidNotCompile') });
       }
       return state.spheres;
     },
     describe() {
-      const ex = exercise();
-      if (gpu.problem) return `${ex.title}: ${gpu.problem}`;
+      const { title } = exercise();
+      if (gpu.problem) return t('describeProblem', { exercise: title, problem: gpu.problem });
       if (state.errors.length) {
-        return `${ex.title}: not graded; ${state.errors.map((e) => (e.line ? `line ${e.line}: ${e.message}` : e.message)).join(' ')}`;
+        const errors = state.errors.map((e) => (e.line ? t('errorAtLine', { line: String(e.line), message: e.message }) : e.message));
+        return t('describeRefused', { exercise: title, errors: errors.join(' ') });
       }
-      if (!state.summary) return `${ex.title}: not graded yet.`;
+      if (!state.summary) return t('describeNotYet', { exercise: title });
       const failing = state.results.filter((r) => !r.pass).map((r) => r.label);
-      const failures = failing.length ? ` (failing: ${failing.join('; ')})` : '';
-      return `${ex.title}: ${passed()} of ${state.results.length} criteria pass${failures}. `
-        + `Largest error against the exact R in highp ${errorText(state.summary.max)} at ${state.summary.where}; `
-        + `mean ${errorText(state.summary.mean)}.`;
+      const args = {
+        exercise: title, passed: String(passed()), count: String(state.results.length), failing: failing.join('; '),
+        max: errorText(state.summary.max), where: state.summary.where, mean: errorText(state.summary.mean),
+      };
+      return t(failing.length ? 'describeGradedFailing' : 'describeGraded', args);
     },
     csv() {
       const ex = exercise();

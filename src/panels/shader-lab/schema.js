@@ -1,10 +1,10 @@
 // Parameters of the `shader-lab` panel: controls, URL keys and messages all use them. Pure data
 // (no DOM), loaded with the page so the panel's link and state work before its module arrives.
-import { EXERCISE_TITLES, MAX_CODE } from './exerciseTitles.js';
+import { EXERCISE_IDS, MAX_CODE } from './exerciseIds.js';
 import { decodeCode, encodeCode } from './codeCodec.js';
 
 export const schema = {
-  exercise: { type: 'enum', default: 'schlick', options: Object.keys(EXERCISE_TITLES) },
+  exercise: { type: 'enum', default: 'schlick', options: [...EXERCISE_IDS] },
   // Empty: the exercise's starting code. The editor shows the code; the link keeps it compact.
   // Twice the panel's own limit: longer code reaches the panel, which refuses it in its own words.
   code: {

@@ -9,26 +9,22 @@
 // student's code makes the driver's error lines the student's own (GLSL ES 3.00 §3.4); the wrapper
 // after it starts at line WRAPPER_LINE, so its errors are told apart.
 
-import { MAX_CODE } from './exerciseTitles.js';
+// What is refused is said in the page's language ("shader-lab"); the driver's words are kept.
+import english from 'virtual:messages/en/shader-lab';
+import { messages } from '../../i18n/messages.js';
+import { MAX_CODE } from './exerciseIds.js';
 
 export { MAX_CODE };
 export const WRAPPER_LINE = 10000;
 
-const REFUSED = Object.freeze({
-  length: `a Fresnel function needs far fewer (at most ${MAX_CODE} here).`,
-  loop: 'Loops are refused here: a Fresnel function needs none, and a loop that never ends would stall the graphics card.',
-  continuation: 'A backslash at the end of a line is refused here (in a comment too): it joins two lines, which could hide a loop.',
-  directive: 'Preprocessor lines (#…) are refused here: the page writes the shader around your function, and a function needs none.',
-  precision: 'Precision statements are refused here: the page sets the precision your function is graded in '
-    + '(a highp local inside it is fine).',
-});
+const t = messages('shader-lab', english);
 
 /** Problems that refuse the code before it reaches the GPU: [{ line, message }] (empty: fine). */
 export function checkStudentCode(code) {
   const problems = [];
-  if (typeof code !== 'string' || !code.trim()) return [{ line: null, message: 'There is no code to compile.' }];
+  if (typeof code !== 'string' || !code.trim()) return [{ line: null, message: t('noCode') }];
   if (code.length > MAX_CODE) {
-    problems.push({ line: null, message: `The code is ${code.length} characters long; ${REFUSED.length}` });
+    problems.push({ line: null, message: t('tooLong', { length: String(code.length), max: String(MAX_CODE) }) });
   }
   // Lines as the compiler counts them (\r\n, \r and \n all end one). Comments go in one pass from
   // left to right, as the compiler reads them (a word in a comment is no loop); their newlines
@@ -42,10 +38,10 @@ export function checkStudentCode(code) {
   bare.split('\n').forEach((text, i) => {
     const line = i + 1;
     const refuse = (message) => problems.push({ line, message });
-    if (/\b(for|while|do)\b/.test(text)) refuse(REFUSED.loop);
-    if (/\\\s*$/.test(raw[i])) refuse(REFUSED.continuation);
-    if (/^\s*#/.test(text)) refuse(REFUSED.directive);
-    if (/\bprecision\b/.test(text)) refuse(REFUSED.precision);
+    if (/\b(for|while|do)\b/.test(text)) refuse(t('refusedLoop'));
+    if (/\\\s*$/.test(raw[i])) refuse(t('refusedContinuation'));
+    if (/^\s*#/.test(text)) refuse(t('refusedDirective'));
+    if (/\bprecision\b/.test(text)) refuse(t('refusedPrecision'));
   });
   return problems;
 }
@@ -99,9 +95,9 @@ export function readCompileLog(log, signature) {
     if (line < WRAPPER_LINE) entries.push({ line, message });
     // Past the student's last line: an unclosed brace or a missing ; shows up in the page's code.
     else if (/syntax error|unexpected|end of/i.test(message)) {
-      entries.push({ line: null, message: `After your last line: ${message} (a missing } or ;?).` });
+      entries.push({ line: null, message: t('afterLastLine', { message }) });
     }
-    else entries.push({ line: null, message: `Define ${signature}: the page calls it (${message}).` });
+    else entries.push({ line: null, message: t('defineFunction', { signature, message }) });
   }
   return entries;
 }
