@@ -68,6 +68,29 @@ export function measuredCosts(results, scene, source = 'gpu', glslPrecision = gp
   return costs;
 }
 
+// The frame timing's parts (timeFrames.js), in the order the table lists them, with their names
+// there; all but the hero after a change of n and the clear-coated peer are absent from results
+// kept from before they were measured.
+const FRAME_NAMES = [
+  ['spheres', 'hero, a change of n'], ['spheresView', 'hero, a change of the view'], ['spheresOnePass', 'hero, one full-screen pass'],
+  ['copy', 'a full-screen copy of the picture'], ['threePhysical', 'three.js MeshPhysicalMaterial, clear coat'],
+  ['threePlain', 'three.js MeshPhysicalMaterial, no clear coat'],
+];
+
+/** The frame timing as kept in results: each part's cost and pixels, the ratios, the timer. */
+function framesOf(frames) {
+  const parts = FRAME_NAMES.filter(([key]) => frames[key])
+    .map(([key]) => [key, { msPerFrame: frames[key].msPerFrame, pixels: frames[key].pixels }]);
+  return {
+    width: frames.width,
+    height: frames.height,
+    timer: frames.spheres.timer ?? null,
+    ...Object.fromEntries(parts),
+    ratio: frames.ratio,
+    ...(Number.isFinite(frames.plainRatio) ? { plainRatio: frames.plainRatio } : {}),
+  };
+}
+
 /**
  * The results object. gpu: timeMethodsGpu's result (or null), cpu: timeMethodsCpu's (or null),
  * frames: timeFrames' (or null), gpuErrors: the errors read back on the GPU (see methodErrors; or
@@ -113,14 +136,7 @@ export function benchResults({ gpu = null, cpu = null, frames = null, gpuErrors 
       } : null,
     },
     methods,
-    frames: frames ? {
-      width: frames.width,
-      height: frames.height,
-      timer: frames.spheres.timer ?? null,
-      spheres: { msPerFrame: frames.spheres.msPerFrame, pixels: frames.spheres.pixels },
-      threePhysical: { msPerFrame: frames.threePhysical.msPerFrame, pixels: frames.threePhysical.pixels },
-      ratio: frames.ratio,
-    } : null,
+    frames: frames ? framesOf(frames) : null,
   };
   results.recommendations = Object.fromEntries(SCENES.map((scene) => {
     const costs = measuredCosts(results, scene);
@@ -170,9 +186,9 @@ export function benchTable(results) {
   const out = [line(head), line(widths.map((w) => '-'.repeat(w))), ...rows.map(line)];
   const f = results.frames;
   if (f) {
-    out.push('', `Frames at ${f.width}×${f.height} CSS px: hero spheres ${ns(f.spheres.msPerFrame)} ms, `
-      + `three.js MeshPhysicalMaterial ${ns(f.threePhysical.msPerFrame)} ms, `
-      + `hero/peer ${fixed(f.ratio, 2)}${f.timer ? ` (${f.timer})` : ''}`);
+    out.push('', `Frames at ${f.width}×${f.height} CSS px, ms${f.timer ? ` (${f.timer})` : ''}:`);
+    for (const [key, name] of FRAME_NAMES) if (f[key]) out.push(`  ${name.padEnd(40)} ${ns(f[key].msPerFrame)}`);
+    out.push(`  hero/peer ${fixed(f.ratio, 2)}${Number.isFinite(f.plainRatio) ? `, hero/plain peer ${fixed(f.plainRatio, 2)}` : ''}`);
   }
   out.push(`Device: ${results.device.renderer ?? 'no WebGL2'}; timer: ${results.device.timer ?? '–'}`
     + '; errors: JS emulation (fp64, fp32, fp16)'

@@ -56,9 +56,15 @@ test('npm run bench -- --tiny writes a valid results.json and a chart PNG', asyn
     }
     expect(Math.abs(exact.gpuHighp.max - exact.fp32.max)).toBeLessThan(1e-6); // float32 rounding level on any GPU
     expect(stdout).toMatch(/GPU highp\s+GPU mediump/);
-    expect(isSpread(results.frames.spheres.msPerFrame)).toBe(true);
-    expect(isSpread(results.frames.threePhysical.msPerFrame)).toBe(true);
-    expect(results.frames.ratio).toBeCloseTo(results.frames.spheres.msPerFrame.median / results.frames.threePhysical.msPerFrame.median, 9);
+    // The frame in its parts: the hero's three kinds of frame, the floor, and both peers.
+    const f = results.frames;
+    for (const key of ['spheres', 'spheresView', 'spheresOnePass', 'copy', 'threePhysical', 'threePlain']) {
+      expect(isSpread(f[key].msPerFrame), key).toBe(true);
+      expect(f[key].pixels, key).toBe(f.spheres.pixels);
+    }
+    expect(f.ratio).toBeCloseTo(f.spheres.msPerFrame.median / f.threePhysical.msPerFrame.median, 9);
+    expect(f.plainRatio).toBeCloseTo(f.spheres.msPerFrame.median / f.threePlain.msPerFrame.median, 9);
+    expect(stdout).toMatch(/hero, a change of the view\s+[\d.]+ \[/);
     expect(results.recommendations.plastic.invisible.methodId).toMatch(/^exact-/);
     // The normal-map viewer's chain build (64² when tiny), off the page's thread.
     const nm = results.normalMips;

@@ -123,10 +123,10 @@ describe('benchResults', () => {
     ]))])),
   };
   const cpu = { methods: Object.fromEntries(METHODS.map((m) => [m.id, { nsPerEval: { median: 50, min: 40, max: 60 }, samples: [40, 60] }])) };
+  const side = (ms) => ({ msPerFrame: { median: ms, min: ms, max: ms }, pixels: 7500 });
   const frames = {
-    width: 150, height: 50, ratio: 2,
-    spheres: { msPerFrame: { median: 1, min: 1, max: 1 }, pixels: 7500 },
-    threePhysical: { msPerFrame: { median: 2, min: 2, max: 2 }, pixels: 7500 },
+    width: 150, height: 50, ratio: 2, plainRatio: 0.8,
+    spheres: side(1), spheresView: side(3), spheresOnePass: side(4), copy: side(0.5), threePhysical: side(2), threePlain: side(1.25),
   };
   const results = benchResults({ gpu, cpu, frames, meta: { date: 'today', config: { size: 'tiny' } } });
 
@@ -145,6 +145,8 @@ describe('benchResults', () => {
       }
     }
     expect(results.frames).toMatchObject({ spheres: { msPerFrame: { median: 1 } }, threePhysical: { msPerFrame: { median: 2 } }, ratio: 2 });
+    expect(results.frames).toMatchObject({ spheresView: { msPerFrame: { median: 3 } }, copy: { msPerFrame: { median: 0.5 } }, plainRatio: 0.8 });
+    expect(benchTable(results)).toMatch(/hero, one full-screen pass\s+4\.000 \[4\.000, 4\.000\]/);
     expect(JSON.parse(JSON.stringify(results))).toEqual(results); // plain JSON, nothing lost
   });
 

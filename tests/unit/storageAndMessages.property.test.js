@@ -18,6 +18,7 @@ const positive = fc.double({ min: 1e-3, max: 1e6, noNaN: true });
 // A time less a baseline's may be below 0 on a software GPU.
 const time = fc.double({ min: -50, max: 1e6, noNaN: true });
 const stats = fc.tuple(time, time, time).map((v) => v.sort((a, b) => a - b)).map(([min, median, max]) => ({ median, min, max }));
+const frameStats = fc.tuple(positive, positive, positive).map((v) => v.sort((a, b) => a - b)).map(([min, median, max]) => ({ median, min, max }));
 const timing = fc.record({ nsPerEval: stats, samples: fc.array(positive, { maxLength: 5 }) });
 const someOf = (arb) => fc.array(fc.option(arb, { nil: undefined }), { minLength: METHODS.length, maxLength: METHODS.length });
 const errorSummary = fc.record({
@@ -27,9 +28,19 @@ const errorSummary = fc.record({
 const text = fc.option(fc.string({ maxLength: 30 }), { nil: null });
 
 /** A run's measurements as runBenchmark gives them to benchResults, any of them missing. */
+/** timeFrames' result from six spreads: the hero and the clear-coated peer, and (parts) the rest. */
+function framesOf({ sides: [hero, peer, view, onePass, copy, plain], parts, w }, timer) {
+  const side = (msPerFrame) => ({ msPerFrame, pixels: 9 });
+  const frames = { width: w, height: w, ratio: hero.median / peer.median, spheres: { ...side(hero), timer }, threePhysical: side(peer) };
+  if (!parts) return frames;
+  return { ...frames, spheresView: side(view), spheresOnePass: side(onePass), copy: side(copy), threePlain: side(plain), plainRatio: hero.median / plain.median };
+}
+
 const run = fc.record({
   highp: someOf(timing), mediump: someOf(timing), cpu: someOf(timing), errors: someOf(fc.tuple(errorSummary, errorSummary)),
-  renderer: text, timer: text, gpuError: text, frames: fc.option(fc.record({ a: positive, b: positive, w: fc.integer({ min: 1, max: 4096 }) }), { nil: null }),
+  renderer: text, timer: text, gpuError: text,
+  // The frame timing (timeFrames.js): the hero and the clear-coated peer, and perhaps its other parts.
+  frames: fc.option(fc.record({ sides: fc.array(frameStats, { minLength: 6, maxLength: 6 }), parts: fc.boolean(), w: fc.integer({ min: 1, max: 4096 }) }), { nil: null }),
 }).map((m) => {
   const byId = (list) => Object.fromEntries(METHODS.flatMap((method, i) => (list[i] ? [[method.id, list[i]]] : [])));
   const gpuErrors = {};
@@ -46,7 +57,7 @@ const run = fc.record({
       timer: m.timer, size: 256, loops: 8, passes: 3, bestOf: 5, repeats: 2, evaluationsPerPass: 65536,
     } : null,
     cpu: m.cpu.some(Boolean) ? { methods: byId(m.cpu), where: 'worker' } : null,
-    frames: m.frames ? { width: m.frames.w, height: m.frames.w, ratio: m.frames.a / m.frames.b, spheres: { msPerFrame: m.frames.a, pixels: 9, timer: m.timer }, threePhysical: { msPerFrame: m.frames.b, pixels: 9 } } : null,
+    frames: m.frames ? framesOf(m.frames, m.timer) : null,
     gpuErrors: Object.keys(gpuErrors).length ? gpuErrors : null,
     meta: { date: '2026-12-04T05:00:00.000Z', userAgent: 'test', config: { size: 'tiny' }, gpuError: m.gpuError, gpuReadbackError: null, device: null },
   });

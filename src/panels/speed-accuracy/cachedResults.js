@@ -96,12 +96,21 @@ export function readCachedResults(raw) {
   return results;
 }
 
-/** The frame timing of the hero against three.js, or null. */
+/**
+ * The frame timing of the hero against three.js, or null. The parts measured since the frame was
+ * timed in parts (timeFrames.js) are kept only when all of them are there.
+ */
 function frames(v) {
-  const side = (s) => (finite(own(s, 'msPerFrame')) && finite(own(s, 'pixels')) ? { msPerFrame: s.msPerFrame, pixels: s.pixels } : null);
+  const side = (s) => {
+    const msPerFrame = stats(own(s, 'msPerFrame'));
+    return msPerFrame && finite(own(s, 'pixels')) ? { msPerFrame, pixels: s.pixels } : null;
+  };
   const spheres = side(own(v, 'spheres'));
   const threePhysical = side(own(v, 'threePhysical'));
   const [width, height, ratio] = ['width', 'height', 'ratio'].map((k) => own(v, k));
   if (!spheres || !threePhysical || ![width, height, ratio].every(finite)) return null;
-  return { width, height, ratio, spheres: { ...spheres, timer: text(own(v, 'timer')) }, threePhysical };
+  const kept = { width, height, ratio, spheres: { ...spheres, timer: text(own(v, 'timer')) }, threePhysical };
+  const parts = Object.fromEntries(['spheresView', 'spheresOnePass', 'copy', 'threePlain'].map((k) => [k, side(own(v, k))]));
+  const plainRatio = own(v, 'plainRatio');
+  return Object.values(parts).every(Boolean) && finite(plainRatio) ? { ...kept, ...parts, plainRatio } : kept;
 }

@@ -70,7 +70,13 @@ export function deviceText(results) {
     device: results.device.renderer ?? t('noWebgl2Device'),
     timer: results.device.timer ? timerName(results.device.timer) : '–',
   })];
-  if (f) {
+  if (f?.spheresView) {
+    const ms = (side) => formatNs(side.msPerFrame, 'ms');
+    sentences.push(t('frameCostParts', {
+      width: String(f.width), height: String(f.height), hero: ms(f.spheres), view: ms(f.spheresView), onePass: ms(f.spheresOnePass),
+      peer: ms(f.threePhysical), plain: ms(f.threePlain), ratio: fixed(f.ratio, 2), plainRatio: fixed(f.plainRatio, 2), copy: ms(f.copy),
+    }));
+  } else if (f) { // results kept from before the frame was measured in parts
     sentences.push(t('frameCost', {
       width: String(f.width), height: String(f.height), hero: formatNs(f.spheres.msPerFrame, 'ms'),
       peer: formatNs(f.threePhysical.msPerFrame, 'ms'), ratio: fixed(f.ratio, 2),
