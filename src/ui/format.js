@@ -23,19 +23,10 @@ export function setNumberLocale(locale) {
   decimal = decimalSeparator(locale);
 }
 
-/** The separator shown numbers use now (a typed number may use it too: readNumber). */
+/** The separator shown numbers use now (a typed number may use it too: src/host/params.js readNumber). */
 export const shownDecimal = () => decimal;
 
 const local = (text) => (decimal === '.' ? text : text.replace('.', decimal));
-
-/**
- * A number typed by a reader, with a point or the page's decimal comma ('1,5' and '1.5' alike), or
- * NaN. Only a bare decimal number: no grouping, no exponent word, no unit.
- */
-export function readNumber(text) {
-  const clean = String(text).trim().replace(MINUS, '-').replace(',', '.');
-  return /^[-+]?(\d+\.?\d*|\.\d+)(e[-+]?\d+)?$/i.test(clean) ? Number(clean) : NaN;
-}
 
 /** Fixed decimals with a real minus sign; NaN (an undefined quantity) as a dash. */
 export function fixed(value, digits = 4) {

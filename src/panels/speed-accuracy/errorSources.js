@@ -5,6 +5,7 @@
 import english from 'virtual:messages/en/speed-accuracy';
 import { messages } from '../../i18n/messages.js';
 import { contextFor } from '../../methods/rounding.js';
+import { emulationGapWords } from '../shared/emulationGapWords.js';
 
 const t = messages('speed-accuracy', english);
 
@@ -27,7 +28,11 @@ export function sourceWords(source, scene, renderer = '') {
   const glsl = glslOf(source);
   if (!glsl) {
     const precision = precisionWords(scene.precision);
-    return { short: t('jsShort', { precision }), phrase: t('jsPhrase', { precision }), sentence: t('jsSentence', { precision }) };
+    // The emulation rounds exactly; a GPU does not (emulationGap.js): said wherever emulated
+    // float32 or float16 errors are shown.
+    const gap = scene.precision === 'fp32' || scene.precision === 'fp16' ? ` ${t('emulationGap', emulationGapWords())}` : '';
+    const sentence = `${t('jsSentence', { precision })}${gap}`;
+    return { short: t('jsShort', { precision }), phrase: t('jsPhrase', { precision }), sentence };
   }
   return {
     short: t('gpuShort', { precision: glsl }),
@@ -45,7 +50,9 @@ export function sourceWords(source, scene, renderer = '') {
 export function mediumpNote(known) {
   if (!known?.probe) return '';
   const { probe, claimed } = known;
-  const args = { bits: String(probe.mediumpBits), claimed: claimed?.mediump ? String(claimed.mediump.precision + 1) : '' };
+  const args = {
+    bits: String(probe.mediumpBits), claimed: claimed?.mediump ? String(claimed.mediump.precision + 1) : '', ...emulationGapWords(),
+  };
   if (probe.mediumpIsFullPrecision) return t(args.claimed ? 'mediumpFullClaimed' : 'mediumpFull', args);
   return t(args.claimed ? 'mediumpReducedClaimed' : 'mediumpReduced', args);
 }

@@ -82,8 +82,32 @@ export function deviceText(results) {
       peer: formatNs(f.threePhysical.msPerFrame, 'ms'), ratio: fixed(f.ratio, 2),
     }));
   }
+  const precisionCost = mediumpCostRatio(results);
+  if (precisionCost !== null) {
+    const verdict = precisionCost > 1.05 ? 'mediumpSlower' : precisionCost < 0.95 ? 'mediumpFaster' : 'mediumpSame';
+    sentences.push(t(verdict, { ratio: fixed(precisionCost, 2) }));
+  }
   if (results.device.gpuError) sentences.push(t('gpuTimingFailed', { error: results.device.gpuError }));
   return sentences.join(' ');
+}
+
+/**
+ * What mediump costs against highp on this GPU, as measured: all the methods' median times in
+ * mediump over all of them in highp (a sum, so that one method's timing noise near zero does not
+ * swing it), or null without both or when highp's sum is not above zero. Whether mediump is cheaper
+ * is the GPU's to say: on an NVIDIA H200 it was slower for every method.
+ */
+export function mediumpCostRatio(results) {
+  let highp = 0;
+  let mediump = 0;
+  for (const row of results?.methods ?? []) {
+    const h = row.gpu?.nsPerEval?.median;
+    const m = row.gpu?.mediump?.nsPerEval?.median;
+    if (!Number.isFinite(h) || !Number.isFinite(m)) return null;
+    highp += h;
+    mediump += m;
+  }
+  return highp > 0 ? mediump / highp : null;
 }
 
 /**

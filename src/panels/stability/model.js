@@ -14,6 +14,7 @@ import { contextFor } from '../../methods/rounding.js';
 import { classify, classifyValue, CLASS_NAMES } from '../../methods/stabilityMap.js';
 import { angle, fixed, precise as significant } from '../../ui/format.js';
 import { CLASS_LABELS } from '../shared/createMapFigure.js';
+import { emulationGapWords } from '../shared/emulationGapWords.js';
 import { isStaleRun } from '../shared/createRunGate.js';
 
 /** @typedef {import('../shared/createReadBackGpu.js').ReadBackGpu} ReadBackGpu */
@@ -108,7 +109,9 @@ export function createStabilityModel({ values, gpu, onRead = () => {} }) {
     note() {
       if (!maps.gpu) return gpuProblem;
       const { probe: measured, claimed } = /** @type {import('../shared/createReadBackGpu.js').PrecisionFacts} */ (gpu.precision);
-      const args = { bits: String(measured.mediumpBits), claimed: claimed?.mediump ? String(claimed.mediump.precision + 1) : '' };
+      const args = {
+        bits: String(measured.mediumpBits), claimed: claimed?.mediump ? String(claimed.mediump.precision + 1) : '', ...emulationGapWords(),
+      };
       if (measured.mediumpIsFullPrecision) return t(args.claimed ? 'mediumpFullClaimed' : 'mediumpFull', args);
       return t(args.claimed ? 'mediumpReducedClaimed' : 'mediumpReduced', args);
     },
