@@ -1,6 +1,10 @@
 import { defineConfig } from '@playwright/test';
 import { execFileSync } from 'node:child_process';
 import { existsSync } from 'node:fs';
+import { register } from 'node:module';
+
+// A spec may import the lab's modules, and with them the message catalogues' virtual modules.
+register('./tests/e2e/messagesHooks.js', import.meta.url);
 
 // One free loopback port, chosen once: workers inherit it through the environment.
 if (!process.env.FRESNEL_LAB_PORT) {

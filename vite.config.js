@@ -126,6 +126,8 @@ export default defineConfig({
   plugins: singleFile
     ? [messagesPlugin({ dir: resolve(root, 'locales') }), panelManifest(), offlineAssets(), viteSingleFile(), policyMeta()]
     : [messagesPlugin({ dir: resolve(root, 'locales') }), panelManifest(), policyMeta()],
+  // Workers show numbers too (src/ui/format.js, whose words are the catalogue's).
+  worker: { plugins: () => [messagesPlugin({ dir: resolve(root, 'locales') })] },
   build: {
     ...(singleFile ? { outDir: 'dist/offline', emptyOutDir: false } : {}),
     target: 'es2022',
