@@ -20,6 +20,11 @@ import { installPageFaults } from './host/panelFaults.js';
 import { contextStats } from './gl/contextBudget.js';
 import { audioTraceOn, installAudioKey, onAudioTrace, setAudioTrace, traceLog } from './ui/createAudioTrace.js';
 import { panelTitle } from './panels/panelText.js';
+import { labTitle } from './host/shareLinks.js';
+import english from 'virtual:messages/en/embed';
+import { messages } from './i18n/messages.js';
+
+const t = messages('embed', english);
 
 // The language first (?lang=, a deck's option, read by language.js from the link): every word below is in it.
 const language = await startPageLanguage();
@@ -44,8 +49,8 @@ const theme = { ...loadTheme() };
 if (options.theme) theme.scheme = options.theme;
 if (options.projector !== null) theme.projector = options.projector;
 applyTheme(theme, { remember: false });
-showNotice(root, 'Some embed options in the link were not usable:', problems.map(describeProblem));
-if (language.problem) showNotice(root, 'The panel could not load its language, so it is in English:', [language.problem]);
+showNotice(root, t('optionsProblem'), problems.map(describeProblem));
+if (language.problem) showNotice(root, t('languageProblem'), [language.problem]);
 setAudioTrace(options.audio, 'url');
 installAudioKey();
 
@@ -73,12 +78,10 @@ function restartIn(lang) {
 window.fresnelLab.ready = (async () => {
   const entry = id ? panelEntry(id) : undefined;
   if (!entry) {
-    showNotice(root, id ? `There is no panel called “${id}”.` : 'No panel was named in the link.', [
-      `Use embed.html?panel=ID with one of: ${PANEL_IDS.join(', ')}.`,
-    ], { kind: 'error' });
+    showNotice(root, id ? t('noSuchPanel', { id }) : t('noPanel'), [t('panelIds', { ids: PANEL_IDS.join(', ') })], { kind: 'error' });
     return null;
   }
-  document.title = `Fresnel Lab: ${panelTitle(entry.id)}`;
+  document.title = labTitle(entry.id);
   const heading = document.createElement('h1');
   heading.className = 'embed-title';
   setSubscripted(heading, panelTitle(entry.id)); // n_t with a real subscript, as the lecture page's heading
@@ -87,7 +90,7 @@ window.fresnelLab.ready = (async () => {
   try {
     panel = await loadPanel(id);
   } catch (error) {
-    showNotice(root, `The ${panelTitle(entry.id)} panel could not load.`, [error.message], { kind: 'error' });
+    showNotice(root, t('panelLoadFailed', { title: panelTitle(entry.id) }), [error.message], { kind: 'error' });
     return null;
   }
   let messages = null;
@@ -101,7 +104,7 @@ window.fresnelLab.ready = (async () => {
   const unknown = [...host.controls('lock', options.lock), ...host.controls('hide', options.hide)];
   if (!options.controls) host.controls('hide', null);
   if (options.fit) fitToFrame(root);
-  showNotice(root, 'Some controls named in the link do not exist:', unknown.map((k) => `${k}: not a control of this panel.`));
+  showNotice(root, t('controlsProblem'), unknown.map((k) => t('notAControl', { key: k })));
   // The view is shown while the deck has not paused it and the frame is on screen. Paused (a
   // deck's hidden slide) or off screen for a second (a slide reveal.js preloaded ahead, a page
   // scrolled past), it is disposed, which frees its WebGL context; the values stay with the host,
