@@ -5,6 +5,7 @@ import { currentLanguage, messages } from '../i18n/messages.js';
 import { applyTheme, loadTheme } from '../ui/theme.js';
 import { dielectrics } from '../optics/materials.js';
 import { languageChoices, rememberLanguage } from '../i18n/language.js';
+import { languageById } from '../i18n/languages.js';
 import { fixed } from '../ui/format.js';
 
 const t = messages('host', english);
@@ -17,8 +18,14 @@ const t = messages('host', english);
 export function languageSelect() {
   const select = document.createElement('select');
   select.lang = ''; // each option names its language in that language (its own lang below)
-  for (const language of languageChoices()) {
-    const option = new Option(language.name, language.id, false, language.id === currentLanguage());
+  // Those names are no words of the catalogue: the same in every language, never translated.
+  select.dataset.pseudoSkip = '';
+  // A pseudo-locale (asked for by link, for tests) is shown while it is the page's, so the select says what the page speaks.
+  const current = languageById(currentLanguage());
+  const choices = languageChoices();
+  for (const language of choices.includes(current) || !current ? choices : [...choices, current]) {
+    const option = new Option('', language.id, false, language.id === current?.id);
+    option.label = language.name; // shown as the option's text, and no text of the page's language around it
     option.lang = language.id;
     select.add(option);
   }
