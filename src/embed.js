@@ -12,7 +12,7 @@ import { fitToFrame } from './host/fitToFrame.js';
 import { startPageLanguage } from './i18n/pageLanguage.js';
 import { matchLanguage } from './i18n/languages.js';
 import { currentLanguage } from './i18n/messages.js';
-import { describeProblem } from './host/params.js';
+import { describeProblem, writeParams } from './host/params.js';
 import { applyTheme, loadTheme } from './ui/theme.js';
 import { setSubscripted } from './ui/subscripts.js';
 import { showNotice } from './host/showNotice.js';
@@ -66,11 +66,19 @@ const early = (event) => {
 };
 window.addEventListener('message', early);
 
-/** The embed again in `lang` (a deck's message): the values are in the link, which keeps them. */
-function restartIn(lang) {
+/**
+ * The embed again in `lang` (a deck's message), as it is now: its values and its locked and hidden
+ * controls written into its link (the link's own copy of the values follows changes a moment late).
+ */
+function restartIn(lang, host) {
   const id = matchLanguage(lang);
   if (!id || id === currentLanguage()) return;
   const url = new URL(window.location.href);
+  writeParams(host.panel.schema, host.values, url.searchParams);
+  for (const [key, keys] of [['lock', host.locked], ['hide', host.hiddenControls]]) {
+    if (keys.length) url.searchParams.set(key, keys.join(','));
+    else url.searchParams.delete(key);
+  }
   url.searchParams.set('lang', id);
   window.location.replace(url.toString());
 }
@@ -133,7 +141,7 @@ window.fresnelLab.ready = (async () => {
       projector: (on) => applyTheme(Object.assign(theme, { projector: on }), { remember: false }),
       reducedMotion: (on) => host.setReducedMotion(on),
       audio: (on) => setAudioTrace(on, 'api'),
-      language: (lang) => restartIn(lang),
+      language: (lang) => restartIn(lang, host),
       pause() { paused = true; show(); },
       resume() { paused = false; show(); },
     },
