@@ -16,13 +16,19 @@ function accent(text) {
   return text.replace(/(<[^>]*>|&[a-z#0-9]+;)|([A-Za-z])/g, (whole, tag, letter) => (tag ? tag : ACCENTS[letter] ?? letter));
 }
 
+/**
+ * The words inside a tag of the markup bracketed too (<a …>⟦Hómé⟧</a>): on the page they are an
+ * element's own text, apart from the message's brackets around it, and a test reads each element's text.
+ */
+const bracketTagged = (text) => text.replace(/(<([a-z][a-z0-9]*)\b[^>]*>)([^<]*\p{L}{2}[^<]*)(<\/\2>)/giu, `$1${OPEN}$3${CLOSE}$4`);
+
 /** Text as it must be written inside an ICU message (apostrophes doubled; braces and # quoted). */
 const quote = (text, inPlural) => text.replace(/'/g, "''").replace(inPlural ? /[{}#]+/g : /[{}]+/g, (m) => `'${m}'`);
 
 function write(tokens, inPlural = false) {
   return tokens.map((token) => {
     switch (token.type) {
-      case 'content': return quote(accent(token.value), inPlural);
+      case 'content': return quote(bracketTagged(accent(token.value)), inPlural);
       case 'argument': return `{${token.arg}}`;
       case 'function': return `{${token.arg}, ${token.key}${token.param ? `, ${write(token.param)}` : ''}}`;
       case 'octothorpe': return '#';

@@ -12,7 +12,7 @@ import { fitToFrame } from './host/fitToFrame.js';
 import { startPageLanguage } from './i18n/pageLanguage.js';
 import { matchLanguage } from './i18n/languages.js';
 import { currentLanguage } from './i18n/messages.js';
-import { describeProblem } from './host/params.js';
+import { describeProblem, writeParams } from './host/params.js';
 import { applyTheme, loadTheme } from './ui/theme.js';
 import { setSubscripted } from './ui/subscripts.js';
 import { showNotice } from './host/showNotice.js';
@@ -20,6 +20,11 @@ import { installPageFaults } from './host/panelFaults.js';
 import { contextStats } from './gl/contextBudget.js';
 import { audioTraceOn, installAudioKey, onAudioTrace, setAudioTrace, traceLog } from './ui/createAudioTrace.js';
 import { panelTitle } from './panels/panelText.js';
+import { labTitle } from './host/shareLinks.js';
+import english from 'virtual:messages/en/embed';
+import { messages } from './i18n/messages.js';
+
+const t = messages('embed', english);
 
 // The language first (?lang=, a deck's option, read by language.js from the link): every word below is in it.
 const language = await startPageLanguage();
@@ -44,8 +49,8 @@ const theme = { ...loadTheme() };
 if (options.theme) theme.scheme = options.theme;
 if (options.projector !== null) theme.projector = options.projector;
 applyTheme(theme, { remember: false });
-showNotice(root, 'Some embed options in the link were not usable:', problems.map(describeProblem));
-if (language.problem) showNotice(root, 'The panel could not load its language, so it is in English:', [language.problem]);
+showNotice(root, t('optionsProblem'), problems.map(describeProblem));
+if (language.problem) showNotice(root, t('languageProblem'), [language.problem]);
 setAudioTrace(options.audio, 'url');
 installAudioKey();
 
@@ -61,11 +66,19 @@ const early = (event) => {
 };
 window.addEventListener('message', early);
 
-/** The embed again in `lang` (a deck's message): the values are in the link, which keeps them. */
-function restartIn(lang) {
+/**
+ * The embed again in `lang` (a deck's message), as it is now: its values and its locked and hidden
+ * controls written into its link (the link's own copy of the values follows changes a moment late).
+ */
+function restartIn(lang, host) {
   const id = matchLanguage(lang);
   if (!id || id === currentLanguage()) return;
   const url = new URL(window.location.href);
+  writeParams(host.panel.schema, host.values, url.searchParams);
+  for (const [key, keys] of [['lock', host.locked], ['hide', host.hiddenControls]]) {
+    if (keys.length) url.searchParams.set(key, keys.join(','));
+    else url.searchParams.delete(key);
+  }
   url.searchParams.set('lang', id);
   window.location.replace(url.toString());
 }
@@ -73,12 +86,10 @@ function restartIn(lang) {
 window.fresnelLab.ready = (async () => {
   const entry = id ? panelEntry(id) : undefined;
   if (!entry) {
-    showNotice(root, id ? `There is no panel called “${id}”.` : 'No panel was named in the link.', [
-      `Use embed.html?panel=ID with one of: ${PANEL_IDS.join(', ')}.`,
-    ], { kind: 'error' });
+    showNotice(root, id ? t('noSuchPanel', { id }) : t('noPanel'), [t('panelIds', { ids: PANEL_IDS.join(', ') })], { kind: 'error' });
     return null;
   }
-  document.title = `Fresnel Lab: ${panelTitle(entry.id)}`;
+  document.title = labTitle(entry.id);
   const heading = document.createElement('h1');
   heading.className = 'embed-title';
   setSubscripted(heading, panelTitle(entry.id)); // n_t with a real subscript, as the lecture page's heading
@@ -87,7 +98,7 @@ window.fresnelLab.ready = (async () => {
   try {
     panel = await loadPanel(id);
   } catch (error) {
-    showNotice(root, `The ${panelTitle(entry.id)} panel could not load.`, [error.message], { kind: 'error' });
+    showNotice(root, t('panelLoadFailed', { title: panelTitle(entry.id) }), [error.message], { kind: 'error' });
     return null;
   }
   let messages = null;
@@ -101,7 +112,7 @@ window.fresnelLab.ready = (async () => {
   const unknown = [...host.controls('lock', options.lock), ...host.controls('hide', options.hide)];
   if (!options.controls) host.controls('hide', null);
   if (options.fit) fitToFrame(root);
-  showNotice(root, 'Some controls named in the link do not exist:', unknown.map((k) => `${k}: not a control of this panel.`));
+  showNotice(root, t('controlsProblem'), unknown.map((k) => t('notAControl', { key: k })));
   // The view is shown while the deck has not paused it and the frame is on screen. Paused (a
   // deck's hidden slide) or off screen for a second (a slide reveal.js preloaded ahead, a page
   // scrolled past), it is disposed, which frees its WebGL context; the values stay with the host,
@@ -130,7 +141,7 @@ window.fresnelLab.ready = (async () => {
       projector: (on) => applyTheme(Object.assign(theme, { projector: on }), { remember: false }),
       reducedMotion: (on) => host.setReducedMotion(on),
       audio: (on) => setAudioTrace(on, 'api'),
-      language: (lang) => restartIn(lang),
+      language: (lang) => restartIn(lang, host),
       pause() { paused = true; show(); },
       resume() { paused = false; show(); },
     },

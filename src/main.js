@@ -20,6 +20,7 @@ import { LECTURE_ELEMENT_ID } from './lecture/lectureElement.js';
 import { audioTraceOn, installAudioKey, onAudioTrace, setAudioTrace, traceLog } from './ui/createAudioTrace.js';
 import { panelTitle } from './panels/panelText.js';
 import { startPageLanguage } from './i18n/pageLanguage.js';
+import { messages } from './i18n/messages.js';
 
 // The page's language first: every word below is written in it. An offline lecture carries its own
 // (its data element's "lang"), which the reader's choice and the link's ?lang= still beat.
@@ -35,6 +36,17 @@ function carriedLectureLanguage() {
   } catch {
     return null;
   }
+}
+
+/**
+ * A notice titled in the page's own words (the catalogue's "page" namespace). Only a problem shows
+ * one, so those words are fetched then: the first load carries none of them. lines: the notice's
+ * lines, or a function of t that makes them in those words.
+ */
+async function pageNotice(host, key, lines, { args, kind } = {}) {
+  const { default: english } = await import('virtual:messages/en/page');
+  const t = messages('page', english);
+  return showNotice(host, t(key, args), typeof lines === 'function' ? lines(t) : lines, { kind });
 }
 
 const hosts = {};
@@ -69,8 +81,8 @@ const page = readParams(pageSchema, new URLSearchParams(window.location.search))
 const main = document.querySelector('main');
 // An error nobody caught is said in its panel, or once at the top of the page (panelFaults.js).
 installPageFaults((title, lines) => showNotice(main, title, lines, { kind: 'error' }));
-showNotice(main, 'A page setting in the link was not usable:', page.problems.map(describeProblem));
-if (language.problem) showNotice(main, 'The page could not load its language, so it is in English:', [language.problem]);
+if (page.problems.length) pageNotice(main, 'settingsProblem', page.problems.map(describeProblem));
+if (language.problem) pageNotice(main, 'languageProblem', [language.problem]);
 const maxLive = Math.round(page.values.maxContexts);
 // The audio trace (A, or the button under a plot) is kept in the link, so a shared link keeps it.
 setAudioTrace(page.values.audio, 'url');
@@ -102,12 +114,12 @@ function ownPanels() {
   // or its module, is said on the page (and fails the tests), never dropped in silence.
   const sections = [...document.querySelectorAll('section[data-panel]')];
   const onPage = sections.map((s) => s.dataset.panel);
-  const problems = [
-    ...onPage.filter((id) => !panelEntry(id)).map((id) => `The section “${id}” is not a panel of the manifest.`),
-    ...PANEL_IDS.filter((id) => !onPage.includes(id)).map((id) => `The panel “${id}” has no section on this page.`),
-    ...missingFiles,
-  ];
-  showNotice(main, 'This page does not match its panel manifest:', problems, { kind: 'error' });
+  const strays = onPage.filter((id) => !panelEntry(id));
+  const unplaced = PANEL_IDS.filter((id) => !onPage.includes(id));
+  if (strays.length || unplaced.length || missingFiles.length) {
+    pageNotice(main, 'manifestProblem', (t) => [...strays.map((id) => t('sectionWithoutPanel', { id })),
+      ...unplaced.map((id) => t('panelWithoutSection', { id })), ...missingFiles], { kind: 'error' });
+  }
   const panels = sections.map((section) => {
     const id = section.dataset.panel;
     return { section, key: id, item: null, prefix: lecturePrefix(id) };
@@ -125,9 +137,10 @@ function itemOptions({ item, key, prefix }, schema, opened) {
   const start = item.state ?? {};
   const page = opened.source === 'data' ? window.location.href : './index.html';
   const code = opened.source === 'data' ? null : opened.code;
+  const lang = code ? search.get('lang') : null; // a lecture link's language goes with it
   return {
     start,
-    lectureLink: (values) => itemLectureUrl({ page, code, schema: withDefaults(schema, start), prefix, key }, values),
+    lectureLink: (values) => itemLectureUrl({ page, code, lang, schema: withDefaults(schema, start), prefix, key }, values),
     embedOptions: { lock: item.lock ?? [], hide: item.hide ?? [] },
   };
 }
@@ -135,11 +148,11 @@ function itemOptions({ item, key, prefix }, schema, opened) {
 // Every panel's host (values, link, messages) at once; each panel's module when it comes near.
 window.fresnelLab.ready = (async () => {
   const opened = given ? await given.catch((error) => {
-    showNotice(main, 'The lecture in the link could not load, so the lab’s own lecture is shown:', [error.message], { kind: 'error' });
+    pageNotice(main, 'lectureLoadFailed', [error.message], { kind: 'error' });
     return null;
   }) : null;
   window.fresnelLab.lecture = { source: opened?.source ?? 'default', title: opened?.title ?? null, code: opened?.code ?? null };
-  const composeLink = document.querySelector('a.compose-link');
+  const composeLink = document.querySelector('.compose-offer a');
   if (composeLink instanceof HTMLAnchorElement && opened?.code) composeLink.href = `./compose.html?lecture=${opened.code}`;
   const composed = opened?.composed ?? null;
   main.classList.remove('lecture-pending');
@@ -156,7 +169,7 @@ window.fresnelLab.ready = (async () => {
       if (placed.item?.hide) hosts[key].controls('hide', placed.item.hide);
       return { section, host: hosts[key] };
     } catch (error) {
-      showNotice(section, `The ${panelEntry(id) ? panelTitle(id) : id} panel could not load.`, [error.message], { kind: 'error' });
+      pageNotice(section, 'panelLoadFailed', [error.message], { kind: 'error', args: { title: panelEntry(id) ? panelTitle(id) : id } });
       return null;
     }
   });

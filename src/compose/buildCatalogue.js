@@ -1,28 +1,32 @@
 // What can be added to the lecture: every panel by its title and what it shows (plain text), a
 // question from the homework bank, and a text item. Each "Add" keeps the focus, so a panel can be
 // added twice with two presses; the list says what was added.
+import english from 'virtual:messages/en/compose';
+import { messages } from '../i18n/messages.js';
 import { button, el } from '../ui/el.js';
 import { setSubscripted } from '../ui/subscripts.js';
 import { field, titledSection } from '../homework/page/formParts.js';
 import { panelCatalogue } from './catalogue.js';
 import { questionSelect } from './buildItemEditor.js';
 
+const t = messages('compose', english);
+
 /** onAdd: { panel(id), question(id), text() }. */
 export function buildCatalogue(onAdd) {
-  const { section, heading } = titledSection('cp-catalogue', 'cp-catalogue-title', 'Add to the lecture');
+  const { section, heading } = titledSection('cp-catalogue', 'cp-catalogue-title', t('catalogueHeading'));
 
   const texts = el('div', 'cp-add-row');
-  const addText = button('Add a text (an agenda, references)');
+  const addText = button(t('addText'));
   addText.addEventListener('click', () => onAdd.text());
   texts.append(addText);
 
   const questionBox = el('div', 'cp-add-question');
   const select = questionSelect();
-  const addQuestion = button('Add the question');
+  const addQuestion = button(t('addQuestion'));
   addQuestion.addEventListener('click', () => onAdd.question(select.value));
-  questionBox.append(field('A question to the room, from the homework bank', select), addQuestion);
+  questionBox.append(field(t('questionField'), select), addQuestion);
 
-  const panelsHeading = el('h3', 'cp-sub', 'Panels');
+  const panelsHeading = el('h3', 'cp-sub', t('panelsHeading'));
   panelsHeading.id = 'cp-panels-title';
   const panels = el('ul', 'cp-panels');
   panels.setAttribute('aria-labelledby', panelsHeading.id);
@@ -33,10 +37,10 @@ export function buildCatalogue(onAdd) {
     setSubscripted(name, panel.title);
     const lede = el('p', 'cp-panel-lede');
     setSubscripted(lede, panel.lede);
-    const add = button('Add');
+    const add = button(t('addPanel'));
     add.dataset.panel = panel.id;
     add.setAttribute('aria-describedby', name.id);
-    add.setAttribute('aria-label', `Add “${panel.title}”`);
+    add.setAttribute('aria-label', t('addPanelNamed', { title: panel.title }));
     add.addEventListener('click', () => onAdd.panel(panel.id));
     row.append(name, lede, add);
     panels.append(row);

@@ -2,6 +2,8 @@
 // heading and text, a question's choice from the bank and its seed. The lecturer's text is the
 // lecture's small Markdown, shown beside the field as the lecture page will show it
 // (lectureTextFragment: elements and text nodes only, math by KaTeX).
+import english from 'virtual:messages/en/compose';
+import { messages } from '../i18n/messages.js';
 import { el } from '../ui/el.js';
 import { setSubscripted } from '../ui/subscripts.js';
 import { field } from '../homework/page/formParts.js';
@@ -12,8 +14,7 @@ import { questionCatalogue, questionPrompt } from './catalogue.js';
 import { buildPanelStart } from './buildPanelStart.js';
 import { panelTitle } from '../panels/panelText.js';
 
-const TEXT_HINT = 'Markdown: a blank line between paragraphs, *emphasis*, **strong**, - lists, [a link](https://…), '
-  + '$n_1 \\sin θ_1$ and $$display math$$.';
+const t = messages('compose', english);
 
 function textInput(value, max, placeholder) {
   const input = /** @type {HTMLInputElement} */ (el('input'));
@@ -31,15 +32,15 @@ function markdownField(item, patch, placeholder) {
   area.rows = 4;
   area.maxLength = LECTURE_CAPS.text;
   if (placeholder) area.placeholder = placeholder;
-  const hint = el('span', 'cp-hint', TEXT_HINT);
+  const hint = el('span', 'cp-hint', t('textHint'));
   hint.id = `cp-hint-${item.key}`;
   area.setAttribute('aria-describedby', hint.id);
   const preview = el('div', 'cp-preview lecture-text');
-  preview.setAttribute('aria-label', 'Preview of the text');
+  preview.setAttribute('aria-label', t('preview'));
   preview.setAttribute('role', 'region');
   let timer = 0;
   const show = () => {
-    preview.replaceChildren(area.value.trim() ? lectureTextFragment(area.value) : el('p', 'cp-muted', placeholder || 'No text.'));
+    preview.replaceChildren(area.value.trim() ? lectureTextFragment(area.value) : el('p', 'cp-muted', placeholder || t('noText')));
   };
   area.addEventListener('input', () => {
     patch({ text: area.value });
@@ -48,14 +49,14 @@ function markdownField(item, patch, placeholder) {
   });
   show();
   const box = el('div', 'cp-text-box');
-  box.append(field('Text', area), hint, preview);
+  box.append(field(t('textField'), area), hint, preview);
   return box;
 }
 
 function headingField(item, patch, placeholder) {
   const heading = textInput(item.heading, LECTURE_CAPS.heading, placeholder);
   heading.addEventListener('input', () => patch({ heading: heading.value }));
-  return field('Heading', heading);
+  return field(t('headingField'), heading);
 }
 
 /** A select of the bank's questions, grouped by panel, each by its kind and prompt (cut at 110 characters). */
@@ -65,7 +66,8 @@ export function questionSelect() {
     const optgroup = /** @type {HTMLOptGroupElement} */ (el('optgroup'));
     optgroup.label = group.title;
     for (const q of group.questions) {
-      optgroup.append(new Option(`${q.kind}: ${q.prompt.length > 110 ? `${q.prompt.slice(0, 110)}…` : q.prompt}`, q.id));
+      const prompt = q.prompt.length > 110 ? `${q.prompt.slice(0, 110)}…` : q.prompt;
+      optgroup.append(new Option(t('questionOption', { kind: q.kind, prompt }), q.id));
     }
     select.append(optgroup);
   }
@@ -75,7 +77,7 @@ export function questionSelect() {
 function questionFields(item, patch) {
   const select = questionSelect();
   select.value = item.question;
-  const seed = textInput(item.seed, LECTURE_CAPS.seed, 'empty: the numbers the lecture page shows');
+  const seed = textInput(item.seed, LECTURE_CAPS.seed, t('seedPlaceholder'));
   const prompt = el('p', 'cp-prompt');
   prompt.setAttribute('aria-live', 'polite');
   const where = el('p', 'cp-muted');
@@ -84,12 +86,12 @@ function questionFields(item, patch) {
     const { panel } = questionCatalogue()
       .flatMap((g) => g.questions.map((q) => ({ ...q, panel: g.panel })))
       .find((q) => q.id === select.value) ?? {};
-    where.textContent = panel ? `On the panel “${panelTitle(panel)}”; the room predicts or answers, then you reveal.` : '';
+    where.textContent = panel ? t('questionWhere', { title: panelTitle(panel) }) : '';
   };
   select.addEventListener('change', () => { patch({ question: select.value }); show(); });
   seed.addEventListener('input', () => { patch({ seed: seed.value }); show(); });
   show();
-  return [field('Question', select), field('Seed (the numbers the room gets)', seed), prompt, where];
+  return [field(t('questionSelect'), select), field(t('seedField'), seed), prompt, where];
 }
 
 /** The editor of one item. patch(fields): the item's fields changed. */
@@ -98,13 +100,13 @@ export function buildItemEditor(item, { patch }) {
   if (item.type === 'panel') {
     const entry = panelEntry(item.panel);
     // The lecture page shows the panel's own title and paragraph always; these come above them.
-    box.append(headingField(item, patch, `optional: yours, above “${entry ? panelTitle(item.panel) : item.panel}”`),
-      markdownField(item, patch, 'optional: your words before the panel'), buildPanelStart(item, { patch }));
+    box.append(headingField(item, patch, t('panelHeadingPlaceholder', { title: entry ? panelTitle(item.panel) : item.panel })),
+      markdownField(item, patch, t('panelTextPlaceholder')), buildPanelStart(item, { patch }));
   } else if (item.type === 'question') {
-    box.append(...questionFields(item, patch), headingField(item, patch, 'optional'),
-      markdownField(item, patch, 'optional: what you say before asking'));
+    box.append(...questionFields(item, patch), headingField(item, patch, t('optional')),
+      markdownField(item, patch, t('questionTextPlaceholder')));
   } else {
-    box.append(headingField(item, patch, 'optional, e.g. Agenda'), markdownField(item, patch, ''));
+    box.append(headingField(item, patch, t('textHeadingPlaceholder')), markdownField(item, patch, ''));
   }
   return box;
 }

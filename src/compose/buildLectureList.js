@@ -3,8 +3,13 @@
 // a pointer; ↑ and ↓ on a card itself go to the card above or below. A move keeps the focus where
 // it was (on the card or the button), and a polite live region says where the item went. The cards
 // are kept per item key, so an editor being typed in is never rebuilt by a move.
+import english from 'virtual:messages/en/compose';
+import { messages } from '../i18n/messages.js';
 import { button, el } from '../ui/el.js';
-import { KIND_LABELS, itemName } from './composerModel.js';
+import { itemKind, itemName } from './composerModel.js';
+import { fixed } from '../ui/format.js';
+
+const t = messages('compose', english);
 
 /**
  * actions: { move(key, delta), moveTo(key, index), duplicate(key), remove(key) }; editor(item):
@@ -13,8 +18,8 @@ import { KIND_LABELS, itemName } from './composerModel.js';
  */
 export function buildLectureList({ actions, editor }) {
   const list = el('ol', 'cp-list');
-  list.setAttribute('aria-label', 'The lecture, in order');
-  const empty = el('p', 'cp-empty', 'The lecture is empty: add panels, texts and questions from the list beside it.');
+  list.setAttribute('aria-label', t('listLabel'));
+  const empty = el('p', 'cp-empty', t('listEmpty'));
   const status = el('p', 'cp-status');
   status.setAttribute('role', 'status');
   status.setAttribute('aria-live', 'polite');
@@ -39,17 +44,17 @@ export function buildLectureList({ actions, editor }) {
     const head = el('div', 'cp-item-head');
     const handle = el('span', 'cp-handle', '⠿');
     handle.setAttribute('aria-hidden', 'true');
-    handle.title = 'Drag to move the item';
+    handle.title = t('dragHandle');
     const title = el('h3', 'cp-item-title');
     title.id = `cp-title-${item.key}`;
     card.setAttribute('aria-labelledby', title.id);
     const number = el('span', 'cp-number');
     const name = el('span', 'cp-name');
-    title.append(number, el('span', 'cp-kind', KIND_LABELS[item.type]), name);
-    const up = /** @type {HTMLButtonElement} */ (button('Move up'));
-    const down = /** @type {HTMLButtonElement} */ (button('Move down'));
-    const copy = button('Duplicate');
-    const remove = button('Remove', 'cp-remove');
+    title.append(number, el('span', 'cp-kind', itemKind(item.type)), name);
+    const up = /** @type {HTMLButtonElement} */ (button(t('moveUp')));
+    const down = /** @type {HTMLButtonElement} */ (button(t('moveDown')));
+    const copy = button(t('duplicate'));
+    const remove = button(t('remove'), 'cp-remove');
     const tools = el('div', 'cp-item-tools');
     for (const control of [up, down, copy, remove]) control.setAttribute('aria-describedby', title.id);
     tools.append(up, down, copy, remove);
@@ -126,7 +131,7 @@ export function buildLectureList({ actions, editor }) {
       if (!cards.has(item.key)) cards.set(item.key, makeCard(item));
       const entry = cards.get(item.key);
       if (list.children[i] !== entry.card) list.insertBefore(entry.card, list.children[i] ?? null);
-      entry.number.textContent = `${i + 1}.`;
+      entry.number.textContent = t('itemNumber', { n: fixed(i + 1, 0) });
       entry.name.textContent = itemName(item);
       entry.up.setAttribute('aria-disabled', String(i === 0));
       entry.down.setAttribute('aria-disabled', String(i === keys.length - 1));

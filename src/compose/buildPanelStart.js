@@ -3,6 +3,8 @@
 // in a frame, asked for its state through the message API: fresnel-lab:get → fresnel-lab:state),
 // and each control free, locked or hidden, as the embed options have them. Values from the frame
 // are checked by the panel's schema like any message.
+import english from 'virtual:messages/en/compose';
+import { messages } from '../i18n/messages.js';
 import { button, el } from '../ui/el.js';
 import { setSubscripted } from '../ui/subscripts.js';
 import { fixed } from '../ui/format.js';
@@ -14,6 +16,7 @@ import { panelSchema } from '../panels/panelSchema.js';
 import { readPastedLink } from './pastedLink.js';
 import { controlLabel, optionLabel, panelTitle } from '../panels/panelText.js';
 
+const t = messages('compose', english);
 const ANSWER_MS = 5000;
 const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
 
@@ -21,8 +24,8 @@ const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v)
 export function shownValue(id, key, spec, value) {
   if (spec.type === 'number') return fixed(value, formatValue(spec, value).split('.')[1]?.length ?? 0);
   if (spec.type === 'enum') return optionLabel(id, key, value);
-  if (spec.type === 'boolean') return value ? 'on' : 'off';
-  if (spec.type === 'text') return `a text of ${fixed(String(value).length, 0)} characters`;
+  if (spec.type === 'boolean') return t('valueOnOff', { on: String(Boolean(value)) });
+  if (spec.type === 'text') return t('valueText', { count: String(value).length, n: fixed(String(value).length, 0) });
   return String(value);
 }
 
@@ -56,15 +59,20 @@ export function buildPanelStart(initial, { patch }) {
   const showSummary = () => {
     const keys = Object.keys(item.state);
     summary.replaceChildren();
-    if (!keys.length) summary.textContent = 'Starts from the panel’s defaults.';
+    if (!keys.length) summary.textContent = t('startDefaults');
     else {
-      summary.append('Starts from: ');
+      // One message with the values as a list, each value its own element (subscripts in names).
+      const marker = '\u0000';
+      const [before, after = ''] = t('startFrom', { values: marker }).split(marker);
+      summary.append(before);
       keys.forEach((key, i) => {
         const part = el('span', 'cp-value');
         const name = schema[key] ? controlLabel(item.panel, key) : key;
-        setSubscripted(part, `${name} = ${schema[key] ? shownValue(item.panel, key, schema[key], item.state[key]) : ''}`);
-        summary.append(part, i < keys.length - 1 ? '; ' : '.');
+        const value = schema[key] ? shownValue(item.panel, key, schema[key], item.state[key]) : '';
+        setSubscripted(part, t('startValue', { name, value }));
+        summary.append(part, i < keys.length - 1 ? t('startSeparator') : '');
       });
+      summary.append(after);
     }
   };
   const setStart = (state, extra = {}) => {
@@ -79,32 +87,31 @@ export function buildPanelStart(initial, { patch }) {
   // A pasted link.
   const paste = /** @type {HTMLInputElement} */ (el('input'));
   paste.type = 'text';
-  paste.placeholder = 'https://…/embed.html?panel=… or the lecture page’s link of the panel';
-  const use = button('Use the link');
+  paste.placeholder = t('pastePlaceholder');
+  const use = button(t('useLink'));
   const useLink = () => {
     const read = readPastedLink(paste.value, item.panel);
     if (!read.ok) return say(read.problems, 'problem');
     const locks = read.source === 'embed' || read.source === 'composed' ? { lock: read.lock, hide: read.hide } : {};
     setStart(read.state, locks);
     const taken = Object.keys(item.state).length;
-    say([`Taken from the link: ${taken ? `${fixed(taken, 0)} value${taken === 1 ? '' : 's'}` : 'the defaults'}`
-      + `${locks.lock ? ', and its locked and hidden controls' : ''}.`]);
-    if (read.problems.length) result.append(...read.problems.map((p) => el('p', 'cp-problem', `Refused: ${p}`)));
+    say([t('takenFromLink', { count: taken, n: fixed(taken, 0), locks: String(Boolean(locks.lock)) })]);
+    if (read.problems.length) result.append(...read.problems.map((p) => el('p', 'cp-problem', t('refused', { problem: p }))));
   };
   use.addEventListener('click', useLink);
   paste.addEventListener('keydown', (event) => { if (event.key === 'Enter') { event.preventDefault(); useLink(); } });
-  const reset = button('Back to the defaults');
-  reset.addEventListener('click', () => { setStart({}); say(['The panel starts from its defaults.']); });
+  const reset = button(t('backToDefaults'));
+  reset.addEventListener('click', () => { setStart({}); say([t('startsFromDefaults')]); });
   const pasteRow = el('div', 'cp-row');
-  pasteRow.append(field(`Start state: paste a link copied from “${title}”`, paste), use, reset);
+  pasteRow.append(field(t('pasteField', { title }), paste), use, reset);
 
   // The preview, and its current view.
   let frame = null;
   let pending = null;
   const preview = el('div', 'cp-preview-frame');
-  const toggle = button('Show the panel');
+  const toggle = button(t('showPanel'));
   toggle.setAttribute('aria-expanded', 'false');
-  const take = button('Take the panel’s current view');
+  const take = button(t('takeView'));
   take.disabled = true;
   const onMessage = (event) => {
     if (frame && !frame.isConnected) { // the item was removed with its preview open
@@ -122,8 +129,8 @@ export function buildPanelStart(initial, { patch }) {
       const params = isObject(event.data.params) ? event.data.params : {};
       const { applied, rejected } = applyParams(schema, defaults(schema), params);
       setStart(applied);
-      say([`Taken from the panel: ${Object.keys(item.state).length ? 'its current view' : 'its defaults (nothing was changed)'}.`,
-        ...rejected.map((r) => `Refused: ${describeProblem({ ...r, fallback: undefined })}`)]);
+      say([t('takenFromPanel', { changed: String(Object.keys(item.state).length > 0) }),
+        ...rejected.map((r) => t('refused', { problem: describeProblem({ ...r, fallback: undefined }) }))]);
     }
   };
   toggle.addEventListener('click', () => {
@@ -132,23 +139,23 @@ export function buildPanelStart(initial, { patch }) {
       frame = null;
       window.removeEventListener('message', onMessage);
       take.disabled = true;
-      toggle.textContent = 'Show the panel';
+      toggle.textContent = t('showPanel');
       toggle.setAttribute('aria-expanded', 'false');
       return;
     }
     frame = /** @type {HTMLIFrameElement} */ (el('iframe', 'cp-frame'));
-    frame.title = `Preview: ${title}`;
+    frame.title = t('previewFrame', { title });
     frame.allow = 'fullscreen; clipboard-write';
     frame.src = embedAddress(item);
     window.addEventListener('message', onMessage);
     preview.append(frame);
-    toggle.textContent = 'Hide the panel';
+    toggle.textContent = t('hidePanel');
     toggle.setAttribute('aria-expanded', 'true');
   });
   take.addEventListener('click', () => {
     if (!frame?.contentWindow) return;
     clearTimeout(pending);
-    pending = setTimeout(() => { pending = null; say(['The panel did not answer: is it still loading?'], 'problem'); }, ANSWER_MS);
+    pending = setTimeout(() => { pending = null; say([t('noAnswer')], 'problem'); }, ANSWER_MS);
     frame.contentWindow.postMessage({ type: 'fresnel-lab:get' }, window.location.origin);
   });
   const previewRow = el('div', 'cp-row');
@@ -156,15 +163,13 @@ export function buildPanelStart(initial, { patch }) {
 
   // Each control: free, locked (shown, fixed) or hidden.
   const controls = el('details', 'cp-controls');
-  const legend = el('summary', null, 'Controls the room may change');
+  const legend = el('summary', null, t('controlsHeading'));
   const grid = el('div', 'cp-control-grid');
   controls.append(legend, grid);
   const selects = new Map();
   for (const key of Object.keys(schema)) {
     const select = /** @type {HTMLSelectElement} */ (el('select'));
-    for (const [value, text] of [['free', 'free'], ['lock', 'locked (shown, fixed)'], ['hide', 'hidden']]) {
-      select.add(new Option(text, value));
-    }
+    for (const value of ['free', 'lock', 'hide']) select.add(new Option(t('controlState', { state: value }), value));
     const label = el('label', 'cp-control');
     const name = el('span');
     setSubscripted(name, controlLabel(item.panel, key));
@@ -186,8 +191,8 @@ export function buildPanelStart(initial, { patch }) {
       select.value = item.hide.includes(key) ? 'hide' : item.lock.includes(key) ? 'lock' : 'free';
     }
     const n = item.lock.length + item.hide.length;
-    legend.textContent = 'Controls the room may change'
-      + `${n ? ` (${fixed(item.lock.length, 0)} locked, ${fixed(item.hide.length, 0)} hidden)` : ''}`;
+    legend.textContent = n ? t('controlsHeadingCounts', { locked: fixed(item.lock.length, 0), hidden: fixed(item.hide.length, 0) })
+      : t('controlsHeading');
   }
   showSummary();
   refreshControls();

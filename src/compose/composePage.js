@@ -10,6 +10,7 @@ import { startPageLanguage } from '../i18n/pageLanguage.js';
 import { showNotice } from '../host/showNotice.js';
 import { installPageFaults } from '../host/panelFaults.js';
 import { button, el } from '../ui/el.js';
+import { fixed } from '../ui/format.js';
 import { field } from '../homework/page/formParts.js';
 import { lectureFromCode } from '../lecture/lectureLink.js';
 import { defaultLecture } from '../lecture/defaultLecture.js';
@@ -23,6 +24,10 @@ import { buildCatalogue } from './buildCatalogue.js';
 import { buildLectureList } from './buildLectureList.js';
 import { buildItemEditor } from './buildItemEditor.js';
 import { buildShare } from './buildShare.js';
+import english from 'virtual:messages/en/compose';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('compose', english);
 
 // The language first, so every word below is in it.
 const language = await startPageLanguage();
@@ -30,15 +35,12 @@ setupPageControls(document.querySelector('.page-controls'), {});
 const root = document.getElementById('composer');
 const notices = el('div', 'cp-notices');
 installPageFaults((title, lines) => showNotice(notices, title, lines, { kind: 'error' }));
-if (language.problem) showNotice(notices, 'The page could not load its language, so it is in English:', [language.problem]);
+if (language.problem) showNotice(notices, t('languageProblem'), [language.problem]);
 
 const intro = el('section', 'hw-intro cp-intro');
-intro.append(el('h1', null, 'Compose a lecture'),
-  el('p', null, 'Pick panels, texts and questions to the room, put them in your order, '
-    + 'give each your own words and the view it starts from. '
-    + 'The lecture is a link: present it, share it, or carry it as one offline file or a reveal.js deck. Nothing leaves this browser.'));
-const startEmpty = button('Start an empty lecture');
-const startDefault = button('Start from the lab’s own lecture');
+intro.append(el('h1', null, t('heading')), el('p', null, t('intro')));
+const startEmpty = button(t('startEmpty'));
+const startDefault = button(t('startDefault'));
 const starts = el('div', 'cp-row');
 starts.append(startEmpty, startDefault);
 intro.append(starts, notices);
@@ -53,18 +55,17 @@ if (search.has('lecture')) {
   const read = lectureFromCode(search.get('lecture') ?? '');
   if (read.ok) {
     draft = draftFromLecture(read.lecture);
-    showNotice(notices, 'Parts of this lecture’s link could not be used:', read.problems);
+    showNotice(notices, t('linkPartsRefused'), read.problems);
     before = loadDraft().lecture;
   } else {
     kept = false; // the work kept in this browser is not overwritten by a link that could not be read
-    showNotice(notices, 'This lecture link cannot be opened:',
-      [...read.problems, 'The lecture kept in this browser, if any, is shown instead.'], { kind: 'error' });
+    showNotice(notices, t('linkRefused'), [...read.problems, t('linkRefusedKept')], { kind: 'error' });
   }
 }
 if (!search.has('lecture') || !kept) {
   const stored = loadDraft();
   if (stored.lecture) draft = draftFromLecture(stored.lecture);
-  showNotice(notices, 'The lecture kept in this browser:', stored.problems);
+  showNotice(notices, t('keptProblems'), stored.problems);
   kept = true;
 }
 
@@ -73,7 +74,7 @@ title.type = 'text';
 title.maxLength = LECTURE_CAPS.title;
 const lectureSection = el('section', 'cp-lecture');
 lectureSection.setAttribute('aria-labelledby', 'cp-lecture-title');
-const lectureHeading = el('h2', null, 'Your lecture');
+const lectureHeading = el('h2', null, t('yourLecture'));
 lectureHeading.id = 'cp-lecture-title';
 
 const list = buildLectureList({
@@ -82,10 +83,11 @@ const list = buildLectureList({
     moveTo: (key, index) => moved(key, moveItemTo(draft, key, index)),
     duplicate(key) {
       const copy = duplicateItem(draft, key);
-      if (!copy.key) return list.announce(`A lecture holds at most ${LECTURE_CAPS.items} items.`);
+      if (!copy.key) return list.announce(t('full', { max: fixed(LECTURE_CAPS.items, 0) }));
       commit(copy.draft);
       list.focusItem(copy.key);
-      list.announce(`Duplicated: “${itemName(draft.items[itemIndex(draft, copy.key)])}” is item ${itemIndex(draft, copy.key) + 1}.`);
+      const at = itemIndex(draft, copy.key);
+      list.announce(t('duplicated', { name: itemName(draft.items[at]), n: fixed(at + 1, 0) }));
     },
     remove(key) {
       const at = itemIndex(draft, key);
@@ -94,7 +96,7 @@ const list = buildLectureList({
       const next = draft.items[Math.min(at, draft.items.length - 1)];
       if (next) list.focusItem(next.key);
       else title.focus();
-      list.announce(`Removed “${name}”. ${draft.items.length} item${draft.items.length === 1 ? '' : 's'} left.`);
+      list.announce(t('removed', { name, count: draft.items.length, n: fixed(draft.items.length, 0) }));
     },
   },
   editor: (item) => buildItemEditor(item, { patch: (fields) => commit(updateItem(draft, item.key, fields)) }),
@@ -106,16 +108,16 @@ function moved(key, next) {
   const to = itemIndex(draft, key);
   const name = itemName(draft.items[to]);
   list.announce(to === from
-    ? `“${name}” is already ${to === 0 ? 'first' : 'last'}.`
-    : `Moved “${name}” to position ${to + 1} of ${draft.items.length}.`);
+    ? t('alreadyThere', { name, end: to === 0 ? 'first' : 'last' })
+    : t('moved', { name, n: fixed(to + 1, 0), of: fixed(draft.items.length, 0) }));
 }
 
 const share = buildShare({
   onOpen(lecture, problems, fileName) {
     replace(draftFromLecture(lecture));
     notices.replaceChildren();
-    showNotice(notices, `Parts of ${fileName} could not be used:`, problems);
-    share.say(`Opened ${fileName}: ${lecture.items.length} items.`);
+    showNotice(notices, t('filePartsRefused', { file: fileName }), problems);
+    share.say(t('fileOpened', { file: fileName, count: lecture.items.length, n: fixed(lecture.items.length, 0) }));
   },
 });
 
@@ -125,8 +127,7 @@ function commit(next) {
   share.update(draftToLecture(draft));
   if (kept && !saveDraft(draftData(draft))) {
     kept = false;
-    showNotice(notices, 'Not kept:',
-      ['This browser refuses the page its storage, so the lecture is lost when the page closes: download it as a file.']);
+    showNotice(notices, t('notKept'), [t('notKeptWhy')]);
   }
 }
 
@@ -139,10 +140,10 @@ function replace(next) {
 
 function add(item) {
   const added = addItem(draft, item);
-  if (!added.key) return list.announce(`A lecture holds at most ${LECTURE_CAPS.items} items.`);
+  if (!added.key) return list.announce(t('full', { max: fixed(LECTURE_CAPS.items, 0) }));
   commit(added.draft);
-  list.announce(`Added “${itemName(draft.items[itemIndex(draft, added.key)])}” `
-    + `as item ${itemIndex(draft, added.key) + 1} of ${draft.items.length}.`);
+  const at = itemIndex(draft, added.key);
+  list.announce(t('added', { name: itemName(draft.items[at]), n: fixed(at + 1, 0), of: fixed(draft.items.length, 0) }));
 }
 
 const catalogue = buildCatalogue({
@@ -152,19 +153,20 @@ const catalogue = buildCatalogue({
 });
 
 title.addEventListener('input', () => commit(setTitle(draft, title.value)));
-lectureSection.append(lectureHeading, field('Title of the lecture', title), list.element);
+lectureSection.append(lectureHeading, field(t('titleField'), title), list.element);
 const columns = el('div', 'cp-columns');
 columns.append(catalogue, lectureSection);
 root.append(columns, share.element);
 
-const confirmReplace = () => !draft.items.length || window.confirm(`Replace the ${draft.items.length} items of this lecture?`);
+const confirmReplace = () => !draft.items.length
+  || window.confirm(t('confirmReplace', { count: draft.items.length, n: fixed(draft.items.length, 0) }));
 startEmpty.addEventListener('click', () => {
-  if (confirmReplace()) { clearDraft(); replace(emptyDraft()); list.announce('An empty lecture.'); }
+  if (confirmReplace()) { clearDraft(); replace(emptyDraft()); list.announce(t('emptyStarted')); }
 });
 startDefault.addEventListener('click', () => {
   if (!confirmReplace()) return;
   replace(draftFromLecture(defaultLecture()));
-  list.announce(`The lab’s own lecture: ${draft.items.length} panels.`);
+  list.announce(t('defaultStarted', { count: draft.items.length, n: fixed(draft.items.length, 0) }));
 });
 
 // Shown, not yet kept: the work kept before stays until this lecture is changed, and can be taken back.
@@ -172,10 +174,14 @@ kept = false;
 replace(draft);
 kept = true;
 if (before?.items.length) {
-  const note = showNotice(notices, 'This link’s lecture is shown for editing.', [
-    `The lecture kept in this browser (“${before.title}”, ${before.items.length} items) is replaced by it as soon as you change it.`]);
-  const back = button('Edit the kept lecture instead');
-  back.addEventListener('click', () => { replace(draftFromLecture(before)); note?.remove(); list.announce(`“${before.title}” is back.`); });
+  const note = showNotice(notices, t('linkShown'), [
+    t('linkShownKept', { title: before.title, count: before.items.length, n: fixed(before.items.length, 0) })]);
+  const back = button(t('editKept'));
+  back.addEventListener('click', () => {
+    replace(draftFromLecture(before));
+    note?.remove();
+    list.announce(t('keptBack', { title: before.title }));
+  });
   note?.append(back);
 }
 window.fresnelLab = { composer: { draft: () => draft, lecture: () => draftToLecture(draft).lecture } };

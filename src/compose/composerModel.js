@@ -8,6 +8,10 @@ import { LECTURE_CAPS, LECTURE_KIND, LECTURE_VERSION, readLecture } from '../lec
 import { panelEntry } from '../panels/manifest.js';
 import { questionById } from '../homework/questions.js';
 import { panelTitle } from '../panels/panelText.js';
+import english from 'virtual:messages/en/compose';
+import { currentLanguage, messages } from '../i18n/messages.js';
+
+const t = messages('compose', english);
 
 /**
  * @typedef {{ key: string, type: 'panel', panel: string, state: Record<string, unknown>, lock: string[], hide: string[],
@@ -18,10 +22,11 @@ import { panelTitle } from '../panels/panelText.js';
  * @typedef {{ title: string, items: ItemDraft[], nextKey: number }} Draft
  */
 
-export const DEFAULT_TITLE = 'My lecture';
+/** The title of a new lecture ("My lecture"), in the page's language. */
+export const defaultTitle = () => t('defaultTitle');
 
 /** @returns {Draft} */
-export function emptyDraft(title = DEFAULT_TITLE) {
+export function emptyDraft(title = defaultTitle()) {
   return { title, items: [], nextKey: 1 };
 }
 
@@ -90,7 +95,11 @@ export const setTitle = (draft, title) => ({ ...draft, title });
 /** The position (0-based) of item `key`, or −1. @param {Draft} draft */
 export const itemIndex = (draft, key) => at(draft, key);
 
-/** The lecture's data as the draft holds it, before it is read: empty fields left out. @param {Draft} draft */
+/**
+ * The lecture's data as the draft holds it, before it is read: empty fields left out, and the page's
+ * language as the lecture's (its words are the lecturer's, written on this page), so that the
+ * lecture page, the deck and the offline lecture open in it. @param {Draft} draft
+ */
 export function draftData(draft) {
   const items = draft.items.map((item) => {
     const out = {};
@@ -102,7 +111,7 @@ export function draftData(draft) {
     }
     return out;
   });
-  return { kind: LECTURE_KIND, version: LECTURE_VERSION, title: draft.title, items };
+  return { kind: LECTURE_KIND, version: LECTURE_VERSION, title: draft.title, lang: currentLanguage(), items };
 }
 
 /**
@@ -137,13 +146,13 @@ const questionPanelName = (id) => {
 export function itemName(item) {
   // A heading of the lecturer's own names the item, and the panel stays named beside it: two cards
   // of one panel must not differ by their headings alone.
-  const withHeading = (name) => (item.heading.trim() ? `${item.heading.trim()} (${name})` : name);
+  const withHeading = (name) => (item.heading.trim() ? t('itemNameHeading', { heading: item.heading.trim(), name }) : name);
   if (item.type === 'panel') return withHeading(panelEntry(item.panel) ? panelTitle(item.panel) : item.panel);
   if (item.type === 'question') {
-    return withHeading(`Question on “${questionPanelName(item.question)}”`);
+    return withHeading(t('itemNameQuestion', { title: questionPanelName(item.question) }));
   }
-  return item.heading.trim() || item.text.trim().split('\n', 1)[0].slice(0, 60) || '(no text yet)';
+  return item.heading.trim() || item.text.trim().split('\n', 1)[0].slice(0, 60) || t('itemNameEmpty');
 }
 
-/** What kind of item it is, in words. */
-export const KIND_LABELS = Object.freeze({ panel: 'Panel', text: 'Text', question: 'Question to the room' });
+/** What kind of item it is, in words. @param {'panel' | 'text' | 'question'} type */
+export const itemKind = (type) => t('itemKind', { type });

@@ -2,7 +2,11 @@
 // The lecture being composed, kept in the browser's storage so a reload or a closed tab loses
 // nothing. What comes back is untrusted (another page of the origin, an older version, a hand
 // edit): it is read by readLecture like a link, and a lecture that cannot be read is named, not used.
+import english from 'virtual:messages/en/compose';
+import { messages } from '../i18n/messages.js';
 import { readLecture } from '../lecture/readLecture.js';
+
+const t = messages('compose', english);
 
 export const DRAFT_KEY = 'fresnel-lab:composer';
 const MAX_STORED = 500_000; // characters; a lecture with text on every item is a few kilobytes
@@ -29,17 +33,17 @@ export function loadDraft(storage = globalThis.localStorage) {
   try {
     text = storage.getItem(DRAFT_KEY);
   } catch {
-    return { lecture: null, problems: ['This browser refuses the page its storage, so the work is not kept between visits.'] };
+    return { lecture: null, problems: [t('storageRefused')] };
   }
   if (text === null) return { lecture: null, problems: [] };
   if (typeof text !== 'string' || text.length > MAX_STORED) {
-    return { lecture: null, problems: ['The lecture kept in this browser is too large to be one; it is not used.'] };
+    return { lecture: null, problems: [t('storedTooLarge')] };
   }
   let data;
   try {
     data = JSON.parse(text);
   } catch {
-    return { lecture: null, problems: ['The lecture kept in this browser is damaged; it is not used.'] };
+    return { lecture: null, problems: [t('storedDamaged')] };
   }
   const read = readLecture(data);
   return read.ok ? { lecture: read.lecture, problems: read.problems } : { lecture: null, problems: read.problems };

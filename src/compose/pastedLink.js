@@ -6,7 +6,10 @@
 // alone (nT=1.5&kd=ff0000). The text comes from anyone's clipboard: it is read with the host's own
 // readers (params.js, readEmbedOptions.js, lectureLink.js), every value must pass the panel's
 // schema, and every key refused is named. Never throws.
+import english from 'virtual:messages/en/compose';
+import { messages } from '../i18n/messages.js';
 import { applyParams, defaults, describeProblem, rawText } from '../host/params.js';
+import { fixed } from '../ui/format.js';
 import { EMBED_KEYS, readEmbedOptions } from '../host/readEmbedOptions.js';
 import { lecturePrefix, panelEntry } from '../panels/manifest.js';
 import { panelSchema } from '../panels/panelSchema.js';
@@ -14,6 +17,7 @@ import { lectureFromCode } from '../lecture/lectureLink.js';
 import { itemKeys } from '../lecture/openLecture.js';
 import { panelTitle } from '../panels/panelText.js';
 
+const t = messages('compose', english);
 export const MAX_PASTED = 120_000; // characters: a shader lab link with its code is a few kilobytes
 const MAX_PAIRS = 200;
 
@@ -47,40 +51,40 @@ function searchOf(text) {
  */
 export function readPastedLink(text, panelId) {
   const schema = panelSchema(panelId);
-  if (!schema || !panelEntry(panelId)) return { ok: false, problems: [`${rawText(panelId)} is no panel of the lab.`] };
-  if (typeof text !== 'string' || !text.trim()) return { ok: false, problems: ['Paste a link copied from the panel.'] };
+  if (!schema || !panelEntry(panelId)) return { ok: false, problems: [t('pasteNoPanel', { id: rawText(panelId) })] };
+  if (typeof text !== 'string' || !text.trim()) return { ok: false, problems: [t('pasteEmpty')] };
   if (text.length > MAX_PASTED) {
-    return { ok: false, problems: [`The pasted text has ${text.length} characters, more than the ${MAX_PASTED} a link of a panel has.`] };
+    return { ok: false, problems: [t('pasteTooLong', { length: fixed(text.length, 0), max: fixed(MAX_PASTED, 0) })] };
   }
   const search = searchOf(text.trim());
-  if (!search) return { ok: false, problems: ['This is neither a link nor key=value pairs.'] };
+  if (!search) return { ok: false, problems: [t('pasteNotLink')] };
   /** @type {[string, string][]} */
   const all = [];
   search.forEach((value, key) => { all.push([key, value]); });
   const pairs = all.slice(0, MAX_PAIRS);
   const problems = [];
-  if (all.length > MAX_PAIRS) problems.push(`The link has more than ${MAX_PAIRS} values; the first ${MAX_PAIRS} are read.`);
+  if (all.length > MAX_PAIRS) problems.push(t('pasteTooMany', { max: fixed(MAX_PAIRS, 0) }));
 
   const hash = /#([A-Za-z0-9-]+)\s*$/.exec(text.trim())?.[1];
   if (search.has('lecture')) return fromComposed(search.get('lecture') ?? '', panelId, hash, pairs, problems);
 
   const embedPanel = search.get('panel');
   if (embedPanel !== null && embedPanel !== panelId) {
-    return { ok: false, problems: [`This link is for “${titleOf(embedPanel)}”, not “${titleOf(panelId)}”.`] };
+    return { ok: false, problems: [t('pasteOtherPanel', { other: titleOf(embedPanel), title: titleOf(panelId) })] };
   }
   const prefix = lecturePrefix(panelId);
   // A link without panel= is the lecture page's (its #hash names the panel it was copied from).
   const isLink = /^[a-z][a-z0-9+.-]*:|\?|<iframe/i.test(text.trim());
   const source = embedPanel !== null ? 'embed' : isLink ? 'lecture' : 'pairs';
   if (source === 'lecture' && hash && hash !== panelId && panelEntry(hash)) {
-    return { ok: false, problems: [`This link is for “${titleOf(hash)}”, not “${titleOf(panelId)}”.`] };
+    return { ok: false, problems: [t('pasteOtherPanel', { other: titleOf(hash), title: titleOf(panelId) })] };
   }
   // A lecture link holds every panel's values: this panel's are its prefixed keys (the hero's, the
   // keys without a dot), the rest belong to other panels and are passed over without a word.
   const own = pairs.filter(([key]) => (source === 'lecture' ? (prefix ? key.startsWith(prefix) : !key.includes('.'))
     : !EMBED_KEYS.includes(key)));
   if (source === 'lecture' && !own.length && hash !== panelId) {
-    return { ok: false, problems: [`This lecture link holds no values of “${titleOf(panelId)}”: copy the link from that panel.`] };
+    return { ok: false, problems: [t('pasteNoValues', { title: titleOf(panelId) })] };
   }
   const update = Object.fromEntries(own.map(([key, value]) => [source === 'lecture' ? key.slice(prefix.length) : key, value]));
   const { applied, rejected } = applyParams(schema, defaults(schema), update);
@@ -93,7 +97,7 @@ export function readPastedLink(text, panelId) {
     for (const p of optionProblems) if (p.key !== 'parentOrigin') problems.push(describeProblem({ ...p, fallback: undefined }));
     const keys = (names, what) => names.filter((name) => {
       if (Object.hasOwn(schema, name)) return true;
-      problems.push(`${what}=${rawText(name)} is no control of this panel; ignored.`);
+      problems.push(t('pasteNoControl', { option: what, name: rawText(name) }));
       return false;
     });
     lock = keys(options.lock, 'lock');
@@ -114,11 +118,12 @@ function fromComposed(code, panelId, hash, pairs, problems) {
   const keys = itemKeys(items, lecturePrefix);
   let at = hash ? keys.findIndex((k) => k.key === hash) : -1;
   if (at >= 0 && (items[at].type !== 'panel' || items[at].panel !== panelId)) {
-    const other = items[at].type === 'panel' ? `“${titleOf(items[at].panel)}”` : `a ${items[at].type} item`;
-    return { ok: false, problems: [`This link is for ${other} of the lecture, not “${titleOf(panelId)}”.`] };
+    const { type } = items[at];
+    const other = type === 'panel' ? titleOf(items[at].panel) : '';
+    return { ok: false, problems: [t('pasteOtherItem', { type, other, title: titleOf(panelId) })] };
   }
   if (at < 0) at = items.findIndex((i) => i.type === 'panel' && i.panel === panelId);
-  if (at < 0) return { ok: false, problems: [`This lecture has no “${titleOf(panelId)}” panel.`] };
+  if (at < 0) return { ok: false, problems: [t('pasteNoSuchPanel', { title: titleOf(panelId) })] };
   const item = items[at];
   const schema = panelSchema(panelId) ?? {};
   const { prefix } = keys[at];

@@ -13,13 +13,17 @@ import { createControlState } from './createControlState.js';
 import { bindGui, createPanelGui } from './bindGui.js';
 import { readUrlState, urlWriter } from './urlState.js';
 import { showNotice } from './showNotice.js';
-import { copyText, downloadText, downloadUrl, offerForCopy, resizePng, toCsv } from './exporters.js';
-import { embedCode, embedUrl, lectureUrl } from './shareLinks.js';
+import { resizePng, toCsv } from './exporters.js';
+import { embedCode, embedUrl, labTitle, lectureUrl } from './shareLinks.js';
+import { createToolbar } from './createToolbar.js';
 import { checkInstance } from './panelContract.js';
 import { el } from '../ui/el.js';
 import { cssVar } from '../ui/theme.js';
 import { panelTitle } from '../panels/panelText.js';
+import english from 'virtual:messages/en/host';
+import { messages } from '../i18n/messages.js';
 
+const t = messages('host', english);
 let nextDescriptionId = 0;
 
 /** A view of `values` that can be read but not written: panels change values through the host. */
@@ -52,7 +56,7 @@ export function createPanelHost(container, panel, {
   const urlSchema = withDefaults(schema, itemStart); // the link says what differs from where the panel starts
   const { values, problems } = readUrlState(urlSchema, prefix);
   const start = { ...values }; // what the link asked for: `reset` returns here
-  showNotice(noticeHost, 'Some values in the link were not usable:', problems.map(describeProblem));
+  showNotice(noticeHost, t('linkValuesTitle'), problems.map(describeProblem));
   const writeUrl = urlWriter(urlSchema, prefix);
   const view = readOnly(values, panel.id);
   const draft = { ...values }; // what the controls edit; the host writes it back after each change
@@ -62,9 +66,14 @@ export function createPanelHost(container, panel, {
   const content = el('div', 'panel-content');
   const side = el('div', 'panel-side');
   const guiHost = el('div', 'gui-host');
-  const toolbar = el('div', 'toolbar');
-  const status = el('span', 'toolbar-status');
-  status.setAttribute('role', 'status');
+  const tools = createToolbar(panel.id, {
+    link: () => lectureLink(values),
+    embed: () => embedCode(panel, values, embedOptions),
+    png: () => instance?.png?.(),
+    poster: () => poster(),
+    csv: () => instance?.csv?.(),
+  });
+  const toolbar = tools.element;
   const description = el('p', 'panel-description');
   description.id = `panel-description-${(nextDescriptionId += 1)}`;
   side.append(guiHost, toolbar);
@@ -89,16 +98,6 @@ export function createPanelHost(container, panel, {
   const controlState = createControlState(schema, shell);
   const prefersReducedMotion = window.matchMedia?.('(prefers-reduced-motion: reduce)').matches ?? false;
   let reducedMotion = null; // set by the embed's URL or a message; null: the reader's preference
-
-  const buttons = {
-    link: el('button', '', 'Copy link'),
-    embed: el('button', '', 'Copy embed code'),
-    png: el('button', '', 'Export PNG'),
-    poster: el('button', '', 'Export poster'),
-    csv: el('button', '', 'Export CSV'),
-  };
-  for (const b of Object.values(buttons)) b.type = 'button';
-  toolbar.append(...Object.values(buttons), status);
 
   let instance = null;
   let gui = null;
@@ -127,34 +126,6 @@ export function createPanelHost(container, panel, {
     });
   };
 
-  const say = (text) => {
-    status.textContent = text;
-    setTimeout(() => { if (status.textContent === text) status.textContent = ''; }, 2500);
-  };
-  // Copied, or (the clipboard refused) offered selected for Ctrl+C.
-  const copy = async (button, text, done, label) => {
-    if (await copyText(text)) say(done);
-    else {
-      offerForCopy(button, text, label);
-      say('Press Ctrl+C to copy');
-    }
-  };
-  buttons.link.addEventListener('click', () => copy(buttons.link, lectureLink(values), 'Link copied', 'Link to this view'));
-  buttons.embed.addEventListener('click', () => copy(buttons.embed, embedCode(panel, values, embedOptions), 'Embed code copied',
-    'Embed code'));
-  buttons.png.addEventListener('click', () => {
-    const url = instance?.png?.();
-    if (url) downloadUrl(`fresnel-lab-${panel.id}.png`, url);
-  });
-  buttons.poster.addEventListener('click', async () => {
-    const url = await poster();
-    if (url) downloadUrl(`fresnel-lab-${panel.id}-poster.png`, url);
-  });
-  buttons.csv.addEventListener('click', () => {
-    const table = instance?.csv?.();
-    if (table) downloadText(table.filename ?? `fresnel-lab-${panel.id}.csv`, toCsv(table.columns));
-  });
-
   /** The slide-sized poster of this view (makePoster.js): its picture, or its largest canvas (a plot). */
   async function poster() {
     if (!instance) return null;
@@ -163,7 +134,7 @@ export function createPanelHost(container, panel, {
     const { makePoster } = await import('./makePoster.js');
     return makePoster({
       picture,
-      title: `Fresnel Lab: ${panelTitle(panel.id).replace(/_([it])\b/g, (_, c) => ({ i: 'ᵢ', t: 'ₜ' })[c])}`,
+      title: `${labTitle(panel.id).replace(/_([it])\b/g, (_, c) => ({ i: 'ᵢ', t: 'ₜ' })[c])}`,
       link: lectureLink(values),
       colours: { background: cssVar('--bg', '#0d1117'), text: cssVar('--text', '#f0f3f6'), muted: cssVar('--muted', '#c2cad3') },
     });
@@ -225,8 +196,7 @@ export function createPanelHost(container, panel, {
     const result = { ...applyParams(schema, values, touchesLocked ? {} : update), refused: touchesLocked };
     if (result.rejected.length) {
       rejectedNotice?.remove();
-      rejectedNotice = showNotice(noticeHost, `Some values for the ${panelTitle(panel.id)} panel were not usable:`,
-        result.rejected.map(describeProblem));
+      rejectedNotice = showNotice(noticeHost, t('panelValuesTitle', { title: panelTitle(panel.id) }), result.rejected.map(describeProblem));
       for (const { key } of result.rejected) {
         if (Object.hasOwn(values, key)) {
           draft[key] = values[key];
@@ -243,7 +213,7 @@ export function createPanelHost(container, panel, {
     if (mountPanel) return Promise.resolve();
     // A WebGL panel also waits for the GPU channel to open off the page's thread (warmGpu.js).
     loading ??= Promise.all([panel.load(), panel.webgl ? warmGpu() : null]).then(([fn]) => { mountPanel = fn; }, (error) => {
-      showNotice(noticeHost, `The ${panelTitle(panel.id)} panel could not load.`, [error.message], { kind: 'error' });
+      showNotice(noticeHost, t('panelLoadFailed', { title: panelTitle(panel.id) }), [error.message], { kind: 'error' });
       throw error;
     });
     return loading;
@@ -252,7 +222,7 @@ export function createPanelHost(container, panel, {
   function mountNow() {
     wanted = true;
     container.style.minHeight = '';
-    gui = createPanelGui(guiHost, `${panelTitle(panel.id)}: controls`);
+    gui = createPanelGui(guiHost, t('controlsTitle', { title: panelTitle(panel.id) }));
     toolbar.hidden = false;
     controllers = Object.create(null);
     controlState.clear();
@@ -266,14 +236,13 @@ export function createPanelHost(container, panel, {
       gui = null;
       toolbar.hidden = true;
       content.replaceChildren();
-      showNotice(noticeHost, `The ${panelTitle(panel.id)} panel could not start.`,
-        [error.message, 'The other panels are not affected; reload the page to try again.'], { kind: 'error' });
+      showNotice(noticeHost, t('panelStartFailed', { title: panelTitle(panel.id) }), [error.message, t('panelStartAgain')],
+        { kind: 'error' });
       throw error;
     } finally {
       mounting = false;
     }
-    buttons.png.disabled = !instance.png;
-    buttons.csv.disabled = !instance.csv;
+    tools.offer(instance);
     if (titleLevel !== 2) for (const heading of content.querySelectorAll('h3')) heading.setAttribute('aria-level', String(titleLevel + 1));
     refreshDescription();
     domFrameDrawn();

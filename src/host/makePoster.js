@@ -3,7 +3,11 @@
 // the link, so a slide can link out to the live panel. The QR code comes from qrcode-generator,
 // loaded on the first export. A copy opened from disk has a file:// link, which works on that
 // computer only: its poster says so and carries no code.
+import english from 'virtual:messages/en/host';
+import { messages } from '../i18n/messages.js';
 import { decodeImage } from './exporters.js';
+
+const t = messages('host', english);
 
 export const POSTER = { width: 1920, height: 1080, margin: 64 };
 
@@ -85,8 +89,7 @@ export async function makePoster({ picture, title, link, colours }) {
 
   g.fillStyle = colours.muted;
   g.font = '500 30px system-ui, sans-serif';
-  const lead = local ? 'Opened from disk: this link opens on this computer only'
-    : matrix ? 'Explore it live: scan the code or open' : 'Explore it live: open';
+  const lead = t(local ? 'posterFromDisk' : matrix ? 'posterScan' : 'posterOpen');
   g.fillText(lead, margin, qr.y, qr.x - 2 * margin);
   // The link in full beside the code, wrapped at any character; a long link takes a smaller type
   // rather than being cut (the code holds all of it either way).

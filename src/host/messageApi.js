@@ -17,7 +17,11 @@
 // fresnel-lab:audio {on} when the reader turned the audio trace on or off.
 // Anything else is ignored. Nothing from a message is evaluated or inserted as HTML.
 
+import english from 'virtual:messages/en/host';
+import { messages } from '../i18n/messages.js';
 import { rawText } from './params.js';
+
+const t = messages('host', english);
 
 export const API_VERSION = 1;
 
@@ -105,7 +109,8 @@ export function connectMessages(host, { parent = window.parent, origin = '*', pa
       case 'set': {
         const { rejected } = host.set(message.params, { source: 'api' });
         if (rejected.length) {
-          sayError(`Rejected ${rejected.map((r) => `${rawText(r.key)}: ${rawText(r.raw)} ${r.reason}`).join('; ')}`);
+          const list = rejected.map((r) => t('apiRejectedValue', { key: rawText(r.key), raw: rawText(r.raw), reason: r.reason }));
+          sayError(t('apiRejected', { list: list.join('; ') }));
         }
         say(state());
         return;
@@ -124,7 +129,7 @@ export function connectMessages(host, { parent = window.parent, origin = '*', pa
       case 'hide':
       case 'show': {
         const unknown = host.controls(message.kind, message.keys);
-        if (unknown.length) sayError(`No such control: ${unknown.map((k) => k.slice(0, 40)).join(', ')}`);
+        if (unknown.length) sayError(t('apiNoControl', { names: unknown.map((k) => k.slice(0, 40)).join(', ') }));
         return;
       }
       default:

@@ -20,7 +20,8 @@
  * @property {number} [maxLength]  texts: the longest accepted
  * @property {(text: string) => string} [encode]  texts: the compact form the link writes
  * @property {(raw: string) => string | null} [decode]  texts: the link's form (or plain text) back, null if unreadable
- * @property {string} [defaultText]  texts: the default in words, for a notice (the text itself may be long or empty)
+ * @property {string} [defaultText]  texts: the default in words, for a notice (the text itself may be long or empty): the key
+ *   of those words in the catalogue, host.defaultText.<key>
  */
 
 /** @typedef {Record<string, ParamSpec>} Schema */

@@ -7,11 +7,15 @@
 // (its mount or an update) is that panel's (gl/faultOwner.js); an error
 // thrown by a listener while an input event inside a panel is dispatched is that panel's
 // (watchInputs); any other error is the page's (installPageFaults).
+import english from 'virtual:messages/en/host';
+import { messages } from '../i18n/messages.js';
 import { el } from '../ui/el.js';
+
+const t = messages('host', english);
 
 /** @typedef {import('../gl/faultOwner.js').FaultOwner} PanelFaults */
 
-const messageOf = (error) => (error instanceof Error ? error.message : String(error)) || 'an unknown error';
+const messageOf = (error) => (error instanceof Error ? error.message : String(error)) || t('unknownError');
 
 /**
  * The fault line of one panel (`element`, for the host to place above the picture), shown while
@@ -24,7 +28,7 @@ export function createPanelFaults({ title, restart }) {
   line.hidden = true;
   const text = el('p', 'panel-fault-text');
   text.setAttribute('role', 'status');
-  const again = el('button', 'panel-fault-restart', 'Restart this panel');
+  const again = el('button', 'panel-fault-restart', t('restartPanel'));
   again.type = 'button';
   again.hidden = true;
   again.addEventListener('click', () => {
@@ -39,8 +43,8 @@ export function createPanelFaults({ title, restart }) {
 
   function show() {
     const lines = [];
-    if (lost) lines.push('The graphics context was lost; restoring it… (if the picture does not come back, reload the page).');
-    if (error) lines.push(`The ${title} panel met an error: ${error}. The other panels are not affected.`);
+    if (lost) lines.push(t('contextLost'));
+    if (error) lines.push(t('panelError', { title, error }));
     text.textContent = lines.join(' ');
     line.classList.toggle('panel-fault-error', Boolean(error));
     again.hidden = !error;
@@ -108,7 +112,7 @@ export function installPageFaults(sayOnPage) {
     const message = messageOf(reason).split('\n')[0];
     if (seen.has(message)) return;
     seen.add(message);
-    sayOnPage('Something went wrong on this page:', [`${message}. The panels go on working; reload the page if one stops responding.`]);
+    sayOnPage(t('pageFaultTitle'), [t('pageFault', { message })]);
   };
   window.addEventListener('error', (event) => {
     if (event.error === undefined && !event.message) return; // a resource that failed to load: said where it is used

@@ -10,6 +10,13 @@
 // for texts maxLength and optionally encode/decode, a compact form for the link (decode also
 // takes the plain text, which messages send; it returns null for a form it cannot read);
 // optionally aliases: older keys that still read (links and decks made before a rename keep working).
+// A problem's reason is a phrase in the page's language ("is not a number"), said after the key
+// and the value as describeProblem writes them.
+import english from 'virtual:messages/en/host';
+import { messages } from '../i18n/messages.js';
+import { shortNumber } from '../ui/format.js';
+
+const t = messages('host', english);
 
 const HEX = /^#?([0-9a-f]{6})$/i;
 // A number as a person writes one: decimal, optionally signed, with an exponent. Number() also
@@ -34,8 +41,7 @@ function enumValues(spec) {
 export function rawText(raw, max = 40) {
   let text;
   if (raw === null || ['string', 'number', 'boolean', 'undefined', 'bigint'].includes(typeof raw)) text = String(raw);
-  else if (Array.isArray(raw)) text = '(a list)';
-  else text = typeof raw === 'object' ? '(an object)' : `(a ${typeof raw})`;
+  else text = t('rawKind', { kind: Array.isArray(raw) ? 'list' : typeof raw });
   return text.length > max ? `${clipText(text, max)}…` : text;
 }
 
@@ -58,40 +64,41 @@ export function parseValue(spec, raw) {
   switch (spec.type) {
     case 'number': {
       const value = typeof raw === 'number' ? raw : typeof raw === 'string' ? readNumber(raw) : NaN;
-      if (!Number.isFinite(value)) return { ok: false, reason: 'is not a number' };
-      if (spec.integer && !Number.isInteger(value)) return { ok: false, reason: 'is not a whole number' };
+      if (!Number.isFinite(value)) return { ok: false, reason: t('reasonNotNumber') };
+      if (spec.integer && !Number.isInteger(value)) return { ok: false, reason: t('reasonNotWhole') };
       if (value < spec.min || value > spec.max) {
-        return { ok: false, reason: `is outside ${spec.min} to ${spec.max}` };
+        return { ok: false, reason: t('reasonOutside', { min: shortNumber(spec.min), max: shortNumber(spec.max) }) };
       }
       return { ok: true, value: value + 0 }; // -0 is 0: it would print as −0 and write a link of its own
     }
     case 'enum': {
-      if (!['string', 'number', 'boolean'].includes(typeof raw)) {
-        return { ok: false, reason: `is not one of ${enumValues(spec).join(', ')}` };
+      const value = ['string', 'number', 'boolean'].includes(typeof raw) ? String(raw) : null;
+      if (value === null || !enumValues(spec).includes(value)) {
+        return { ok: false, reason: t('reasonNotOneOf', { values: enumValues(spec).join(', ') }) };
       }
-      const value = String(raw);
-      if (!enumValues(spec).includes(value)) return { ok: false, reason: `is not one of ${enumValues(spec).join(', ')}` };
       return { ok: true, value };
     }
     case 'color': {
       const match = typeof raw === 'string' ? HEX.exec(raw.trim()) : null;
-      if (!match) return { ok: false, reason: 'is not a colour like ff8800' };
+      if (!match) return { ok: false, reason: t('reasonNotColour') };
       return { ok: true, value: `#${match[1].toLowerCase()}` };
     }
     case 'boolean': {
       if (raw === true || raw === 'true' || raw === '1') return { ok: true, value: true };
       if (raw === false || raw === 'false' || raw === '0') return { ok: true, value: false };
-      return { ok: false, reason: 'is not true or false' };
+      return { ok: false, reason: t('reasonNotBoolean') };
     }
     case 'text': {
-      if (typeof raw !== 'string') return { ok: false, reason: 'is not a text' };
+      if (typeof raw !== 'string') return { ok: false, reason: t('reasonNotText') };
       const text = spec.decode ? spec.decode(raw) : raw;
-      if (typeof text !== 'string') return { ok: false, reason: 'cannot be read (was the link cut short?)' };
-      if (text.length > spec.maxLength) return { ok: false, reason: `is longer than ${spec.maxLength} characters` };
+      if (typeof text !== 'string') return { ok: false, reason: t('reasonUnreadable') };
+      if (text.length > spec.maxLength) {
+        return { ok: false, reason: t('reasonTooLong', { count: spec.maxLength, max: shortNumber(spec.maxLength) }) };
+      }
       return { ok: true, value: text };
     }
     default:
-      return { ok: false, reason: `has an unknown type ${spec.type}` };
+      return { ok: false, reason: t('reasonUnknownType', { type: rawText(spec.type) }) };
   }
 }
 
@@ -150,7 +157,8 @@ export function readParams(schema, search, prefix = '') {
     if (result.ok) {
       values[key] = result.value;
     } else {
-      const fallback = spec.type === 'text' ? spec.defaultText ?? 'an empty text' : formatValue(spec, spec.default);
+      const fallback = spec.type !== 'text' ? formatValue(spec, spec.default)
+        : spec.defaultText ? t(`defaultText.${spec.defaultText}`) : t('emptyText');
       problems.push({ key: name, raw, reason: result.reason, fallback });
     }
   }
@@ -169,7 +177,7 @@ export function applyParams(schema, values, update) {
   for (const [name, raw] of Object.entries(update ?? {})) {
     const key = resolveKey(schema, name);
     if (key === undefined) {
-      rejected.push({ key: name, raw, reason: 'is not a parameter of this panel' });
+      rejected.push({ key: name, raw, reason: t('reasonNotParameter') });
       continue;
     }
     const result = parseValue(schema[key], raw);
@@ -199,8 +207,6 @@ export function writeParams(schema, values, search, prefix = '') {
 
 /** A readable sentence for a problem, for the on-screen notice. */
 export function describeProblem({ key, raw, reason, fallback }) {
-  const shown = rawText(raw);
-  return fallback === undefined
-    ? `${rawText(key)}=${shown} ${reason}; ignored.`
-    : `${rawText(key)}=${shown} ${reason}; using ${fallback}.`;
+  const words = { key: rawText(key), raw: rawText(raw), reason };
+  return fallback === undefined ? t('problemIgnored', words) : t('problemUsing', { ...words, fallback });
 }

@@ -8,6 +8,10 @@
 // A value that cannot be used is named in `problems` and left out, but for parentOrigin: an
 // author who asked for a restriction gets one, so an unusable origin leaves the panel deaf and
 // mute to every page (`parentOrigin: 'none'`) rather than open to all.
+import english from 'virtual:messages/en/host';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('host', english);
 
 /** These names belong to the embed page, so no panel's schema may use them. */
 export const EMBED_KEYS = [
@@ -43,19 +47,19 @@ export function readEmbedOptions(search) {
   if (search.has('theme')) {
     const raw = search.get('theme');
     if (raw === 'light' || raw === 'dark') options.theme = raw;
-    else bad('theme', raw, 'is not light or dark');
+    else bad('theme', raw, t('reasonNotTheme'));
   }
   for (const key of ['projector', 'reducedMotion', 'audio', 'controls', 'fit']) {
     if (!search.has(key)) continue;
     const value = flag(search.get(key));
-    if (value === undefined) bad(key, search.get(key), 'is not 1 or 0');
+    if (value === undefined) bad(key, search.get(key), t('reasonNotFlag'));
     else options[key] = value;
   }
   for (const key of ['lock', 'hide']) if (search.has(key)) options[key] = list(search.get(key));
   if (search.has('parentOrigin')) {
     options.parentOrigin = parseOrigin(search.get('parentOrigin')) ?? 'none';
     if (options.parentOrigin === 'none') {
-      bad('parentOrigin', search.get('parentOrigin'), 'is not an origin like https://deck.example, so no page may drive this panel');
+      bad('parentOrigin', search.get('parentOrigin'), t('reasonNotOrigin'));
     }
   }
   return { options, problems };

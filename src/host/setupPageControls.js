@@ -1,9 +1,14 @@
 // The lecture page's own controls: the language, theme (dark/light), projector mode, one material
 // for every panel, and hiding all controls for a clean projected picture (also the `h` key).
+import english from 'virtual:messages/en/host';
+import { currentLanguage, messages } from '../i18n/messages.js';
 import { applyTheme, loadTheme } from '../ui/theme.js';
 import { dielectrics } from '../optics/materials.js';
 import { languageChoices, rememberLanguage } from '../i18n/language.js';
-import { currentLanguage } from '../i18n/messages.js';
+import { languageById } from '../i18n/languages.js';
+import { fixed } from '../ui/format.js';
+
+const t = messages('host', english);
 
 /**
  * A select of the languages the lab speaks, each by its own name. A change is kept in this browser
@@ -13,8 +18,14 @@ import { currentLanguage } from '../i18n/messages.js';
 export function languageSelect() {
   const select = document.createElement('select');
   select.lang = ''; // each option names its language in that language (its own lang below)
-  for (const language of languageChoices()) {
-    const option = new Option(language.name, language.id, false, language.id === currentLanguage());
+  // Those names are no words of the catalogue: the same in every language, never translated.
+  select.dataset.pseudoSkip = '';
+  // A pseudo-locale (asked for by link, for tests) is shown while it is the page's, so the select says what the page speaks.
+  const current = languageById(currentLanguage());
+  const choices = languageChoices();
+  for (const language of choices.includes(current) || !current ? choices : [...choices, current]) {
+    const option = new Option('', language.id, false, language.id === current?.id);
+    option.label = language.name; // shown as the option's text, and no text of the page's language around it
     option.lang = language.id;
     select.add(option);
   }
@@ -27,17 +38,25 @@ export function languageSelect() {
   return select;
 }
 
+/** A refractive index as the table of materials writes it (1.000293, 1.3333): every digit it has, the page's decimal separator. */
+const materialIndex = (n) => fixed(n, Math.max(0, (String(n).split('.')[1] ?? '').length));
+
 export function setupPageControls(bar, { onMaterial = null } = {}) {
   const theme = loadTheme();
   applyTheme(theme);
 
+  // The name in an element of its own: the label's text is its name alone, not its options too.
   const label = (text, control) => {
     const wrap = document.createElement('label');
-    wrap.append(document.createTextNode(text), control);
+    const name = document.createElement('span');
+    name.textContent = `${text} `;
+    wrap.append(name, control);
     return wrap;
   };
   const scheme = document.createElement('select');
-  for (const [value, text] of [['dark', 'Dark'], ['light', 'Light']]) scheme.add(new Option(text, value, false, theme.scheme === value));
+  for (const [value, text] of [['dark', t('themeDark')], ['light', t('themeLight')]]) {
+    scheme.add(new Option(text, value, false, theme.scheme === value));
+  }
   scheme.addEventListener('change', () => { theme.scheme = scheme.value; applyTheme(theme); });
 
   const projector = document.createElement('input');
@@ -46,8 +65,8 @@ export function setupPageControls(bar, { onMaterial = null } = {}) {
   projector.addEventListener('change', () => { theme.projector = projector.checked; applyTheme(theme); });
 
   const material = document.createElement('select');
-  material.add(new Option('— keep each panel’s —', ''));
-  for (const m of dielectrics) material.add(new Option(`${m.name} (n = ${m.n})`, m.id));
+  material.add(new Option(t('materialKeep'), ''));
+  for (const m of dielectrics) material.add(new Option(t('materialOption', { name: m.name, n: materialIndex(m.n) }), m.id));
   material.addEventListener('change', () => {
     const chosen = dielectrics.find((m) => m.id === material.value);
     if (chosen) onMaterial(chosen);
@@ -55,17 +74,17 @@ export function setupPageControls(bar, { onMaterial = null } = {}) {
 
   const hide = document.createElement('button');
   hide.type = 'button';
-  hide.textContent = 'Hide controls (h)';
+  hide.textContent = t('hideControls');
   const toggleControls = () => {
     const hidden = document.body.classList.toggle('controls-hidden');
-    hide.textContent = hidden ? 'Show controls (h)' : 'Hide controls (h)';
+    hide.textContent = hidden ? t('showControls') : t('hideControls');
     hide.setAttribute('aria-pressed', String(hidden));
   };
   hide.addEventListener('click', toggleControls);
 
   // A page without panels of its own (the homework page, whose panels sit in frames) has no
   // material or controls to set.
-  bar.append(label('Language ', languageSelect()), label('Theme ', scheme), label('Projector ', projector),
-    ...(onMaterial ? [label('Material in every panel ', material), hide] : []));
+  bar.append(label(t('language'), languageSelect()), label(t('theme'), scheme), label(t('projector'), projector),
+    ...(onMaterial ? [label(t('material'), material), hide] : []));
   return { toggleControls, material };
 }

@@ -1,7 +1,14 @@
 // Links that reproduce a panel: the lecture page scrolled to it, or the embed page alone.
+import english from 'virtual:messages/en/host';
+import { messages } from '../i18n/messages.js';
 import { writeParams } from './params.js';
 import { lecturePrefix } from '../panels/manifest.js';
 import { panelTitle } from '../panels/panelText.js';
+
+const t = messages('host', english);
+
+/** "Fresnel Lab: <the panel's title>", a frame's title and a poster's heading. */
+export const labTitle = (id) => t('labTitle', { title: panelTitle(id) });
 
 function pageUrl(page) {
   return new URL(page, window.location.href);
@@ -33,19 +40,21 @@ export function embedUrl(panel, values, { lock = [], hide = [] } = {}) {
 export function embedCode(panel, values, { width = 960, height = 720, ...options } = {}) {
   const escape = (s) => String(s).replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;');
   return `<iframe src="${escape(embedUrl(panel, values, options))}" width="${width}" height="${height}" `
-    + `style="border:0" loading="lazy" title="${escape(`Fresnel Lab: ${panelTitle(panel.id)}`)}" `
+    + `style="border:0" loading="lazy" title="${escape(labTitle(panel.id))}" `
     + 'allow="fullscreen; clipboard-write"></iframe>';
 }
 
 /**
  * A panel of a composed lecture: the lecture page with the lecture (`code`, or none where the page
  * itself holds it: `page` is then that page's address), this item's state under its own prefix (what
- * differs from the item's start, `schema` holding that start as its defaults), and the item in the hash.
+ * differs from the item's start, `schema` holding that start as its defaults), and the item in the hash;
+ * with `lang`, the language the lecture is read in (its link's, which the page needs before it reads the lecture).
  */
-export function itemLectureUrl({ page = './index.html', code = null, schema, prefix, key }, values) {
+export function itemLectureUrl({ page = './index.html', code = null, lang = null, schema, prefix, key }, values) {
   const url = pageUrl(page);
   url.search = '';
   if (code) url.searchParams.set('lecture', code);
+  if (lang) url.searchParams.set('lang', lang);
   writeParams(schema, values, url.searchParams, prefix);
   url.hash = key;
   return url.toString();

@@ -1,4 +1,9 @@
 // A visible, dismissible notice: bad input is said on screen, in words, never only in the console.
+import english from 'virtual:messages/en/host';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('host', english);
+
 export function showNotice(host, title, lines, { kind = 'warning' } = {}) {
   if (!lines.length) return null;
   const box = document.createElement('div');
@@ -15,7 +20,7 @@ export function showNotice(host, title, lines, { kind = 'warning' } = {}) {
   const close = document.createElement('button');
   close.type = 'button';
   close.className = 'notice-close';
-  close.textContent = 'Dismiss';
+  close.textContent = t('dismiss');
   close.addEventListener('click', () => box.remove());
   box.append(heading, list, close);
   host.prepend(box);

@@ -3,11 +3,15 @@
 // code to check a question item), saying what it refused, and mounting its items in place of the
 // lab's own sections (mountLecture.js, with the Markdown renderer and KaTeX for the lecturer's
 // words). The lab's own lecture needs none of this, so its first picture does not wait for it.
+import english from 'virtual:messages/en/lecture';
+import { messages } from '../i18n/messages.js';
 import { showNotice } from '../host/showNotice.js';
 import { lecturePrefix } from '../panels/manifest.js';
 import { itemKeys, openLecture } from './openLecture.js';
 import { lectureToCode } from './lectureLink.js';
 import { mountLecture } from './mountLecture.js';
+
+const t = messages('lecture', english);
 
 /**
  * The lecture given to the page (search: its query; carried: the data element's text or null),
@@ -20,10 +24,9 @@ import { mountLecture } from './mountLecture.js';
 export function showComposedLecture(main, search, carried) {
   const opened = openLecture(search, carried);
   if (opened.refused) {
-    const what = opened.given === 'link' ? 'This lecture link' : 'The lecture in this page';
-    showNotice(main, `${what} cannot be opened, so the lab’s own lecture is shown:`, opened.problems, { kind: 'error' });
+    showNotice(main, t('refused', { given: opened.given }), opened.problems, { kind: 'error' });
   } else {
-    showNotice(main, 'Parts of this lecture could not be used, so they are left out:', opened.problems);
+    showNotice(main, t('partsRefused'), opened.problems);
   }
   const composed = opened.lecture ? mountLecture(main, opened.lecture, itemKeys(opened.lecture.items, lecturePrefix)) : null;
   return {

@@ -22,6 +22,11 @@ import { readLecture } from './readLecture.js';
 import { escapeHtml } from './lectureTextHtml.js';
 import { lectureSlidesHtml } from './deckSlides.js';
 import { katexDeckCss } from './katexDeckCss.js';
+import english from 'virtual:messages/en/lecture';
+import { currentLanguage, messages } from '../i18n/messages.js';
+import { languageById } from '../i18n/languages.js';
+
+const t = messages('lecture', english);
 
 export const DEFAULT_EMBED_URL = 'offline/embed.html';
 
@@ -114,9 +119,13 @@ export function lectureDeckHtml(lecture, {
   const read = readLecture(lecture);
   if (!read.ok) throw new TypeError(`This is no lecture: ${read.problems.join(' ')}`);
   const { title } = read.lecture;
-  const slides = lectureSlidesHtml(read.lecture, { embedUrl, theme, projector: Boolean(projector) });
+  // The lecture's language (the composer writes the page's) is the deck's and its panels'; a lecture
+  // without one is shown in the words the deck is written in, its panels in their reader's language.
+  const { lang = null } = read.lecture;
+  const language = languageById(lang ?? currentLanguage()) ?? languageById('en');
+  const slides = lectureSlidesHtml(read.lecture, { embedUrl, theme, projector: Boolean(projector), lang });
   return `<!doctype html>
-<html lang="en">
+<html lang="${escapeHtml(language.id)}" dir="${language.dir}">
 <head>
 <meta charset="utf-8">
 <meta name="viewport" content="width=device-width, initial-scale=1">
@@ -135,7 +144,7 @@ export function lectureDeckHtml(lecture, {
 <div class="slides">
 <section class="fl-title" data-title-slide>
   <h1>${escapeHtml(title)}</h1>
-  <p class="fl-small">With panels from Fresnel Lab. Keys: → or Space next, ← back, F full screen, Esc overview.</p>
+  <p class="fl-small">${escapeHtml(t('deckKeys'))}</p>
 </section>
 ${slides}
 </div>

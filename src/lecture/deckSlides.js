@@ -19,6 +19,11 @@ import { formatTolerance, formatValue } from '../homework/formatAnswer.js';
 import { escapeHtml, lectureTextHtml, subscriptedHtml } from './lectureTextHtml.js';
 import { ROOM_SEED } from './readLecture.js';
 import { panelTitle } from '../panels/panelText.js';
+import { labTitle } from '../host/shareLinks.js';
+import english from 'virtual:messages/en/lecture';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('lecture', english);
 
 /** Plot-only panels that create a WebGL context for a while (the manifest's webgl is false). */
 const HOLDS_CONTEXT_AT_TIMES = ['speed-accuracy'];
@@ -28,13 +33,15 @@ export const DEFAULT_QUESTION_SEED = ROOM_SEED;
 
 /**
  * The embed page's link for a panel: `base?panel=ID`, the values that differ from the panel's
- * defaults (written as a share link writes them), then lock, hide, theme, projector and fit.
+ * defaults (written as a share link writes them), then lock, hide, theme, projector, fit and lang.
  * @param {string} base  embed.html's address, relative (offline/embed.html) or absolute
  * @param {string} id
  * @param {{ state?: Record<string, unknown>, lock?: string[], hide?: string[], theme?: string | null, projector?: boolean,
- *   fit?: boolean }} [options]
+ *   fit?: boolean, lang?: string | null }} [options]
  */
-export function embedSource(base, id, { state = {}, lock = [], hide = [], theme = null, projector = false, fit = false } = {}) {
+export function embedSource(base, id, {
+  state = {}, lock = [], hide = [], theme = null, projector = false, fit = false, lang = null,
+} = {}) {
   const schema = panelSchema(id);
   const search = new URLSearchParams({ panel: id });
   writeParams(schema, { ...defaults(schema), ...state }, search);
@@ -43,6 +50,7 @@ export function embedSource(base, id, { state = {}, lock = [], hide = [], theme 
   if (theme) search.set('theme', theme);
   if (projector) search.set('projector', '1');
   if (fit) search.set('fit', '1');
+  if (lang) search.set('lang', lang);
   return `${base}${base.includes('?') ? '&' : '?'}${search.toString().replace(/%2C/g, ',')}`;
 }
 
@@ -51,7 +59,7 @@ function frameHtml(src, id, { short }) {
   const entry = panelEntry(id);
   const preload = entry.webgl || HOLDS_CONTEXT_AT_TIMES.includes(id) ? '' : ' data-preload';
   return `<iframe class="fl-embed${short ? ' fl-short' : ''}"${preload} data-src="${escapeHtml(src)}" `
-    + `title="${escapeHtml(`Fresnel Lab: ${panelTitle(id)}`)}" allow="fullscreen; clipboard-write"></iframe>`;
+    + `title="${escapeHtml(labTitle(id))}" allow="fullscreen; clipboard-write"></iframe>`;
 }
 
 // Math as KaTeX's HTML, with the deck carrying KaTeX's CSS and fonts (deckExport.js): it looks as on the site.
@@ -61,7 +69,8 @@ function panelSlide(item, n, frame) {
   // Without a heading of the lecturer's the slide has none: the embed shows the panel's title itself.
   const heading = item.heading ? `<h2>${escapeHtml(item.heading)}</h2>` : '';
   // fit: the panel shows whole on its slide, scaled down as far as it must be (src/host/fitToFrame.js).
-  const src = embedSource(frame.embedUrl, item.panel, { ...item, theme: frame.theme, projector: frame.projector, fit: true });
+  const { theme, projector, lang } = frame;
+  const src = embedSource(frame.embedUrl, item.panel, { ...item, theme, projector, fit: true, lang });
   return `<section class="fl-panel" data-item="${n}" data-item-type="panel" data-panel="${escapeHtml(item.panel)}">
   ${heading}${textHtml(item.text)}
   ${frameHtml(src, item.panel, { short: Boolean(item.text) })}
@@ -82,8 +91,9 @@ function answerHtml(question, params) {
       + `    <p class="fl-why">${subscriptedHtml(right.why(params))}</p>`;
   }
   const expected = expectedValue(question, params);
-  return `<p class="fl-prompt">The computed answer is <strong>${escapeHtml(formatValue(question, expected))}</strong> `
-    + `(checked within ${escapeHtml(formatTolerance(question))}).</p>`;
+  // The message's own markup (<strong>), with the values escaped.
+  return `<p class="fl-prompt">${t('deckAnswer', { value: escapeHtml(formatValue(question, expected)),
+    tolerance: escapeHtml(formatTolerance(question)) })}</p>`;
 }
 
 /**
@@ -96,16 +106,16 @@ function questionSlide(item, n, frame) {
   const params = questionParams(question, item.seed ?? DEFAULT_QUESTION_SEED);
   const optionItems = question.kind === 'choice' ? question.options(params).map((o) => `<li>${subscriptedHtml(o.text(params))}</li>`) : [];
   const options = optionItems.length ? `\n    <ol class="fl-options" type="A">${optionItems.join('')}</ol>` : '';
-  const { embedUrl, theme, projector } = frame;
-  const src = embedSource(embedUrl, question.panel, { state: question.state(params), theme, projector, fit: true });
+  const { embedUrl, theme, projector, lang } = frame;
+  const src = embedSource(embedUrl, question.panel, { state: question.state(params), theme, projector, fit: true, lang });
   return `<section data-item="${n}" data-item-type="question" data-question="${escapeHtml(question.id)}">
   <section class="fl-question">
-    <h2>${item.heading ? escapeHtml(item.heading) : 'A question for the room'}</h2>${textHtml(item.text)}
+    <h2>${escapeHtml(item.heading || t('deckQuestion'))}</h2>${textHtml(item.text)}
     <p class="fl-kind">${escapeHtml(KIND_NAMES[question.kind])} · ${subscriptedHtml(panelTitle(question.panel))}</p>
     <p class="fl-prompt">${subscriptedHtml(question.prompt(params))}</p>${options}
   </section>
   <section class="fl-answer" data-item-type="answer">
-    <h2>The answer</h2>
+    <h2>${escapeHtml(t('deckAnswerHeading'))}</h2>
     ${answerHtml(question, params)}
     ${frameHtml(src, question.panel, { short: true })}
   </section>
@@ -115,7 +125,7 @@ function questionSlide(item, n, frame) {
 /**
  * Every item's slide, in order, as HTML text (the lecture as readLecture gives it).
  * @param {{ items: object[] }} lecture
- * @param {{ embedUrl: string, theme: string | null, projector: boolean }} frame  how panel frames are written
+ * @param {{ embedUrl: string, theme: string | null, projector: boolean, lang?: string | null }} frame  how panel frames are written
  */
 export function lectureSlidesHtml(lecture, frame) {
   return lecture.items.map((item, i) => {

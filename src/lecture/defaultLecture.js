@@ -3,11 +3,14 @@
 // carry no text of their own). A composed lecture starts from it.
 import { PANELS } from '../panels/manifest.js';
 import { LECTURE_KIND, LECTURE_VERSION } from './readLecture.js';
+import english from 'virtual:messages/en/lecture';
+import { messages } from '../i18n/messages.js';
 
-export const DEFAULT_TITLE = 'Fresnel Lab: mipmapping normal maps and Fresnel reflection'; // the lecture page's title
+const t = messages('lecture', english);
 
 export function defaultLecture() {
   return {
-    kind: LECTURE_KIND, version: LECTURE_VERSION, title: DEFAULT_TITLE, items: PANELS.map(({ id }) => ({ type: 'panel', panel: id })),
+    kind: LECTURE_KIND, version: LECTURE_VERSION, title: t('defaultTitle'), // the lecture page's title
+    items: PANELS.map(({ id }) => ({ type: 'panel', panel: id })),
   };
 }

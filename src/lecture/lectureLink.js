@@ -4,7 +4,12 @@
 // that inflates to a book is refused), so a link from anyone costs little. What the code holds is
 // then read as untrusted data (readLecture.js).
 import { deflateSync, inflateSync } from 'fflate';
+import english from 'virtual:messages/en/lecture';
+import { messages } from '../i18n/messages.js';
 import { readLecture } from './readLecture.js';
+import { fixed } from '../ui/format.js';
+
+const t = messages('lecture', english);
 
 export const LECTURE_CODE_PREFIX = 'L1.';
 const MAX_CODE = 100_000; // characters; a full lecture with text on every item is a few kilobytes
@@ -23,36 +28,36 @@ export function lectureToCode(lecture) {
 
 /** { ok: true, lecture, problems } or { ok: false, problems }, from a code or a link holding one. Never throws. */
 export function lectureFromCode(text) {
-  if (typeof text !== 'string') return { ok: false, problems: ['A lecture code is text.'] };
+  if (typeof text !== 'string') return { ok: false, problems: [t('codeNotText')] };
   let code = text.trim();
   const inLink = /[?&]lecture=([^&#\s]*)/.exec(code);
   if (inLink) {
     try {
       code = decodeURIComponent(inLink[1]);
     } catch {
-      return { ok: false, problems: ['This lecture link is damaged (a % that starts no character).'] };
+      return { ok: false, problems: [t('codeBadPercent')] };
     }
   }
   code = code.replace(/\s+/g, ''); // mail wraps long links
   if (!code.startsWith(LECTURE_CODE_PREFIX)) {
-    return { ok: false, problems: [`This is no lecture code (one starts with ${LECTURE_CODE_PREFIX}).`] };
+    return { ok: false, problems: [t('codeNoPrefix', { prefix: LECTURE_CODE_PREFIX })] };
   }
   if (code.length > MAX_CODE) {
-    return { ok: false, problems: [`This lecture code has ${code.length} characters, more than the ${MAX_CODE} a lecture may have.`] };
+    return { ok: false, problems: [t('codeTooLong', { length: fixed(code.length, 0), max: fixed(MAX_CODE, 0) })] };
   }
   const body = code.slice(LECTURE_CODE_PREFIX.length);
   if (!/^[A-Za-z0-9_-]*$/.test(body)) {
-    return { ok: false, problems: ['This lecture code holds characters a code never has: was it changed?'] };
+    return { ok: false, problems: [t('codeBadCharacters')] };
   }
   let json;
   try {
     const bytes = Uint8Array.from(atob(body.replace(/-/g, '+').replace(/_/g, '/')), (c) => c.charCodeAt(0));
     // One byte of room: a stream that runs past the cap is refused, not cut.
     const out = inflateSync(bytes, { out: new Uint8Array(MAX_JSON + 1) });
-    if (out.length > MAX_JSON) return { ok: false, problems: [`This lecture unpacks to more than ${MAX_JSON} bytes.`] };
+    if (out.length > MAX_JSON) return { ok: false, problems: [t('codeTooBig', { max: fixed(MAX_JSON, 0) })] };
     json = JSON.parse(new TextDecoder('utf-8', { fatal: true }).decode(out));
   } catch {
-    return { ok: false, problems: ['This lecture code is damaged (was it cut short when copied?).'] };
+    return { ok: false, problems: [t('codeDamaged')] };
   }
   return readLecture(json);
 }

@@ -5,9 +5,14 @@
 // homework question asked of the room (questionItem.js, loaded only for a lecture that has one).
 import { PLACE_LAYOUTS, panelEntry, sectionHtml } from '../panels/manifest.js';
 import { panelText } from '../panels/panelText.js';
+import english from 'virtual:messages/en/lecture';
+import { messages } from '../i18n/messages.js';
 import { el } from '../ui/el.js';
+import { fixed } from '../ui/format.js';
 import { showNotice } from '../host/showNotice.js';
 import { lectureTextFragment } from './lectureTextDom.js';
+
+const t = messages('lecture', english);
 
 /** The lecturer's own heading and text for an item (nothing when it has neither). */
 function ownText(item, key, className) {
@@ -70,11 +75,11 @@ function plainSection(item, key, className, label) {
  */
 export function mountLecture(main, lecture, keys) {
   for (const section of main.querySelectorAll('section[data-panel]')) section.remove();
-  document.title = `${lecture.title}: Fresnel Lab`;
+  document.title = t('pageTitle', { title: lecture.title });
   const title = document.querySelector('.site-title h1');
   if (title) title.textContent = lecture.title;
   const intro = document.querySelector('.site-title p');
-  if (intro) intro.textContent = 'A lecture composed from Fresnel Lab’s panels, in its lecturer’s order and words.';
+  if (intro) intro.textContent = t('pageIntro');
 
   const sections = [];
   const panels = [];
@@ -86,17 +91,17 @@ export function mountLecture(main, lecture, keys) {
       section = panelSection(item, key);
       panels.push({ section, item, key, prefix });
     } else if (item.type === 'question') {
-      section = plainSection(item, key, 'lecture-question hw-lecture-mode', `Question ${questions.length + 1}`);
+      section = plainSection(item, key, 'lecture-question hw-lecture-mode', t('questionLabel', { n: fixed(questions.length + 1, 0) }));
       questions.push({ section, item, number: questions.length + 1 });
     } else {
-      section = plainSection(item, key, 'lecture-text-item', 'Text');
+      section = plainSection(item, key, 'lecture-text-item', t('textLabel'));
     }
     sections.push(section);
   });
   main.append(...sections);
   const ready = questions.length
     ? import('./questionItem.js').then(({ askQuestions }) => askQuestions(questions), (error) => {
-      for (const { section } of questions) showNotice(section, 'This question could not load.', [error.message], { kind: 'error' });
+      for (const { section } of questions) showNotice(section, t('questionLoadFailed'), [error.message], { kind: 'error' });
       return null; // said in each question's section; the rest of the lecture goes on
     })
     : Promise.resolve();

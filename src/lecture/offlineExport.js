@@ -13,6 +13,10 @@
 import { readLecture } from './readLecture.js';
 import { LECTURE_ELEMENT_ID } from './lectureElement.js';
 import { escapeHtml } from './lectureTextHtml.js';
+import english from 'virtual:messages/en/lecture';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('lecture', english);
 
 export { LECTURE_ELEMENT_ID };
 
@@ -68,9 +72,9 @@ export function offlineLectureHtml(offlineIndexHtml, lecture) {
   const indent = /[ \t]*$/.exec(html.slice(0, at))[0];
   html = `${html.slice(0, at)}${element}\n${indent}${html.slice(at)}`;
   // The first <title> is the page's own (it comes before any script); the lecture's title, escaped.
-  const title = /<title>[^<]*<\/title>/i.exec(html);
+  const title = /<title\b[^>]*>[^<]*<\/title>/i.exec(html);
   if (title && (!first || title.index < first[0])) {
-    const named = `<title>${escapeHtml(`${read.lecture.title}: Fresnel Lab`)}</title>`;
+    const named = `<title>${escapeHtml(t('pageTitle', { title: read.lecture.title }))}</title>`;
     html = `${html.slice(0, title.index)}${named}${html.slice(title.index + title[0].length)}`;
   }
   return html;

@@ -1,10 +1,14 @@
 // Which lecture the lecture page shows: the one in the link (?lecture=CODE), else one written into
 // the page itself (a data element, as the offline export writes it), else the lab's own lecture.
 // Both are text from anyone: read by lectureFromCode / readLecture, which name what they refuse.
+import english from 'virtual:messages/en/lecture';
+import { messages } from '../i18n/messages.js';
 import { lectureFromCode } from './lectureLink.js';
+import { fixed } from '../ui/format.js';
 import { readLecture } from './readLecture.js';
 
 export { LECTURE_ELEMENT_ID } from './lectureElement.js';
+const t = messages('lecture', english);
 const MAX_ELEMENT = 400_000; // characters, as much as a code may unpack to (lectureLink.js)
 
 /**
@@ -39,7 +43,7 @@ export function openLecture(search, elementText) {
   if (!read.ok) return { source: 'default', lecture: null, problems: read.problems, refused: true, given: source };
   // A lecture whose every item was refused would be an empty page: it is refused whole, its reasons named.
   if (!read.lecture.items.length) {
-    const problems = [...read.problems, 'It has no item that can be shown.'];
+    const problems = [...read.problems, t('nothingToShow')];
     return { source: 'default', lecture: null, problems, refused: true, given: source };
   }
   return { source, lecture: read.lecture, problems: read.problems, refused: false, given: source };
@@ -48,13 +52,13 @@ export function openLecture(search, elementText) {
 /** The data element's JSON, read as readLecture reads any lecture. */
 function readElement(text) {
   if (text.length > MAX_ELEMENT) {
-    return { ok: false, problems: [`The lecture in this page has ${text.length} characters, more than the ${MAX_ELEMENT} it may have.`] };
+    return { ok: false, problems: [t('elementTooLong', { length: fixed(text.length, 0), max: fixed(MAX_ELEMENT, 0) })] };
   }
   let data;
   try {
     data = JSON.parse(text);
   } catch {
-    return { ok: false, problems: ['The lecture in this page is not readable JSON (was the file changed?).'] };
+    return { ok: false, problems: [t('elementNotJson')] };
   }
   return readLecture(data);
 }

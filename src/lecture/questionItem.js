@@ -8,7 +8,10 @@ import { questionParams } from '../homework/gradeAnswer.js';
 import { buildQuestionCard } from '../homework/page/buildQuestionCard.js';
 import { button } from '../ui/el.js';
 import { ROOM_SEED } from './readLecture.js';
+import english from 'virtual:messages/en/lecture';
+import { messages } from '../i18n/messages.js';
 
+const t = messages('lecture', english);
 
 /** Each { section, item, number } gets its card and a "Reveal the answer" button. Returns the cards. */
 export function askQuestions(questions) {
@@ -28,7 +31,7 @@ export function askQuestions(questions) {
       onAnswer: () => {},
       onFrame: (frame) => frames.add(frame),
     });
-    const reveal = button('Reveal the answer', 'hw-reveal');
+    const reveal = button(t('reveal'), 'hw-reveal');
     reveal.addEventListener('click', () => { card.reveal(); reveal.disabled = true; });
     card.element.append(reveal);
     section.append(card.element);

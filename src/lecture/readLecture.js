@@ -3,11 +3,18 @@
 // item (an agenda, a reference list), or a question from the homework bank asked of the room.
 // A lecture comes from anyone (a link, a file), so it is read as untrusted data: own keys only,
 // sizes capped, every value checked against the panel's schema, and whatever cannot be used is
-// named while the rest of the lecture is kept.
+// named while the rest of the lecture is kept. It may carry the language it was written in (lang),
+// one the lab speaks (src/i18n/languages.js), so that it opens in that language.
+import english from 'virtual:messages/en/lecture';
+import { messages } from '../i18n/messages.js';
+import { LANGUAGES, languageById } from '../i18n/languages.js';
+import { fixed } from '../ui/format.js';
 import { applyParams, defaults, describeProblem, rawText, resolveKey } from '../host/params.js';
 import { panelEntry } from '../panels/manifest.js';
 import { panelSchema } from '../panels/panelSchema.js';
 import { questionById } from '../homework/questions.js';
+
+const t = messages('lecture', english);
 
 export const LECTURE_KIND = 'fresnel-lab-lecture';
 export const LECTURE_VERSION = 1;
@@ -24,28 +31,32 @@ const ITEM_FIELDS = {
 const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
 const own = (o, key) => (Object.hasOwn(o, key) ? o[key] : undefined);
 
-/** An optional text: undefined when absent, else the text or a problem (not text, too long). */
+/**
+ * An optional text: undefined when absent, else the text or a problem (not text, too long). what:
+ * which text, as the messages name it ({ field, where }: 'title', 'heading', 'text' or 'seed', and
+ * the item's place).
+ */
 function optionalText(value, max, what, problems) {
   if (value === undefined) return undefined;
-  if (typeof value !== 'string') { problems.push(`${what} is not text, so it is left out.`); return undefined; }
+  if (typeof value !== 'string') { problems.push(t('textNotText', what)); return undefined; }
   if (value.length > max) {
-    problems.push(`${what} has ${value.length} characters, more than ${max}, so it is left out.`);
+    problems.push(t('textTooLong', { ...what, length: fixed(value.length, 0), max: fixed(max, 0) }));
     return undefined;
   }
   return value;
 }
 
-/** A list of the panel's control keys (locked or hidden), each resolved to its schema key. */
+/** A list of the panel's control keys (locked or hidden), each resolved to its schema key. what: { where, field }. */
 function keyList(value, schema, what, problems) {
   if (value === undefined) return undefined;
   if (!Array.isArray(value) || value.length > LECTURE_CAPS.keys) {
-    problems.push(`${what} is not a list of up to ${LECTURE_CAPS.keys} control names, so it is left out.`);
+    problems.push(t('keysNotList', { ...what, max: fixed(LECTURE_CAPS.keys, 0) }));
     return undefined;
   }
   const keys = [];
   for (const name of value) {
     const key = typeof name === 'string' ? resolveKey(schema, name) : undefined;
-    if (key === undefined) problems.push(`${what}: ${rawText(name, 40)} is no control of this panel.`);
+    if (key === undefined) problems.push(t('keyNotControl', { ...what, name: rawText(name, 40) }));
     else if (!keys.includes(key)) keys.push(key);
   }
   return keys;
@@ -55,23 +66,23 @@ function readPanelItem(item, where, problems) {
   const id = own(item, 'panel');
   const schema = typeof id === 'string' ? panelSchema(id) : undefined;
   if (!schema || !panelEntry(id)) {
-    return problems.push(`${where}: ${rawText(id, 40)} is no panel of the lab, so the item is left out.`) && null;
+    return problems.push(t('noPanel', { where, id: rawText(id, 40) })) && null;
   }
   const out = { type: 'panel', panel: id };
   const state = own(item, 'state');
   if (state !== undefined) {
-    if (!isObject(state)) problems.push(`${where}: its start state is not a set of values, so the panel starts from its defaults.`);
+    if (!isObject(state)) problems.push(t('stateNotValues', { where }));
     else {
       // Read as a link is: each value checked by the schema, what is refused named; defaults are not stored.
       const start = defaults(schema);
       const { applied, rejected } = applyParams(schema, { ...start }, Object.fromEntries(Object.keys(state).map((k) => [k, state[k]])));
-      for (const r of rejected) problems.push(`${where}: ${describeProblem(r)}`);
+      for (const r of rejected) problems.push(t('itemProblem', { where, problem: describeProblem(r) }));
       const kept = Object.fromEntries(Object.entries(applied).filter(([k, v]) => !Object.is(v, start[k])));
       if (Object.keys(kept).length) out.state = kept;
     }
   }
   for (const field of ['lock', 'hide']) {
-    const keys = keyList(own(item, field), schema, `${where}, ${field}`, problems);
+    const keys = keyList(own(item, field), schema, { where, field }, problems);
     if (keys?.length) out[field] = keys;
   }
   return out;
@@ -80,66 +91,73 @@ function readPanelItem(item, where, problems) {
 function readQuestionItem(item, where, problems) {
   const id = own(item, 'question');
   if (typeof id !== 'string' || !questionById(id)) {
-    return problems.push(`${where}: ${rawText(id, 40)} is no question of the homework bank, so the item is left out.`) && null;
+    return problems.push(t('noQuestion', { where, id: rawText(id, 40) })) && null;
   }
   const out = { type: 'question', question: id };
-  const seed = optionalText(own(item, 'seed'), LECTURE_CAPS.seed, `${where}, its seed`, problems);
+  const seed = optionalText(own(item, 'seed'), LECTURE_CAPS.seed, { field: 'seed', where }, problems);
   if (seed !== undefined && seed.trim()) out.seed = seed.trim();
   return out;
 }
 
 /** One item, or null (named in problems) when it cannot be used. */
 function readItem(item, i, problems) {
-  const where = `Item ${i + 1}`;
-  if (!isObject(item)) return problems.push(`${where} is not an item, so it is left out.`) && null;
+  const where = t('itemPlace', { n: fixed(i + 1, 0) });
+  if (!isObject(item)) return problems.push(t('notItem', { where })) && null;
   const type = own(item, 'type');
   const fields = typeof type === 'string' && Object.hasOwn(ITEM_FIELDS, type) ? ITEM_FIELDS[type] : null;
   if (!fields) {
-    return problems.push(`${where}: ${rawText(type, 40)} is no kind of item (panel, text or question), so it is left out.`) && null;
+    return problems.push(t('noKind', { where, type: rawText(type, 40) })) && null;
   }
   for (const key of Object.keys(item)) {
-    if (!fields.includes(key)) problems.push(`${where}: ${rawText(key, 40)} is no field of a ${type} item, so it is left out.`);
+    if (!fields.includes(key)) problems.push(t('noItemField', { where, key: rawText(key, 40), type }));
   }
   const out = type === 'panel' ? readPanelItem(item, where, problems)
     : type === 'question' ? readQuestionItem(item, where, problems)
     : { type: 'text' };
   if (!out) return null;
-  const heading = optionalText(own(item, 'heading'), LECTURE_CAPS.heading, `${where}, its heading`, problems);
-  const text = optionalText(own(item, 'text'), LECTURE_CAPS.text, `${where}, its text`, problems);
+  const heading = optionalText(own(item, 'heading'), LECTURE_CAPS.heading, { field: 'heading', where }, problems);
+  const text = optionalText(own(item, 'text'), LECTURE_CAPS.text, { field: 'text', where }, problems);
   if (heading?.trim()) out.heading = heading.trim();
   if (text?.trim()) out.text = text.trim();
   if (type === 'text' && !out.text && !out.heading) {
-    return problems.push(`${where} is a text item without text, so it is left out.`) && null;
+    return problems.push(t('emptyText', { where })) && null;
   }
   return out;
 }
 
+/** The lecture's language: an id of src/i18n/languages.js, else undefined (and what was refused, named). */
+function readLanguage(value, problems) {
+  if (value === undefined) return undefined;
+  if (typeof value === 'string' && languageById(value)) return value;
+  problems.push(t('noLanguage', { lang: rawText(value, 20), languages: LANGUAGES.map((l) => l.id).join(', ') }));
+  return undefined;
+}
+
 /**
- * { ok: true, lecture: { kind, version, title, items }, problems } — the lecture as far as it can
+ * { ok: true, lecture: { kind, version, title, lang?, items }, problems } — the lecture as far as it can
  * be used, each part left out named in problems — or { ok: false, problems } when the data is no
  * lecture at all. Never throws.
  */
 export function readLecture(data) {
-  if (!isObject(data)) return { ok: false, problems: ['A lecture is a JSON object with a title and a list of items.'] };
+  if (!isObject(data)) return { ok: false, problems: [t('notObject')] };
   if (own(data, 'kind') !== LECTURE_KIND) {
-    return { ok: false, problems: [`This is not a lecture (its kind is ${rawText(own(data, 'kind'), 40)}, not ${LECTURE_KIND}).`] };
+    return { ok: false, problems: [t('notLecture', { kind: rawText(own(data, 'kind'), 40), expected: LECTURE_KIND })] };
   }
   if (own(data, 'version') !== LECTURE_VERSION) {
-    return {
-      ok: false,
-      problems: [`This lecture is version ${rawText(own(data, 'version'), 20)}; this page reads version ${LECTURE_VERSION}.`],
-    };
+    return { ok: false, problems: [t('otherVersion', { version: rawText(own(data, 'version'), 20), reads: `${LECTURE_VERSION}` })] };
   }
   const problems = [];
   for (const key of Object.keys(data)) {
-    if (!['kind', 'version', 'title', 'items'].includes(key)) {
-      problems.push(`${rawText(key, 40)} is no field of a lecture, so it is left out.`);
-    }
+    if (!['kind', 'version', 'title', 'lang', 'items'].includes(key)) problems.push(t('noLectureField', { key: rawText(key, 40) }));
   }
-  const title = optionalText(own(data, 'title'), LECTURE_CAPS.title, 'The title', problems)?.trim() || 'A lecture';
+  const title = optionalText(own(data, 'title'), LECTURE_CAPS.title, { field: 'title' }, problems)?.trim() || t('untitled');
+  const lang = readLanguage(own(data, 'lang'), problems);
   const raw = own(data, 'items');
-  if (!Array.isArray(raw)) return { ok: false, problems: ['A lecture holds a list of items.'] };
-  if (raw.length > LECTURE_CAPS.items) problems.push(`The lecture has ${raw.length} items; the first ${LECTURE_CAPS.items} are read.`);
+  if (!Array.isArray(raw)) return { ok: false, problems: [t('noItems')] };
+  if (raw.length > LECTURE_CAPS.items) {
+    problems.push(t('tooManyItems', { count: fixed(raw.length, 0), max: fixed(LECTURE_CAPS.items, 0) }));
+  }
   const items = raw.slice(0, LECTURE_CAPS.items).map((item, i) => readItem(item, i, problems)).filter(Boolean);
-  return { ok: true, lecture: { kind: LECTURE_KIND, version: LECTURE_VERSION, title, items }, problems };
+  const lecture = { kind: LECTURE_KIND, version: LECTURE_VERSION, title, ...(lang ? { lang } : {}), items };
+  return { ok: true, lecture, problems };
 }

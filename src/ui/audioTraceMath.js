@@ -3,7 +3,11 @@
 // steps, the landmarks a move passes, and the words read out. Pitch follows R over two octaves,
 // 220 Hz (R = 0) to 880 Hz (R = 1), on a logarithmic scale, so that equal steps of R sound as
 // equal musical intervals (a whole tone is a step of 1/12 in R).
+import english from 'virtual:messages/en/ui';
+import { messages } from '../i18n/messages.js';
 import { angle, fixed } from './format.js';
+
+const t = messages('ui', english);
 
 export const LOW_HZ = 220;
 export const OCTAVES = 2;
@@ -66,10 +70,11 @@ export const inTir = (deg, critical) => critical != null && deg >= critical;
  * @param {Landmarks & { cues?: string[] }} context
  */
 export function traceReadout(deg, values, { brewster, critical, cues = [] }) {
-  const parts = [`θ ${fixed(deg, 1)}°: ${values.map((v) => `${v.label} ${fixed(v.value, 4)}`).join(', ')}.`];
-  if (cues.includes('brewster')) parts.push(`Passed the Brewster angle, ${angle(brewster)}: Rp is 0 there.`);
-  if (cues.includes('critical')) parts.push(`Passed the critical angle, ${angle(critical)}: total internal reflection above it.`);
-  else if (inTir(deg, critical)) parts.push('Total internal reflection: R = 1.');
+  const list = values.map((v) => t('traceValue', { curve: v.label, value: fixed(v.value, 4) })).join(', ');
+  const parts = [t('traceReadout', { theta: angle(deg, 1), values: list })];
+  if (cues.includes('brewster')) parts.push(t('tracePassedBrewster', { angle: angle(brewster) }));
+  if (cues.includes('critical')) parts.push(t('tracePassedCritical', { angle: angle(critical) }));
+  else if (inTir(deg, critical)) parts.push(t('traceInTir'));
   return parts.join(' ');
 }
 

@@ -3,11 +3,14 @@
 // the Brewster angle, the critical angle and the total-internal-reflection range. Off by default;
 // one switch for the page (the A key, the button under any plot, ?audio=1, or a message), so a
 // student who turned it on hears every plot.
+import english from 'virtual:messages/en/ui';
+import { messages } from '../i18n/messages.js';
 import { el, button } from './el.js';
-import { angle } from './format.js';
+import { angle, fixed } from './format.js';
 import { cuesBetween, inTir, pitchHz, stepCursor, sweepPlan, traceReadout } from './audioTraceMath.js';
 import { createTraceSound } from './traceSound.js';
 
+const t = messages('ui', english);
 let on = false;
 const switches = new Set();
 const traces = new Set(); // { root, cursor } of each trace on the page
@@ -72,14 +75,14 @@ let ids = 0;
 export function createAudioTrace(plotHost, { plot, curves, landmarks }) {
   const id = `trace-${++ids}`;
   const root = el('div', 'trace');
-  const toggle = button('Hear the curve', 'trace-toggle');
+  const toggle = button(t('traceToggle'), 'trace-toggle');
   toggle.setAttribute('aria-keyshortcuts', 'A');
-  const keyHint = el('span', 'trace-key', 'key A');
+  const keyHint = el('span', 'trace-key', t('traceKey'));
   const body = el('div', 'trace-body');
   const curveLabel = el('label', 'trace-field');
   const curveSelect = el('select');
-  curveLabel.append(el('span', null, 'Curve'), curveSelect);
-  const cursorLabel = el('span', 'trace-cursor-label', 'θ cursor');
+  curveLabel.append(el('span', null, t('traceCurve')), curveSelect);
+  const cursorLabel = el('span', 'trace-cursor-label', t('traceCursor'));
   cursorLabel.id = `${id}-label`;
   const cursor = el('div', 'trace-cursor');
   cursor.tabIndex = 0;
@@ -88,13 +91,11 @@ export function createAudioTrace(plotHost, { plot, curves, landmarks }) {
   cursor.setAttribute('aria-valuemin', '0');
   cursor.setAttribute('aria-valuemax', '90');
   cursor.setAttribute('aria-orientation', 'horizontal');
-  const sweepButton = button('Play 0° to 90°', 'trace-sweep');
+  const sweepButton = button(t('tracePlay'), 'trace-sweep');
   const readout = el('p', 'trace-readout');
   readout.setAttribute('role', 'status');
   readout.setAttribute('aria-live', 'polite');
-  const help = el('p', 'trace-help', 'Pitch follows the curve: high is R near 1. Arrows move θ by 1° (with Shift 0.1°), '
-    + 'Page keys by 10°, Home and End to 0° and 90°; Space or Enter plays 0° to 90°. Two high blips: the Brewster angle. '
-    + 'A falling knock: the critical angle. A buzz: total internal reflection.');
+  const help = el('p', 'trace-help', t('traceHelp'));
   body.append(curveLabel, cursorLabel, cursor, sweepButton, readout, help);
   root.append(toggle, keyHint, body);
   plotHost.after(root);
@@ -120,7 +121,7 @@ export function createAudioTrace(plotHost, { plot, curves, landmarks }) {
     cursor.setAttribute('aria-valuetext', angle(deg, 1));
     cursor.textContent = angle(deg, 1);
     readout.textContent = traceReadout(deg, [{ label: curve.label, value }], { ...landmarks(), cues });
-    plot.setCursor(on ? deg : null, `Trace θ ${angle(deg, 1)}`);
+    plot.setCursor(on ? deg : null, t('traceMark', { angle: angle(deg, 1) }));
     return value;
   }
 
@@ -135,8 +136,9 @@ export function createAudioTrace(plotHost, { plot, curves, landmarks }) {
   function sweep() {
     const plan = sweepPlan(traced().at, landmarks());
     sharedSound().sweep(plan);
-    const cues = plan.cues.map((c) => `${c.kind === 'brewster' ? 'Brewster' : 'critical'} angle at ${angle(c.deg)}`);
-    readout.textContent = `Playing ${traced().label} from 0° to 90° in ${plan.seconds} s${cues.length ? `; ${cues.join(', ')}` : ''}.`;
+    const cues = plan.cues.map((c) => t(c.kind === 'brewster' ? 'traceCueBrewster' : 'traceCueCritical', { angle: angle(c.deg) }));
+    const words = { curve: traced().label, seconds: fixed(plan.seconds, 0), cues: cues.join(', ') };
+    readout.textContent = t(cues.length ? 'tracePlayingCues' : 'tracePlaying', words);
   }
 
   function apply() {

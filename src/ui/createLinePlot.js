@@ -6,6 +6,10 @@ import 'uplot/dist/uPlot.min.css';
 import { cssVar, lineScale } from './theme.js';
 import { quietestSpot } from './quietestSpot.js';
 import { fixed, tickLabel } from './format.js';
+import english from 'virtual:messages/en/ui';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('ui', english);
 
 /** Colours may name a CSS custom property ('--c-exact') so they follow the theme. */
 export function resolveColor(color) {
@@ -36,7 +40,8 @@ function withCpuCanvas(make) {
 const COMPACT_PX = 480;
 export function compactLabel(label) {
   const head = label.split(',')[0];
-  return head !== label && /\(degrees\)/.test(label) ? `${head} (degrees)` : head;
+  const unit = t('plotDegrees'); // "(degrees)", as the panels' axis titles write it
+  return head !== label && label.includes(unit) ? `${head} ${unit}` : head;
 }
 
 /** The type of tick labels and marker labels, `scale` × its CSS size (the canvas's pixel ratio). */

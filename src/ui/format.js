@@ -3,7 +3,11 @@
 // language (es: 0,04), which Intl gives (setNumberLocale, from src/i18n/language.js). The digits are
 // toFixed's, whatever the language. Numbers a program reads (CSV cells, links, code, markup) do not
 // come through here: markupNumber and rounded keep the point.
+import english from 'virtual:messages/en/ui';
+import { messages } from '../i18n/messages.js';
 import { safeLocale } from './safeLocale.js';
+
+const t = messages('ui', english);
 
 export const MINUS = '\u2212';
 
@@ -56,6 +60,11 @@ export function grouped(value) {
   return String(Math.round(value)).replace(/\B(?=(\d{3})+(?!\d))/g, '\u202f').replace('-', MINUS);
 }
 
+/** A number as short as JavaScript writes it (a control's bound: 1, 0.0001, 1e-7), with a real minus sign. */
+export function shortNumber(value) {
+  return local(String(value)).replaceAll('-', MINUS);
+}
+
 /** An angle in degrees, 56.31°. */
 export function angle(deg, digits = 2) {
   return `${fixed(deg, digits)}°`;
@@ -67,7 +76,7 @@ export function angle(deg, digits = 2) {
  */
 export function seconds(value) {
   if (!Number.isFinite(value) || value < 0) return '—';
-  return value < 0.1 ? 'under 0.1 s' : `${fixed(value, 1)} s`;
+  return value < 0.1 ? t('secondsUnder', { tenth: fixed(0.1, 1) }) : t('seconds', { value: fixed(value, 1) });
 }
 
 /** A piece of a file name: lower-case letters, digits and dashes (accents dropped). */

@@ -1,7 +1,6 @@
 // Theme: dark or light, and a projector mode (larger type, thicker lines, stronger contrast).
 // Remembered in localStorage; a change fires `fresnel-lab:theme` so plots can redraw.
 const KEY = 'fresnel-lab:theme';
-export const THEMES = { dark: 'Dark', light: 'Light' };
 
 export function loadTheme() {
   try {

@@ -124,6 +124,24 @@ test('a lecture composed by keyboard alone gives a link that holds it, in order'
   }
 });
 
+test('a lecture composed in a language carries it: in its data and its link, and the lecture page opens in it', async ({ page }) => {
+  await page.goto('compose.html?lang=en-XA'); // the pseudo-locale: every word of the catalogue ⟦bracketed⟧
+  await page.evaluate(() => localStorage.removeItem('fresnel-lab:composer'));
+  await page.reload();
+  await page.locator('button[data-panel="schlick"]').click();
+  const link = await page.locator('.cp-link input').inputValue();
+  expect(new URL(link).searchParams.get('lang')).toBe('en-XA');
+  expect(lectureOf(link).lang).toBe('en-XA');
+  expect(await page.evaluate(() => window.fresnelLab.composer.lecture().lang)).toBe('en-XA');
+
+  await page.goto(link);
+  await page.evaluate(() => window.fresnelLab.ready);
+  expect(await page.evaluate(() => document.documentElement.lang)).toBe('en-XA');
+  await expect(page.locator('.site-title p')).toHaveText(/^⟦.+⟧$/); // the composed lecture's intro
+  await expect(page.locator('section[data-panel="schlick"] h2')).toHaveText(/^⟦.+⟧$/);
+  await expect(page.locator('section[data-panel="schlick"] .toolbar button').first()).toHaveText(/^⟦.+⟧$/);
+});
+
 test('a lecture link opens for editing; a damaged link and a file that is no lecture are refused in words', async ({ page }) => {
   const shared = { kind: 'fresnel-lab-lecture', version: 1, title: 'Shared', items: [{ type: 'panel', panel: 'metals' }, { type: 'panel', panel: 'bogus' }] };
   const code = `L1.${deflateRawSync(Buffer.from(JSON.stringify(shared))).toString('base64url')}`;

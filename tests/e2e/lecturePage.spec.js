@@ -35,7 +35,7 @@ test('a composed lecture opens from its link as composed, steps item by item, an
   await expect(page.locator('.site-title h1')).toHaveText('Glass, both ways');
   expect(await page.locator('main > section').evaluateAll((s) => s.map((e) => e.id))).toEqual(KEYS);
   expect(await page.locator('main > .notice').count(), 'a whole lecture names no problem').toBe(0);
-  await expect(page.locator('a.compose-link')).toHaveAttribute('href', /^\.\/compose\.html\?lecture=L1\./);
+  await expect(page.locator('.compose-offer a')).toHaveAttribute('href', /^\.\/compose\.html\?lecture=L1\./);
 
   // Items as composed: each panel from its state, the lecturer's words with it, text and question items.
   expect(await values(page, 'spheres')).toMatchObject({ nI: 1, nT: 1.7 });

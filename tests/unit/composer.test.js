@@ -113,9 +113,11 @@ describe('the lecture a draft gives', () => {
     expect(problems.join('\n')).toMatch(/Item 3: no-such-question is no question/);
   });
 
-  it('leaves empty fields out of the data it keeps', () => {
+  it('leaves empty fields out of the data it keeps, and writes the page’s language into it', () => {
     const { draft } = build(panelItem('schlick'));
-    expect(draftData(draft)).toEqual({ kind: 'fresnel-lab-lecture', version: 1, title: 'Optics, my way', items: [{ type: 'panel', panel: 'schlick' }] });
+    expect(draftData(draft)).toEqual({
+      kind: 'fresnel-lab-lecture', version: 1, title: 'Optics, my way', lang: 'en', items: [{ type: 'panel', panel: 'schlick' }],
+    });
   });
 });
 

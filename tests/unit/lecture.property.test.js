@@ -35,13 +35,15 @@ const textItem = fc.record({ type: fc.constant('text'), heading: fc.string({ max
 const questionItem = fc.record({ type: fc.constant('question'), question: fc.constantFrom(...QUESTIONS.map((q) => q.id)), seed: fc.string({ maxLength: 20 }), text: fc.string({ maxLength: 50 }) }, { requiredKeys: ['type', 'question'] });
 const lectureData = fc.record({
   kind: fc.constant(LECTURE_KIND), version: fc.constant(1), title: fc.string({ unit: 'grapheme', maxLength: 60 }),
+  lang: fc.oneof(fc.constantFrom('en', 'es', 'en-XA', 'ar-XB', 'EN', 'es-MX', 'xx', ''), anyValue),
   items: fc.array(fc.oneof(panelItem, panelItem, textItem, questionItem, anyJson), { maxLength: 12 }),
-});
+}, { requiredKeys: ['kind', 'version', 'title', 'items'] });
 
 /** A read lecture is valid: real panels and questions, values its schema takes, keys it has, text within its caps. */
 function expectValid(lecture) {
   expect(lecture.items.length).toBeLessThanOrEqual(LECTURE_CAPS.items);
   expect(lecture.title.length).toBeLessThanOrEqual(LECTURE_CAPS.title);
+  expect(lecture.lang === undefined || ['en', 'es', 'en-XA', 'ar-XB'].includes(lecture.lang)).toBe(true);
   for (const item of lecture.items) {
     if (item.type === 'panel') {
       const schema = panelSchema(item.panel);
@@ -72,6 +74,31 @@ describe('a lecture read from untrusted data', () => {
     expect(read.ok).toBe(true);
     expect(read.lecture.items).toEqual([{ type: 'panel', panel: 'schlick', state: { nT: 2 } }, { type: 'text', text: 'Agenda' }]);
     for (const name of ['extra', 'constructor', 'bogus', 'toString', '__proto__', 'slide']) expect(read.problems.join('\n')).toContain(name);
+  });
+});
+
+describe('the language a lecture was written in', () => {
+  const lecture = (lang) => ({ kind: LECTURE_KIND, version: 1, title: 'Óptica', lang, items: [{ type: 'text', text: 'Agenda' }] });
+
+  it('is kept when the lab speaks it (a pseudo-locale too), and goes through a link', () => {
+    for (const lang of ['en', 'es', 'en-XA', 'ar-XB']) {
+      const read = readLecture(lecture(lang));
+      expect(read, lang).toEqual({ ok: true, lecture: lecture(lang), problems: [] });
+      expect(lectureFromCode(lectureToCode(read.lecture)).lecture.lang).toBe(lang);
+    }
+    expect(readLecture({ ...lecture('en'), lang: undefined }).lecture).not.toHaveProperty('lang');
+  });
+
+  it('is named and left out when the lab does not speak it, and the rest of the lecture opens', () => {
+    for (const [i, lang] of ['xx', 'es-MX', 'EN', '', 42, { toString: 'x' }, ['es']].entries()) {
+      const read = readLecture(lecture(lang));
+      expect(read.ok, `case ${i}`).toBe(true);
+      expect(read.lecture).not.toHaveProperty('lang');
+      expect(read.lecture.items).toEqual([{ type: 'text', text: 'Agenda' }]);
+      expect(read.problems).toHaveLength(1);
+      expect(read.problems[0]).toMatch(/^The language .* is not one the lab speaks \(en, es\), so it is left out\.$/);
+    }
+    expect(readLecture(lecture('xx')).problems[0]).toContain('xx');
   });
 });
 

@@ -139,6 +139,19 @@ describe('the reveal.js deck of a lecture', () => {
     expect(frames[1].src).toBe('offline/embed.html?panel=spheres&nI=1.5&nT=1&lock=nI&hide=kd,ks&theme=dark&projector=1&fit=1');
   });
 
+  it('speaks the lecture\'s language: the page\'s lang and dir, and every panel frame\'s lang=', () => {
+    for (const [lang, dir] of [['es', 'ltr'], ['ar-XB', 'rtl']]) {
+      const html = deck({ ...composed, lang });
+      expect(html).toContain(`<html lang="${lang}" dir="${dir}">`);
+      const frames = framesOf(html);
+      expect(frames.length).toBeGreaterThan(0);
+      for (const frame of frames) expect(frame.search.get('lang'), frame.src).toBe(lang);
+    }
+    // A lecture without a language: the deck in the words it is written in, its panels in their reader's.
+    expect(deck(composed)).toContain('<html lang="en" dir="ltr">');
+    expect(framesOf(deck(composed)).every((frame) => !frame.search.has('lang'))).toBe(true);
+  });
+
   it('a WebGL panel loads only on its slide; a plot-only panel, which holds no context, is preloaded', () => {
     const lecture = lectureOf(PANELS.map(({ id }) => ({ type: 'panel', panel: id })));
     const frames = framesOf(deck(lecture));

@@ -71,6 +71,14 @@ describe('the offline lecture page', () => {
     expect(html).toContain('</script>\n  <script type="module" crossorigin>');
   });
 
+  it('carries the lecture\'s language in its data element, and its title in the page\'s title as the build writes it', () => {
+    const built = PAGE.replace('<title>', '<title data-i18n="page.title">'); // the pages' words come from the catalogue
+    const html = offlineLectureHtml(built, lecture({ lang: 'es' }));
+    expect(readBack(html).lang).toBe('es');
+    expect(html).toContain('<title>Glass, twice: Fresnel Lab</title>');
+    expect(html).not.toContain('mipmapping normal maps');
+  });
+
   it('changes nothing the page\'s policy covers: the same inline scripts and styles, so the same hashes', () => {
     const html = offlineLectureHtml(PAGE, lecture({ title: HOSTILE[0] }));
     expect(inlineTexts(html)).toEqual(inlineTexts(PAGE)); // the JSON block is data, which script-src does not govern

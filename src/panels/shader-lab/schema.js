@@ -9,7 +9,7 @@ export const schema = {
   // Twice the panel's own limit: longer code reaches the panel, which refuses it in its own words.
   code: {
     type: 'text', default: '', maxLength: 2 * MAX_CODE, encode: encodeCode, decode: decodeCode,
-    defaultText: 'the exercise’s starting code',
+    defaultText: 'starterCode', // host.defaultText.starterCode: the exercise’s starting code
   },
   precision: { type: 'enum', default: 'highp', options: ['highp', 'mediump'] },
   homework: { type: 'boolean', default: false },

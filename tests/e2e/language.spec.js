@@ -1,0 +1,87 @@
+// The page's language as a reader and a deck choose it: the selector on every page with page
+// controls (named from the catalogue; a choice reloads the page in it and is kept in this browser),
+// an embed's lang= option, and a deck's fresnel-lab:language message, which starts the panel again
+// in that language as it was. The pseudo-locale en-XA shows every catalogue message ⟦bracketed⟧.
+import { test, expect } from './fixtures.js';
+import { english, englishPanelTitle } from './englishText.js';
+
+const BRACKETED = /^⟦[^⟦⟧]+⟧$/;
+const AROUND = /^⟦.+⟧$/; // a message with another inside it (a panel's title)
+const KEPT = 'fresnel-lab:language';
+
+/**
+ * Opens a page and waits for its panels. A page in another language defines window.fresnelLab
+ * only once that language's words are here, which may be after the page's load event.
+ */
+async function openLab(page, path) {
+  await page.goto(path);
+  await page.waitForFunction(() => window.fresnelLab?.ready);
+  await page.evaluate(() => window.fresnelLab.ready);
+}
+
+/** The page's language selector and the name its label gives it. */
+const selector = (page) => page.locator('.page-controls label').filter({ has: page.locator('select[lang=""]') });
+
+test('the language selector: named from the catalogue on every page, a choice reloads the page in it and is kept', async ({ page }) => {
+  // A reader who chose the pseudo-locale earlier: the kept choice is the page's language.
+  await page.goto('./');
+  await page.evaluate((key) => localStorage.setItem(key, 'en-XA'), KEPT);
+  await page.goto('./compose.html');
+  const label = selector(page);
+  await expect(label.locator('span')).toHaveText(/^⟦[^⟦⟧]+⟧ $/);
+  expect(await page.evaluate(() => document.documentElement.lang)).toBe('en-XA');
+  await expect(label.locator('select')).toHaveValue('en-XA'); // it says what the page speaks
+  // Each language by its own name (its label), never translated.
+  expect(await label.locator('option').evaluateAll((options) => options.map((o) => [o.value, o.label, o.lang]))).toEqual([
+    ['en', 'English', 'en'], ['es', 'Español', 'es'], ['en-XA', '[Pseudo] Énglish', 'en-XA'],
+  ]);
+
+  await label.locator('select').selectOption('en');
+  await page.waitForURL(/[?&]lang=en(&|$)/);
+  await expect(selector(page).locator('span')).toHaveText(`${english.host.language} `);
+  expect(await page.evaluate(() => document.documentElement.lang)).toBe('en');
+  expect(await page.evaluate((key) => localStorage.getItem(key), KEPT)).toBe('en');
+
+  // Kept: the other pages, opened with no language in their link, speak it (they spoke en-XA before).
+  for (const path of ['./homework.html', './']) {
+    await page.goto(path);
+    await expect(selector(page).locator('span'), path).toHaveText(`${english.host.language} `);
+    await expect(selector(page).locator('select'), path).toHaveValue('en');
+    expect(await page.evaluate(() => document.documentElement.lang), path).toBe('en');
+  }
+});
+
+test('an embed with lang=en-XA speaks it: its title and its toolbar from the catalogue', async ({ page }) => {
+  await openLab(page, './embed.html?panel=schlick&lang=en-XA&nT=1.7');
+  expect(await page.evaluate(() => document.documentElement.lang)).toBe('en-XA');
+  await expect(page.locator('h1.embed-title')).toHaveText(BRACKETED);
+  expect(await page.title()).toMatch(AROUND);
+  const toolbar = page.locator('.toolbar button');
+  await expect(toolbar).toHaveCount(5);
+  for (const text of await toolbar.allTextContents()) expect(text).toMatch(BRACKETED);
+  expect(await page.evaluate(() => window.fresnelLab.hosts.schlick.values.nT)).toBe(1.7);
+});
+
+test('a deck\'s language message starts the embed again in that language, as it was', async ({ page }) => {
+  await openLab(page, './embed.html?panel=schlick&nT=1.7&theme=light');
+  await expect(page.locator('h1.embed-title')).toHaveText(englishPanelTitle('schlick'));
+  await expect(page.locator('.toolbar button').first()).toHaveText(english.host.copyLink);
+  // A language the lab does not speak changes nothing.
+  await page.evaluate(() => window.postMessage({ type: 'fresnel-lab:language', lang: 'xx' }, '*'));
+  // The deck changes a value and locks a control, then asks for another language at once: the
+  // panel starts again as it is now, not as its link said a moment before.
+  await page.evaluate(() => {
+    window.postMessage({ type: 'fresnel-lab:set', params: { nT: 2.2 } }, '*');
+    window.postMessage({ type: 'fresnel-lab:lock', keys: ['nI'] }, '*');
+    window.postMessage({ type: 'fresnel-lab:language', lang: 'en-XA' }, '*');
+  });
+  await page.waitForURL(/[?&]lang=en-XA(&|$)/);
+  await page.waitForFunction(() => window.fresnelLab?.ready);
+  await page.evaluate(() => window.fresnelLab.ready);
+  expect(await page.evaluate(() => document.documentElement.lang)).toBe('en-XA');
+  await expect(page.locator('h1.embed-title')).toHaveText(BRACKETED);
+  await expect(page.locator('.toolbar button').first()).toHaveText(BRACKETED);
+  expect(await page.evaluate(() => window.fresnelLab.hosts.schlick.values.nT)).toBe(2.2);
+  expect(await page.evaluate(() => window.fresnelLab.hosts.schlick.locked)).toEqual(['nI']);
+  expect(new URL(page.url()).searchParams.get('theme')).toBe('light'); // the embed's own options stay
+});
