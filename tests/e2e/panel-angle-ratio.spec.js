@@ -90,3 +90,14 @@ test('in the pseudo-locale every word is the catalogue\'s: rays, labels, slider,
     expect(await panelWordsOutside(page), JSON.stringify(values)).toEqual([]);
   }
 });
+
+test('labels 35 % longer than English still run into no other label of the diagram', async ({ page }) => {
+  await openInPseudoLocale(page, './embed.html?panel=angle-ratio&nI=1.5&nT=1&theta=30');
+  const overlaps = await page.evaluate(() => {
+    const boxes = [...document.querySelectorAll('.ar-medium-label, .ar-ray-label')]
+      .filter((t) => t.textContent && t.getClientRects().length).map((t) => ({ text: t.textContent, box: t.getBoundingClientRect() }));
+    const meet = (a, b) => a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
+    return boxes.flatMap((a, i) => boxes.slice(i + 1).filter((b) => meet(a.box, b.box)).map((b) => `${a.text} | ${b.text}`));
+  });
+  expect(overlaps).toEqual([]);
+});

@@ -73,7 +73,7 @@ export function buildAngleRatioDiagram(host, { onAngle }) {
   const surface = svgEl('line', { class: 'ar-surface', x1: 0, y1: P.y, x2: W, y2: P.y });
   const normal = svgEl('line', { class: 'ar-normal', x1: P.x, y1: 12, x2: P.x, y2: H - 12 });
   const nILabel = svgEl('text', { class: 'ar-medium-label', x: 16, y: 34 });
-  const nTLabel = svgEl('text', { class: 'ar-medium-label', x: 16, y: H - 16 });
+  const nTLabel = svgEl('text', { class: 'ar-medium-label', x: 16, y: H - 54 });
   const arcs = ['ar-arc-i', 'ar-arc-r', 'ar-arc-t'].map((c) => svgEl('path', { class: `ar-arc ${c}` }));
   const arcLabels = ['ar-arc-i', 'ar-arc-r', 'ar-arc-t'].map((c) => svgEl('text', { class: `ar-arc-label ${c}` }));
   const incident = ray('ar-incident', t('ray.incident'));
@@ -143,10 +143,11 @@ export function buildAngleRatioDiagram(host, { onAngle }) {
       setSubscripted(nILabel, t('mediumI', { n: fixed(nI, 4), theta: angle(theta, 1) }));
       setSubscripted(nTLabel, t('mediumT', { n: fixed(nT, 4), tir: tir ? 'yes' : 'no', thetaT: tir ? '' : angle(thetaT) }));
       const start = up(theta, LEN, -1);
-      // Ray captions sit in the corners, colour-coded, so they never cross a ray or an arc.
+      // Ray captions sit in the corners, colour-coded, so they never cross a ray or an arc; none
+      // shares a line with a medium's label, so a longer language does not run one into the other.
       incident.set(start, P, 1, t('captionIncident'), { x: 16, y: 72 });
       const rEnd = up(theta, LEN, 1);
-      reflected.set(P, rEnd, R, t('captionReflected', { R: fixed(R, 3) }), { x: W - 16, y: 34, end: true });
+      reflected.set(P, rEnd, R, t('captionReflected', { R: fixed(R, 3) }), { x: W - 16, y: 72, end: true });
       refracted.g.style.display = tir ? 'none' : '';
       if (!tir) {
         const tEnd = down(thetaT, LEN, 1);
