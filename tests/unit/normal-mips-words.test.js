@@ -1,6 +1,6 @@
 // Every word the normal-mips panel writes from its pure parts comes from the catalogue: in the
 // pseudo-locale each sentence, caption and name is bracketed, with no word left outside.
-import { describe, expect, it } from 'vitest';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import {
   builtWhere, chainProblemText, describeText, legendText, statusText, summaryText,
 } from '../../src/panels/normal-mips/describeNormalMips.js';
@@ -10,6 +10,7 @@ import { createNormalMipsModel, shimmerLostText } from '../../src/panels/normal-
 import { schema } from '../../src/panels/normal-mips/schema.js';
 import { TECHNIQUES } from '../../src/normals/techniqueLayout.js';
 import { usePseudoLocale, wordsOutside } from './inPseudoLocale.js';
+import { setNumberLocale } from '../../src/ui/format.js';
 
 const defaults = () => Object.fromEntries(Object.entries(schema).map(([key, spec]) => [key, spec.default]));
 const bands = [{ level: 0, rmse: 0.1 }, { level: 1, rmse: 0.2 }];
@@ -67,5 +68,19 @@ describe('the normal-mips panel in another language', () => {
     expect(busy).toHaveLength(2);
     expect(wordsOutside(busy[0])).toBe('');
     expect(wordsOutside(busy[1].replace('size must be a power of two', ''))).toBe('');
+  });
+});
+
+describe('the normal-mips panel\'s numbers in a language that writes a decimal comma', () => {
+  beforeAll(() => setNumberLocale('es'));
+  afterAll(() => setNumberLocale('en'));
+
+  it('writes base α and every other number with the comma', () => {
+    const facts = { built: { ms: 41.6, workers: 2, size: 256 }, maxAnisotropy: 4, floatLinear: true, problem: '' };
+    const line = summaryText({ ...defaults(), alpha: 0.215 }, facts);
+    expect(line).toContain('base Beckmann α = 0,215 (Blinn-Phong s = ');
+    expect(line).toContain('R0 = 0,040');
+    expect(describeText({ ...defaults(), truth: false }, { errors: null, shimmer: null, plotNote: '' })).toContain('at base α = 0,2,');
+    expect(legendText(defaults())).toBe('level 8 (difference: 0 to 0,25)');
   });
 });

@@ -7,7 +7,7 @@ import { messages } from '../../i18n/messages.js';
 import { interfaceSplit, interfaceSplitCurve } from './interfaceSplit.js';
 import { el } from '../../ui/el.js';
 import { setSubscripted } from '../../ui/subscripts.js';
-import { angle, fixed, markupNumber } from '../../ui/format.js';
+import { angle, fixed, markupNumber, tickLabel } from '../../ui/format.js';
 import { cssVar } from '../../ui/theme.js';
 import { addSwap } from '../shared/indexPair.js';
 import { buildAngleRatioDiagram, svgToPng } from './buildAngleRatioDiagram.js';
@@ -18,6 +18,9 @@ import { schema } from './schema.js';
 export { schema };
 
 const t = messages('angle-ratio', english);
+
+/** A control's value as a sentence writes it: the decimals of its step, in the page's language. */
+const shown = (/** @type {string} */ key, /** @type {number} */ value) => tickLabel(value, /** @type {any} */ (schema)[key].step);
 
 /** A labelled horizontal bar with its number; the bar itself is decoration (the number is text). */
 function bar(label, className) {
@@ -106,8 +109,8 @@ export function mount(root, ctx) {
     describe() {
       const { theta, nI, nT } = values;
       return t('describe', {
-        nI: String(nI),
-        nT: String(nT),
+        nI: shown('nI', nI),
+        nT: shown('nT', nT),
         theta: angle(theta, 1),
         R: fixed(split.R, 4),
         T: fixed(split.T, 4),

@@ -13,7 +13,7 @@ import { DEG } from '../../optics/angles.js';
 import { normalIncidence } from '../../optics/fresnel.js';
 import { startWebGL } from '../shared/startWebGL.js';
 import { readByPointer } from '../../ui/readByPointer.js';
-import { fixed } from '../../ui/format.js';
+import { fixed, tickLabel } from '../../ui/format.js';
 import {
   SCENE, cameraBasis, highlightInView, lambertianEquivalent, pixelRay, shadeRoad, sheenGrowth, specularAlbedo, sunDirection,
 } from './model.js';
@@ -53,6 +53,8 @@ function readBlock(view, x, y, radius = 3) {
  */
 export function mount(root, ctx) {
   const { values } = ctx;
+  /** A control's value as it is written in a sentence: the decimals of its step, in the page's language. */
+  const shown = (key) => tickLabel(values[key], schema[key].step);
   const dom = buildAsphaltDom(root);
   const view = startWebGL(dom.stage, () => createShaderView(dom.canvas, {
     fragment,
@@ -166,7 +168,7 @@ export function mount(root, ctx) {
     describe() {
       const { peak, centre } = state;
       const setting = t('describeSetting', {
-        camEl: String(values.camEl), sunEl: String(values.sunEl), roughness: String(values.roughness), nT: String(values.nT),
+        camEl: shown('camEl'), sunEl: shown('sunEl'), roughness: shown('roughness'), nT: shown('nT'),
         fresnel: values.fresnel ? 'on' : 'off',
       });
       if (values.nT === 1) return `${setting} ${t('describeMatched', { diffuse: f3(peak.diffuse) })}`;

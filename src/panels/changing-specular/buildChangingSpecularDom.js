@@ -4,10 +4,11 @@
 import english from 'virtual:messages/en/changing-specular';
 import { messages } from '../../i18n/messages.js';
 import { renderTex, texNumber } from '../../ui/tex.js';
-import { fixed, markupNumber as num } from '../../ui/format.js';
+import { fixed, markupNumber as num, tickLabel } from '../../ui/format.js';
 import './styles.css';
 import { el } from '../../ui/el.js';
 import { DEG } from '../../optics/angles.js';
+import { schema } from './schema.js';
 
 const t = messages('changing-specular', english);
 const SVG = 'http://www.w3.org/2000/svg';
@@ -87,7 +88,8 @@ function buildDiagram() {
     const b = at(psiL, 46);
     arc.setAttribute('d', `M${num(a[0], 1)} ${num(a[1], 1)}A46 46 0 0 1 ${num(b[0], 1)} ${num(b[1], 1)}`);
     place(labels.theta, at((90 + psiL) / 2, 60));
-    root.setAttribute('aria-label', t('diagramLabel', { light: String(lightEl), theta: String(90 - lightEl), view: String(viewEl) }));
+    const deg = (x) => tickLabel(x, schema.lightEl.step);
+    root.setAttribute('aria-label', t('diagramLabel', { light: deg(lightEl), theta: deg(90 - lightEl), view: deg(viewEl) }));
   }
   return { root, update };
 }

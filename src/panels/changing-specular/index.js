@@ -12,7 +12,7 @@ import { thetaMark } from '../../ui/plotMarks.js';
 import { DEG } from '../../optics/angles.js';
 import { peakHighlightCurves, phongHighlights } from '../../optics/phong.js';
 import { startWebGL } from '../shared/startWebGL.js';
-import { angle, fixed } from '../../ui/format.js';
+import { angle, fixed, tickLabel } from '../../ui/format.js';
 import { buildChangingSpecularDom } from './buildChangingSpecularDom.js';
 import fragment from './changing-specular.frag.glsl?raw';
 import { schema } from './schema.js';
@@ -31,6 +31,8 @@ const SCENE = { fovY: 40, cameraDist: 4, light: 6, exposure: 1 };
  */
 export function mount(root, ctx) {
   const { values } = ctx;
+  /** A control's value as it is written in a sentence: the decimals of its step, in the page's language. */
+  const shown = (key) => tickLabel(values[key], schema[key].step);
   const dom = buildChangingSpecularDom(root);
   const view = startWebGL(dom.stage, () => createShaderView(dom.canvas, {
     fragment,
@@ -84,7 +86,7 @@ export function mount(root, ctx) {
       plot.setData([curves.elevation, curves.phong, curves.phongF]);
     }
     highlight = phongHighlights(values.lightEl, values.viewEl, values.s, 1, values.nT);
-    plot.setMarks([thetaMark(values.lightEl, t('plot.light', { elevation: String(values.lightEl) }))]);
+    plot.setMarks([thetaMark(values.lightEl, t('plot.light', { elevation: shown('lightEl') }))]);
     dom.setDiagram(values.lightEl, values.viewEl, values.s);
     dom.setNumbers(highlight, values.s);
     if (view) {
@@ -111,10 +113,10 @@ export function mount(root, ctx) {
     describe() {
       const h = highlight;
       return t('describe', {
-        light: String(values.lightEl),
-        view: String(values.viewEl),
-        s: String(values.s),
-        nT: String(values.nT),
+        light: shown('lightEl'),
+        view: shown('viewEl'),
+        s: shown('s'),
+        nT: shown('nT'),
         vDotR: fixed(h.vDotR, 3),
         phong: fixed(h.phong, 4),
         r0: fixed(h.R0, 4),

@@ -9,11 +9,15 @@ import { levelCount } from '../../normals/momentPyramid.js';
 import { TECHNIQUES } from '../../normals/techniqueLayout.js';
 import { normalIncidence } from '../../optics/fresnel.js';
 import { optionLabel } from '../panelText.js';
-import { fixed } from '../../ui/format.js';
+import { fixed, tickLabel } from '../../ui/format.js';
+import { schema } from './schema.js';
 import { IOR } from './sceneSettings.js';
 import { techniqueName } from './techniqueName.js';
 
 const t = messages('normal-mips', english);
+
+/** Base α as its control writes it: the decimals of its step, in the page's language. */
+const alphaText = (/** @type {number} */ alpha) => tickLabel(alpha, schema.alpha.step);
 
 /** Where the chains were built, in words: on the page's thread (0 workers) or in so many workers. */
 export const builtWhere = (/** @type {number} */ workers) => t('builtWhere', { workers });
@@ -45,7 +49,7 @@ export function summaryText(values, { built, maxAnisotropy, floatLinear, problem
     technique: techniqueName(values.technique),
     precision: optionLabel('normal-mips', 'precision', values.precision),
     channels: Number(values.channels),
-    alpha: String(values.alpha),
+    alpha: alphaText(values.alpha),
     exponent: fixed(exponentFromAlpha(values.alpha), 1),
     level: values.level < 0 ? 'auto' : String(Math.min(values.level, levels - 1)),
     filtering,
@@ -93,7 +97,7 @@ export function describeText(/** @type {any} */ values, { errors, shimmer, plotN
   const head = {
     technique: name,
     map: t(`mapPhrase.${values.map}`),
-    alpha: String(values.alpha),
+    alpha: alphaText(values.alpha),
     level: values.level < 0 ? 'auto' : String(values.level),
   };
   // The sample count is live in the caption; the description changes when the errors arrive.

@@ -10,6 +10,7 @@ import { definitionList } from '../../ui/definitionList.js';
 import { angle, fixed, tickLabel } from '../../ui/format.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
 import { lectureNote } from '../../ui/lectureNote.js';
+import { schema } from './schema.js';
 
 const t = messages('reflect-refract', english);
 
@@ -82,7 +83,7 @@ export function buildReflectRefractDom(host) {
     /** The note on the lecture's "No reflection" caption, for a surface of index n with head-on reflectance r0. */
     setNote(n, r0) {
       const little = REFLECTION_BANDS[0].below;
-      const args = { n: String(n), r0: fixed(r0, 3), little: bound(little), spread: fixed(1 / (n * n), 2) };
+      const args = { n: tickLabel(n, schema.nT.step), r0: fixed(r0, 3), little: bound(little), spread: fixed(1 / (n * n), 2) };
       note.set(t(n === 1 ? 'noteNoInterface' : r0 >= little ? 'noteStrong' : 'note', args), t('noteSource'));
     },
   };

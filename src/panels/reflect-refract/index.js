@@ -9,7 +9,7 @@ import { DEG } from '../../optics/angles.js';
 import { normalIncidence } from '../../optics/fresnel.js';
 import { dielectrics } from '../../optics/materials.js';
 import { indexPresets } from '../shared/indexPresets.js';
-import { angle, fixed } from '../../ui/format.js';
+import { angle, fixed, tickLabel } from '../../ui/format.js';
 import { startWebGL } from '../shared/startWebGL.js';
 import { centreRay, splitByElevation } from './model.js';
 import { buildReflectRefractDom } from './buildReflectRefractDom.js';
@@ -20,6 +20,9 @@ import { schema } from './schema.js';
 export { schema };
 
 const t = messages('reflect-refract', english);
+
+/** A control's value as a sentence writes it: the decimals of its step, in the page's language. */
+const shown = (/** @type {string} */ key, /** @type {number} */ value) => tickLabel(value, /** @type {any} */ (schema)[key].step);
 
 const LAYERS = { both: 0, reflected: 1, refracted: 2 };
 // The scene: camera 6 tiles from the surface point under the centre of the view, 32° vertical
@@ -95,7 +98,7 @@ export function mount(root, ctx) {
     describe() {
       return t('describe', {
         elevation: angle(values.elevation, 1),
-        nT: String(values.nT),
+        nT: shown('nT', values.nT),
         theta: angle(ray.thetaDeg, 1),
         R: fixed(ray.R, 4),
         floor: fixed(ray.floorWeight, 4),

@@ -10,7 +10,7 @@ import { DEG } from '../../optics/angles.js';
 import { criticalAngle, fresnelExact } from '../../optics/fresnel.js';
 import { evanescentDepth, mediumWave, waveField } from '../../optics/waves.js';
 import { startWebGL } from '../shared/startWebGL.js';
-import { angle, fixed } from '../../ui/format.js';
+import { angle, fixed, tickLabel } from '../../ui/format.js';
 import { buildRefractionWavesDom } from './buildRefractionWavesDom.js';
 import fragment from './refraction-waves.frag.glsl?raw';
 import './styles.css';
@@ -19,6 +19,9 @@ import { schema } from './schema.js';
 export { schema };
 
 const t = messages('refraction-waves', english);
+
+/** A control's value as a sentence writes it: the decimals of its step, in the page's language. */
+const shown = (/** @type {string} */ key, /** @type {number} */ value) => tickLabel(value, /** @type {any} */ (schema)[key].step);
 
 const LAMBDA0_NM = 550; // the vacuum wavelength quoted in the labels (green light)
 const HALF_HEIGHT = 3;  // the view is 6 vacuum wavelengths tall
@@ -131,8 +134,8 @@ export function mount(root, ctx) {
     describe() {
       const { mI, mT } = state;
       const media = t('describeMedia', {
-        nI: String(state.nI), wavelengthI: fixed(mI.wavelength, 1), speedI: fixed(mI.speed, 3),
-        nT: String(state.nT), wavelengthT: fixed(mT.wavelength, 1), speedT: fixed(mT.speed, 3),
+        nI: shown('nI', state.nI), wavelengthI: fixed(mI.wavelength, 1), speedI: fixed(mI.speed, 3),
+        nT: shown('nT', state.nT), wavelengthT: fixed(mT.wavelength, 1), speedT: fixed(mT.speed, 3),
       });
       return `${media} ${state.thetaT === null
         ? t('describeTir', { theta: angle(state.thetaI), critical: angle(state.critical), depth: fixed(state.depthNm, 0) })
