@@ -2,22 +2,21 @@
 // (splitTechniques: one per core, up to three; the page's thread only waits), and hands back only the newest request's
 // result: a slider dragged through ten sizes costs the builds it started, but the panel applies
 // the last one only. Without Worker support (or if a worker fails to start) the same pure code
-// runs on the calling thread, so the panel works everywhere.
+// runs on the calling thread, so the panel works everywhere. Why that happened is given as a reason
+// id and a detail (the browser's own message); the panel says it in words (chainProblemText).
 import { buildChainsFor, mergeBuilds, splitTechniques } from './buildChainsFor.js';
 import ChainWorker from './chainWorker.js?worker';
 
-const ON_PAGE = 'the chains are built on the page’s thread instead, which may pause the page while they build';
-
-/** { workers } or { workers: null, problem } in words. */
+/** { workers, problem: null } or { workers: null, problem: { reason, detail } }. */
 function startWorkers(count) {
-  if (typeof Worker === 'undefined') return { workers: null, problem: `This browser has no Web Workers: ${ON_PAGE}.` };
+  if (typeof Worker === 'undefined') return { workers: null, problem: { reason: 'noWorkers' } };
   const started = [];
   try {
     for (let i = 0; i < count; i += 1) started.push(new ChainWorker());
-    return { workers: started, problem: '' };
+    return { workers: started, problem: null };
   } catch (error) {
     started.forEach((w) => w.terminate());
-    return { workers: null, problem: `The chain-building workers could not start (${error?.message || error}): ${ON_PAGE}.` };
+    return { workers: null, problem: { reason: 'workersNotStarted', detail: String(error?.message || error) } };
   }
 }
 
@@ -28,13 +27,16 @@ export function workerCount(cores = globalThis.navigator?.hardwareConcurrency ??
 
 /**
  * createChainBuilder({ useWorker = true, workers = workerCount() }) → { build(request) →
- * Promise<{ pyramid, chains, uploads, ms, where } | null>, where, problem, dispose() }. A build resolves
- * null when a newer build was requested before it finished (the caller drops it); it rejects on
- * a bad request. where: 'N workers', '1 worker' or 'main thread'; ms: the slowest share's time.
+ * Promise<{ pyramid, chains, uploads, ms, where, workers } | null>, where, workers, problem, dispose() }.
+ * A build resolves null when a newer build was requested before it finished (the caller drops it);
+ * it rejects on a bad request. workers: how many built it (0: the page's thread); where: the same
+ * for the benchmark's log, 'N workers', '1 worker' or 'main thread'; ms: the slowest share's time.
+ * problem: null, or why the builds run on the page's thread although workers were asked for:
+ * { reason: 'noWorkers' | 'workersNotStarted' | 'workerFailed' | 'workerNotLoaded', detail? }.
  */
 export function createChainBuilder({ useWorker = true, workers: count = workerCount() } = {}) {
   const shares = splitTechniques(count);
-  let { workers, problem } = useWorker ? startWorkers(shares.length) : { workers: null, problem: '' };
+  let { workers, problem } = useWorker ? startWorkers(shares.length) : { workers: null, problem: null };
   let latest = 0;
   const pending = new Map(); // id → { resolve, reject, request, parts, left }
 
@@ -42,12 +44,12 @@ export function createChainBuilder({ useWorker = true, workers: count = workerCo
 
   function buildHere(id, request) {
     if (id !== latest) return null; // superseded: not worth building
-    return { ...buildChainsFor(request), where: 'main thread' };
+    return { ...buildChainsFor(request), where: 'main thread', workers: 0 };
   }
 
   // A worker that cannot load (a blocked module, a bundling fault) makes all fall back for good.
   function fallBack(event) {
-    problem = `A chain-building worker failed (${event?.message || 'it could not load'}): ${ON_PAGE}.`;
+    problem = event?.message ? { reason: 'workerFailed', detail: String(event.message) } : { reason: 'workerNotLoaded' };
     workers?.forEach((w) => w.terminate());
     workers = null;
     for (const [id, { resolve, reject, request }] of pending) {
@@ -68,7 +70,7 @@ export function createChainBuilder({ useWorker = true, workers: count = workerCo
     entry.left -= 1;
     if (entry.left > 0) return;
     pending.delete(id);
-    entry.resolve(id === latest ? { ...mergeBuilds(entry.parts), where: describe() } : null);
+    entry.resolve(id === latest ? { ...mergeBuilds(entry.parts), where: describe(), workers: workers.length } : null);
   }
 
   workers?.forEach((worker, share) => {
@@ -78,7 +80,9 @@ export function createChainBuilder({ useWorker = true, workers: count = workerCo
 
   return {
     get where() { return describe(); },
-    /** Why the builds run on the page's thread although workers were asked for, in words ('' when they do not). */
+    /** How many workers build the chains (0: the page's thread). */
+    get workers() { return workers ? workers.length : 0; },
+    /** Why the builds run on the page's thread although workers were asked for (null when they do not). */
     get problem() { return problem; },
     build(request) {
       latest += 1;

@@ -27,11 +27,6 @@ import { TECHNIQUES } from './techniques.js';
 
 export { TECHNIQUES };
 
-/** What each technique is called where a reader sees it (ids stay in URLs and files). */
-export const TECHNIQUE_NAMES = Object.freeze({
-  naive: 'Naive average', renormalized: 'Renormalized', toksvig: 'Toksvig', lean: 'LEAN', clean: 'CLEAN', vmf: 'vMF',
-});
-
 function normalChannels(channels) {
   const names = channels === 3 ? ['x', 'y', 'z'] : ['x', 'y'];
   return names.map((name) => ({ name, min: -1, max: 1 }));

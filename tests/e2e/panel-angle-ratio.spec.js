@@ -1,4 +1,5 @@
 import { test, expect, openLab } from './fixtures.js';
+import { openInPseudoLocale, panelWordsOutside } from './wordsOutside.js';
 
 const panel = (page) => page.locator('.angle-ratio-panel');
 const rValue = (page) => panel(page).locator('.ar-bar-r .ar-bar-value');
@@ -79,4 +80,24 @@ test('CSV holds R and T from 0° to 90°, and the PNG export is an image', async
   expect(T.at(-1)).toBe(0);
   await expect.poll(() => page.evaluate(() => window.fresnelLab.panels['angle-ratio'].png()?.slice(0, 22)))
     .toBe('data:image/png;base64,');
+});
+
+test('in the pseudo-locale every word is the catalogue\'s: rays, labels, slider, status, the analogy', async ({ page }) => {
+  await openInPseudoLocale(page, './embed.html?panel=angle-ratio');
+  expect(await panelWordsOutside(page), 'as it opens').toEqual([]);
+  for (const values of [{ nI: 1.5, nT: 1, theta: 30 }, { theta: 60 }, { nI: 1.5, nT: 1.5 }]) {
+    await page.evaluate((v) => window.fresnelLab.hosts['angle-ratio'].set(v), values);
+    expect(await panelWordsOutside(page), JSON.stringify(values)).toEqual([]);
+  }
+});
+
+test('labels 35 % longer than English still run into no other label of the diagram', async ({ page }) => {
+  await openInPseudoLocale(page, './embed.html?panel=angle-ratio&nI=1.5&nT=1&theta=30');
+  const overlaps = await page.evaluate(() => {
+    const boxes = [...document.querySelectorAll('.ar-medium-label, .ar-ray-label')]
+      .filter((t) => t.textContent && t.getClientRects().length).map((t) => ({ text: t.textContent, box: t.getBoundingClientRect() }));
+    const meet = (a, b) => a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
+    return boxes.flatMap((a, i) => boxes.slice(i + 1).filter((b) => meet(a.box, b.box)).map((b) => `${a.text} | ${b.text}`));
+  });
+  expect(overlaps).toEqual([]);
 });

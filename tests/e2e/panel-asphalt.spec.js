@@ -1,5 +1,6 @@
 import { test, expect, openLab, expectIdle, expectOneFrame } from './fixtures.js';
 import { expectCachedTerms } from './cachedTerms.js';
+import { openInPseudoLocale, panelWordsOutside } from './wordsOutside.js';
 
 const EMBED = './embed.html?panel=asphalt';
 const sum = (rgb) => rgb[0] + rgb[1] + rgb[2];
@@ -99,4 +100,19 @@ test('n and the Fresnel switch redraw only F over cached terms, and the picture 
   await expectCachedTerms(page, browser, {
     id: 'asphalt', url: EMBED, changes: [{ nT: 1.33, fresnel: false }, { fresnel: true }], live: { nT: 1.6 }, view: { camEl: 12 },
   });
+});
+
+test('in the pseudo-locale every word is the catalogue\'s: key numbers, readouts, notes, description', async ({ page }) => {
+  await openInPseudoLocale(page, EMBED);
+  expect(await panelWordsOutside(page), 'as it opens').toEqual([]);
+  const box = await page.locator('.asphalt-canvas').boundingBox();
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height * 0.7);
+  await expect(page.locator('.asphalt-readout')).toContainText('0');
+  expect(await panelWordsOutside(page), 'over the road').toEqual([]);
+  await page.mouse.move(box.x + box.width / 2, box.y + 10);
+  expect(await panelWordsOutside(page), 'over the sky').toEqual([]);
+  for (const values of [{ fresnel: false }, { fresnel: true, sunEl: 2 }, { sunEl: 30, roughness: 0.3 }, { nT: 1 }]) {
+    await page.evaluate((v) => window.fresnelLab.hosts.asphalt.set(v), values);
+    expect(await panelWordsOutside(page), JSON.stringify(values)).toEqual([]);
+  }
 });

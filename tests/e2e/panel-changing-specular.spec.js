@@ -1,5 +1,6 @@
 import { test, expect, openLab } from './fixtures.js';
 import { expectCachedTerms } from './cachedTerms.js';
+import { openInPseudoLocale, panelWordsOutside } from './wordsOutside.js';
 
 const EMBED = './embed.html?panel=changing-specular';
 const sum = (rgb) => rgb[0] + rgb[1] + rgb[2];
@@ -117,4 +118,11 @@ test('a live formula keeps its nodes when only its numbers change, and reads as 
     await page.waitForFunction(() => document.querySelector('.cspec-tex-fresnel .katex-html'));
     expect(await html(page)).toBe(expected);
   }
+});
+
+test('in the pseudo-locale every word is the catalogue\'s: labels, diagram, plot, note, description', async ({ page }) => {
+  await openInPseudoLocale(page, EMBED);
+  expect(await panelWordsOutside(page), 'as it opens').toEqual([]);
+  await page.evaluate(() => window.fresnelLab.hosts['changing-specular'].set({ nT: 1 }));
+  expect(await panelWordsOutside(page), 'n_t = 1').toEqual([]);
 });

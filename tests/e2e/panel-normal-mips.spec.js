@@ -1,4 +1,5 @@
 import { test, expect, openLab, expectIdle } from './fixtures.js';
+import { openInPseudoLocale, panelWordsOutside } from './wordsOutside.js';
 
 const PANEL = 'normal-mips';
 const URL = `./embed.html?panel=${PANEL}`;
@@ -233,4 +234,18 @@ test('a lost context comes back: textures and targets are rebuilt and the pictur
   expect(after.length).toBe(before.length);
   expect(after.some((v) => v !== 0)).toBe(true);
   expect(after.every((v, i) => v === before[i])).toBe(true);
+});
+
+test('in the pseudo-locale every word is the catalogue\'s: captions, table, plot, strip, inspector, shimmer', async ({ page }) => {
+  test.setTimeout(60_000);
+  await openInPseudoLocale(page, `${URL}&map=grooves&truthSamples=32`);
+  await page.evaluate((id) => window.fresnelLab.panels[id].whenBuilt(), PANEL);
+  expect(await panelWordsOutside(page), 'while the truth converges').toEqual([]);
+  await page.waitForFunction((id) => window.fresnelLab.panels[id]?.scene.state.errors, PANEL, { timeout: 45_000 });
+  await page.evaluate((id) => window.fresnelLab.panels[id].model.measureShimmer(), PANEL);
+  await expect(page.locator('.nm-errors tbody tr')).toHaveCount(6);
+  expect(await panelWordsOutside(page), 'with the errors and the shimmer').toEqual([]);
+  await page.evaluate((id) => window.fresnelLab.hosts[id].set({ view: 'difference', level: 3, anisotropy: '4', truth: false }), PANEL);
+  await expect(page.locator('.nm-pending')).toBeVisible();
+  expect(await panelWordsOutside(page), 'the truth off, a forced level').toEqual([]);
 });

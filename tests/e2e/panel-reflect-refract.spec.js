@@ -1,6 +1,7 @@
 import { test, expect, openLab, expectIdle, expectOneFrame } from './fixtures.js';
 import { fresnelExact } from '../../src/optics/fresnel.js';
 import { expectCachedTerms } from './cachedTerms.js';
+import { openInPseudoLocale, panelWordsOutside } from './wordsOutside.js';
 
 const PANEL = 'reflect-refract';
 const DEG = Math.PI / 180;
@@ -96,4 +97,15 @@ test('n, the depth and the layer redraw over the sky kept from the view, and the
     id: PANEL, url: `./embed.html?panel=${PANEL}&elevation=25`,
     changes: [{ nT: 1.5, depth: 2.5 }, { layer: 'refracted' }, { layer: 'both' }], live: { nT: 1.4 }, view: { elevation: 40 },
   });
+});
+
+test('in the pseudo-locale every word is the catalogue\'s: captions, key numbers, the note, description', async ({ page }) => {
+  await openInPseudoLocale(page, `./embed.html?panel=${PANEL}`);
+  expect(await panelWordsOutside(page), 'as it opens').toEqual([]);
+  // An index no preset has shows the presets' "Custom" (src/panels/shared/indexPresets.js): not this panel's word.
+  const shared = (found) => found.filter((f) => f !== 'div.lil-display: Custom');
+  for (const values of [{ nT: 2.4 }, { nT: 1 }, { nT: 1.5, elevation: 2 }]) {
+    await page.evaluate(([id, v]) => window.fresnelLab.hosts[id].set(v), [PANEL, values]);
+    expect(shared(await panelWordsOutside(page)), JSON.stringify(values)).toEqual([]);
+  }
 });

@@ -1,5 +1,6 @@
 import { test, expect, openLab, expectIdle, expectOneFrame } from './fixtures.js';
 import { fieldAt, waveField } from '../../src/optics/waves.js';
+import { openInPseudoLocale, panelWordsOutside } from './wordsOutside.js';
 
 const PANEL = 'refraction-waves';
 const DEG = Math.PI / 180;
@@ -110,4 +111,14 @@ test('reduced motion starts on a still frame', async ({ page }) => {
   const still = await expectIdle(page, PANEL, 42);
   expect(still).toBeGreaterThanOrEqual(1);
   expect(await page.evaluate((id) => window.fresnelLab.panels[id].playing, PANEL)).toBe(false);
+});
+
+test('in the pseudo-locale every word is the catalogue\'s: media, button, key numbers, the TIR banner', async ({ page }) => {
+  await openInPseudoLocale(page, './embed.html?panel=refraction-waves&play=false');
+  expect(await panelWordsOutside(page), 'paused').toEqual([]);
+  for (const values of [{ play: true }, { nI: 1.5, nT: 1, angle: 60 }]) {
+    await page.evaluate((v) => window.fresnelLab.hosts['refraction-waves'].set(v), values);
+    expect(await panelWordsOutside(page), JSON.stringify(values)).toEqual([]);
+  }
+  await expect(page.locator('.rw-tir')).toBeVisible();
 });

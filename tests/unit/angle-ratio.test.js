@@ -3,6 +3,7 @@ import { interfaceSplit, interfaceSplitCurve } from '../../src/panels/angle-rati
 import { cosDeg } from '../../src/optics/angles.js';
 import { fresnelExact } from '../../src/optics/fresnel.js';
 import { absError, cosOfDegrees, dielectricR } from './oracle/fresnelOracle.js';
+import { usePseudoLocale, wordsOutside } from './inPseudoLocale.js';
 
 const DEG = Math.PI / 180;
 
@@ -100,5 +101,17 @@ describe('the stone-skipping analogy says how far it holds', async () => {
     expect(stoneAnalogy(1.5, 1)).toContain('R also grows with the angle, from 0.040 head-on, but it passes 0.5 at 41.4° and reaches 1 at the critical angle');
     expect(halfReflectedAngle(1.5, 1.5)).toBeNull();
     expect(stoneAnalogy(1.5, 1.5)).toContain('nothing is reflected at any angle');
+  });
+});
+
+describe('the stone-skipping analogy in another language', async () => {
+  const { stoneAnalogy } = await import('../../src/panels/angle-ratio/analogy.js');
+  usePseudoLocale();
+  it('is one message of the catalogue in every case: into the denser side, out of it, equal indices, near grazing', () => {
+    for (const [nI, nT] of [[1, 1.5], [1.5, 1], [1.5, 1.5], [1.0001, 1], [1, 1.0001]]) {
+      const text = stoneAnalogy(nI, nT);
+      expect(text.startsWith('⟦'), `${nI} → ${nT}`).toBe(true);
+      expect(wordsOutside(text), `${nI} → ${nT}`).toBe('');
+    }
   });
 });

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { createNormalMipsModel, SHIMMER_LOST } from '../../src/panels/normal-mips/model.js';
+import { createNormalMipsModel, shimmerLostText } from '../../src/panels/normal-mips/model.js';
 import {
   chainRequest, lightPlacement, mapParams, mergeKeys, sceneSettings,
 } from '../../src/panels/normal-mips/sceneSettings.js';
@@ -13,8 +13,8 @@ const flush = () => new Promise((resolve) => { setTimeout(resolve, 0); });
 function stubBuilder() {
   const builds = [];
   return {
-    where: '2 workers',
-    problem: '',
+    workers: 2,
+    problem: null,
     disposed: false,
     builds,
     build(request) {
@@ -48,7 +48,7 @@ function stubScene() {
   return scene;
 }
 
-const built = (tag) => ({ chains: { tag }, pyramid: { tag }, uploads: {}, ms: 41.6, where: '2 workers' });
+const built = (tag) => ({ chains: { tag }, pyramid: { tag }, uploads: {}, ms: 41.6, where: '2 workers', workers: 2 });
 
 function setup({ withScene = true, values = defaults() } = {}) {
   const builder = stubBuilder();
@@ -89,7 +89,7 @@ describe('normal-mips model: chain builds', () => {
     builder.builds[0].resolve(built('first'));
     await model.whenBuilt();
     expect(model.chains).toEqual({ tag: 'first' });
-    expect(model.built).toEqual({ ms: 41.6, where: '2 workers', size: 256 });
+    expect(model.built).toEqual({ ms: 41.6, workers: 2, size: 256 });
     expect(model.building).toBe(false);
     expect(scene.chains).toEqual([{ tag: 'first' }]);
     expect(scene.sets).toHaveLength(1);
@@ -214,16 +214,16 @@ describe('normal-mips model: the shimmer meter', () => {
     await flush();
     model.contextLost();
     expect(scene.shimmers[0].signal.aborted).toBe(true);
-    expect(model.shimmer).toEqual({ result: null, busy: false, stopped: SHIMMER_LOST });
+    expect(model.shimmer).toEqual({ result: null, busy: false, stopped: shimmerLostText() });
     expect(events.slice(-2)).toEqual([['shimmer'], ['invalidate']]);
     await done;
-    expect(model.shimmer.stopped).toBe(SHIMMER_LOST);
+    expect(model.shimmer.stopped).toBe(shimmerLostText());
     const again = model.measureShimmer();
     await flush();
     expect(model.shimmer.stopped).toBe('');
     scene.shimmers[1].resolve(null); // the context went away under a read-back before its event
     await again;
-    expect(model.shimmer).toEqual({ result: null, busy: false, stopped: SHIMMER_LOST });
+    expect(model.shimmer).toEqual({ result: null, busy: false, stopped: shimmerLostText() });
   });
 
   it('a lost context while nothing is measured changes nothing', async () => {
@@ -306,13 +306,13 @@ describe('normal-mips settings', () => {
 });
 
 describe('normal-mips words', () => {
-  const facts = { built: { ms: 41.6, where: '2 workers', size: 256 }, maxAnisotropy: 4, floatLinear: false, problem: '' };
+  const facts = { built: { ms: 41.6, workers: 2, size: 256 }, maxAnisotropy: 4, floatLinear: false, problem: '' };
 
   it('writes the line of key numbers', () => {
     // s = 2/α² − 2 = 48 at α = 0.2; R0 = ((1.5 − 1)/(1.5 + 1))² = 0.04
     expect(summaryText(defaults(), facts)).toBe('Toksvig, 16-bit float, 3 channels; base Beckmann α = 0.2 (Blinn-Phong s = 48.0); '
       + 'mip level automatic, trilinear of 0–8; R0 = 0.040; all six chains of the 256² map built in 42 ms (2 workers).');
-    const line = summaryText({ ...defaults(), anisotropy: '16', precision: 'f32' }, { ...facts, built: { ms: 0, where: '', size: 0 } });
+    const line = summaryText({ ...defaults(), anisotropy: '16', precision: 'f32' }, { ...facts, built: { ms: 0, workers: 0, size: 0 } });
     expect(line).toContain('4× anisotropic filtering (this GPU offers at most 4×)');
     expect(line).toContain('the six chains of the 256² map are being built.');
     expect(line).toContain('This GPU cannot filter 32-bit float textures');

@@ -2,6 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { buildChainsFor, mergeBuilds, splitTechniques, transferablesOf } from '../../src/normals/buildChainsFor.js';
 import { createChainBuilder, workerCount } from '../../src/normals/createChainBuilder.js';
 import { TECHNIQUES } from '../../src/normals/techniqueLayout.js';
+import { chainProblemText } from '../../src/panels/normal-mips/describeNormalMips.js';
 
 const request = { kind: 'bumps', params: { frequency: 4, edgeAngleDeg: 30 }, size: 32, precision: 'f16', channels: 3 };
 
@@ -58,18 +59,22 @@ describe('createChainBuilder without a Worker (Node): the same build on this thr
   it('resolves the newest request and drops superseded ones unbuilt', async () => {
     const builder = createChainBuilder();
     expect(builder.where).toBe('main thread');
+    expect(builder.workers).toBe(0);
     const first = builder.build(request);
     const second = builder.build({ ...request, size: 16 });
     expect(await first).toBeNull();
     const result = await second;
     expect(result.where).toBe('main thread');
+    expect(result.workers).toBe(0);
     expect(result.chains.naive.size).toBe(16);
     builder.dispose();
   });
 
   it('says why it builds on this thread when workers were asked for, and is silent when they were not', () => {
-    expect(createChainBuilder().problem).toMatch(/no Web Workers: the chains are built on the page’s thread/);
-    expect(createChainBuilder({ useWorker: false }).problem).toBe('');
+    expect(createChainBuilder().problem).toEqual({ reason: 'noWorkers' });
+    expect(chainProblemText(createChainBuilder().problem)).toMatch(/no Web Workers: the chains are built on the page’s thread/);
+    expect(createChainBuilder({ useWorker: false }).problem).toBeNull();
+    expect(chainProblemText(null)).toBe('');
   });
 
   it('falls back and says so when a worker cannot be constructed', async () => {
@@ -78,7 +83,7 @@ describe('createChainBuilder without a Worker (Node): the same build on this thr
     try {
       const builder = createChainBuilder({ workers: 2 });
       expect(builder.where).toBe('main thread');
-      expect(builder.problem).toMatch(/could not start \(blocked by the page’s policy\)/);
+      expect(chainProblemText(builder.problem)).toMatch(/could not start \(blocked by the page’s policy\)/);
       expect((await builder.build({ ...request, size: 16 })).chains.naive.size).toBe(16);
     } finally {
       if (saved === undefined) delete globalThis.Worker; else globalThis.Worker = saved;

@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { centreRay, reflectionBand, splitByElevation, REFLECTION_BANDS } from '../../src/panels/reflect-refract/model.js';
 import { absError, cosOfDegrees, dielectricR } from './oracle/fresnelOracle.js';
+import { usePseudoLocale, wordsOutside } from './inPseudoLocale.js';
 
 const DEG = Math.PI / 180;
 
@@ -66,5 +67,16 @@ describe('the floor seen from the air', () => {
       expect(ray.floorWeight).toBeCloseTo(T / (n * n), 12);
     }
     expect(centreRay(90, 1.333).floorWeight).toBeCloseTo(0.5513, 4); // water head-on: 0.98 of the light, 0.56 of it per solid angle
+  });
+});
+
+describe('the captions in another language', () => {
+  usePseudoLocale();
+  it('come from the catalogue when they are read', () => {
+    for (const band of [...REFLECTION_BANDS, reflectionBand(0)]) {
+      expect(band.label.startsWith('⟦'), band.id).toBe(true);
+      expect(wordsOutside(band.label), band.id).toBe('');
+    }
+    expect(centreRay(60, 1.333).band.label).toMatch(/^⟦/);
   });
 });

@@ -6,10 +6,14 @@
 // (checked numerically in tests/unit/angle-ratio.test.js; above it R dips a little first), which
 // covers every pair the panel offers. What needs a grazing angle is "mostly reflects" (R > 0.5).
 // And reflection is not a bounce. Pure; every number comes from fresnel.js.
+import english from 'virtual:messages/en/angle-ratio';
+import { messages } from '../../i18n/messages.js';
 import { DEG, cosDeg } from '../../optics/angles.js';
 import { criticalAngle, fresnelExact } from '../../optics/fresnel.js';
 import { angleWhere } from '../../optics/solveAngle.js';
 import { fixed, precise } from '../../ui/format.js';
+
+const t = messages('angle-ratio', english);
 
 /** θ where R = 1/2 (from 0° to 90°), or null when R never reaches it (equal indices). */
 export function halfReflectedAngle(nI, nT) {
@@ -28,21 +32,20 @@ export function stoneAnalogy(nI, nT) {
   // two degrees of grazing, where no whole degree lies beyond it to show).
   const below = Math.floor(half / 10) * 10;
   const beyond = Math.ceil(half) + 1;
-  const bracket = half !== null && beyond < 90 ? ` (R = ${R(below)} at ${below}°, ${R(beyond)} at ${beyond}°)` : '';
   // Two decimals where the two angles would print alike (nearly matched indices).
   const digits = critical !== null && half !== null && Math.abs(critical / DEG - half) < 0.1 ? 2 : 1;
-  const reach = half === null
-    ? 'With equal indices nothing is reflected at any angle.'
-    : critical !== null
-      ? `From the denser side R also grows with the angle, from ${head} head-on, but it passes 0.5 at ${fixed(half, digits)}° `
-        + `and reaches 1 at the critical angle, ${fixed(critical / DEG, digits)}°, ${fixed(90 - critical / DEG, 1)}° short of grazing. `
-        + 'A stone also skips only when it meets the water flat enough, but its limit depends on its speed, spin and shape '
-        + '(Clanet, Hersen & Bocquet, Nature 427, 29, 2004); light\'s depends on n_i/n_t alone, and light going the stone\'s '
-        + 'way, into the denser side, has none.'
-      : `Its trend holds at every angle: R grows from ${head} head-on to 1 at grazing. What needs a grazing angle is `
-      + `"mostly reflects": light reflects more than it transmits only past ${fixed(half, 1)}° from the normal${bracket}.`;
-  return 'The lecture likens this to skipping a stone. Its slide says the greater the angle between the stone\'s velocity '
-    + 'and the water\'s surface, the more it skips; it is the other way round: the flatter a stone meets the water, the more '
-    + 'likely it skips, as light is reflected more the further it is from the normal. '
-    + `${reach} And light is not a stone that bounces: R and T are how the wave's power divides at the interface.`;
+  const reach = half === null ? 'equal' : critical !== null ? 'denser' : 'rarer';
+  return t('stone', {
+    reach,
+    head,
+    halfR: fixed(0.5, 1),
+    half: half === null ? '' : fixed(half, critical !== null ? digits : 1),
+    critical: critical === null ? '' : fixed(critical / DEG, digits),
+    short: critical === null ? '' : fixed(90 - critical / DEG, 1),
+    bracket: half !== null && beyond < 90 ? 'yes' : 'no',
+    below: String(below),
+    rBelow: R(below),
+    beyond: String(beyond),
+    rBeyond: R(beyond),
+  });
 }

@@ -1,10 +1,13 @@
 // The SVG ray diagram of the angle-ratio panel: a flat interface, the normal, and the incident,
 // reflected and refracted rays whose stroke widths are proportional to the power they carry.
 // The incident ray's end is a slider (drag it, or focus it and use the arrow keys).
+import english from 'virtual:messages/en/angle-ratio';
+import { messages } from '../../i18n/messages.js';
 import { DEG } from '../../optics/angles.js';
 import { setSubscripted } from '../../ui/subscripts.js';
 import { angle, fixed, markupNumber } from '../../ui/format.js';
 
+const t = messages('angle-ratio', english);
 const NS = 'http://www.w3.org/2000/svg';
 const W = 800;
 const H = 520;
@@ -65,22 +68,22 @@ function ray(className, label) {
 
 export function buildAngleRatioDiagram(host, { onAngle }) {
   const svg = svgEl('svg', { viewBox: `0 0 ${W} ${H}`, class: 'ar-svg', role: 'group' });
-  svg.append(svgEl('title', {}, 'Ray diagram: incident, reflected and refracted rays at an interface'));
+  svg.append(svgEl('title', {}, t('diagramTitle')));
   const lower = svgEl('rect', { class: 'ar-medium2', x: 0, y: P.y, width: W, height: H - P.y });
   const surface = svgEl('line', { class: 'ar-surface', x1: 0, y1: P.y, x2: W, y2: P.y });
   const normal = svgEl('line', { class: 'ar-normal', x1: P.x, y1: 12, x2: P.x, y2: H - 12 });
   const nILabel = svgEl('text', { class: 'ar-medium-label', x: 16, y: 34 });
-  const nTLabel = svgEl('text', { class: 'ar-medium-label', x: 16, y: H - 16 });
+  const nTLabel = svgEl('text', { class: 'ar-medium-label', x: 16, y: H - 54 });
   const arcs = ['ar-arc-i', 'ar-arc-r', 'ar-arc-t'].map((c) => svgEl('path', { class: `ar-arc ${c}` }));
   const arcLabels = ['ar-arc-i', 'ar-arc-r', 'ar-arc-t'].map((c) => svgEl('text', { class: `ar-arc-label ${c}` }));
-  const incident = ray('ar-incident', 'Incident');
-  const reflected = ray('ar-reflected', 'Reflected');
-  const refracted = ray('ar-refracted', 'Refracted');
+  const incident = ray('ar-incident', t('ray.incident'));
+  const reflected = ray('ar-reflected', t('ray.reflected'));
+  const refracted = ray('ar-refracted', t('ray.refracted'));
   const tirNote = svgEl('text', { class: 'ar-tir', x: W / 2 + 20, y: P.y + 60 });
 
   // The slider: a ring at the incident ray's start.
   const handle = svgEl('g', {
-    class: 'ar-handle', tabindex: 0, role: 'slider', 'aria-label': 'Angle of incidence θ (drag, or arrow keys)',
+    class: 'ar-handle', tabindex: 0, role: 'slider', 'aria-label': t('handleLabel'),
     'aria-valuemin': 0, 'aria-valuemax': 90, 'aria-orientation': 'horizontal',
   });
   const focusRing = svgEl('circle', { class: 'ar-handle-focus', r: 27 });
@@ -137,22 +140,23 @@ export function buildAngleRatioDiagram(host, { onAngle }) {
     set(split, nI, nT) {
       const { theta, R, T, thetaT, tir, critical } = split;
       current = theta;
-      setSubscripted(nILabel, `n_i = ${fixed(nI, 4)}\u2003θ_i = ${angle(theta, 1)}`);
-      setSubscripted(nTLabel, `n_t = ${fixed(nT, 4)}\u2003${tir ? 'no refracted ray' : `θ_t = ${angle(thetaT)}`}`);
+      setSubscripted(nILabel, t('mediumI', { n: fixed(nI, 4), theta: angle(theta, 1) }));
+      setSubscripted(nTLabel, t('mediumT', { n: fixed(nT, 4), tir: tir ? 'yes' : 'no', thetaT: tir ? '' : angle(thetaT) }));
       const start = up(theta, LEN, -1);
-      // Ray captions sit in the corners, colour-coded, so they never cross a ray or an arc.
-      incident.set(start, P, 1, 'Incident power 1', { x: 16, y: 72 });
+      // Ray captions sit in the corners, colour-coded, so they never cross a ray or an arc; none
+      // shares a line with a medium's label, so a longer language does not run one into the other.
+      incident.set(start, P, 1, t('captionIncident'), { x: 16, y: 72 });
       const rEnd = up(theta, LEN, 1);
-      reflected.set(P, rEnd, R, `Reflected R = ${fixed(R, 3)}`, { x: W - 16, y: 34, end: true });
+      reflected.set(P, rEnd, R, t('captionReflected', { R: fixed(R, 3) }), { x: W - 16, y: 72, end: true });
       refracted.g.style.display = tir ? 'none' : '';
       if (!tir) {
         const tEnd = down(thetaT, LEN, 1);
-        refracted.set(P, tEnd, T, `Refracted T = ${fixed(T, 3)}`, { x: W - 16, y: H - 16, end: true });
+        refracted.set(P, tEnd, T, t('captionRefracted', { T: fixed(T, 3) }), { x: W - 16, y: H - 16, end: true });
       }
-      tirNote.textContent = tir ? `No refracted ray: ${angle(theta, 1)} is past the critical angle ${angle(critical)}` : '';
+      tirNote.textContent = tir ? t('tirNote', { theta: angle(theta, 1), critical: angle(critical) }) : '';
       handle.setAttribute('transform', `translate(${markupNumber(start.x, 2)} ${markupNumber(start.y, 2)})`);
       handle.setAttribute('aria-valuenow', markupNumber(theta, 1));
-      handle.setAttribute('aria-valuetext', `${angle(theta, 1)}: R ${fixed(R, 3)}, T ${fixed(T, 3)}`);
+      handle.setAttribute('aria-valuetext', t('handleValue', { theta: angle(theta, 1), R: fixed(R, 3), T: fixed(T, 3) }));
 
       const r = 70;
       arcs[0].setAttribute('d', theta > 0.05 ? arcPath(up(0, r, 1), up(theta, r, -1), r, 0) : '');
@@ -166,9 +170,9 @@ export function buildAngleRatioDiagram(host, { onAngle }) {
       // Short names just outside each arc: inside the wedge when it is wide enough, else beside
       // the ray, so a label never sits on a ray (the values are in the corner labels).
       const at = (deg) => (deg >= 36 ? deg / 2 : deg + 22);
-      place(arcLabels[0], up(at(theta), r + 26, -1), theta > 0.05 ? 'θ_i' : '');
-      place(arcLabels[1], up(at(theta), r + 26, 1), theta > 0.05 ? 'θ_i' : '');
-      place(arcLabels[2], down(at(thetaT ?? 0), r + 26, 1), !tir && thetaT > 0.05 ? 'θ_t' : '');
+      place(arcLabels[0], up(at(theta), r + 26, -1), theta > 0.05 ? t('arcI') : '');
+      place(arcLabels[1], up(at(theta), r + 26, 1), theta > 0.05 ? t('arcI') : '');
+      place(arcLabels[2], down(at(thetaT ?? 0), r + 26, 1), !tir && thetaT > 0.05 ? t('arcT') : '');
     },
     dispose() {
       handle.removeEventListener('pointerdown', onDown);

@@ -2,10 +2,12 @@
 // Panel `angle-ratio`: one ray meets a flat interface and splits into a reflected part R and a
 // refracted part T = 1 − R; stroke widths carry the powers. Past the critical angle (n_i > n_t)
 // nothing goes through. Numbers from src/panels/angle-ratio/interfaceSplit.js (which uses fresnel.js).
+import english from 'virtual:messages/en/angle-ratio';
+import { messages } from '../../i18n/messages.js';
 import { interfaceSplit, interfaceSplitCurve } from './interfaceSplit.js';
 import { el } from '../../ui/el.js';
 import { setSubscripted } from '../../ui/subscripts.js';
-import { angle, fixed, markupNumber } from '../../ui/format.js';
+import { angle, fixed, markupNumber, tickLabel } from '../../ui/format.js';
 import { cssVar } from '../../ui/theme.js';
 import { addSwap } from '../shared/indexPair.js';
 import { buildAngleRatioDiagram, svgToPng } from './buildAngleRatioDiagram.js';
@@ -14,6 +16,11 @@ import './styles.css';
 import { schema } from './schema.js';
 
 export { schema };
+
+const t = messages('angle-ratio', english);
+
+/** A control's value as a sentence writes it: the decimals of its step, in the page's language. */
+const shown = (/** @type {string} */ key, /** @type {number} */ value) => tickLabel(value, /** @type {any} */ (schema)[key].step);
 
 /** A labelled horizontal bar with its number; the bar itself is decoration (the number is text). */
 function bar(label, className) {
@@ -49,8 +56,8 @@ export function mount(root, ctx) {
     },
   });
   const bars = el('div', 'ar-bars');
-  const rBar = bar('Reflected R', 'ar-bar-r');
-  const tBar = bar('Transmitted T = 1 − R', 'ar-bar-t');
+  const rBar = bar(t('barReflected'), 'ar-bar-r');
+  const tBar = bar(t('barTransmitted'), 'ar-bar-t');
   bars.append(rBar.row, tBar.row);
   const status = el('p', 'ar-status');
   status.setAttribute('aria-live', 'polite');
@@ -58,9 +65,9 @@ export function mount(root, ctx) {
   panel.append(figure, bars, status, analogy);
   root.append(panel);
 
-  const folder = ctx.gui.addFolder('Interface (or drag the incident ray / arrow keys)');
+  const folder = ctx.gui.addFolder(t('folder'));
   ctx.bind(folder, ['theta', 'nI', 'nT']);
-  addSwap(ctx, folder, 'Swap n_i ↔ n_t (light leaving the denser side)');
+  addSwap(ctx, folder, t('swap'));
 
   let split = null;
   let pngUrl = null;
@@ -84,13 +91,11 @@ export function mount(root, ctx) {
     diagram.set(split, nI, nT);
     rBar.set(split.R);
     tBar.set(split.T);
-    const critical = split.critical === null
-      ? `No critical angle: light enters a denser (or equal) medium (n_i ≤ n_t).`
-      : `Critical angle ${angle(split.critical)}.`;
     setSubscripted(status, split.tir
-      ? `Total internal reflection: ${angle(theta, 1)} is past the critical angle ${angle(split.critical)}, `
-        + 'so there is no refracted ray and T = 0; all the light is reflected.'
-      : `θ_i = ${angle(theta, 1)}, θ_t = ${angle(split.thetaT)} (Snell's law). ${critical}`);
+      ? t('statusTir', { theta: angle(theta, 1), critical: angle(split.critical) })
+      : t('status', {
+        theta: angle(theta, 1), thetaT: angle(split.thetaT), critical: split.critical === null ? 'none' : angle(split.critical),
+      }));
     panel.classList.toggle('ar-is-tir', split.tir);
     analogy.textContent = stoneAnalogy(nI, nT);
     refreshPng();
@@ -103,11 +108,16 @@ export function mount(root, ctx) {
     update,
     describe() {
       const { theta, nI, nT } = values;
-      const base = `From n_i = ${nI} into n_t = ${nT} at ${angle(theta, 1)} from the normal: `
-        + `R = ${fixed(split.R, 4)} is reflected and T = ${fixed(split.T, 4)} is transmitted`;
-      return split.tir
-        ? `${base}; past the critical angle ${angle(split.critical)} there is no refracted ray.`
-        : `${base}, refracted to ${angle(split.thetaT)}.`;
+      return t('describe', {
+        nI: shown('nI', nI),
+        nT: shown('nT', nT),
+        theta: angle(theta, 1),
+        R: fixed(split.R, 4),
+        T: fixed(split.T, 4),
+        tir: split.tir ? 'yes' : 'no',
+        critical: split.tir ? angle(split.critical) : '',
+        thetaT: split.tir ? '' : angle(split.thetaT),
+      });
     },
     csv() {
       const { theta, R, T } = interfaceSplitCurve(values.nI, values.nT);

@@ -1,10 +1,14 @@
 // The DOM of the asphalt panel: the stage (canvas and a badge saying which model is on), the hover
 // readout, the key numbers and the formula. Styled by styles.css under .asphalt-panel.
+import english from 'virtual:messages/en/asphalt';
+import { messages } from '../../i18n/messages.js';
 import { texElement } from '../../ui/tex.js';
 import './styles.css';
 import { el } from '../../ui/el.js';
 import { definitionList } from '../../ui/definitionList.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
+
+const t = messages('asphalt', english);
 
 export function buildAsphaltDom(host) {
   const root = el('div', 'asphalt-panel');
@@ -12,8 +16,7 @@ export function buildAsphaltDom(host) {
   const canvas = el('canvas', 'asphalt-canvas');
   canvas.tabIndex = 0;
   canvas.setAttribute('role', 'img');
-  canvas.setAttribute('aria-label', 'A rough asphalt road under a low sun ahead of the camera. '
-    + 'Arrow keys raise or lower the camera; hover the road to read the angle and F there.');
+  canvas.setAttribute('aria-label', t('canvasLabel'));
   const badge = el('div', 'asphalt-badge');
   stage.append(canvas, badge);
 
@@ -25,7 +28,7 @@ export function buildAsphaltDom(host) {
     + '\\qquad \\cos\\theta_d = \\mathbf l\\cdot\\mathbf h',
     { className: 'asphalt-formula' },
   );
-  root.append(stage, readout, summary.element, makeScrollBox(formula, 'The specular formula'));
+  root.append(stage, readout, summary.element, makeScrollBox(formula, t('formulaBox')));
   host.append(root);
 
   return {

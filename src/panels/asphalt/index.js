@@ -6,12 +6,14 @@
 // The share of sunlight reflected specularly stays small (a few per cent, about the road's diffuse
 // albedo): the sheen is concentrated light, not a large share of it. Fresnel off keeps F = R0 and
 // shows what a model without it misses. Every number comes from model.js (float64).
+import english from 'virtual:messages/en/asphalt';
+import { messages } from '../../i18n/messages.js';
 import { createShaderView } from '../../gl/createShaderView.js';
 import { DEG } from '../../optics/angles.js';
 import { normalIncidence } from '../../optics/fresnel.js';
 import { startWebGL } from '../shared/startWebGL.js';
 import { readByPointer } from '../../ui/readByPointer.js';
-import { fixed } from '../../ui/format.js';
+import { fixed, tickLabel } from '../../ui/format.js';
 import {
   SCENE, cameraBasis, highlightInView, lambertianEquivalent, pixelRay, shadeRoad, sheenGrowth, specularAlbedo, sunDirection,
 } from './model.js';
@@ -21,6 +23,7 @@ import { schema } from './schema.js';
 
 export { schema };
 
+const t = messages('asphalt', english);
 const f3 = (x) => fixed(x, 3);
 const deg = (x) => `${fixed(x, 1)}°`;
 const percent = (x) => `${fixed(100 * x, 1)} %`;
@@ -50,6 +53,8 @@ function readBlock(view, x, y, radius = 3) {
  */
 export function mount(root, ctx) {
   const { values } = ctx;
+  /** A control's value as it is written in a sentence: the decimals of its step, in the page's language. */
+  const shown = (key) => tickLabel(values[key], schema[key].step);
   const dom = buildAsphaltDom(root);
   const view = startWebGL(dom.stage, () => createShaderView(dom.canvas, {
     fragment,
@@ -64,10 +69,10 @@ export function mount(root, ctx) {
       uAlbedo: { value: SCENE.albedo }, uSun: { value: SCENE.sun }, uAmbient: { value: SCENE.ambient },
       uExposure: { value: SCENE.exposure },
     },
-  }), 'The road needs WebGL2; the numbers below still follow the controls.');
+  }), t('noWebgl'));
 
-  ctx.bind(ctx.gui.addFolder('View and sun'), ['camEl', 'sunEl']);
-  ctx.bind(ctx.gui.addFolder('Road'), ['roughness', 'nT', 'fresnel']);
+  ctx.bind(ctx.gui.addFolder(t('folder.viewSun')), ['camEl', 'sunEl']);
+  ctx.bind(ctx.gui.addFolder(t('folder.road')), ['roughness', 'nT', 'fresnel']);
 
   const aspect = () => {
     const rect = dom.canvas.getBoundingClientRect();
@@ -89,18 +94,22 @@ export function mount(root, ctx) {
       albedo = specularAlbedo(values);
     }
     growth = sheenGrowth(values, aspect());
-    dom.setBadge(values.fresnel ? 'Fresnel on: F(θd) exact' : `Fresnel off: F = R0 = ${f3(r0)}`, values.fresnel);
+    dom.setBadge(values.fresnel ? t('badgeOn') : t('badgeOff', { r0: f3(r0) }), values.fresnel);
     dom.setSummary([
-      ['F at the view centre', `${f3(centre.F)} (θd = ${deg(centre.thetaD)})`, true],
-      ['Brightest highlight in view', `seen ${deg(peak.below)} below the horizon: specular luminance ${f3(peak.specular)}, `
-        + `θd = ${deg(peak.thetaD)}, F = ${f3(peak.F)}`, true],
-      ['Diffuse road there', f3(peak.diffuse)],
-      ['Highlight ÷ diffuse', `${fixed(peak.specular / peak.diffuse, 1)}×`],
-      ['Highlight against the road straight below', Number.isFinite(growth.total)
-        ? `${times(growth.total)}: lobe ${times(growth.lobe)}, F ${times(growth.fresnel)} (diffuse counted too: ${times(growth.overall)})`
-        : 'none: with n_t = 1 nothing is reflected specularly'],
-      [`Sunlight reflected specularly (sun ${deg(values.sunEl)} up)`, `${percent(albedo)} (diffuse albedo ${percent(SCENE.albedo)})`],
-      ['R0 (head-on)', f3(r0)],
+      [t('summary.centre'), t('summary.centreValue', { F: f3(centre.F), thetaD: deg(centre.thetaD) }), true],
+      [t('summary.peak'), t('summary.peakValue', {
+        below: deg(peak.below), specular: f3(peak.specular), thetaD: deg(peak.thetaD), F: f3(peak.F),
+      }), true],
+      [t('summary.diffuse'), f3(peak.diffuse)],
+      [t('summary.ratio'), `${fixed(peak.specular / peak.diffuse, 1)}×`],
+      [t('summary.growth'), Number.isFinite(growth.total)
+        ? t('summary.growthValue', {
+          total: times(growth.total), lobe: times(growth.lobe), fresnel: times(growth.fresnel), overall: times(growth.overall),
+        })
+        : t('summary.growthNone')],
+      [t('summary.albedo', { sunEl: deg(values.sunEl) }),
+        t('summary.albedoValue', { albedo: percent(albedo), diffuse: percent(SCENE.albedo) })],
+      [t('summary.r0'), f3(r0)],
     ]);
     if (!view) return;
     const basis = cameraBasis(values.camEl);
@@ -116,18 +125,19 @@ export function mount(root, ctx) {
   }
 
   // Hovering or tapping the road: the angle θd between the sun and the half-vector there, and F(θd).
-  const hint = 'Hover or tap the road to read how far below the horizon it is seen, θd (sun to half-vector), F and both parts there.';
   const onHover = (event) => {
     const rect = dom.canvas.getBoundingClientRect();
     const ndcX = (2 * (event.clientX - rect.left)) / rect.width - 1;
     const ndcY = 1 - (2 * (event.clientY - rect.top)) / rect.height;
     const hit = shadeRoad(pixelRay(values.camEl, ndcX, ndcY, rect.width / rect.height), values);
     dom.setReadout(hit
-      ? `Road ${fixed(hit.distance, 1)} m ahead, seen ${deg(hit.below)} below the horizon: θd = ${deg(hit.thetaD)}, `
-        + `F = ${f3(hit.F)}, sun's highlight ${f3(hit.specular)}, diffuse ${f3(hit.diffuse)}`
-      : 'Sky: no road under the cursor.');
+      ? t('readoutRoad', {
+        distance: fixed(hit.distance, 1), below: deg(hit.below), thetaD: deg(hit.thetaD), F: f3(hit.F), specular: f3(hit.specular),
+        diffuse: f3(hit.diffuse),
+      })
+      : t('readoutSky'));
   };
-  const onLeave = () => dom.setReadout(hint);
+  const onLeave = () => dom.setReadout(t('hint'));
   // Keyboard: arrows raise or lower the camera (Shift for 5°), Home overhead, End grazing.
   const onKey = (event) => {
     const step = event.shiftKey ? 5 : 1;
@@ -157,32 +167,32 @@ export function mount(root, ctx) {
     update,
     describe() {
       const { peak, centre } = state;
-      const setting = `Camera ${values.camEl}° above the road, sun ${values.sunEl}° ahead, roughness ${values.roughness}, `
-        + `n_t = ${values.nT} (assumed for bitumen), Fresnel ${values.fresnel ? 'on' : 'off'}. `;
-      if (values.nT === 1) {
-        return `${setting}With n_t = 1 the binder matches air: F = 0 at every angle (R0 = 0 too), so the road has no specular `
-          + `reflection, only its diffuse part, ${f3(peak.diffuse)} everywhere on the road (Lambertian, the same from every direction).`;
-      }
+      const setting = t('describeSetting', {
+        camEl: shown('camEl'), sunEl: shown('sunEl'), roughness: shown('roughness'), nT: shown('nT'),
+        fresnel: values.fresnel ? 'on' : 'off',
+      });
+      if (values.nT === 1) return `${setting} ${t('describeMatched', { diffuse: f3(peak.diffuse) })}`;
       // Concentrated: the brightest spot is at least three times as bright as a matte road reflecting the same share.
       const concentration = peak.specular / lambertianEquivalent(albedo, values.sunEl);
-      const shape = concentration >= 3
-        ? `concentrated (its brightest spot ${fixed(concentration, 1)} times a matte road reflecting as much)`
-        : 'spread out much as a matte road\'s would be';
+      const shape = concentration >= 3 ? t('shapeConcentrated', { concentration: fixed(concentration, 1) }) : t('shapeSpread');
       const ratio = albedo / SCENE.albedo;
-      const share = ratio < 0.95
-        ? `less than its diffuse albedo of ${percent(SCENE.albedo)}; that light is ${shape}`
-        : ratio <= 1.05
-          ? `about as much as its diffuse albedo of ${percent(SCENE.albedo)}; that light is ${shape}`
-          : `more than its diffuse albedo of ${percent(SCENE.albedo)} (×${fixed(ratio, 2)}), and that light is ${shape}`;
-      return setting
-        + `At the centre of view the sun meets the microfacets at θd = ${deg(centre.thetaD)}, where F is ${f3(centre.F)}; `
-        + `the brightest highlight in view, seen ${deg(peak.below)} below the horizon, has specular luminance ${f3(peak.specular)}, `
-        + `${fixed(peak.specular / peak.diffuse, 1)} times the diffuse road there (${f3(peak.diffuse)}). `
-        + `Its specular part is ${times(growth.total)} that of the road seen straight down: `
-        + `${times(growth.lobe)} from the lobe D·G2/(4 cos θl cos θv), which gathers the reflected light into a forward beam, `
-        + `and ${times(growth.fresnel)} from F; counting the diffuse road, the spot is ${times(growth.overall)} brighter. `
-        + `The road reflects ${percent(albedo)} of the sunlight specularly, ${share}. `
-        + 'The sky\'s own mirror image in the road is left out: the lesson is the sun\'s highlight.';
+      return `${setting} ${t('describe', {
+        thetaD: deg(centre.thetaD),
+        F: f3(centre.F),
+        below: deg(peak.below),
+        specular: f3(peak.specular),
+        ratio: fixed(peak.specular / peak.diffuse, 1),
+        diffuse: f3(peak.diffuse),
+        total: times(growth.total),
+        lobe: times(growth.lobe),
+        fresnel: times(growth.fresnel),
+        overall: times(growth.overall),
+        albedo: percent(albedo),
+        share: ratio < 0.95 ? 'less' : ratio <= 1.05 ? 'about' : 'more',
+        albedoDiffuse: percent(SCENE.albedo),
+        times: fixed(ratio, 2),
+        shape,
+      })}`;
     },
     csv() {
       const { column } = state;

@@ -1,12 +1,16 @@
 // The DOM of the changing-specular panel: the two rendered floors with their labels, a cross-section
 // (SVG) of light, normal, mirror direction r, view v and Phong's lobe, the live formulas, and the
 // plot host. Styled by styles.css under .cspec-panel.
+import english from 'virtual:messages/en/changing-specular';
+import { messages } from '../../i18n/messages.js';
 import { renderTex, texNumber } from '../../ui/tex.js';
-import { fixed, markupNumber as num } from '../../ui/format.js';
+import { fixed, markupNumber as num, tickLabel } from '../../ui/format.js';
 import './styles.css';
 import { el } from '../../ui/el.js';
 import { DEG } from '../../optics/angles.js';
+import { schema } from './schema.js';
 
+const t = messages('changing-specular', english);
 const SVG = 'http://www.w3.org/2000/svg';
 
 function svg(tag, attrs = {}, parent = null) {
@@ -37,14 +41,14 @@ function buildDiagram() {
   const sun = svg('circle', { r: 11, class: 'cspec-sun' }, root);
   const eye = svg('circle', { r: 9, class: 'cspec-eye' }, root);
   const label = (cls, text) => {
-    const t = svg('text', { class: cls }, root);
-    t.textContent = text;
-    return t;
+    const node = svg('text', { class: cls }, root);
+    node.textContent = text;
+    return node;
   };
   const nLabel = label('cspec-label', 'n');
   nLabel.setAttribute('x', O[0] + 18);
   nLabel.setAttribute('y', O[1] - 108);
-  const labels = { l: label('cspec-label cspec-l', 'light'), r: label('cspec-label cspec-r', 'r'),
+  const labels = { l: label('cspec-label cspec-l', t('diagramLight')), r: label('cspec-label cspec-r', 'r'),
     v: label('cspec-label cspec-v', 'v'), theta: label('cspec-label', 'θ') };
 
   const place = (node, [x, y]) => { node.setAttribute('x', num(x, 1)); node.setAttribute('y', num(y, 1)); };
@@ -84,8 +88,8 @@ function buildDiagram() {
     const b = at(psiL, 46);
     arc.setAttribute('d', `M${num(a[0], 1)} ${num(a[1], 1)}A46 46 0 0 1 ${num(b[0], 1)} ${num(b[1], 1)}`);
     place(labels.theta, at((90 + psiL) / 2, 60));
-    root.setAttribute('aria-label', `Cross-section: light ${lightEl}° above the surface (θ = ${90 - lightEl}° from the normal), `
-      + `mirror direction r at ${lightEl}° on the other side, viewer at ${viewEl}°.`);
+    const deg = (x) => tickLabel(x, schema.lightEl.step);
+    root.setAttribute('aria-label', t('diagramLabel', { light: deg(lightEl), theta: deg(90 - lightEl), view: deg(viewEl) }));
   }
   return { root, update };
 }
@@ -95,11 +99,10 @@ export function buildChangingSpecularDom(host) {
   const stage = el('div', 'cspec-stage');
   const canvas = el('canvas', 'cspec-canvas');
   canvas.setAttribute('role', 'img');
-  canvas.setAttribute('aria-label',
-    'The same flat tiled floor twice: the first lit with Phong\'s highlight, the second with Phong times F.');
+  canvas.setAttribute('aria-label', t('canvasLabel'));
   const labels = el('div', 'cspec-labels');
-  const left = el('span', 'cspec-tag cspec-tag-phong', 'Phong: R0·(v·r)^s');
-  const right = el('span', 'cspec-tag cspec-tag-fresnel', 'Phong × F: F(θ)·(v·r)^s');
+  const left = el('span', 'cspec-tag cspec-tag-phong', t('tagPhong'));
+  const right = el('span', 'cspec-tag cspec-tag-fresnel', t('tagFresnel'));
   labels.append(left, right);
   stage.append(canvas, labels);
 
@@ -112,7 +115,7 @@ export function buildChangingSpecularDom(host) {
   maths.append(texPhong, texFresnel, note);
   row.append(diagram.root, maths);
   const plot = el('div', 'cspec-plot');
-  plot.setAttribute('aria-label', 'Peak highlight against the elevation of light and view');
+  plot.setAttribute('aria-label', t('plotLabel'));
   root.append(stage, row, plot);
   host.append(root);
 
@@ -130,10 +133,7 @@ export function buildChangingSpecularDom(host) {
       renderTex(texFresnel, `\\text{Phong}\\times F = F(${texNumber(h.thetaDeg, 1)}^\\circ)\\,(\\mathbf v\\cdot\\mathbf r)^s = `
         + `${texNumber(h.F)} \\times ${lobe} = \\mathbf{${texNumber(h.phongF)}}`, { display: false });
       const ratio = fixed(h.F / h.R0, 2);
-      note.textContent = h.R0 === 0
-        ? 'At the centre of each view. With n_t = 1 there is no interface: nothing is reflected at any angle.'
-        : `At the centre of each view. F is ${ratio}× R0 here, so the Phong × F floor reflects ${ratio}× `
-          + 'the light of the Phong one at every point of its highlight.';
+      note.textContent = h.R0 === 0 ? t('noteNoInterface') : t('note', { ratio });
     },
   };
 }

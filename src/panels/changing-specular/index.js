@@ -4,19 +4,23 @@
 // is lit both ways side by side, with a cross-section of the vectors and a plot of the peak highlight
 // against elevation: plain Phong (k_s = R0) is flat, Phong × F rises towards grazing.
 // Numbers: src/optics/phong.js (float64); picture: changing-specular.frag.glsl.
+import english from 'virtual:messages/en/changing-specular';
+import { messages } from '../../i18n/messages.js';
 import { createShaderView } from '../../gl/createShaderView.js';
 import { createLinePlot } from '../../ui/createLinePlot.js';
 import { thetaMark } from '../../ui/plotMarks.js';
 import { DEG } from '../../optics/angles.js';
 import { peakHighlightCurves, phongHighlights } from '../../optics/phong.js';
 import { startWebGL } from '../shared/startWebGL.js';
-import { angle, fixed } from '../../ui/format.js';
+import { angle, fixed, tickLabel } from '../../ui/format.js';
 import { buildChangingSpecularDom } from './buildChangingSpecularDom.js';
 import fragment from './changing-specular.frag.glsl?raw';
 import { schema } from './schema.js';
 import { stackOnPhone } from '../shared/stackOnPhone.js';
 
 export { schema };
+
+const t = messages('changing-specular', english);
 
 const SCENE = { fovY: 40, cameraDist: 4, light: 6, exposure: 1 };
 
@@ -27,6 +31,8 @@ const SCENE = { fovY: 40, cameraDist: 4, light: 6, exposure: 1 };
  */
 export function mount(root, ctx) {
   const { values } = ctx;
+  /** A control's value as it is written in a sentence: the decimals of its step, in the page's language. */
+  const shown = (key) => tickLabel(values[key], schema[key].step);
   const dom = buildChangingSpecularDom(root);
   const view = startWebGL(dom.stage, () => createShaderView(dom.canvas, {
     fragment,
@@ -37,19 +43,19 @@ export function mount(root, ctx) {
       uTanHalfFov: { value: Math.tan((SCENE.fovY / 2) * DEG) }, uCameraDist: { value: SCENE.cameraDist },
       uLight: { value: SCENE.light }, uExposure: { value: SCENE.exposure }, uStacked: { value: 0 },
     },
-  }), 'The floors need WebGL2; the diagram and plot below still work.');
+  }), t('noWebgl'));
   // On a phone the two floors stand one above the other, each as wide as the screen.
   const layout = stackOnPhone(dom.stage, 'cspec-stacked', view);
   const plot = createLinePlot(dom.plot, {
-    xLabel: 'Elevation of light and view (mirror), °',
-    xShort: 'Elevation of light and view, °',
-    yLabel: 'Peak highlight',
+    xLabel: t('plot.x'),
+    xShort: t('plot.xShort'),
+    yLabel: t('plot.y'),
     yRange: [0, 1],
     height: 260,
     digits: 4,
     series: [
-      { label: 'Phong, k_s = R0', stroke: '--c-schlick', width: 3.5 },
-      { label: 'Phong × F', stroke: '--c-exact', width: 3.5 },
+      { label: t('plot.phong'), stroke: '--c-schlick', width: 3.5 },
+      { label: t('plot.phongF'), stroke: '--c-exact', width: 3.5 },
     ],
   });
 
@@ -66,8 +72,8 @@ export function mount(root, ctx) {
 
   const opening = linkUpdate([]); // linked, but the link gave two elevations: the view takes the light's
   if (opening) ctx.set(opening);
-  ctx.bind(ctx.gui.addFolder('Light and view'), ['lightEl', 'viewEl', 'linked']);
-  ctx.bind(ctx.gui.addFolder('Surface'), ['s', 'nT']);
+  ctx.bind(ctx.gui.addFolder(t('folder.lightView')), ['lightEl', 'viewEl', 'linked']);
+  ctx.bind(ctx.gui.addFolder(t('folder.surface')), ['s', 'nT']);
 
   function update(keys = []) {
     const link = linkUpdate(keys);
@@ -80,7 +86,7 @@ export function mount(root, ctx) {
       plot.setData([curves.elevation, curves.phong, curves.phongF]);
     }
     highlight = phongHighlights(values.lightEl, values.viewEl, values.s, 1, values.nT);
-    plot.setMarks([thetaMark(values.lightEl, `light ${values.lightEl}°`)]);
+    plot.setMarks([thetaMark(values.lightEl, t('plot.light', { elevation: shown('lightEl') }))]);
     dom.setDiagram(values.lightEl, values.viewEl, values.s);
     dom.setNumbers(highlight, values.s);
     if (view) {
@@ -106,11 +112,20 @@ export function mount(root, ctx) {
     update,
     describe() {
       const h = highlight;
-      return `Light ${values.lightEl}° and view ${values.viewEl}° above the surface, s = ${values.s}, n_t = ${values.nT}. `
-        + `At the centre of view v·r = ${fixed(h.vDotR, 3)}: plain Phong gives ${fixed(h.phong, 4)} (k_s = R0 = ${fixed(h.R0, 4)}), `
-        + `Phong × F gives ${fixed(h.phongF, 4)} (F at θ = ${angle(h.thetaDeg, 1)} is ${fixed(h.F, 4)}). `
-        + `At the mirror peak plain Phong is ${fixed(h.R0, 4)} at every elevation, while Phong × F is `
-        + `${fixed(curveAt('phongF', 80), 4)} at 80° and ${fixed(curveAt('phongF', 5), 4)} at 5°.`;
+      return t('describe', {
+        light: shown('lightEl'),
+        view: shown('viewEl'),
+        s: shown('s'),
+        nT: shown('nT'),
+        vDotR: fixed(h.vDotR, 3),
+        phong: fixed(h.phong, 4),
+        r0: fixed(h.R0, 4),
+        phongF: fixed(h.phongF, 4),
+        theta: angle(h.thetaDeg, 1),
+        F: fixed(h.F, 4),
+        at80: fixed(curveAt('phongF', 80), 4),
+        at5: fixed(curveAt('phongF', 5), 4),
+      });
     },
     csv() {
       return {

@@ -3,13 +3,18 @@
 // one lobe each technique fits to them, as its 1-σ contour: centre = the shading normal's slope,
 // per-axis σ = α′/√2 for the isotropic lobes (v = α′²/2, the per-axis slope variance of a Beckmann
 // lobe) and LEAN's covariance ellipse (leanCovariance, base lobe included). Lobes come from texelLobe (effectiveRoughness.js).
+import english from 'virtual:messages/en/normal-mips';
+import { messages } from '../../i18n/messages.js';
 import { el } from '../../ui/el.js';
 import { fixed } from '../../ui/format.js';
 import { context2d } from '../../ui/context2d.js';
 import { createLobe, texelLobe } from '../../normals/effectiveRoughness.js';
-import { TECHNIQUE_NAMES, TECHNIQUES } from '../../normals/techniqueLayout.js';
+import { TECHNIQUES } from '../../normals/techniqueLayout.js';
 import { cssVar, lineScale } from '../../ui/theme.js';
 import { TECHNIQUE_STYLES } from './techniqueStyles.js';
+import { techniqueName } from './techniqueName.js';
+
+const t = messages('normal-mips', english);
 
 const SIZE = 360;
 const MAX_POINTS = 4096;
@@ -31,14 +36,13 @@ export function footprintSlopes(pyramid, level, i, j) {
 
 export function buildInspector(host) {
   const root = el('div', 'nm-inspector');
-  root.append(el('h3', 'nm-strip-title', 'Texel inspector: the normals under one texel, and the lobe each technique fits'));
+  root.append(el('h3', 'nm-strip-title', t('inspector.title')));
   const canvas = el('canvas', 'nm-inspector-canvas');
   canvas.width = SIZE;
   canvas.height = SIZE;
   const g = context2d(canvas); // claimed now: see context2d.js
   canvas.setAttribute('role', 'img');
-  canvas.setAttribute('aria-label',
-    'Slope scatter of one texel’s normals with each technique’s fitted lobe, drawn once the mip chains are built.');
+  canvas.setAttribute('aria-label', t('inspector.canvasEmpty'));
   const side = el('div', 'nm-inspector-side');
   const keyList = el('ul', 'nm-inspector-key');
   const verdict = el('p', 'nm-inspector-verdict');
@@ -61,10 +65,10 @@ export function buildInspector(host) {
       const texel = j * levelSize + i;
       const points = footprintSlopes(pyramid, level, i, j);
       const lobes = {};
-      for (const t of TECHNIQUES) {
-        const lobe = texelLobe(chains[t], level, texel, { alpha }, createLobe());
+      for (const id of TECHNIQUES) {
+        const lobe = texelLobe(chains[id], level, texel, { alpha }, createLobe());
         const [nx, ny, nz] = lobe.normal;
-        lobes[t] = { centre: [nx / nz, ny / nz], alpha: lobe.alpha, covariance: lobe.covariance };
+        lobes[id] = { centre: [nx / nz, ny / nz], alpha: lobe.alpha, covariance: lobe.covariance };
       }
       let extent = 0.2;
       for (const [x, y] of points) extent = Math.max(extent, Math.abs(x), Math.abs(y));
@@ -79,8 +83,8 @@ export function buildInspector(host) {
       g.moveTo(0, SIZE / 2); g.lineTo(SIZE, SIZE / 2); g.moveTo(SIZE / 2, 0); g.lineTo(SIZE / 2, SIZE);
       g.stroke();
       g.lineWidth = 3 * lineScale();
-      for (const t of TECHNIQUES) {
-        const { centre, alpha: a, covariance: c } = lobes[t];
+      for (const id of TECHNIQUES) {
+        const { centre, alpha: a, covariance: c } = lobes[id];
         let rx = a / Math.SQRT2;
         let ry = rx;
         let angle = 0;
@@ -90,8 +94,8 @@ export function buildInspector(host) {
           ry = Math.sqrt(Math.max(c.minor, 0));
         }
         const [cx, cy] = toPx(centre[0], centre[1]);
-        g.strokeStyle = cssVar(TECHNIQUE_STYLES[t].stroke);
-        g.setLineDash(TECHNIQUE_STYLES[t].dash ?? []);
+        g.strokeStyle = cssVar(TECHNIQUE_STYLES[id].stroke);
+        g.setLineDash(TECHNIQUE_STYLES[id].dash ?? []);
         g.beginPath();
         g.ellipse(cx, cy, (rx / extent) * (SIZE / 2), (ry / extent) * (SIZE / 2), -angle, 0, 2 * Math.PI);
         g.stroke();
@@ -115,22 +119,19 @@ export function buildInspector(host) {
       const near = points.filter((p) => Math.hypot(p[0] - cx, p[1] - cy) < 0.25 * spread).length / points.length;
       const bimodal = (mapKind === 'grooves' || mapKind === 'checker') && spread > 1e-3 && near < 0.05;
       keyList.replaceChildren(
-        el('li', 'nm-key-points', `${points.length} level-0 slopes under texel (${i}, ${j}) of level ${level}`),
-        ...TECHNIQUES.map((t) => {
-          const item = el('li', '', `${TECHNIQUE_NAMES[t]}: α′ = ${fixed(lobes[t].alpha, 3)}`);
-          item.style.borderLeftColor = `var(${TECHNIQUE_STYLES[t].stroke})`;
+        el('li', 'nm-key-points', t('inspector.points', {
+          count: points.length, n: String(points.length), i: String(i), j: String(j), level: String(level),
+        })),
+        ...TECHNIQUES.map((id) => {
+          const item = el('li', '', t('inspector.lobe', { technique: techniqueName(id), alpha: fixed(lobes[id].alpha, 3) }));
+          item.style.borderLeftColor = `var(${TECHNIQUE_STYLES[id].stroke})`;
           return item;
         }),
       );
-      verdict.textContent = bimodal
-        ? 'Two spikes, one blob: the true normals under this texel form two separate clusters (the facets), but every '
-          + 'single-lobe method fits one blob centred between them, where no facet points. Only several lobes or supersampling '
-          + 'can represent this.'
-        : spread < 1e-3 ? 'All normals under this texel agree: every technique keeps the base lobe.'
-          : 'The normals under this texel form one spread-out cloud; the variance-keeping techniques widen the lobe to cover it, '
-            + 'naive and renormalized do not.';
-      canvas.setAttribute('aria-label',
-        `Slope scatter of texel (${i}, ${j}) at level ${level} with each technique's fitted lobe. ${verdict.textContent}`);
+      verdict.textContent = t(bimodal ? 'inspector.bimodal' : spread < 1e-3 ? 'inspector.agree' : 'inspector.cloud');
+      canvas.setAttribute('aria-label', t('inspector.canvas', {
+        i: String(i), j: String(j), level: String(level), verdict: verdict.textContent,
+      }));
       return { points, lobes, bimodal };
     },
     dispose() {

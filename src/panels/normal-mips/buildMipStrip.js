@@ -4,6 +4,8 @@
 //             Toksvig, "Mipmapping Normal Maps", NVIDIA 2004)
 //   α'        the chosen technique's effective roughness (effectiveRoughness.js texelLobe) over [0, 1]
 // and the storage cost of every technique's chain (storageCost.js). Heat colours: src/ui/colormap.js.
+import english from 'virtual:messages/en/normal-mips';
+import { messages } from '../../i18n/messages.js';
 import { colormap, colormapGradient } from '../../ui/colormap.js';
 import { el } from '../../ui/el.js';
 import { fixed } from '../../ui/format.js';
@@ -11,8 +13,11 @@ import { context2d } from '../../ui/context2d.js';
 import { createLobe, texelLobe } from '../../normals/effectiveRoughness.js';
 import { reconstructZ } from '../../normals/lobeFormulas.js';
 import { storageCost } from '../../normals/storageCost.js';
-import { TECHNIQUE_NAMES, TECHNIQUES } from '../../normals/techniqueLayout.js';
+import { TECHNIQUES } from '../../normals/techniqueLayout.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
+import { techniqueName } from './techniqueName.js';
+
+const t = messages('normal-mips', english);
 
 const CELL = 84; // CSS pixels per level thumbnail
 const LUT = Array.from({ length: 256 }, (_, i) => colormap(i / 255).map((v) => Math.round(v * 255)));
@@ -69,13 +74,13 @@ function meanStoredLength(chain, level) {
 }
 
 export function buildMipStrip(host, { onPick } = {}) {
-  const root = makeScrollBox(el('div', 'nm-strip'), 'The mip chain, level by level');
-  const heading = el('h3', 'nm-strip-title', 'The mip chain, level by level');
+  const root = makeScrollBox(el('div', 'nm-strip'), t('strip.title'));
+  const heading = el('h3', 'nm-strip-title', t('strip.title'));
   const grid = el('div', 'nm-strip-grid');
   const legend = el('div', 'nm-strip-legend');
   const bar = el('span', 'nm-legend-bar');
   bar.style.background = colormapGradient();
-  legend.append(el('span', '', 'heat: |N_a| 0.5 → 1, α′ 0 → 1'), bar);
+  legend.append(el('span', '', t('strip.legend')), bar);
   const costs = el('table', 'nm-costs');
   root.append(heading, grid, legend, costs);
   host.append(root);
@@ -84,10 +89,10 @@ export function buildMipStrip(host, { onPick } = {}) {
   function layout(levels) {
     grid.replaceChildren();
     cells = [];
-    const rows = ['RGB (N_a)', '|N_a|', 'α′'];
+    const rows = [t('strip.rowRgb'), t('strip.rowLength'), t('strip.rowAlpha')];
     // Cells shrink (down to 40 px) so that all 11 levels of a 1024² map fit beside each other.
     grid.style.gridTemplateColumns = `auto repeat(${levels}, minmax(40px, ${CELL}px))`;
-    grid.append(el('span', 'nm-strip-row', 'level'));
+    grid.append(el('span', 'nm-strip-row', t('strip.level')));
     for (let l = 0; l < levels; l++) grid.append(el('span', 'nm-strip-head', String(l)));
     rows.forEach((name, r) => {
       grid.append(el('span', 'nm-strip-row', name));
@@ -98,7 +103,7 @@ export function buildMipStrip(host, { onPick } = {}) {
         canvas.height = CELL;
         context2d(canvas); // claimed now, before its first picture: see context2d.js
         canvas.setAttribute('role', 'img');
-        canvas.setAttribute('aria-label', `${name} of mip level ${l}`);
+        canvas.setAttribute('aria-label', t('strip.cell', { row: name, level: String(l) }));
         // A click picks that texel for the inspector (the inspector's sliders do the same from the keyboard).
         canvas.addEventListener('click', (event) => {
           const size = Math.max(1, cells.size >> l);
@@ -133,16 +138,16 @@ export function buildMipStrip(host, { onPick } = {}) {
         paint(cells[2][l], size, (t) => heat(texelLobe(chains[technique], l, t, base, lobe).alpha));
         meanLength.push(meanStoredLength(naive, l));
       });
-      const caption = `Storage of each technique's whole chain (${naive.size}², ${precisionName}, ${channels} channels)`;
+      const caption = t('cost.caption', { size: String(naive.size), precision: precisionName, channels: Number(channels) });
       costs.replaceChildren(el('caption', '', caption));
       const head = el('tr');
-      head.append(el('th', '', 'Technique'), el('th', '', 'KiB'), el('th', '', 'scalars / texel'), el('th', '', 'keeps the spread'));
+      head.append(...['cost.technique', 'cost.kib', 'cost.scalars', 'cost.keeps'].map((key) => el('th', '', t(key))));
       costs.append(head);
-      for (const t of TECHNIQUES) {
-        const cost = storageCost({ technique: t, precision, channels, size: naive.size });
-        const row = el('tr', t === technique ? 'nm-current' : '');
-        row.append(el('th', '', TECHNIQUE_NAMES[t]), el('td', '', fixed(cost.bytes / 1024, 1)), el('td', '', String(cost.components)),
-          el('td', '', cost.varianceKept ? 'yes' : 'no'));
+      for (const id of TECHNIQUES) {
+        const cost = storageCost({ technique: id, precision, channels, size: naive.size });
+        const row = el('tr', id === technique ? 'nm-current' : '');
+        row.append(el('th', '', techniqueName(id)), el('td', '', fixed(cost.bytes / 1024, 1)), el('td', '', String(cost.components)),
+          el('td', '', t(cost.varianceKept ? 'cost.yes' : 'cost.no')));
         costs.append(row);
       }
       return { meanLength };

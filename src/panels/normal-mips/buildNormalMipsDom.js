@@ -1,11 +1,15 @@
 // The DOM of the normal-mips panel: the stage (canvas with its two captions and the ground-truth
 // sample counter), a line of key numbers, the mip-level legend of the overlay and the error table
 // (RMSE per technique, overall and per mip-level band). Styles: styles.css (under .nm-panel).
+import english from 'virtual:messages/en/normal-mips';
+import { messages } from '../../i18n/messages.js';
 import { colormapGradient } from '../../ui/colormap.js';
 import { el } from '../../ui/el.js';
 import { fixed } from '../../ui/format.js';
-import { TECHNIQUE_NAMES } from '../../normals/techniqueLayout.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
+import { techniqueName } from './techniqueName.js';
+
+const t = messages('normal-mips', english);
 
 const fmt = (x) => (Number.isFinite(x) ? fixed(x, 4) : '–');
 
@@ -16,9 +20,7 @@ export function buildNormalMipsDom(host) {
   const stage = el('div', 'nm-stage');
   const canvas = el('canvas', 'nm-canvas');
   canvas.setAttribute('role', 'img');
-  canvas.setAttribute('aria-label',
-    'A bumpy plane receding to the horizon under a low point light: on the left the highlight from the chosen mip technique, '
-    + 'on the right the supersampled ground truth.');
+  canvas.setAttribute('aria-label', t('canvasLabel'));
   const leftCap = el('div', 'nm-cap nm-cap-left');
   const rightCap = el('div', 'nm-cap nm-cap-right');
   leftCap.hidden = true; // until setCaptions: an empty caption that fills in would grow in place
@@ -33,15 +35,14 @@ export function buildNormalMipsDom(host) {
   const legend = el('div', 'nm-legend');
   const legendBar = el('span', 'nm-legend-bar');
   legendBar.style.background = colormapGradient();
-  const legendLo = el('span', '', 'level 0');
+  const legendLo = el('span', '', t('legendBottom', { level: '0' }));
   const legendHi = el('span', '');
-  const legendLabel = el('span', 'nm-legend-label', 'Overlay / difference colours:');
+  const legendLabel = el('span', 'nm-legend-label', t('legendLabel'));
   legend.append(legendLabel, legendLo, legendBar, legendHi);
 
   // The table's title sits outside its scrolling box, so it wraps to the column instead of
   // scrolling away with a wide table; aria-labelledby keeps it the table's name.
-  const title = el('p', 'nm-errors-title',
-    'RMSE of each technique against the ground truth (tone-mapped RGB), over the plane and per mip-level band');
+  const title = el('p', 'nm-errors-title', t('errorsTitle'));
   title.id = `nm-errors-title-${++titles}`;
   const table = el('table', 'nm-errors');
   table.setAttribute('aria-labelledby', title.id);
@@ -50,7 +51,7 @@ export function buildNormalMipsDom(host) {
   table.append(thead, tbody);
   const shimmer = el('p', 'nm-shimmer');
   shimmer.setAttribute('aria-live', 'polite');
-  const tableWrap = makeScrollBox(el('div', 'nm-table-wrap'), 'RMSE table');
+  const tableWrap = makeScrollBox(el('div', 'nm-table-wrap'), t('errorsBox'));
   tableWrap.append(table);
   const plotSlot = el('div', 'nm-plot-slot'); // the error-by-distance plot (createErrorDistancePlot.js)
   root.append(stage, summary, legend, title, tableWrap, plotSlot, shimmer);
@@ -73,14 +74,12 @@ export function buildNormalMipsDom(host) {
      */
     setShimmer(results, measuring = false, stopped = '') {
       if (measuring) {
-        shimmer.textContent = 'Shimmer meter: measuring every technique under four sub-pixel camera moves…';
+        shimmer.textContent = t('shimmer.measuring');
         return;
       }
-      shimmer.textContent = results
-        ? `Shimmer (mean brightness change per pixel under a sub-pixel camera move, lower is steadier): ${
-          Object.entries(results).sort((a, b) => a[1] - b[1]).map(([t, v]) => `${TECHNIQUE_NAMES[t]} ${fixed(v, 4)}`).join(', ')}.`
-        : stopped || 'Shimmer meter: press “Measure shimmer” to compare how much each technique flickers when the camera moves '
-          + 'by less than a pixel.';
+      const list = () => Object.entries(results).sort((a, b) => a[1] - b[1])
+        .map(([id, v]) => t('shimmer.item', { technique: techniqueName(id), value: fixed(v, 4) })).join(', ');
+      shimmer.textContent = results ? t('shimmer.results', { list: list() }) : stopped || t('shimmer.idle');
     },
     /** A line over the stage while the chains build ('' hides it). */
     setBusy(text) {
@@ -107,14 +106,15 @@ export function buildNormalMipsDom(host) {
       const first = Object.values(errors)[0];
       const used = first.bands.filter((b) => Object.values(errors).some((e) => e.bands[b.level].count > 0));
       const head = el('tr');
-      head.append(el('th', '', 'Technique'), el('th', '', 'All'), ...used.map((b) => el('th', '', `λ ${b.level}`)));
+      head.append(el('th', '', t('errors.technique')), el('th', '', t('errors.all')),
+        ...used.map((b) => el('th', '', t('errors.band', { level: String(b.level) }))));
       thead.append(head);
       const order = Object.entries(errors).sort((a, b) => a[1].rmse - b[1].rmse);
       for (const [technique, e] of order) {
         const row = el('tr', technique === current ? 'nm-current' : '');
         row.dataset.technique = technique;
         const bands = used.map((b) => el('td', '', fmt(e.bands[b.level].rmse)));
-        row.append(el('th', '', TECHNIQUE_NAMES[technique]), el('td', '', fmt(e.rmse)), ...bands);
+        row.append(el('th', '', techniqueName(technique)), el('td', '', fmt(e.rmse)), ...bands);
         tbody.append(row);
       }
     },

@@ -2,10 +2,15 @@
 // per mip-level band λ (the level the hardware samples grows with distance, one step per doubling
 // of the footprint), from the same numbers as the error table. Where naive and renormalized climb
 // and the variance-keeping techniques stay low is where a distant bumpy surface turns too shiny.
+import english from 'virtual:messages/en/normal-mips';
+import { messages } from '../../i18n/messages.js';
 import { createLinePlot } from '../../ui/createLinePlot.js';
 import { el } from '../../ui/el.js';
-import { TECHNIQUE_NAMES, TECHNIQUES } from '../../normals/techniqueLayout.js';
+import { TECHNIQUES } from '../../normals/techniqueLayout.js';
 import { TECHNIQUE_STYLES } from './techniqueStyles.js';
+import { techniqueName } from './techniqueName.js';
+
+const t = messages('normal-mips', english);
 
 /**
  * One sentence on the chosen technique against naive, band by band: where keeping the spread
@@ -13,34 +18,30 @@ import { TECHNIQUE_STYLES } from './techniqueStyles.js';
  * single lobe cannot fit, as on V-grooves).
  */
 export function verdict(errors, technique, levels) {
-  const name = TECHNIQUE_NAMES[technique];
-  if (technique === 'naive' || technique === 'renormalized') {
-    return `${name} keeps no spread: far away (right) its highlight stays as sharp as up close, so the surface turns too shiny.`;
-  }
+  const name = techniqueName(technique);
+  if (technique === 'naive' || technique === 'renormalized') return t('plot.noSpread', { technique: name });
   const worse = levels.filter((l) => errors[technique].bands[l].rmse > errors.naive.bands[l].rmse);
-  if (worse.length === 0) return `${name} is closer to the truth than the naive average at every mip level in use.`;
-  return `At λ ${worse.join(', ')}, the naive average is closer than ${name}: there the footprint mixes flat texels (a sharp `
-    + 'spike) with steep ones (a wide cloud), and one lobe cannot fit both. The texel inspector shows the cloud.';
+  if (worse.length === 0) return t('plot.closer', { technique: name });
+  return t('plot.worse', { technique: name, levels: worse.join(', ') });
 }
-
-const PENDING = 'Which technique stays closest to the truth at each distance is said here once the ground truth has converged.';
 
 /** createErrorDistancePlot(host) → { show(errors), dispose() }; errors as the error table's, or null. */
 export function createErrorDistancePlot(host) {
   const box = el('div', 'nm-plot');
-  const title = el('p', 'nm-plot-title', 'RMSE against the ground truth by mip level in use (farther to the right)');
+  const title = el('p', 'nm-plot-title', t('plot.title'));
   const plotHost = el('div', 'nm-plot-host');
-  const note = el('p', 'nm-plot-note', PENDING);
+  const note = el('p', 'nm-plot-note', t('plot.pending'));
+  let pending = true; // the note says that it waits for the ground truth
   note.setAttribute('aria-live', 'polite');
   box.append(title, plotHost, note);
   host.append(box);
   const plot = createLinePlot(plotHost, {
-    xLabel: 'mip level λ in use', yLabel: 'RMSE', height: 280, digits: 4, xUnit: '', xStep: 1,
+    xLabel: t('plot.x'), yLabel: t('plot.y'), height: 280, digits: 4, xUnit: '', xStep: 1,
     // from 0, so that a gap between techniques reads at its true size
     xRange: (_u, min, max) => [min - 0.25, max + 0.25],
     yRange: (_u, _min, max) => [0, Math.max(1e-3, max * 1.15)],
-    series: TECHNIQUES.map((t) => ({
-      label: TECHNIQUE_NAMES[t], width: t === 'naive' || t === 'renormalized' ? 3 : 2.5, ...TECHNIQUE_STYLES[t],
+    series: TECHNIQUES.map((id) => ({
+      label: techniqueName(id), width: id === 'naive' || id === 'renormalized' ? 3 : 2.5, ...TECHNIQUE_STYLES[id],
     })),
   });
   let shown; // the errors object and technique drawn last
@@ -53,16 +54,18 @@ export function createErrorDistancePlot(host) {
       shownTechnique = technique;
       if (!errors) {
         plot.setData([[], ...TECHNIQUES.map(() => [])]);
-        note.textContent = PENDING;
+        note.textContent = t('plot.pending');
+        pending = true;
         return;
       }
       // Bands no pixel fell into stay out of the plot (null), as they stay out of the table.
-      const used = errors[TECHNIQUES[0]].bands.filter((b) => TECHNIQUES.some((t) => errors[t].bands[b.level].count > 0));
-      plot.setData([used.map((b) => b.level), ...TECHNIQUES.map((t) => used.map((b) => errors[t].bands[b.level].rmse))]);
+      const used = errors[TECHNIQUES[0]].bands.filter((b) => TECHNIQUES.some((id) => errors[id].bands[b.level].count > 0));
+      plot.setData([used.map((b) => b.level), ...TECHNIQUES.map((id) => used.map((b) => errors[id].bands[b.level].rmse))]);
       note.textContent = verdict(errors, technique, used.map((b) => b.level));
+      pending = false;
     },
     /** The sentence under the plot ('' while there are no errors). */
-    get note() { return note.textContent === PENDING ? '' : note.textContent; },
+    get note() { return pending ? '' : note.textContent; },
     /** [levels, ...one RMSE series per technique in TECHNIQUES order], as plotted. */
     get data() { return plot.data; },
     toPng: () => plot.toPng(),

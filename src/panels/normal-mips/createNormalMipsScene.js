@@ -3,6 +3,8 @@
 // the progressive ground truth (a running mean over frames, stopped at a sample cap) and the
 // composited display. Plain WebGL2: every technique's chain is uploaded level by level from
 // uploadLevels() (createMipTexture), so the shader samples exactly what the technique stored.
+import english from 'virtual:messages/en/normal-mips';
+import { messages } from '../../i18n/messages.js';
 import { cappedPixelRatio } from '../../gl/cappedPixelRatio.js';
 import { WebGL2Unavailable } from '../../gl/contextBudget.js';
 import { createContext } from '../../gl/createContext.js';
@@ -18,6 +20,8 @@ import { TECHNIQUES } from '../../normals/techniqueLayout.js';
 import { uploadLevels } from '../../normals/uploadLevels.js';
 import { bandedRmse } from '../../normals/bandedRmse.js';
 import { meanBrightnessChange } from '../../normals/shimmer.js';
+
+const t = messages('normal-mips', english);
 
 // Small batches keep each frame short on slow (software) GPUs while the truth accumulates.
 export const SAMPLES_PER_FRAME = 8;
@@ -38,7 +42,7 @@ function startContext(canvas) {
   enableExtensions(context.gl);
   if (!context.gl.getExtension('EXT_color_buffer_float')) {
     context.dispose();
-    throw new WebGL2Unavailable('This GPU cannot draw into float textures (EXT_color_buffer_float).');
+    throw new WebGL2Unavailable(t('noFloatTargets'));
   }
   return context;
 }

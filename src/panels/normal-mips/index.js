@@ -3,6 +3,8 @@
 // the mip chain each technique stores (src/normals/), split-screen against a progressive,
 // supersampled ground truth from the exact analytic normals, with an RMSE per technique. The view:
 // the state and the runs are the model's (model.js), the words describeNormalMips.js's.
+import english from 'virtual:messages/en/normal-mips';
+import { messages } from '../../i18n/messages.js';
 import { createChainBuilder } from '../../normals/createChainBuilder.js';
 import { levelCount } from '../../normals/momentPyramid.js';
 import { optionLabel } from '../panelText.js';
@@ -14,7 +16,9 @@ import { createErrorDistancePlot } from './createErrorDistancePlot.js';
 import { buildMipStrip } from './buildMipStrip.js';
 import { buildInspector } from './buildInspector.js';
 import { createNormalMipsModel } from './model.js';
-import { describeText, errorsCsv, legendText, statusText, summaryText } from './describeNormalMips.js';
+import {
+  chainProblemText, describeText, errorsCsv, legendText, statusText, summaryText,
+} from './describeNormalMips.js';
 import {
   CHAIN_KEYS, INSPECT_KEYS, initialUniforms, LIGHT_KEYS, touches,
 } from './sceneSettings.js';
@@ -22,6 +26,8 @@ import './styles.css';
 import { schema } from './schema.js';
 
 export { schema };
+
+const t = messages('normal-mips', english);
 
 /**
  * @param {HTMLElement} root
@@ -45,7 +51,7 @@ export function mount(root, ctx) {
     onConverged: () => ctx.invalidate(), // re-describe with the error numbers
     onContextLost: () => model.contextLost(),
     uniforms: initialUniforms(values),
-  }), 'The receding plane needs WebGL2; the mip strip and the texel inspector below still work.');
+  }), t('noWebgl'));
 
   const showShimmer = () => dom.setShimmer(model.shimmer.result, model.shimmer.busy, model.shimmer.stopped);
   const model = createNormalMipsModel({
@@ -61,11 +67,11 @@ export function mount(root, ctx) {
     },
   });
 
-  ctx.bind(ctx.gui.addFolder('Normal map'), ['map', 'frequency', 'angle', 'size']);
-  ctx.bind(ctx.gui.addFolder('Technique'), ['technique', 'alpha', 'precision', 'channels', 'level', 'anisotropy', 'fresnel']);
-  ctx.bind(ctx.gui.addFolder('Texel inspector').close(), INSPECT_KEYS);
-  ctx.gui.add({ measure: () => model.measureShimmer() }, 'measure').name('Measure shimmer (all techniques)');
-  ctx.bind(ctx.gui.addFolder('View and light'), ['view', 'overlay', ...LIGHT_KEYS, 'truth', 'truthSamples']);
+  ctx.bind(ctx.gui.addFolder(t('folder.map')), ['map', 'frequency', 'angle', 'size']);
+  ctx.bind(ctx.gui.addFolder(t('folder.technique')), ['technique', 'alpha', 'precision', 'channels', 'level', 'anisotropy', 'fresnel']);
+  ctx.bind(ctx.gui.addFolder(t('folder.inspector')).close(), INSPECT_KEYS);
+  ctx.gui.add({ measure: () => model.measureShimmer() }, 'measure').name(t('measureShimmer'));
+  ctx.bind(ctx.gui.addFolder(t('folder.viewLight')), ['view', 'overlay', ...LIGHT_KEYS, 'truth', 'truthSamples']);
 
   /** The captions, the error-by-distance plot and the error table, from the scene's progress. */
   function showStatus() {
@@ -86,7 +92,7 @@ export function mount(root, ctx) {
       built: model.built,
       maxAnisotropy: scene ? scene.maxAnisotropy : null,
       floatLinear: scene ? scene.floatLinear : null,
-      problem: model.problem,
+      problem: chainProblemText(model.problem),
     }));
     dom.setLegend(legendText(values));
   }

@@ -4,14 +4,18 @@
 // told, and the shimmer measurement. index.js is the view: it draws what the model holds when a
 // hook says so. Long runs (a chain build, a shimmer measurement) go stale through run gates: a
 // newer run, a change of the settings they measure, a lost context or dispose drops their result.
+import english from 'virtual:messages/en/normal-mips';
+import { messages } from '../../i18n/messages.js';
 import { levelCount } from '../../normals/momentPyramid.js';
 import { createRunGate, isStaleRun } from '../shared/createRunGate.js';
 import {
   CHAIN_KEYS, chainRequest, ERROR_KEYS, mergeKeys, sceneSettings, SHIMMER_KEYS, touches, TRUTH_KEYS,
 } from './sceneSettings.js';
 
-export const SHIMMER_LOST = 'Shimmer meter: the measurement stopped because the graphics context was lost; '
-  + 'press “Measure shimmer” again once the picture is back.';
+const t = messages('normal-mips', english);
+
+/** Why a shimmer measurement ended without numbers when the graphics context was lost. */
+export const shimmerLostText = () => t('shimmer.lost');
 
 /**
  * What the model needs of the GPU scene (createNormalMipsScene), so a stand-in can take its place.
@@ -36,7 +40,7 @@ export const SHIMMER_LOST = 'Shimmer meter: the measurement stopped because the 
  */
 
 /**
- * @param {{ values: any, builder: { build: (request: any) => Promise<any>, where: string, problem: string, dispose: () => void },
+ * @param {{ values: any, builder: { build: (request: any) => Promise<any>, workers: number, problem: any, dispose: () => void },
  *   scene: NormalMipsScene | null, hooks: NormalMipsHooks }} options
  *   values: the host's live values; builder: createChainBuilder(); scene: null without WebGL2
  */
@@ -45,7 +49,7 @@ export function createNormalMipsModel({ values, builder, scene, hooks }) {
   const shimmerGate = createRunGate();
   let chains = null;
   let pyramid = null;
-  let built = { ms: 0, where: builder.where, size: 0 };
+  let built = { ms: 0, workers: builder.workers, size: 0 };
   /** @type {string[] | null | undefined} keys waiting for a chain build (null: all); undefined when none is running */
   let deferred;
   /** @type {Promise<void>} */
@@ -61,14 +65,14 @@ export function createNormalMipsModel({ values, builder, scene, hooks }) {
   // belong to the same map.
   function rebuildChains(/** @type {string[] | null | undefined} */ keys) {
     deferred = mergeKeys(deferred, keys);
-    hooks.busy(`Building the mip chains of a ${Number(values.size)}² map…`);
+    hooks.busy(t('building', { size: String(Number(values.size)) }));
     if (!chains) hooks.summary(); // the panel has its full height from its mount on
     const run = buildGate.begin();
     const request = chainRequest(values);
     buildDone = builder.build(request).then((result) => {
       if (!result || !run.live) return; // a newer build was asked for, or the panel is gone
       ({ chains, pyramid } = result);
-      built = { ms: result.ms, where: result.where, size: request.size };
+      built = { ms: result.ms, workers: result.workers, size: request.size };
       scene?.setChains(chains, result.uploads);
       const keysNow = deferred;
       deferred = undefined;
@@ -78,7 +82,7 @@ export function createNormalMipsModel({ values, builder, scene, hooks }) {
     }, (error) => {
       if (!run.live) return;
       deferred = undefined;
-      hooks.busy(`Could not build the mip chains: ${error.message}`);
+      hooks.busy(t('buildFailed', { reason: error.message }));
     });
   }
 
@@ -113,9 +117,9 @@ export function createNormalMipsModel({ values, builder, scene, hooks }) {
   return {
     get chains() { return chains; },
     get pyramid() { return pyramid; },
-    /** { ms, where, size } of the chains shown (size 0 before the first build). */
+    /** { ms, workers, size } of the chains shown (size 0 before the first build; workers 0: the page's thread). */
     get built() { return built; },
-    /** Why the chains are built on the page's thread although workers were asked for ('' when they are not). */
+    /** Why the chains are built on the page's thread although workers were asked for (the builder's; null when they are not). */
     get problem() { return builder.problem; },
     /** True while a chain build runs and changes wait for it. */
     get building() { return deferred !== undefined; },
@@ -155,7 +159,7 @@ export function createNormalMipsModel({ values, builder, scene, hooks }) {
       shimmer.busy = false;
       shimmer.result = result;
       // null from a live scene: its context was lost under the read-backs
-      if (result === null && scene) shimmer.stopped = SHIMMER_LOST;
+      if (result === null && scene) shimmer.stopped = shimmerLostText();
       hooks.shimmer();
       hooks.invalidate();
     },
@@ -165,7 +169,7 @@ export function createNormalMipsModel({ values, builder, scene, hooks }) {
       shimmerGate.cancel('The graphics context was lost');
       shimmer.busy = false;
       shimmer.result = null;
-      shimmer.stopped = SHIMMER_LOST;
+      shimmer.stopped = shimmerLostText();
       hooks.shimmer();
       hooks.invalidate();
     },

@@ -1,24 +1,28 @@
 // The DOM of the reflect-refract panel: the stage (canvas, centre mark, caption), the lecture's
 // three captions with the current one marked, the R/T bar for the centre ray, its numbers and
 // the blend formula with live values. Styles: styles.css (all under .rr-panel).
+import english from 'virtual:messages/en/reflect-refract';
+import { messages } from '../../i18n/messages.js';
 import { renderTex, texNumber } from '../../ui/tex.js';
 import { REFLECTION_BANDS } from './model.js';
 import { el } from '../../ui/el.js';
 import { definitionList } from '../../ui/definitionList.js';
-import { angle, fixed } from '../../ui/format.js';
+import { angle, fixed, tickLabel } from '../../ui/format.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
 import { lectureNote } from '../../ui/lectureNote.js';
+import { schema } from './schema.js';
 
-const NOTE_SOURCE = 'Hecht, Optics, 5th ed., §4.6; Pharr, Jakob & Humphreys, Physically Based Rendering, 3rd ed., §16.1.3';
+const t = messages('reflect-refract', english);
+
+/** A bound of R between the captions (0, 0.1, 0.4) as shown. */
+const bound = (/** @type {number} */ r) => tickLabel(r, 0.1);
 
 export function buildReflectRefractDom(host) {
   const root = el('div', 'rr-panel');
   const stage = el('div', 'rr-stage');
   const canvas = el('canvas', 'rr-canvas');
   canvas.setAttribute('role', 'img');
-  canvas.setAttribute('aria-label',
-    'A flat water surface seen from above: the reflected sky and the refracted tiled pool floor, blended by Fresnel reflectance. '
-    + 'The ring marks the centre ray.');
+  canvas.setAttribute('aria-label', t('canvasLabel'));
   const mark = el('div', 'rr-mark');
   mark.setAttribute('aria-hidden', 'true');
   const caption = el('div', 'rr-caption');
@@ -26,11 +30,13 @@ export function buildReflectRefractDom(host) {
   stage.append(canvas, mark, caption);
 
   const bands = el('ol', 'rr-bands');
-  bands.setAttribute('aria-label', 'How much reflection the centre of the view shows');
+  bands.setAttribute('aria-label', t('bandsLabel'));
   const bandItems = Object.fromEntries(REFLECTION_BANDS.map((band, i) => {
     const item = el('li', '', band.label);
     const lower = i === 0 ? 0 : REFLECTION_BANDS[i - 1].below;
-    item.title = Number.isFinite(band.below) ? `R from ${lower} to ${band.below}` : `R of ${lower} or more`;
+    item.title = Number.isFinite(band.below)
+      ? t('bandRange', { low: bound(lower), high: bound(band.below) })
+      : t('bandFrom', { low: bound(lower) });
     bands.append(item);
     return [band.id, item];
   }));
@@ -41,7 +47,7 @@ export function buildReflectRefractDom(host) {
   const barT = el('span', 'rr-bar-t');
   bar.append(barR, barT);
   const summary = definitionList('rr-summary');
-  const formula = makeScrollBox(el('div', 'rr-formula'), 'Reflected and transmitted fractions');
+  const formula = makeScrollBox(el('div', 'rr-formula'), t('formulaBox'));
   root.append(stage, bands, bar, summary.element, formula);
   const note = lectureNote(root);
   host.append(root);
@@ -63,11 +69,11 @@ export function buildReflectRefractDom(host) {
       barR.textContent = ray.R >= 0.12 ? `R ${fixed(ray.R, 3)}` : '';
       barT.textContent = ray.T >= 0.12 ? `T ${fixed(ray.T, 3)}` : '';
       summary.set([
-        ['Centre ray from the normal', `θ = ${angle(ray.thetaDeg)}`],
-        ['Reflected (sky)', `R = ${fixed(ray.R, 4)}`],
-        ['Refracted (floor)', `T = 1 − R = ${fixed(ray.T, 4)}`],
-        ['Floor radiance let out', `T/n_t² = ${fixed(ray.floorWeight, 4)}`],
-        ['Transmitted angle', `θt = ${angle(ray.thetaTDeg)}`],
+        [t('summary.theta'), `θ = ${angle(ray.thetaDeg)}`],
+        [t('summary.reflected'), `R = ${fixed(ray.R, 4)}`],
+        [t('summary.refracted'), `T = 1 − R = ${fixed(ray.T, 4)}`],
+        [t('summary.floor'), `T/n_t² = ${fixed(ray.floorWeight, 4)}`],
+        [t('summary.transmitted'), t('summary.transmittedValue', { theta: angle(ray.thetaTDeg) })],
       ]);
       renderTex(formula, '\\begin{aligned}\\text{colour} &= R\\,\\text{sky}_{\\text{reflect}} '
         + '+ \\tfrac{T}{n_t^2}\\,\\text{floor}_{\\text{refract}}'
@@ -76,21 +82,9 @@ export function buildReflectRefractDom(host) {
     },
     /** The note on the lecture's "No reflection" caption, for a surface of index n with head-on reflectance r0. */
     setNote(n, r0) {
-      const caption = n === 1
-        ? 'The lecture captions the steepest view "No reflection". With n_t = 1 there is no interface, and nothing is '
-          + 'reflected at any angle, so none of the lecture\'s captions applies; any other surface reflects something head-on, '
-          + 'so below R = 0.1 the panel says "little reflection".'
-        : r0 >= 0.1
-          ? `The lecture captions the steepest view "No reflection", but no view reflects nothing: this surface (n_t = ${n}) `
-            + `reflects R = ${fixed(r0, 3)} even head-on, so no view of it is captioned "little reflection"; the steepest reads `
-            + `"some reflection". The floor also looks dimmer from the air than from inside the medium: its light spreads into a `
-            + `wider cone as it leaves, which divides its radiance by n_t² (${fixed(1 / (n * n), 2)} here) on top of T.`
-          : `The lecture captions the steepest view "No reflection", but no view reflects nothing: head-on this surface `
-          + `(n_t = ${n}) still reflects R = ${fixed(r0, 3)} of the light, so below R = 0.1 the panel says "little reflection" `
-          + '(the captions sort the views by R alone, not by which layer looks brighter). '
-          + `The floor also looks dimmer from the air than from inside the medium: its light spreads into a wider cone as it `
-          + `leaves, which divides its radiance by n_t² (${fixed(1 / (n * n), 2)} here) on top of T.`;
-      note.set(caption, NOTE_SOURCE);
+      const little = REFLECTION_BANDS[0].below;
+      const args = { n: tickLabel(n, schema.nT.step), r0: fixed(r0, 3), little: bound(little), spread: fixed(1 / (n * n), 2) };
+      note.set(t(n === 1 ? 'noteNoInterface' : r0 >= little ? 'noteStrong' : 'note', args), t('noteSource'));
     },
   };
 }

@@ -2,12 +2,14 @@
 // Panel `reflect-refract`: a flat water or glass surface from a steep to a grazing view. Each
 // pixel blends the reflected sky and the refracted pool floor by the exact Fresnel F at that
 // pixel's angle (reflect-refract.frag.glsl); the numbers are for the centre ray.
+import english from 'virtual:messages/en/reflect-refract';
+import { messages } from '../../i18n/messages.js';
 import { createShaderView } from '../../gl/createShaderView.js';
 import { DEG } from '../../optics/angles.js';
 import { normalIncidence } from '../../optics/fresnel.js';
 import { dielectrics } from '../../optics/materials.js';
 import { indexPresets } from '../shared/indexPresets.js';
-import { angle, fixed } from '../../ui/format.js';
+import { angle, fixed, tickLabel } from '../../ui/format.js';
 import { startWebGL } from '../shared/startWebGL.js';
 import { centreRay, splitByElevation } from './model.js';
 import { buildReflectRefractDom } from './buildReflectRefractDom.js';
@@ -17,6 +19,11 @@ import { schema } from './schema.js';
 
 export { schema };
 
+const t = messages('reflect-refract', english);
+
+/** A control's value as a sentence writes it: the decimals of its step, in the page's language. */
+const shown = (/** @type {string} */ key, /** @type {number} */ value) => tickLabel(value, /** @type {any} */ (schema)[key].step);
+
 const LAYERS = { both: 0, reflected: 1, refracted: 2 };
 // The scene: camera 6 tiles from the surface point under the centre of the view, 32° vertical
 // field of view; cream and terracotta tiles (linear RGB), warm so that they never look like sky.
@@ -25,9 +32,9 @@ const FOV_DEG = 32;
 export const TILE_COLOURS = Object.freeze({ a: [0.8, 0.62, 0.36], b: [0.45, 0.12, 0.05] });
 
 // The lecture's round values first, then measured dielectrics at 589 nm (materials.json).
-const PRESETS = [
-  { id: 'water-lecture', name: 'Water', n: 1.333 },
-  { id: 'glass-lecture', name: 'Glass', n: 1.5 },
+const presetList = () => [
+  { id: 'water-lecture', name: t('preset.water'), n: 1.333 },
+  { id: 'glass-lecture', name: t('preset.glass'), n: 1.5 },
   ...dielectrics.filter((m) => m.id !== 'air'),
 ];
 
@@ -56,16 +63,16 @@ export function mount(root, ctx) {
       uLayer: { value: 0 },
       uSunDir: { value: [0, 1, 0] }, // declared by <environment>; the sun itself is not drawn
     },
-  }), 'The picture needs WebGL2; the numbers below still work.');
+  }), t('noWebgl'));
 
-  const presets = indexPresets(PRESETS);
+  const presets = indexPresets(presetList());
   const presetState = { material: presets.idFor(values.nT) };
-  ctx.bind(ctx.gui.addFolder('View'), ['elevation']);
-  const surface = ctx.gui.addFolder('Surface');
-  const preset = ctx.tie(surface.add(presetState, 'material', presets.options).name('Material')
+  ctx.bind(ctx.gui.addFolder(t('folder.view')), ['elevation']);
+  const surface = ctx.gui.addFolder(t('folder.surface'));
+  const preset = ctx.tie(surface.add(presetState, 'material', presets.options).name(t('material'))
     .onChange((pid) => pid !== 'custom' && ctx.set({ nT: presets.index(pid) })), ['nT']);
   ctx.bind(surface, ['nT', 'depth']);
-  ctx.bind(ctx.gui.addFolder('Picture'), ['layer']);
+  ctx.bind(ctx.gui.addFolder(t('folder.picture')), ['layer']);
 
   let ray = null;
   function update() {
@@ -89,10 +96,16 @@ export function mount(root, ctx) {
     get ray() { return ray; },
     update,
     describe() {
-      return `Looking down at ${angle(values.elevation, 1)} above a surface of n_t = ${values.nT}: the centre ray is `
-        + `${angle(ray.thetaDeg, 1)} from the normal, so its pixel mixes R = ${fixed(ray.R, 4)} of the sky's radiance, reflected, `
-        + `and T/n_t² = ${fixed(ray.floorWeight, 4)} of the floor's (T = ${fixed(ray.T, 4)}, refracted to `
-        + `${angle(ray.thetaTDeg)}): ${ray.band.label}.`;
+      return t('describe', {
+        elevation: angle(values.elevation, 1),
+        nT: shown('nT', values.nT),
+        theta: angle(ray.thetaDeg, 1),
+        R: fixed(ray.R, 4),
+        floor: fixed(ray.floorWeight, 4),
+        T: fixed(ray.T, 4),
+        thetaT: angle(ray.thetaTDeg),
+        band: ray.band.label,
+      });
     },
     csv() {
       const { elevation, R, T } = splitByElevation(values.nT);

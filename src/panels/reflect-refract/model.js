@@ -2,9 +2,15 @@
 // of light between the reflected sky and the refracted floor for the ray through the centre of
 // the view, and the lecture's three captions for how much reflection there is.
 // Light comes from air (n_i = 1) onto water or glass (n_t = n).
+import english from 'virtual:messages/en/reflect-refract';
+import { messages } from '../../i18n/messages.js';
 import { fresnelExact, snellCosT } from '../../optics/fresnel.js';
 import { DEG } from '../../optics/angles.js';
 
+const t = messages('reflect-refract', english);
+
+/** A caption's band: its id, its label in the page's language (read when it is shown) and its upper bound of R. */
+const band = (id, below) => Object.freeze({ id, get label() { return t(`band.${id}`); }, below });
 
 /**
  * The lecture's captions ("Reflection vs. Refraction" slide), assigned by the reflected fraction R
@@ -12,14 +18,10 @@ import { DEG } from '../../optics/angles.js';
  * under 10% the floor dominates the picture, from 40% the sky does. The slide's lowest caption is
  * "No reflection"; no view reflects nothing (water head-on reflects 0.02), so it reads "little".
  */
-export const REFLECTION_BANDS = Object.freeze([
-  Object.freeze({ id: 'none', label: 'little reflection', below: 0.1 }),
-  Object.freeze({ id: 'some', label: 'some reflection', below: 0.4 }),
-  Object.freeze({ id: 'lots', label: 'lots of reflection', below: Infinity }),
-]);
+export const REFLECTION_BANDS = Object.freeze([band('none', 0.1), band('some', 0.4), band('lots', Infinity)]);
 
 /** Where nothing is reflected at all (n_t = 1: no interface), the caption says so. */
-export const NO_REFLECTION = Object.freeze({ id: 'nothing', label: 'no reflection', below: 0 });
+export const NO_REFLECTION = band('nothing', 0);
 
 export function reflectionBand(R) {
   if (R === 0) return NO_REFLECTION;

@@ -1,6 +1,8 @@
 // The DOM of the refraction-waves panel: the stage (canvas, a label per medium with its
 // wavelength and speed, the total-internal-reflection banner), a play/pause button, the numbers
 // and Snell's law with live values. Styles: styles.css (all under .rw-panel).
+import english from 'virtual:messages/en/refraction-waves';
+import { messages } from '../../i18n/messages.js';
 import { DEG, toDegrees } from '../../optics/angles.js';
 import { angle, fixed, grouped } from '../../ui/format.js';
 import { setSubscripted } from '../../ui/subscripts.js';
@@ -9,27 +11,27 @@ import { el } from '../../ui/el.js';
 import { definitionList } from '../../ui/definitionList.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
 
+const t = messages('refraction-waves', english);
+
 // A field amplitude: real numbers as they are, complex ones (total internal reflection) as
 // magnitude ∠ phase.
 const amplitude = (z) => (Math.abs(z.im) < 1e-12
   ? fixed(z.re, 4)
   : `${fixed(Math.hypot(z.re, z.im), 4)} ∠ ${angle(toDegrees(Math.atan2(z.im, z.re)), 1)}`);
-const kmS = (v) => `${grouped(v)} km/s`;
+const kmS = (v) => t('speedKmS', { speed: grouped(v) });
 
 export function buildRefractionWavesDom(host, { onPlayToggle }) {
   const root = el('div', 'rw-panel');
   const stage = el('div', 'rw-stage');
   const canvas = el('canvas', 'rw-canvas');
   canvas.setAttribute('role', 'img');
-  canvas.setAttribute('aria-label',
-    'Wavefronts of light crossing a horizontal interface: the incident medium above, the transmitted medium below, '
-    + 'with the incident, transmitted and reflected rays.');
+  canvas.setAttribute('aria-label', t('canvasLabel'));
   const top = el('div', 'rw-medium rw-medium-1');
   const bottom = el('div', 'rw-medium rw-medium-2');
   const tir = el('div', 'rw-tir');
   tir.setAttribute('role', 'status');
   tir.hidden = true;
-  const tirTitle = el('strong', '', 'Total internal reflection');
+  const tirTitle = el('strong', '', t('tirTitle'));
   const tirDetail = el('span');
   tir.append(tirTitle, tirDetail);
   stage.append(canvas, top, bottom, tir);
@@ -40,21 +42,20 @@ export function buildRefractionWavesDom(host, { onPlayToggle }) {
   play.addEventListener('click', onPlayToggle);
   controls.append(play);
   const summary = definitionList('rw-summary', { write: setSubscripted });
-  const snell = makeScrollBox(el('div', 'rw-snell'), 'Snell’s law at these indices');
+  const snell = makeScrollBox(el('div', 'rw-snell'), t('snellBox'));
   const note = el('p', 'rw-note');
   root.append(stage, controls, summary.element, snell, note);
   host.append(root);
 
-  const mediumText = (side, m) => `n_${side} = ${fixed(m.n, 3)}   λ_${side} = λ_0/n_${side} = ${fixed(m.wavelength, 1)} nm   `
-    + `v_${side} = c/n_${side} = ${fixed(m.speed, 3)} c`;
+  const mediumText = (side, m) => t('medium', { side, n: fixed(m.n, 3), wavelength: fixed(m.wavelength, 1), speed: fixed(m.speed, 3) });
 
   return {
     stage,
     canvas,
     setPlaying(playing) {
-      play.textContent = playing ? '❚❚ Pause' : '▶ Play';
+      play.textContent = t(playing ? 'pause' : 'play');
       play.setAttribute('aria-pressed', String(playing));
-      play.setAttribute('aria-label', playing ? 'Pause the waves' : 'Play the waves');
+      play.setAttribute('aria-label', t(playing ? 'pauseLabel' : 'playLabel'));
     },
     /**
      * s: { thetaI, thetaT (null: TIR), critical (null: none) in degrees, R, T (unpolarized), mI, mT
@@ -64,21 +65,17 @@ export function buildRefractionWavesDom(host, { onPlayToggle }) {
       setSubscripted(top, mediumText('i', s.mI));
       setSubscripted(bottom, mediumText('t', s.mT));
       tir.hidden = s.thetaT !== null;
-      tirDetail.textContent = s.thetaT === null
-        ? `No propagating transmitted wave; the evanescent field's amplitude below falls to 1/e within ${fixed(s.depthNm, 0)} nm.`
-        : '';
+      tirDetail.textContent = s.thetaT === null ? t('tirDetail', { depth: fixed(s.depthNm, 0) }) : '';
       stage.classList.toggle('rw-is-tir', s.thetaT === null);
       summary.set([
-        ['Incidence θ_i', angle(s.thetaI)],
-        ['Transmitted θ_t', s.thetaT === null ? 'none (total internal reflection)' : angle(s.thetaT)],
-        ['Critical angle', s.critical === null ? 'none (n_i ≤ n_t)' : angle(s.critical)],
-        ['Phase speeds c/n', `v_i = ${kmS(s.mI.speedKmS)}, v_t = ${kmS(s.mT.speedKmS)}`],
-        ['Reflected R', fixed(s.R, 4)],
-        ['Transmitted T', fixed(s.T, 4)],
+        [t('summary.incidence'), angle(s.thetaI)],
+        [t('summary.transmitted'), s.thetaT === null ? t('summary.transmittedNone') : angle(s.thetaT)],
+        [t('summary.critical'), s.critical === null ? t('summary.criticalNone') : angle(s.critical)],
+        [t('summary.speeds'), t('summary.speedsValue', { vI: kmS(s.mI.speedKmS), vT: kmS(s.mT.speedKmS) })],
+        [t('summary.reflected'), fixed(s.R, 4)],
+        [t('summary.transmittedT'), fixed(s.T, 4)],
       ]);
-      note.textContent = 'The picture shows s-polarized light (electric field out of the screen), incident amplitude 1: '
-        + `reflected r_s = ${amplitude(s.r)}, transmitted t_s = 1 + r_s = ${amplitude(s.t)}`
-        + `${s.thetaT === null ? ' (evanescent)' : ''}. R and T above are for unpolarized light.`;
+      note.textContent = t('note', { r: amplitude(s.r), t: amplitude(s.t), evanescent: s.thetaT === null ? 'yes' : 'no' });
       const lhs = `n_i \\sin\\theta_i = ${texNumber(s.nI, 3)} \\sin ${texNumber(s.thetaI, 2)}^\\circ`
         + ` = ${texNumber(s.nI * Math.sin(s.thetaI * DEG), 4)}`;
       renderTex(snell, s.thetaT === null

@@ -3,18 +3,25 @@
 // shortening to λ/n, bent by Snell's law; past the critical angle only an evanescent field is
 // left below. The wave numbers and amplitudes come from src/optics/waves.js; the fragment shader
 // (refraction-waves.frag.glsl) only evaluates them. It animates only while playing.
+import english from 'virtual:messages/en/refraction-waves';
+import { messages } from '../../i18n/messages.js';
 import { createShaderView } from '../../gl/createShaderView.js';
 import { DEG } from '../../optics/angles.js';
 import { criticalAngle, fresnelExact } from '../../optics/fresnel.js';
 import { evanescentDepth, mediumWave, waveField } from '../../optics/waves.js';
 import { startWebGL } from '../shared/startWebGL.js';
-import { angle, fixed } from '../../ui/format.js';
+import { angle, fixed, tickLabel } from '../../ui/format.js';
 import { buildRefractionWavesDom } from './buildRefractionWavesDom.js';
 import fragment from './refraction-waves.frag.glsl?raw';
 import './styles.css';
 import { schema } from './schema.js';
 
 export { schema };
+
+const t = messages('refraction-waves', english);
+
+/** A control's value as a sentence writes it: the decimals of its step, in the page's language. */
+const shown = (/** @type {string} */ key, /** @type {number} */ value) => tickLabel(value, /** @type {any} */ (schema)[key].step);
 
 const LAMBDA0_NM = 550; // the vacuum wavelength quoted in the labels (green light)
 const HALF_HEIGHT = 3;  // the view is 6 vacuum wavelengths tall
@@ -48,10 +55,10 @@ export function mount(root, ctx) {
       uDirT: { value: [0, -1] },
       uRayLength: { value: RAY_LENGTH },
     },
-  }), 'The waves need WebGL2; the numbers below still work.');
+  }), t('noWebgl'));
 
-  ctx.bind(ctx.gui.addFolder('Interface'), ['angle', 'nI', 'nT', 'reflected']);
-  ctx.bind(ctx.gui.addFolder('Animation'), ['play', 'speed']);
+  ctx.bind(ctx.gui.addFolder(t('folder.interface')), ['angle', 'nI', 'nT', 'reflected']);
+  ctx.bind(ctx.gui.addFolder(t('folder.animation')), ['play', 'speed']);
 
   // Animation: a requestAnimationFrame loop that runs only while playing and on screen.
   let raf = 0;
@@ -126,15 +133,19 @@ export function mount(root, ctx) {
     update,
     describe() {
       const { mI, mT } = state;
-      const media = `Above, n_i = ${state.nI}: wavelength ${fixed(mI.wavelength, 1)} nm and phase speed ${fixed(mI.speed, 3)} c; `
-        + `below, n_t = ${state.nT}: ${fixed(mT.wavelength, 1)} nm and ${fixed(mT.speed, 3)} c. `;
-      const critical = state.critical === null ? 'there is no critical angle' : `the critical angle is ${angle(state.critical)}`;
-      return media + (state.thetaT === null
-        ? `At ${angle(state.thetaI)} incidence, past the critical angle of ${angle(state.critical)}: `
-          + 'total internal reflection, no propagating transmitted wave: only an evanescent field below the interface, '
-          + `its amplitude fading to 1/e within ${fixed(state.depthNm, 0)} nm, that carries no light away.`
-        : `At ${angle(state.thetaI)} incidence the transmitted wave travels at ${angle(state.thetaT)} (${critical}); `
-          + `R = ${fixed(state.R, 4)}, T = ${fixed(state.T, 4)}.`);
+      const media = t('describeMedia', {
+        nI: shown('nI', state.nI), wavelengthI: fixed(mI.wavelength, 1), speedI: fixed(mI.speed, 3),
+        nT: shown('nT', state.nT), wavelengthT: fixed(mT.wavelength, 1), speedT: fixed(mT.speed, 3),
+      });
+      return `${media} ${state.thetaT === null
+        ? t('describeTir', { theta: angle(state.thetaI), critical: angle(state.critical), depth: fixed(state.depthNm, 0) })
+        : t('describeRefracted', {
+          theta: angle(state.thetaI),
+          thetaT: angle(state.thetaT),
+          critical: state.critical === null ? 'none' : angle(state.critical),
+          R: fixed(state.R, 4),
+          T: fixed(state.T, 4),
+        })}`;
     },
     png: view ? () => view.toDataURL() : null,
     dispose() {
