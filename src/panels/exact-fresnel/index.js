@@ -18,8 +18,12 @@ import { addDielectricTrace } from '../shared/dielectricTrace.js';
 import './styles.css';
 import { schema } from './schema.js';
 import { makeScrollBox, scrollBox } from '../../ui/scrollBox.js';
+import sharedWords from 'virtual:messages/en/panelsShared';
+import { messages } from '../../i18n/messages.js';
 
 export { schema };
+
+const shared = messages('panelsShared', sharedWords);
 
 // The slide's formula (lecture "Reflection Math"; Cook & Torrance 1982).
 const FORMULA = String.raw`R(\theta) = \frac{1}{2}\left(\frac{g-c}{g+c}\right)^{2}`
@@ -126,7 +130,7 @@ export function mount(root, ctx) {
 
   const gui = ctx.gui;
   ctx.bind(gui, ['theta', 'nI', 'nT']);
-  addSwap(ctx, gui);
+  addSwap(ctx, gui, shared('swap'));
   ctx.tie(gui.add({ tir: () => ctx.set({ nI: 1.5, nT: 1, theta: 50 }) }, 'tir').name('Glass → air at 50° (TIR)'), ['nI', 'nT', 'theta']);
   ctx.tie(gui.add({ cancel: () => ctx.set({ nT: values.nI, theta: 90 }) }, 'cancel')
     .name('n_t = n_i at 90° (cancellation)'), ['nT', 'theta']);

@@ -14,8 +14,12 @@ import { addSwap } from '../shared/indexPair.js';
 import './styles.css';
 import { schema } from './schema.js';
 import { addDielectricTrace } from '../shared/dielectricTrace.js';
+import sharedWords from 'virtual:messages/en/panelsShared';
+import { messages } from '../../i18n/messages.js';
 
 export { schema };
+
+const shared = messages('panelsShared', sharedWords);
 
 const SERIES = [
   { label: 'Rs (s-polarized)', stroke: '--c-s', width: 3 },
@@ -74,7 +78,7 @@ export function mount(root, ctx) {
   ctx.bind(folder, ['nI', 'nT', 'theta']);
   ctx.tie(folder.add({ go: () => ctx.set({ theta: Math.round((brewsterAngle(values.nI, values.nT) / DEG) * 100) / 100 }) }, 'go')
     .name('Read at the Brewster angle'), ['theta']);
-  addSwap(ctx, folder);
+  addSwap(ctx, folder, shared('swap'));
 
   let curves = null;
   let curvesKey = '';
