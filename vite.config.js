@@ -151,6 +151,12 @@ export default defineConfig({
             name: 'core',
             tags: ['$initial'],
             test: (id) => /src[\\/](host|ui|i18n)[\\/]|src[\\/]panels[\\/]([\w-]+[\\/]schema|shared[\\/]indexPair|manifest|panelText|panelSchema|loadPanel)\.js|virtual:messages[\\/]en[\\/](panels|controls|page|host|ui)$|node_modules[\\/]lil-gui[\\/]/.test(id),
+          }, {
+            // The shared parts the hero and most panels use, with their words (panelsShared, the
+            // materials' names): one chunk, not five small ones each compressed alone.
+            name: 'panelShared',
+            test: (id) => /src[\\/]panels[\\/]shared[\\/](indexPresets|startWebGL|dielectricTrace|materialName|indexText)\.js/.test(id)
+              || /virtual:messages[\\/]en[\\/](panelsShared|materials)$/.test(id),
           }],
         },
       },

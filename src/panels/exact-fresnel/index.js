@@ -18,24 +18,31 @@ import { addDielectricTrace } from '../shared/dielectricTrace.js';
 import './styles.css';
 import { schema } from './schema.js';
 import { makeScrollBox, scrollBox } from '../../ui/scrollBox.js';
+import { indexText } from '../shared/indexText.js';
+import english from 'virtual:messages/en/exact-fresnel';
+import sharedWords from 'virtual:messages/en/panelsShared';
+import { messages } from '../../i18n/messages.js';
 
 export { schema };
+
+const t = messages('exact-fresnel', english);
+const shared = messages('panelsShared', sharedWords);
 
 // The slide's formula (lecture "Reflection Math"; Cook & Torrance 1982).
 const FORMULA = String.raw`R(\theta) = \frac{1}{2}\left(\frac{g-c}{g+c}\right)^{2}`
   + String.raw`\left(1+\left(\frac{c(g+c)-m^{2}}{c(g-c)+m^{2}}\right)^{2}\right)`;
 const DEFINITIONS = String.raw`c = m\cos\theta,\qquad g = \sqrt{1 + c^{2} - m^{2}},\qquad m = \frac{n_i}{n_t}`;
 
-// One row per quantity: TeX, what it is, and how to show its value.
+// One row per quantity: TeX, what it is (the catalogue's key, or none), and the word for a value that is not real.
 const ROWS = [
-  { key: 'm', tex: String.raw`m = n_i / n_t`, note: 'ratio of the indices' },
+  { key: 'm', tex: String.raw`m = n_i / n_t`, note: 'noteM' },
   { key: 'cos', tex: String.raw`\cos\theta`, note: '' },
   { key: 'c', tex: String.raw`c = m\cos\theta`, note: '' },
-  { key: 'g2', tex: String.raw`g^{2} = (1-m)(1+m) + c^{2}`, note: '= cos²θt (the safe order)' },
-  { key: 'g', tex: String.raw`g = \sqrt{g^{2}}`, note: '= cos θt', nan: 'imaginary' },
-  { key: 'factor1', tex: String.raw`\left(\frac{g-c}{g+c}\right)^{2}`, note: 'first factor' },
-  { key: 'factor2', tex: String.raw`1+\left(\frac{c(g+c)-m^{2}}{c(g-c)+m^{2}}\right)^{2}`, note: 'second factor' },
-  { key: 'R', tex: String.raw`R = \tfrac{1}{2}\cdot\text{first}\cdot\text{second}`, note: 'reflectance' },
+  { key: 'g2', tex: String.raw`g^{2} = (1-m)(1+m) + c^{2}`, note: 'noteG2' },
+  { key: 'g', tex: String.raw`g = \sqrt{g^{2}}`, note: 'noteG', nan: 'imaginary' },
+  { key: 'factor1', tex: String.raw`\left(\frac{g-c}{g+c}\right)^{2}`, note: 'noteFactor1' },
+  { key: 'factor2', tex: String.raw`1+\left(\frac{c(g+c)-m^{2}}{c(g-c)+m^{2}}\right)^{2}`, note: 'noteFactor2' },
+  { key: 'R', tex: String.raw`R = \tfrac{1}{2}\cdot\text{first}\cdot\text{second}`, note: 'noteR' },
 ];
 
 /** Six decimals: the terms are shown to the float64 digits a reader can compare by eye. */
@@ -55,11 +62,11 @@ function valueCell(key) {
 export function mount(root, ctx) {
   const { values } = ctx;
   const panel = el('div', 'xf-panel');
-  const formula = makeScrollBox(el('div', 'xf-formula'), 'The exact Fresnel reflectance and its terms');
+  const formula = makeScrollBox(el('div', 'xf-formula'), t('formula'));
   formula.append(texElement(FORMULA), texElement(DEFINITIONS));
 
   const table = el('table', 'xf-terms');
-  table.append(el('caption', 'xf-caption', 'Each quantity at the current θ, n_i and n_t'));
+  table.append(el('caption', 'xf-caption', t('caption')));
   const cells = {};
   const notes = {};
   for (const row of ROWS) {
@@ -68,29 +75,26 @@ export function mount(root, ctx) {
     th.scope = 'row';
     th.append(texElement(row.tex, { display: false, tag: 'span' }));
     cells[row.key] = valueCell(row.key);
-    notes[row.key] = el('td', 'xf-note', row.note);
+    notes[row.key] = el('td', 'xf-note', row.note && t(row.note));
     tr.append(th, notes[row.key], cells[row.key]);
     table.append(tr);
   }
 
   const checks = definitionList('xf-checks', { valueClass: 'xf-value' });
   const check = (label, key) => checks.add(label, { check: key });
-  const exactOut = check('fresnelExact(cos θ, n_i, n_t)', 'exact');
-  const polarOut = check('(Rs + Rp)/2 from fresnelPolarized', 'polarized');
-  const diffOut = check('|R above − fresnelExact|', 'difference');
+  const exactOut = check(t('checkExact'), 'exact');
+  const polarOut = check(t('checkPolarized'), 'polarized');
+  const diffOut = check(t('checkDifference'), 'difference');
   const status = el('p', 'xf-status');
 
   const why = el('section', 'xf-why');
   why.append(
-    el('h3', '', 'Why the code never computes g² as 1 + c² − m²'),
-    el('p', '', 'For matched media (m = 1) near grazing, c² is smaller than half the float64 step of 1 '
-      + '(1.1×10⁻¹⁶, so c below about 10⁻⁸): 1 + c² rounds to 1, the slide’s order gives g² = 0 and R = 1 '
-      + 'instead of 0, while (1 − m)(1 + m) is exactly 0 and keeps c². The shaders use that safe order; the '
-      + 'float64 reference adds the same terms as exact products. Try n_i = n_t at θ = 90°.'),
+    el('h3', '', t('whyHead')),
+    el('p', '', t('why')),
   );
   const orders = el('table', 'xf-orders');
   const head = el('tr');
-  head.append(el('th', '', 'Evaluated literally'), el('th', 'xf-num', 'g²'), el('th', 'xf-num', 'R'));
+  head.append(el('th', '', t('ordersHead')), el('th', 'xf-num', 'g²'), el('th', 'xf-num', 'R'));
   const orderRow = (label, key) => {
     const tr = el('tr');
     tr.dataset.order = key;
@@ -101,16 +105,16 @@ export function mount(root, ctx) {
     return { g2, r };
   };
   orders.append(head);
-  const slideOrder = orderRow('Slide: 1 + c² − m²', 'lecture');
-  const codeOrder = orderRow('Safe: (1 − m)(1 + m) + c²', 'safe');
+  const slideOrder = orderRow(t('orderSlide'), 'lecture');
+  const codeOrder = orderRow(t('orderSafe'), 'safe');
   const cOut = el('p', 'xf-c');
-  why.append(cOut, scrollBox(orders, 'g² and R in two orders of evaluation'));
+  why.append(cOut, scrollBox(orders, t('orders')));
 
   const plotHost = el('div', 'xf-plot');
   plotHost.setAttribute('role', 'img');
-  plotHost.setAttribute('aria-label', 'Exact reflectance R against the angle θ, with the current θ marked');
+  plotHost.setAttribute('aria-label', t('plot'));
   const left = el('div', 'xf-left');
-  left.append(scrollBox(table, 'Each quantity at the current θ, n_i and n_t'), checks.element, status);
+  left.append(scrollBox(table, t('caption')), checks.element, status);
   const right = el('div', 'xf-right');
   right.append(why, plotHost);
   const body = el('div', 'xf-body');
@@ -119,17 +123,17 @@ export function mount(root, ctx) {
   root.append(panel);
 
   const plot = createLinePlot(plotHost, {
-    xLabel: 'θ (degrees)', yLabel: 'R', height: 240,
-    series: [{ label: 'Exact R', stroke: '--c-exact', width: 3.5 }],
+    xLabel: t('xLabel'), yLabel: t('yLabel'), height: 240,
+    series: [{ label: t('series'), stroke: '--c-exact', width: 3.5 }],
   });
   const trace = addDielectricTrace(plotHost, plot, () => values);
 
   const gui = ctx.gui;
   ctx.bind(gui, ['theta', 'nI', 'nT']);
-  addSwap(ctx, gui);
-  ctx.tie(gui.add({ tir: () => ctx.set({ nI: 1.5, nT: 1, theta: 50 }) }, 'tir').name('Glass → air at 50° (TIR)'), ['nI', 'nT', 'theta']);
+  addSwap(ctx, gui, shared('swap'));
+  ctx.tie(gui.add({ tir: () => ctx.set({ nI: 1.5, nT: 1, theta: 50 }) }, 'tir').name(t('tir')), ['nI', 'nT', 'theta']);
   ctx.tie(gui.add({ cancel: () => ctx.set({ nT: values.nI, theta: 90 }) }, 'cancel')
-    .name('n_t = n_i at 90° (cancellation)'), ['nT', 'theta']);
+    .name(t('cancel')), ['nT', 'theta']);
 
   let curvesKey = '';
   let curves = null;
@@ -146,29 +150,26 @@ export function mount(root, ctx) {
 
     for (const row of ROWS) {
       const v = terms[row.key];
-      cells[row.key].textContent = Number.isNaN(v) ? (row.nan ?? '—') : fixed(v);
+      cells[row.key].textContent = Number.isNaN(v) ? (row.nan ? t(row.nan) : '—') : fixed(v);
     }
     cells.g2.classList.toggle('xf-negative', terms.g2 < 0);
-    notes.R.textContent = terms.tir ? 'total internal reflection: the code returns 1' : 'reflectance';
+    notes.R.textContent = terms.tir ? t('noteTir') : t('noteR');
     exactOut.textContent = fixed(exact);
-    polarOut.textContent = `${fixed(0.5 * (s + p))}  (Rs ${fixed(s, 4)}, Rp ${fixed(p, 4)})`;
+    polarOut.textContent = t('polarizedValue', { mean: fixed(0.5 * (s + p)), s: fixed(s, 4), p: fixed(p, 4) });
     diffOut.textContent = sci(Math.abs(terms.R - exact), 1);
 
     panel.classList.toggle('xf-tir', terms.tir);
     if (terms.tir) {
-      status.textContent = terms.g2 < 0
-        ? `g² = ${fixed(terms.g2)} < 0: g would be imaginary: total internal reflection. `
-          + 'The code takes no square root; fresnelExact returns R = 1.'
-        : 'g² = 0: exactly at the critical angle, θt = 90°; fresnelExact returns R = 1.';
+      status.textContent = terms.g2 < 0 ? t('statusNegative', { g2: fixed(terms.g2) }) : t('statusCritical');
     } else if (terms.matched) {
-      status.textContent = 'n_i = n_t: there is no interface, so nothing reflects; fresnelExact returns R = 0 at every angle.';
+      status.textContent = t('statusMatched');
     } else {
-      status.textContent = `g² = ${fixed(terms.g2)} ≥ 0: g = cos θt is real, and the formula gives R = ${fixed(terms.R)}.`;
+      status.textContent = t('statusReal', { g2: fixed(terms.g2), R: fixed(terms.R) });
     }
 
     const slide = fresnelLiteral(cos, nI, nT, 'lecture');
     const code = fresnelLiteral(cos, nI, nT, 'safe');
-    cOut.textContent = `Now: m = ${fixed(terms.m)}, c = ${sci(terms.c)}`;
+    cOut.textContent = t('now', { m: fixed(terms.m), c: sci(terms.c) });
     slideOrder.g2.textContent = sci(slide.g2);
     slideOrder.r.textContent = fixed(slide.R);
     codeOrder.g2.textContent = sci(code.g2);
@@ -185,7 +186,7 @@ export function mount(root, ctx) {
     const critical = criticalAngle(nI, nT);
     plot.setMarks([
       criticalMark(critical === null ? null : critical / DEG),
-      thetaMark(theta, `θ ${angle(theta)}: R ${fixed(exact, 4)}`),
+      thetaMark(theta, t('thetaMark', { theta: angle(theta), R: fixed(exact, 4) })),
     ]);
   }
   update();
@@ -196,11 +197,13 @@ export function mount(root, ctx) {
     get terms() { return terms; },
     describe() {
       const { theta, nI, nT } = values;
-      const at = `At θ = ${angle(theta)} from n_i = ${nI} into n_t = ${nT}: m = ${fixed(terms.m, 4)}, c = ${fixed(terms.c, 4)}, `
-        + `g² = ${fixed(terms.g2, 4)}`;
-      if (terms.tir) return `${at}, negative, so g would be imaginary: total internal reflection, and R = 1.`;
-      return `${at}, g = ${fixed(terms.g, 4)}; first factor ${fixed(terms.factor1, 4)}, second factor `
-        + `${fixed(terms.factor2, 4)}, so R = ${fixed(terms.R, 4)}, the same as fresnelExact.`;
+      const at = {
+        theta: angle(theta), nI: indexText(nI), nT: indexText(nT), m: fixed(terms.m, 4), c: fixed(terms.c, 4), g2: fixed(terms.g2, 4),
+      };
+      if (terms.tir) return t('describeTir', at);
+      return t('describe', {
+        ...at, g: fixed(terms.g, 4), factor1: fixed(terms.factor1, 4), factor2: fixed(terms.factor2, 4), R: fixed(terms.R, 4),
+      });
     },
     csv() {
       const { s, p } = curves;

@@ -6,6 +6,12 @@ import { el } from '../../ui/el.js';
 import { scrollBox } from '../../ui/scrollBox.js';
 import { lectureNote } from '../../ui/lectureNote.js';
 import { angle, fixed, precise } from '../../ui/format.js';
+import { indexText } from '../shared/indexText.js';
+import { materialName } from '../shared/materialName.js';
+import english from 'virtual:messages/en/metals';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('metals', english);
 
 /** CSS colour of a linear RGB reflectance. */
 export function swatchColor(rgb) {
@@ -13,11 +19,10 @@ export function swatchColor(rgb) {
 }
 
 const CHANNEL_VARS = { red: '--c-red', green: '--c-green', blue: '--c-blue' };
-const CHANNEL_NAMES = ['Red', 'Green', 'Blue'];
 
 /** How far below F0 a dip goes: four decimals, or two significant digits where those would read 0.0000. */
 export function belowF0(dip) {
-  return `${fixed(dip, 4) === fixed(0, 4) ? precise(dip, 2) : fixed(dip, 4)} below F0`;
+  return t('belowF0', { value: fixed(dip, 4) === fixed(0, 4) ? precise(dip, 2) : fixed(dip, 4) });
 }
 
 /**
@@ -27,8 +32,7 @@ export function belowF0(dip) {
 export function buildMetalsDom(host, metals, onPick) {
   const swatchRow = el('div', 'mt-swatches');
   swatchRow.setAttribute('role', 'group');
-  swatchRow.setAttribute('aria-label',
-    'F0 per material (linear reflectance sampled at 650, 550 and 450 nm: red, green, blue); pick a metal');
+  swatchRow.setAttribute('aria-label', t('swatches'));
   // Three numbers that wrap as a group when a swatch is narrow (text stays "0.956 0.792 0.408").
   const fillNumbers = (node, rgb) => {
     const parts = rgb.map((v) => el('span', '', fixed(v, 3)));
@@ -40,7 +44,7 @@ export function buildMetalsDom(host, metals, onPick) {
   const dielectricChip = el('span', 'mt-chip');
   const dielectricIndex = el('span', 'mt-index');
   const dielectricF0 = el('span', 'mt-f0');
-  dielectric.append(dielectricChip, el('span', 'mt-name', 'Dielectric'), dielectricIndex, dielectricF0);
+  dielectric.append(dielectricChip, el('span', 'mt-name', t('dielectric')), dielectricIndex, dielectricF0);
   swatchRow.append(dielectric);
 
   const buttons = metals.map((metal) => {
@@ -61,10 +65,9 @@ export function buildMetalsDom(host, metals, onPick) {
 
   const table = el('table', 'mt-table');
   const head = el('tr');
-  const columns = ['Channel', 'n + ik', 'F0', 'Max |exact − Schlick|', 'Lowest exact R (below F0)',
-    'Pseudo-Brewster angle (Rp least)', 'Principal angle (p–s phase 90°)'];
-  for (const text of columns) {
-    const th = el('th', '', text);
+  const columns = ['colChannel', 'colIndex', 'colF0', 'colMaxError', 'colLowest', 'colPseudoBrewster', 'colPrincipal'];
+  for (const word of columns) {
+    const th = el('th', '', t(word));
     th.scope = 'col';
     head.append(th);
   }
@@ -73,14 +76,12 @@ export function buildMetalsDom(host, metals, onPick) {
   table.tHead.append(head);
 
   const plotHost = el('div', 'mt-plot');
-  plotHost.setAttribute('aria-label', 'Reflectance against angle per colour channel: exact (solid) and Schlick (dashed)');
+  plotHost.setAttribute('aria-label', t('plot'));
   // F0 here is the reflectance at three wavelengths, not a colour integrated over the spectrum.
-  const sampled = el('p', 'mt-sampled', 'F0 is sampled at 650, 550 and 450 nm as red, green and blue: '
-    + 'a linear reflectance at three wavelengths, not an sRGB reflectance integrated over each primary '
-    + '(for gold Real-Time Rendering, 4th ed., Table 9.2, gives about 1.00, 0.78, 0.34 in linear sRGB).');
+  const sampled = el('p', 'mt-sampled', t('sampled'));
   host.append(swatchRow, sampled);
   const note = lectureNote(host);
-  host.append(scrollBox(table, 'Table of the metal’s channels'), plotHost);
+  host.append(scrollBox(table, t('table')), plotHost);
 
   return {
     plotHost,
@@ -102,25 +103,25 @@ export function buildMetalsDom(host, metals, onPick) {
     /** Dielectric swatch (grey F0), and which metal is chosen. */
     setSwatches({ n, f0 }, metalId) {
       dielectricChip.style.background = swatchColor([f0, f0, f0]);
-      dielectricIndex.textContent = `n = ${n}`;
+      dielectricIndex.textContent = t('index', { n: indexText(n) });
       fillNumbers(dielectricF0, [f0, f0, f0]);
       for (const b of buttons) b.setAttribute('aria-pressed', String(b.dataset.metal === metalId));
     },
-    /** metal: { name, n, k, rgbNm }; stats from metalCurveStats. */
+    /** metal: { id, n, k, rgbNm }; stats from metalCurveStats. */
     setTable(metal, stats) {
-      table.caption.textContent = `${metal.name}: exact conductor Fresnel vs Schlick with F0 per channel`;
+      table.caption.textContent = t('caption', { metal: materialName(metal.id) });
       body.replaceChildren(...stats.map((s, ch) => {
         const row = el('tr');
-        const name = el('th', '', `${CHANNEL_NAMES[ch]} ${metal.rgbNm[ch]} nm`);
+        const name = el('th', '', t('channelRow', { channel: s.channel, nm: String(metal.rgbNm[ch]) }));
         name.scope = 'row';
         name.style.color = `var(${CHANNEL_VARS[s.channel]})`;
         const dip = s.dip > 0
-          ? `${fixed(s.minimum.value, 4)} at ${angle(s.minimum.theta)} (${belowF0(s.dip)})`
-          : 'none: never below F0';
-        row.append(name, el('td', '', `${fixed(metal.n[ch], 3)} + ${fixed(metal.k[ch], 3)}i`),
+          ? t('lowest', { value: fixed(s.minimum.value, 4), angle: angle(s.minimum.theta), below: belowF0(s.dip) })
+          : t('neverBelow');
+        row.append(name, el('td', '', t('complexIndex', { n: fixed(metal.n[ch], 3), k: fixed(metal.k[ch], 3) })),
           el('td', '', fixed(s.f0, 4)),
-          el('td', '', `${fixed(s.maxError.value, 4)} at ${angle(s.maxError.theta)}`), el('td', '', dip),
-          el('td', '', `${angle(s.pseudoBrewster.theta)} (Rp = ${fixed(s.pseudoBrewster.rp, 3)})`),
+          el('td', '', t('valueAt', { value: fixed(s.maxError.value, 4), angle: angle(s.maxError.theta) })), el('td', '', dip),
+          el('td', '', t('pseudoBrewster', { angle: angle(s.pseudoBrewster.theta), rp: fixed(s.pseudoBrewster.rp, 3) })),
           el('td', '', angle(s.principal.theta)));
         return row;
       }));

@@ -14,15 +14,21 @@ import { angle, fixed } from '../../ui/format.js';
 import { createLinePlot } from '../../ui/createLinePlot.js';
 import { createTwinStage } from '../shared/createTwinStage.js';
 import { buildMetalsDom } from './buildMetalsDom.js';
-import { NAMED_DIP, SOURCE, metalsLectureGap } from './lectureGap.js';
+import { NAMED_DIP, gapSource, metalsLectureGap } from './lectureGap.js';
 import fragment from './metals.frag.glsl?raw';
 import './styles.css';
 import { schema } from './schema.js';
+import { materialName } from '../shared/materialName.js';
+import { indexText } from '../shared/indexText.js';
+import english from 'virtual:messages/en/metals';
+import { messages } from '../../i18n/messages.js';
 
 export { schema };
 
+const t = messages('metals', english);
 const SUN = { azimuth: 35, elevation: 40 };
-const SHORT = { red: 'R', green: 'G', blue: 'B' };
+/** A channel's letter: R, G, B. */
+const short = (channel) => t('short', { channel });
 const CHANNEL_VARS = ['--c-red', '--c-green', '--c-blue'];
 
 /**
@@ -44,23 +50,22 @@ export function mount(root, ctx) {
     uniforms,
     onFrame: ctx.frameDrawn,
     cache: { live: ['uN'] }, // the dielectric's index redraws its F alone (metals.frag.glsl)
-    ariaLabel: 'First, a dielectric sphere, dark head-on and bright only at its rim; second, a metal sphere that '
-      + 'reflects much of the light head-on, tinted by its F0, and more towards its rim.',
-    fallback: 'The spheres need WebGL2; the swatches, table and plot below still work.',
+    ariaLabel: t('stage'),
+    fallback: t('noWebgl'),
   });
   stage.setLight(SUN.azimuth, SUN.elevation);
 
-  const swatchMetals = metals.map((m) => ({ id: m.id, name: m.name, f0: metalF0(m) }));
+  const swatchMetals = metals.map((m) => ({ id: m.id, name: materialName(m.id), f0: metalF0(m) }));
   const dom = buildMetalsDom(panel, swatchMetals, (metalId) => ctx.set({ metal: metalId }));
 
   const plot = createLinePlot(dom.plotHost, {
-    xLabel: 'θ, angle of incidence', yLabel: 'Reflectance R', height: 340,
+    xLabel: t('xLabel'), yLabel: t('yLabel'), height: 340,
     // uPlot range function (createLinePlot passes yRange through): from the lowest curve's
     // tenth up to 1, so a dip of a few hundredths below a high F0 stays visible.
     yRange: (_u, min) => [Math.min(0.9, Math.floor((Number.isFinite(min) ? min : 0) * 10) / 10), 1],
     series: [
-      ...CHANNELS.map((c, ch) => ({ label: `Exact ${SHORT[c]}`, stroke: CHANNEL_VARS[ch], width: 3 })),
-      ...CHANNELS.map((c, ch) => ({ label: `Schlick ${SHORT[c]}`, stroke: CHANNEL_VARS[ch], dash: [10, 7] })),
+      ...CHANNELS.map((c, ch) => ({ label: t('seriesExact', { channel: short(c) }), stroke: CHANNEL_VARS[ch], width: 3 })),
+      ...CHANNELS.map((c, ch) => ({ label: t('seriesSchlick', { channel: short(c) }), stroke: CHANNEL_VARS[ch], dash: [10, 7] })),
     ],
   });
 
@@ -70,17 +75,20 @@ export function mount(root, ctx) {
     curves: () => {
       const metal = metalById(values.metal);
       const f0 = metalF0(metal);
+      const name = materialName(metal.id);
       return [
         ...CHANNELS.map((c, ch) => ({
-          label: `${metal.name} exact ${SHORT[c]}`, at: (deg) => fresnelConductor(cosDeg(deg), metal.n[ch], metal.k[ch]),
+          label: t('traceExact', { metal: name, channel: short(c) }), at: (deg) => fresnelConductor(cosDeg(deg), metal.n[ch], metal.k[ch]),
         })),
-        ...CHANNELS.map((c, ch) => ({ label: `${metal.name} Schlick ${SHORT[c]}`, at: (deg) => schlickForF0(cosDeg(deg), f0[ch]) })),
+        ...CHANNELS.map((c, ch) => ({
+          label: t('traceSchlick', { metal: name, channel: short(c) }), at: (deg) => schlickForF0(cosDeg(deg), f0[ch]),
+        })),
       ];
     },
     landmarks: () => ({ brewster: null, critical: null }),
   });
 
-  ctx.bind(ctx.gui.addFolder('Materials'), ['metal', 'fresnel', 'nT']);
+  ctx.bind(ctx.gui.addFolder(t('folder')), ['metal', 'fresnel', 'nT']);
   ctx.tie(dom.swatchControl, ['metal']);
 
   let curves = null;
@@ -96,16 +104,17 @@ export function mount(root, ctx) {
       // Where each channel's exact curve is lowest, when that is visibly below F0.
       plot.setMarks(stats.filter((s) => s.dip >= NAMED_DIP).map((s) => ({
         x: s.minimum.theta, color: CHANNEL_VARS[CHANNELS.indexOf(s.channel)],
-        label: `${SHORT[s.channel]} dips ${fixed(s.dip, 3)} below F0`,
+        label: t('dipMark', { channel: short(s.channel), dip: fixed(s.dip, 3) }),
       })));
       dom.setTable(metal, stats);
-      dom.setNote(metalsLectureGap(metal, stats), SOURCE);
+      dom.setNote(metalsLectureGap(metal, stats), gapSource());
       trace.refresh();
     }
     const dielectricF0 = normalIncidence(1, values.nT);
     dom.setSwatches({ n: values.nT, f0: dielectricF0 }, metal.id);
-    const method = values.fresnel === 'exact' ? 'exact' : 'Schlick';
-    stage.setLabels([`Dielectric, n = ${values.nT}`, `${metal.name}, ${method}`]);
+    stage.setLabels([
+      t('labelDielectric', { n: indexText(values.nT) }), t('labelMetal', { metal: materialName(metal.id), method: values.fresnel }),
+    ]);
     if (!stage.view) return;
     uniforms.uN.value = values.nT;
     uniforms.uMetalN.value = [...metal.n];
@@ -125,16 +134,18 @@ export function mount(root, ctx) {
     update,
     describe() {
       const metal = metalById(values.metal);
-      const list = (f) => stats.map(f).join(', ');
+      const list = (f) => {
+        const [r, g, b] = stats.map(f);
+        return t('rgb', { r, g, b });
+      };
       const deepest = stats.reduce((a, b) => (b.dip > a.dip ? b : a));
-      const dip = deepest.dip > 0
-        ? `The exact ${deepest.channel} curve dips to ${fixed(deepest.minimum.value, 4)} at ${angle(deepest.minimum.theta, 1)}, `
-          + `${fixed(deepest.dip, 4)} below F0, which Schlick cannot show.`
-        : 'The exact curves never fall below F0.';
-      return `${metal.name} (n + ik per channel): F0 is ${list((s) => fixed(s.f0, 3))} for red, green and blue, `
-        + `against ${fixed(normalIncidence(1, values.nT), 3)} for the dielectric of n = ${values.nT}. `
-        + `Schlick with these F0 is off by at most ${list((s) => `${fixed(s.maxError.value, 4)} at ${angle(s.maxError.theta, 1)}`)}. `
-        + `${dip} The metal sphere uses ${values.fresnel === 'exact' ? 'exact conductor Fresnel' : "Schlick's approximation"}.`;
+      return t('describe', {
+        metal: materialName(metal.id), f0: list((s) => fixed(s.f0, 3)), dielectricF0: fixed(normalIncidence(1, values.nT), 3),
+        n: indexText(values.nT),
+        errors: list((s) => t('valueAt', { value: fixed(s.maxError.value, 4), angle: angle(s.maxError.theta, 1) })),
+        dips: deepest.dip > 0 ? 'yes' : 'no', channel: deepest.channel, dipValue: fixed(deepest.minimum.value, 4),
+        dipAngle: angle(deepest.minimum.theta, 1), dip: fixed(deepest.dip, 4), method: values.fresnel,
+      });
     },
     csv() {
       const columns = { theta_deg: curves.theta };

@@ -3,11 +3,16 @@
 // Every number comes from the exact conductor Fresnel of the lab's data (src/optics/fresnel.js).
 import { cosDeg } from '../../optics/angles.js';
 import { fresnelConductor } from '../../optics/fresnel.js';
-import { fixed, precise } from '../../ui/format.js';
+import { angle, fixed, precise } from '../../ui/format.js';
+import { materialNameInText } from '../shared/materialName.js';
+import english from 'virtual:messages/en/metals';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('metals', english);
 
 export const GRAZING = 89;
-export const SOURCE = 'Lazányi & Szirmay-Kalos, “Fresnel term approximations for metals”, WSCG 2005; '
-  + 'Hoffman, “Generalization of Adobe’s Fresnel Model”, 2019';
+/** The sources of the note, in the page's language. */
+export const gapSource = () => t('gapSource');
 
 /** Channels closer than this head-on are called neutral (silver, aluminium, iron in the lab's data). */
 export const NEUTRAL = 0.05;
@@ -16,11 +21,17 @@ export const NEUTRAL = 0.05;
 export const NAMED_DIP = 0.001;
 
 const spread = (rgb) => Math.max(...rgb) - Math.min(...rgb);
-const list = (rgb) => rgb.map((x) => fixed(x, 2)).join(', ');
+/** Red, green and blue as the page writes three numbers. */
+const list = (rgb, digits = 2) => {
+  const [r, g, b] = rgb.map((x) => fixed(x, digits));
+  return t('rgb', { r, g, b });
+};
 /** Three decimals, or two significant digits where three would read 0.000. */
 const small = (x) => (fixed(x, 3) === fixed(0, 3) ? precise(x, 2) : fixed(x, 3));
-/** 'red', 'red and blue', 'every channel'. */
-const channelNames = (names) => (names.length === 3 ? 'every channel' : names.join(' and '));
+/** 'red', 'red and blue', 'every channel' (the catalogue's channels, by a key such as redBlue). */
+const channelNames = (names) => t('channels', {
+  set: names.length === 3 ? 'all' : names.map((name, i) => (i ? name[0].toUpperCase() + name.slice(1) : name)).join(''),
+});
 
 /** R per channel at θ (degrees). */
 export function channelsAt(metal, theta) {
@@ -43,45 +54,36 @@ const strayFromF0 = (metal, head) => Math.max(...Array.from({ length: 4 * GRAZIN
   Math.max(...channelsAt(metal, i / 4).map((r, ch) => Math.abs(r - head[ch])))));
 
 /**
- * The note's sentence for `metal` ({ name, n, k }) with its stats (metalCurveStats): what the
+ * The note's sentence for `metal` ({ id, n, k }) with its stats (metalCurveStats): what the
  * lecture says, what the exact curves do, and the tint, each number computed here.
  */
 export function metalsLectureGap(metal, stats) {
-  const name = metal.name.toLowerCase();
+  const name = materialNameInText(metal.id);
   const head = channelsAt(metal, 0);
   const grazing = channelsAt(metal, GRAZING);
   const stray = strayFromF0(metal, head);
   const deepest = stats.reduce((a, b) => (b.dip > a.dip ? b : a));
+  const dip = {
+    dips: deepest.dip >= NAMED_DIP ? 'yes' : 'no', dip: small(deepest.dip), channel: deepest.channel,
+    dipAngle: angle(deepest.minimum.theta, 0),
+  };
   if (stray < CLOSE_TO_F0) {
-    const three = (rgb) => rgb.map((x) => fixed(x, 3)).join(', ');
-    const dips = deepest.dip >= NAMED_DIP
-      ? `, dipping at most ${small(deepest.dip)} below F0 (${deepest.channel}, near ${fixed(deepest.minimum.theta, 0)}°)` : '';
-    return `The lecture says a metal has almost no Fresnel factor, and for ${name} it is close: in every channel R stays within `
-      + `${fixed(stray, 3)} of F0 from 0° to ${GRAZING}° (${three(head)} at 0°, ${three(grazing)} at ${GRAZING}°, red, green, blue)`
-      + `${dips}, and gains its last ${small(1 - Math.min(...grazing))} towards 1 only in the final degree. `
-      + 'Other metals show more of their Fresnel factor.';
+    return t('gapClose', {
+      metal: name, stray: fixed(stray, 3), grazing: angle(GRAZING, 0), head: list(head, 3), graze: list(grazing, 3),
+      last: small(1 - Math.min(...grazing)), ...dip,
+    });
   }
   const dipping = stats.filter((s) => s.dip >= NAMED_DIP).map((s) => s.channel);
   const slight = stats.filter((s) => s.dip > 0 && s.dip < NAMED_DIP).map((s) => s.channel);
-  const dip = dipping.length > 0
-    ? ` first dips below F0 in ${channelNames(dipping)} (by up to ${small(deepest.dip)}, ${deepest.channel}, `
-      + `near ${fixed(deepest.minimum.theta, 0)}°${slight.length ? `; ${slight.join(' and ')} by under ${NAMED_DIP}` : ''}), then`
-    : '';
   const widest = widestSpread(metal);
-  let tint;
-  if (spread(head) >= NEUTRAL && spread(grazing) < spread(head)) {
-    tint = `its tint fades towards white (the channels ${fixed(spread(head), 2)} apart head-on, `
-      + `${fixed(spread(grazing), 2)} at ${GRAZING}°)`;
-  } else if (widest.spread < NEUTRAL) {
-    tint = `it is nearly neutral at every angle (its channels within ${fixed(widest.spread, 2)} of each other)`;
-  } else {
-    tint = `it is nearly neutral head-on and at ${GRAZING}° (channels within ${fixed(Math.max(spread(head), spread(grazing)), 2)}), `
-      + `but near ${fixed(widest.theta, 0)}° its channels are up to ${fixed(widest.spread, 2)} apart, a faint `
-      + `${widest.cool ? 'cool' : 'warm'} cast`;
-  }
-  const headOn = spread(head) >= NEUTRAL ? 'Head-on its F0 carries its colour' : 'Head-on it reflects every channel nearly alike';
-  return `The lecture says a metal has almost no Fresnel factor. ${headOn}, `
-    + `but towards grazing ${name}'s R${dip} rises towards 1 in every channel: `
-    + `${list(head)} at 0°, ${list(grazing)} at ${GRAZING}° (red, green, blue), and ${tint}. `
-    + `Schlick's form cannot dip below F0; F82 models add that term for metals.`;
+  let tint = 'cast';
+  if (spread(head) >= NEUTRAL && spread(grazing) < spread(head)) tint = 'fades';
+  else if (widest.spread < NEUTRAL) tint = 'neutral';
+  return t('gap', {
+    metal: name, headOn: spread(head) >= NEUTRAL ? 'coloured' : 'neutral', head: list(head), graze: list(grazing),
+    grazing: angle(GRAZING, 0), ...dip, dips: dipping.length > 0 ? 'yes' : 'no', dipping: dipping.length ? channelNames(dipping) : '',
+    slightly: slight.length ? 'yes' : 'no', slight: slight.length ? channelNames(slight) : '', named: fixed(NAMED_DIP, 3),
+    tint, headSpread: fixed(spread(head), 2), grazeSpread: fixed(spread(grazing), 2), widest: fixed(widest.spread, 2),
+    within: fixed(Math.max(spread(head), spread(grazing)), 2), castAngle: angle(widest.theta, 0), cast: widest.cool ? 'cool' : 'warm',
+  });
 }

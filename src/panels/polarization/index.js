@@ -14,13 +14,21 @@ import { addSwap } from '../shared/indexPair.js';
 import './styles.css';
 import { schema } from './schema.js';
 import { addDielectricTrace } from '../shared/dielectricTrace.js';
+import { indexText } from '../shared/indexText.js';
+import english from 'virtual:messages/en/polarization';
+import sharedWords from 'virtual:messages/en/panelsShared';
+import { messages } from '../../i18n/messages.js';
 
 export { schema };
 
-const SERIES = [
-  { label: 'Rs (s-polarized)', stroke: '--c-s', width: 3 },
-  { label: 'Rp (p-polarized)', stroke: '--c-p', width: 3 },
-  { label: 'Mean = exact unpolarized R', stroke: '--c-exact', width: 3.5, dash: [10, 6] },
+const t = messages('polarization', english);
+const shared = messages('panelsShared', sharedWords);
+
+/** The curves, named in the page's language. */
+const series = () => [
+  { label: t('seriesS'), stroke: '--c-s', width: 3 },
+  { label: t('seriesP'), stroke: '--c-p', width: 3 },
+  { label: t('seriesMean'), stroke: '--c-exact', width: 3.5, dash: [10, 6] },
 ];
 
 /** Values at one angle: Rs, Rp (fresnelPolarized) and the unpolarized mean (fresnelExact). */
@@ -40,41 +48,37 @@ export function mount(root, ctx) {
   const panel = el('div', 'polarization-panel');
   const summary = definitionList('pol-summary');
   const items = {
-    brewster: summary.add('Brewster angle'),
-    atBrewster: summary.add('At Brewster'),
-    critical: summary.add('Critical angle'),
+    brewster: summary.add(t('brewster')),
+    atBrewster: summary.add(t('atBrewster')),
+    critical: summary.add(t('critical')),
   };
   const plotHost = el('div', 'pol-plot');
   plotHost.setAttribute('role', 'img');
-  plotHost.setAttribute('aria-label', 'Rs, Rp and their mean against the angle of incidence θ');
+  plotHost.setAttribute('aria-label', t('plot'));
   const readout = el('p', 'pol-readout');
   readout.setAttribute('aria-live', 'polite');
   // Why an Rs-only reading is high: Rs ≥ Rp at every angle for a dielectric (|rp| = |rs|·
   // |cos(θ_i + θ_t)/cos(θ_i − θ_t)|, Hecht §4.6.2), so Rs is at least their mean; equal only head-on,
   // at grazing incidence and under total internal reflection.
-  const note = el('p', 'pol-note',
-    'Some simulations and meters report only Rs, the reflectance for light polarized across the plane of '
-    + 'incidence. Sunlight and lamps are unpolarized: half their light is s and half is p, so what reflects is '
-    + 'the average of Rs and Rp. Rp is never larger than Rs and drops to zero at Brewster\'s angle, so an '
-    + 'Rs-only number reads too high at oblique angles. ');
+  const note = el('p', 'pol-note', t('note'));
   const noteNumbers = el('strong', 'pol-note-numbers');
   note.append(noteNumbers);
   panel.append(summary.element, plotHost, readout, note);
   root.append(panel);
 
   const plot = createLinePlot(plotHost, {
-    xLabel: 'θ, angle of incidence', yLabel: 'Reflectance',
-    series: SERIES,
+    xLabel: t('xLabel'), yLabel: t('yLabel'),
+    series: series(),
     height: 340,
   });
   // Rp first: its fall to zero is the Brewster angle, heard as the pitch reaching the bottom.
   const trace = addDielectricTrace(plotHost, plot, () => values, ['p', 's', 'exact']);
 
-  const folder = ctx.gui.addFolder('Interface and readout');
+  const folder = ctx.gui.addFolder(t('folder'));
   ctx.bind(folder, ['nI', 'nT', 'theta']);
   ctx.tie(folder.add({ go: () => ctx.set({ theta: Math.round((brewsterAngle(values.nI, values.nT) / DEG) * 100) / 100 }) }, 'go')
-    .name('Read at the Brewster angle'), ['theta']);
-  addSwap(ctx, folder);
+    .name(t('readBrewster')), ['theta']);
+  addSwap(ctx, folder, shared('swap'));
 
   let curves = null;
   let curvesKey = '';
@@ -95,25 +99,24 @@ export function mount(root, ctx) {
       critical = c === null ? null : c / DEG;
       const b = at(brewster, nI, nT);
       items.brewster.textContent = angle(brewster);
-      items.atBrewster.textContent = `Rp = ${fixed(b.p, 4)}, Rs = ${fixed(b.s, 4)}`;
-      items.critical.textContent = critical === null ? 'none (n_i ≤ n_t)' : angle(critical);
+      items.atBrewster.textContent = t('atBrewsterValue', { p: fixed(b.p, 4), s: fixed(b.s, 4) });
+      items.critical.textContent = critical === null ? t('noCritical') : angle(critical);
     }
-    plot.setMarks([brewsterMark(brewster, ' (Rp = 0)'), criticalMark(critical), thetaMark(theta, `θ = ${angle(theta)}`)]);
+    plot.setMarks([
+      brewsterMark(brewster, t('brewsterMark')), criticalMark(critical), thetaMark(theta, t('thetaMark', { theta: angle(theta) })),
+    ]);
     point = at(theta, nI, nT);
-    readout.textContent = `At θ = ${angle(theta)}   Rs = ${fixed(point.s, 4)}   Rp = ${fixed(point.p, 4)}   `
-      + `unpolarized mean = ${fixed(point.mean, 4)}`;
+    readout.textContent = t('readout', { theta: angle(theta), s: fixed(point.s, 4), p: fixed(point.p, 4), mean: fixed(point.mean, 4) });
     noteNumbers.textContent = explain(point, theta, nI, nT);
   }
 
   /** The sentence with this angle's numbers. */
   function explain({ s, p, mean }, theta, nI, nT) {
-    if (nI === nT) return 'Here n_i = n_t: there is no interface and nothing reflects.';
+    if (nI === nT) return t('matched');
     if (s - mean < 5e-5) {
-      return `At ${angle(theta)} the two agree (Rs = ${fixed(s, 4)}, mean = ${fixed(mean, 4)}): `
-        + (p > 0.9999 ? 'everything is reflected.' : 's and p reflect alike there.');
+      return t('agree', { theta: angle(theta), s: fixed(s, 4), mean: fixed(mean, 4), all: p > 0.9999 ? 'yes' : 'no' });
     }
-    return `At ${angle(theta)}: Rs = ${fixed(s, 4)} against the unpolarized ${fixed(mean, 4)}, `
-      + `${fixed(s / mean, 2)} times too high (Rp = ${fixed(p, 4)}).`;
+    return t('tooHigh', { theta: angle(theta), s: fixed(s, 4), mean: fixed(mean, 4), ratio: fixed(s / mean, 2), p: fixed(p, 4) });
   }
   update();
 
@@ -123,10 +126,11 @@ export function mount(root, ctx) {
     update,
     describe() {
       const { nI, nT, theta } = values;
-      return `From n_i = ${nI} into n_t = ${nT}: at ${angle(theta)} Rs = ${fixed(point.s, 4)}, `
-        + `Rp = ${fixed(point.p, 4)} and their mean, the unpolarized R, is ${fixed(point.mean, 4)}; `
-        + `Rp is 0 at the Brewster angle ${angle(brewster)}`
-        + (critical === null ? '.' : `; past the critical angle ${angle(critical)} both are 1.`);
+      return t('describe', {
+        nI: indexText(nI), nT: indexText(nT), theta: angle(theta), s: fixed(point.s, 4), p: fixed(point.p, 4),
+        mean: fixed(point.mean, 4), brewster: angle(brewster), tir: critical === null ? 'no' : 'yes',
+        critical: critical === null ? '' : angle(critical),
+      });
     },
     csv() {
       return {

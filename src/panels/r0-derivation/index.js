@@ -12,13 +12,17 @@ import { addSwap } from '../shared/indexPair.js';
 import './styles.css';
 import { schema } from './schema.js';
 import { makeScrollBox, scrollBox } from '../../ui/scrollBox.js';
+import { indexText } from '../shared/indexText.js';
+import english from 'virtual:messages/en/r0-derivation';
+import { messages } from '../../i18n/messages.js';
 
 export { schema };
 
+const t = messages('r0-derivation', english);
 const DIGITS = 6;
 const fixed = (value) => fixedTo(value, DIGITS);
 /** Differences at the rounding level: 0 or an exponent, never a misleading 0.000000. */
-const tiny = (value) => (value === 0 ? '0 (identical)' : sci(value, 1));
+const tiny = (value) => (value === 0 ? t('identical') : sci(value, 1));
 
 /**
  * @param {HTMLElement} root
@@ -30,25 +34,25 @@ export function mount(root, ctx) {
   const panel = el('div', 'r0-panel');
   const first = r0Steps(values.nI, values.nT); // the TeX is symbolic: typeset once
 
-  const setupHead = el('p', 'r0-head', 'Let θ = 0°:');
+  const setupHead = el('p', 'r0-head', t('head'));
   const setup = el('table', 'r0-steps r0-setup');
   const setupCells = first.setup.map((step) => {
     const tr = el('tr');
     const expr = el('td', 'r0-expr');
     expr.append(texElement(step.tex, { display: false, tag: 'span' }));
     const value = el('td', 'r0-value');
-    tr.append(expr, el('td', 'r0-note', step.note), value);
+    tr.append(expr, el('td', 'r0-note', t(`step.${step.step}`)), value);
     setup.append(tr);
     return value;
   });
 
   const lines = el('table', 'r0-steps r0-lines');
-  const caption = el('caption', 'r0-caption', 'Each line evaluated exactly as it is written');
+  const caption = el('caption', 'r0-caption', t('caption'));
   // Column headers for screen readers (every cell has one); the caption and layout say it on screen.
   const head = el('thead', 'sr-only');
   const headRow = el('tr');
-  for (const name of ['Left side', 'Expression', 'Step', 'Value of the line']) {
-    const th = el('th', '', name);
+  for (const word of ['colLeft', 'colExpression', 'colStep', 'colValue']) {
+    const th = el('th', '', t(word));
     th.scope = 'col';
     headRow.append(th);
   }
@@ -63,7 +67,7 @@ export function mount(root, ctx) {
     const value = el('td', 'r0-value');
     value.dataset.line = String(i + 1);
     // The step's words head its row: a screen reader says what the line does before its numbers.
-    const note = el('th', 'r0-note', line.note);
+    const note = el('th', 'r0-note', t(`step.${line.step}`));
     note.scope = 'row';
     tr.append(lhs, expr, note, value);
     lines.append(tr);
@@ -73,17 +77,17 @@ export function mount(root, ctx) {
   const check = el('div', 'r0-check');
   const verdict = el('p', 'r0-verdict');
   const refs = definitionList('r0-refs', { valueClass: 'r0-value' });
-  const spreadOut = refs.add('Largest difference between the lines');
-  const normalOut = refs.add('normalIncidence(n_i, n_t)');
-  const exactOut = refs.add('fresnelExact(cos 0° = 1, n_i, n_t)');
-  const numbers = makeScrollBox(el('div', 'r0-numbers'), 'R(0°) with these indices');
+  const spreadOut = refs.add(t('spread'));
+  const normalOut = refs.add(t('normal'));
+  const exactOut = refs.add(t('exact'));
+  const numbers = makeScrollBox(el('div', 'r0-numbers'), t('numbers'));
   check.append(verdict, refs.element, numbers);
 
-  panel.append(setupHead, scrollBox(setup, 'The setting θ = 0°'), scrollBox(lines, 'The derivation, line by line'), check);
+  panel.append(setupHead, scrollBox(setup, t('setup')), scrollBox(lines, t('lines')), check);
   root.append(panel);
 
   ctx.bind(ctx.gui, ['nI', 'nT']);
-  addSwap(ctx, ctx.gui, 'Swap n_i ↔ n_t (R0 is the same)');
+  addSwap(ctx, ctx.gui, t('swap'));
 
   let steps = first;
   let spread = 0;
@@ -99,14 +103,14 @@ export function mount(root, ctx) {
     const exact = fresnelExact(1, nI, nT);
     const agree = spread < 1e-12 && Math.abs(all.at(-1) - normal) < 1e-12 && Math.abs(all.at(-1) - exact) < 1e-12;
     verdict.textContent = agree
-      ? `✓ All ${all.length} lines agree: R(0°) = ${fixed(all.at(-1))} for n_i = ${fixedTo(nI, 4)}, n_t = ${fixedTo(nT, 4)}.`
-      : `✗ The lines disagree (spread ${tiny(spread)}).`;
+      ? t('agree', { count: String(all.length), r0: fixed(all.at(-1)), nI: fixedTo(nI, 4), nT: fixedTo(nT, 4) })
+      : t('disagree', { spread: tiny(spread) });
     panel.classList.toggle('r0-bad', !agree);
-    spreadOut.textContent = `${tiny(spread)}  (float64 rounding)`;
+    spreadOut.textContent = t('spreadValue', { spread: tiny(spread) });
     normalOut.textContent = fixed(normal);
     exactOut.textContent = fixed(exact);
-    const [t, i] = [texNumber(nT), texNumber(nI)];
-    renderTex(numbers, String.raw`R(0^\circ) = \left(\frac{${t} - ${i}}{${t} + ${i}}\right)^{2}
+    const [tex, i] = [texNumber(nT), texNumber(nI)];
+    renderTex(numbers, String.raw`R(0^\circ) = \left(\frac{${tex} - ${i}}{${tex} + ${i}}\right)^{2}
       = \left(\frac{${fixed(nT - nI)}}{${fixed(nT + nI)}}\right)^{2} = ${fixed(all.at(-1))}`);
   }
   update();
@@ -116,9 +120,10 @@ export function mount(root, ctx) {
     get steps() { return steps; },
     describe() {
       const { nI, nT } = values;
-      return `With n_i = ${nI} and n_t = ${nT}, θ = 0° gives c = ${fixed(steps.setup[0].value)} and g = 1; `
-        + `all ${steps.lines.length} lines of the derivation evaluate to R(0°) = ${fixed(steps.lines.at(-1).value)} `
-        + `(largest difference ${tiny(spread)}), equal to normalIncidence and fresnelExact at θ = 0°.`;
+      return t('describe', {
+        nI: indexText(nI), nT: indexText(nT), c: fixed(steps.setup[0].value), count: String(steps.lines.length),
+        r0: fixed(steps.lines.at(-1).value), spread: tiny(spread),
+      });
     },
     csv() {
       const rows = [...steps.setup, ...steps.lines];

@@ -4,15 +4,23 @@
 import { el } from '../../ui/el.js';
 import { angle, fixed, grouped, rounded } from '../../ui/format.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
+import { optionLabel } from '../panelText.js';
+import english from 'virtual:messages/en/refractive-index';
+import { messages } from '../../i18n/messages.js';
 
-/** The table's columns, each a sort key of materialRows.js (SORT_KEYS). */
+const t = messages('refractive-index', english);
+
+/**
+ * The table's columns, each a sort key of materialRows.js (SORT_KEYS). A heading is the name of its
+ * option in the "Sort by" control (the catalogue's controls.refractive-index.sort.<key>): one name each.
+ */
 export const COLUMNS = [
-  { key: 'name', label: 'Material' },
-  { key: 'n', label: 'n (589 nm)', numeric: true },
-  { key: 'speed', label: 'Phase speed c/n', numeric: true },
-  { key: 'r0', label: 'R0 from air', numeric: true },
-  { key: 'critical', label: 'Critical angle to air', numeric: true },
-  { key: 'source', label: 'Source' },
+  { key: 'name' },
+  { key: 'n', numeric: true },
+  { key: 'speed', numeric: true },
+  { key: 'r0', numeric: true },
+  { key: 'critical', numeric: true },
+  { key: 'source' },
 ];
 
 /** n with at least four decimals, and all the data has (air: 1.000293). */
@@ -38,20 +46,17 @@ function breakable(text) {
 function cells(row) {
   return [
     formatIndex(row.n),
-    `${fixed(row.speed, 4)} c`,
+    t('speed', { value: fixed(row.speed, 4) }),
     fixed(row.r0, 3),
-    row.critical === null ? 'none' : angle(row.critical, 1),
+    row.critical === null ? t('noCritical') : angle(row.critical, 1),
   ];
 }
 
 export function buildIndexTable(host, { onSort, onUse }) {
   const root = el('div', 'ri-panel');
-  const scroller = makeScrollBox(el('div', 'ri-scroll'), 'Table of refractive indices');
+  const scroller = makeScrollBox(el('div', 'ri-scroll'), t('table'));
   const table = el('table', 'ri-table');
-  const caption = el('caption', 'ri-caption',
-    'Dielectrics at 589 nm. c/n is the phase speed, at which the crests move; a pulse of light moves at the '
-    + 'group speed c/n_g, n_g = n − λ dn/dλ from the data at 550, 589 and 650 nm (Hecht, Optics, 5th ed., §7.2). '
-    + 'Speeds in km/s use c = 299 792.458 km/s; R0 and the critical angle are for air taken as n = 1.');
+  const caption = el('caption', 'ri-caption', t('caption'));
   const thead = el('thead');
   const tbody = el('tbody');
   const tfoot = el('tfoot');
@@ -69,14 +74,14 @@ export function buildIndexTable(host, { onSort, onUse }) {
     const button = el('button', 'ri-sort');
     button.type = 'button';
     button.dataset.sort = column.key;
-    button.append(el('span', '', column.label), el('span', 'ri-sort-mark'));
+    button.append(el('span', '', optionLabel('refractive-index', 'sort', column.key)), el('span', 'ri-sort-mark'));
     button.addEventListener('click', () => onSort(column.key));
     th.append(button);
     headers[column.key] = { th, button };
     headRow.append(th);
   }
   // The Apply column comes second, so it stays on screen when a narrow table scrolls sideways.
-  const useTh = el('th', '', 'Apply');
+  const useTh = el('th', '', t('apply'));
   useTh.scope = 'col';
   headRow.insertBefore(useTh, headers.n.th);
   thead.append(headRow);
@@ -93,15 +98,17 @@ export function buildIndexTable(host, { onSort, onUse }) {
     name.scope = 'row';
     const [n, speed, r0, critical] = cells(row);
     const speedCell = el('td', 'ri-num');
-    speedCell.append(el('span', '', speed), el('span', 'ri-kms', `${formatKmS(row.speedKmS)} km/s`));
-    if (row.groupSpeedKmS !== null) speedCell.append(el('span', 'ri-kms ri-group', `pulse ≈ ${formatKmS(row.groupSpeedKmS, 1000)} km/s`));
+    speedCell.append(el('span', '', speed), el('span', 'ri-kms', t('speedKmS', { value: formatKmS(row.speedKmS) })));
+    if (row.groupSpeedKmS !== null) {
+      speedCell.append(el('span', 'ri-kms ri-group', t('pulse', { value: formatKmS(row.groupSpeedKmS, 1000) })));
+    }
     const useCell = el('td');
     tr.append(name, useCell, el('td', 'ri-num ri-n', n), speedCell, el('td', 'ri-num ri-r0', r0),
       el('td', 'ri-num ri-critical', critical), el('td', 'ri-source', breakable(row.source)));
-    const use = el('button', 'ri-use', isSelected ? 'In use' : 'Use');
+    const use = el('button', 'ri-use', isSelected ? t('inUse') : t('use'));
     use.type = 'button';
     use.setAttribute('aria-pressed', String(isSelected));
-    use.setAttribute('aria-label', `Use ${row.name} (n = ${formatIndex(row.n)}) in every panel`);
+    use.setAttribute('aria-label', t('useLabel', { name: row.name, n: formatIndex(row.n) }));
     use.addEventListener('click', () => onUse(row));
     useCell.append(use);
     return tr;

@@ -7,7 +7,11 @@ import { buildIndexTable } from './buildIndexTable.js';
 import { angle, fixed } from '../../ui/format.js';
 import './styles.css';
 import { schema } from './schema.js';
+import { indexText } from '../shared/indexText.js';
+import english from 'virtual:messages/en/refractive-index';
+import { messages } from '../../i18n/messages.js';
 
+const t = messages('refractive-index', english);
 
 export { schema };
 
@@ -36,7 +40,7 @@ export function mount(root, ctx) {
     onUse: choose,
   });
 
-  ctx.bind(ctx.gui.addFolder('Table'), ['customN', 'sort', 'dir']);
+  ctx.bind(ctx.gui.addFolder(t('folder')), ['customN', 'sort', 'dir']);
 
   function update(keys = []) {
     custom = customRow(values.customN);
@@ -44,7 +48,7 @@ export function mount(root, ctx) {
     table.render(shown, custom, { sort: values.sort, dir: values.dir, selected: values.selected });
     // A custom material in use follows its control live.
     if (keys.includes('customN') && values.selected === 'custom') {
-      ctx.applyMaterial({ id: 'custom', name: 'Custom', n: values.customN });
+      ctx.applyMaterial({ id: 'custom', name: custom.name, n: values.customN });
     }
   }
   update();
@@ -60,9 +64,12 @@ export function mount(root, ctx) {
       const lo = byN[0];
       const hi = byN[byN.length - 1];
       const chosen = selectedRow();
-      return `${rows.length} materials, n from ${lo.n} (${lo.name}) to ${hi.n} (${hi.name}); `
-        + `${hi.name} reflects R0 = ${fixed(hi.r0, 3)} head-on, and light inside it cannot get out beyond ${angle(hi.critical, 1)}. `
-        + (chosen ? `In use: ${chosen.name}, n = ${chosen.n}, R0 = ${fixed(chosen.r0, 3)}.` : 'No material chosen yet.');
+      return t('describe', {
+        count: String(rows.length), loN: indexText(lo.n), loName: lo.name, hiN: indexText(hi.n), hiName: hi.name,
+        hiR0: fixed(hi.r0, 3), hiCritical: angle(hi.critical, 1),
+        chosen: chosen ? 'yes' : 'no', name: chosen?.name ?? '', n: chosen ? indexText(chosen.n) : '',
+        r0: chosen ? fixed(chosen.r0, 3) : '',
+      });
     },
     csv() {
       const all = [...shown, custom];

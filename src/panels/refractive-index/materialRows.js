@@ -1,23 +1,31 @@
 // Rows of the refractive-index table: each dielectric of materials.js seen from air (n = 1),
-// plus an optional custom index, and a stable sort by any column. Pure data, no DOM.
+// plus an optional custom index, and a stable sort by any column. Pure data, no DOM; a row's name
+// and source are the words the table shows, in the page's language (the catalogue's).
 import { toDegrees } from '../../optics/angles.js';
 import { dielectrics, dielectricSummary } from '../../optics/materials.js';
 import { SPEED_OF_LIGHT_KM_S } from '../../optics/waves.js';
 import { FALLBACK_LOCALE } from '../../ui/safeLocale.js';
+import { materialName } from '../shared/materialName.js';
+import english from 'virtual:messages/en/refractive-index';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('refractive-index', english);
+const sourceKey = (id) => `source.${id.replace(/-([a-z])/g, (_, letter) => letter.toUpperCase())}`;
 
 export const SORT_KEYS = ['name', 'n', 'speed', 'r0', 'critical', 'source'];
 
 /**
  * One table row: n, phase speed c/n (fraction of c and km/s), group speed c/n_g in km/s (null
- * without dispersion data), R0 from air, critical angle to air (degrees).
+ * without dispersion data), R0 from air, critical angle to air (degrees). name and source: as shown
+ * (given, or the catalogue's for a material of materials.json).
  */
-export function materialRow(material) {
+export function materialRow(material, { name = materialName(material.id), source = t(sourceKey(material.id)) } = {}) {
   const s = dielectricSummary(material);
   return {
     id: s.id,
-    name: s.name,
+    name,
     n: s.n,
-    source: s.source,
+    source,
     speed: s.speed,
     speedKmS: SPEED_OF_LIGHT_KM_S * s.speed,
     groupSpeedKmS: s.groupSpeed === null ? null : SPEED_OF_LIGHT_KM_S * s.groupSpeed,
@@ -32,7 +40,7 @@ export function materialRows() {
 
 /** The row for a custom index (id 'custom'). */
 export function customRow(n) {
-  return materialRow({ id: 'custom', name: 'Custom', n, source: 'your value (custom n control)' });
+  return materialRow({ id: 'custom', n }, { name: t('custom'), source: t('customSource') });
 }
 
 /**

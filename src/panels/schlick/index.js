@@ -18,17 +18,25 @@ import { addDielectricTrace } from '../shared/dielectricTrace.js';
 import './styles.css';
 import { schema } from './schema.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
+import { indexText } from '../shared/indexText.js';
+import english from 'virtual:messages/en/schlick';
+import sharedWords from 'virtual:messages/en/panelsShared';
+import { messages } from '../../i18n/messages.js';
 
 export { schema };
 
+const t = messages('schlick', english);
+const shared = messages('panelsShared', sharedWords);
+
 // Schlick, "An Inexpensive BRDF Model for Physically-based Rendering", CGF 13(3), 1994; lecture slide.
 const FORMULA = String.raw`R(\theta) \approx R_{\mathrm{S}}(\theta) = R_0 + (1 - R_0)(1 - \cos\theta)^{5}`;
-const SERIES = [
-  { label: 'Exact', stroke: '--c-exact', width: 3.5 },
-  { label: 'Schlick (cos θ)', stroke: '--c-schlick', width: 3.5, dash: [12, 6] },
-  { label: 'Schlick (cos θt)', stroke: '--c-p', width: 3, dash: [4, 4] },
-  { label: '|error| Schlick', stroke: '--c-error', width: 2.5 },
-  { label: '|error| on cos θt', stroke: '--c-s', width: 3, dash: [6, 4] },
+/** The curves, named in the page's language. */
+const series = () => [
+  { label: t('exact'), stroke: '--c-exact', width: 3.5 },
+  { label: t('seriesSchlick'), stroke: '--c-schlick', width: 3.5, dash: [12, 6] },
+  { label: t('seriesSchlickT'), stroke: '--c-p', width: 3, dash: [4, 4] },
+  { label: t('seriesError'), stroke: '--c-error', width: 2.5 },
+  { label: t('errorT'), stroke: '--c-s', width: 3, dash: [6, 4] },
 ];
 
 const fixed = (value, digits = 6) => fixedTo(value, digits);
@@ -41,36 +49,35 @@ const fixed = (value, digits = 6) => fixedTo(value, digits);
 export function mount(root, ctx) {
   const { values } = ctx;
   const panel = el('div', 'sk-panel');
-  const formulas = makeScrollBox(el('div', 'sk-formulas'), 'Schlick’s approximation and its terms');
+  const formulas = makeScrollBox(el('div', 'sk-formulas'), t('formulas'));
   const r0Tex = el('div', 'sk-tex');
   const atTex = el('div', 'sk-tex');
   formulas.append(texElement(FORMULA), r0Tex, atTex);
 
   const readout = definitionList('sk-readout', { valueClass: 'sk-value' });
-  const item = (label, key) => readout.add(label, { out: key });
+  const item = (key) => readout.add(t(key), { out: key });
   const out = {
-    exact: item('Exact', 'exact'), schlick: item('Schlick', 'schlick'), error: item('|error|', 'error'),
-    schlickT: item('Schlick on cos θt', 'schlickT'), errorT: item('|error| on cos θt', 'errorT'),
+    exact: item('exact'), schlick: item('schlick'), error: item('error'), schlickT: item('schlickT'), errorT: item('errorT'),
   };
   const tirNote = el('p', 'sk-note');
 
   const summary = definitionList('sk-summary', { valueClass: 'sk-value' });
-  const worstOut = summary.add('Largest |exact − Schlick|', { worst: 'schlick' });
-  const worstTOut = summary.add('Largest |exact − Schlick on cos θt|', { worst: 'cosThetaT' });
+  const worstOut = summary.add(t('worst'), { worst: 'schlick' });
+  const worstTOut = summary.add(t('worstT'), { worst: 'cosThetaT' });
 
   const plotHost = el('div', 'sk-plot');
   plotHost.setAttribute('role', 'img');
-  plotHost.setAttribute('aria-label', 'Exact reflectance, Schlick on cos θ, Schlick on cos θt and their errors against θ');
+  plotHost.setAttribute('aria-label', t('plot'));
   panel.append(formulas, readout.element, tirNote, summary.element, plotHost);
   root.append(panel);
 
   const plot = createLinePlot(plotHost, {
-    xLabel: 'θ, angle from the normal (degrees)', yLabel: 'Reflectance R and |error|', series: SERIES, height: 340,
+    xLabel: t('xLabel'), yLabel: t('yLabel'), series: series(), height: 340,
   });
   const trace = addDielectricTrace(plotHost, plot, () => values, ['exact', 'schlick', 'schlickT']);
 
   ctx.bind(ctx.gui, ['nI', 'nT', 'theta']);
-  addSwap(ctx, ctx.gui, 'Swap n_i ↔ n_t (look out of the glass)');
+  addSwap(ctx, ctx.gui, shared('swapLookOut'));
 
   let key = '';
   let cmp = null;
@@ -82,10 +89,10 @@ export function mount(root, ctx) {
     const none = cmp.theta.map(() => null); // Schlick on cos θt is Schlick itself when nI ≤ nT
     plot.setData([cmp.theta, cmp.exact, cmp.schlick, inside ? cmp.schlickT : none, cmp.error, inside ? cmp.errorT : none]);
     trace.refresh();
-    worstOut.textContent = `${fixed(cmp.worst.value, 4)} at ${deg(cmp.worst.theta)}`;
+    worstOut.textContent = t('valueAt', { value: fixed(cmp.worst.value, 4), angle: deg(cmp.worst.theta) });
     worstTOut.textContent = inside
-      ? `${fixed(cmp.worstT.value, 4)} at ${deg(cmp.worstT.theta)}`
-      : 'same as Schlick (n_i ≤ n_t)';
+      ? t('valueAt', { value: fixed(cmp.worstT.value, 4), angle: deg(cmp.worstT.theta) })
+      : t('sameAsSchlick');
     const r0 = normalIncidence(nI, nT);
     renderTex(r0Tex, String.raw`R_0 = \left(\frac{n_t - n_i}{n_t + n_i}\right)^{2}
       = \left(\frac{${texNumber(nT)} - ${texNumber(nI)}}{${texNumber(nT)} + ${texNumber(nI)}}\right)^{2} = ${fixed(r0)}`);
@@ -112,19 +119,17 @@ export function mount(root, ctx) {
 
     const cosT = snellCosT(cos, nI, nT);
     if (nI <= nT) {
-      tirNote.textContent = 'From the less dense side θt < θ, so Schlick on cos θ is the textbook choice.';
+      tirNote.textContent = t('noteOutside');
     } else if (cosT === null) {
-      tirNote.textContent = `Past the critical angle ${deg(cmp.critical)}: total internal reflection, exact R = 1. `
-        + 'Schlick on cos θ has no idea; Schlick on cos θt returns 1.';
+      tirNote.textContent = t('noteTir', { critical: deg(cmp.critical) });
     } else {
-      tirNote.textContent = `From the denser side: cos θt = ${fixed(cosT)} (θt = ${deg(Math.acos(cosT) / DEG)}); `
-        + `Schlick must use the larger angle. Critical angle ${deg(cmp.critical)}.`;
+      tirNote.textContent = t('noteInside', { cosT: fixed(cosT), thetaT: deg(Math.acos(cosT) / DEG), critical: deg(cmp.critical) });
     }
     panel.classList.toggle('sk-inside', nI > nT);
 
     plot.setMarks([
       criticalMark(cmp.critical),
-      { x: cmp.worst.theta, color: '--c-error', label: `Max |error| ${fixed(cmp.worst.value, 3)}` },
+      { x: cmp.worst.theta, color: '--c-error', label: t('maxMark', { value: fixed(cmp.worst.value, 3) }) },
       thetaMark(theta),
     ]);
   }
@@ -137,12 +142,12 @@ export function mount(root, ctx) {
     describe() {
       const { nI, nT, theta } = values;
       const cos = cosDeg(theta);
-      const inside = nI > nT
-        ? ` Schlick on cos θt is off by at most ${fixed(cmp.worstT.value, 4)} at ${deg(cmp.worstT.theta)}.`
-        : '';
-      return `From n_i = ${nI} into n_t = ${nT}, R0 = ${fixed(normalIncidence(nI, nT), 4)}. At θ = ${deg(theta)} `
-        + `exact R is ${fixed(fresnelExact(cos, nI, nT), 4)} and Schlick gives ${fixed(fresnelSchlick(cos, nI, nT), 4)}. `
-        + `Schlick's largest error is ${fixed(cmp.worst.value, 4)} at ${deg(cmp.worst.theta)}.${inside}`;
+      return t('describe', {
+        nI: indexText(nI), nT: indexText(nT), r0: fixed(normalIncidence(nI, nT), 4), theta: deg(theta),
+        exact: fixed(fresnelExact(cos, nI, nT), 4), schlick: fixed(fresnelSchlick(cos, nI, nT), 4),
+        worst: fixed(cmp.worst.value, 4), worstAngle: deg(cmp.worst.theta),
+        inside: nI > nT ? 'yes' : 'no', worstT: fixed(cmp.worstT.value, 4), worstTAngle: deg(cmp.worstT.theta),
+      });
     },
     csv() {
       return {

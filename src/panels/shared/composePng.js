@@ -2,8 +2,12 @@
 // and counts, so the file makes sense away from the page.
 import { cssVar } from '../../ui/theme.js';
 import { CLASS_NAMES } from '../../methods/stabilityMap.js';
-import { CLASS_LABELS } from './createMapFigure.js';
+import { classLabel } from './createMapFigure.js';
 import { CLASS_COLORS } from './drawMap.js';
+import english from 'virtual:messages/en/panelsShared';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('panelsShared', english);
 
 /** parts: [{ canvas, title, map }]; heading: the method. Returns a PNG data URL. */
 export function composePng(parts, heading) {
@@ -36,7 +40,7 @@ export function composePng(parts, heading) {
       g.fillStyle = cssVar(CLASS_COLORS[k]);
       g.fillRect(x, y - font * 0.4, font * 0.8, font * 0.8);
       g.fillStyle = cssVar('--text', '#fff');
-      g.fillText(`${CLASS_LABELS[cls]}: ${map.counts[cls]}`, x + font * 1.2, y);
+      g.fillText(t('classCount', { label: classLabel(cls), count: String(map.counts[cls]) }), x + font * 1.2, y);
     });
     x += canvas.width + gap;
   }

@@ -1,18 +1,27 @@
-// A stability map's figure (title, canvas, a message in its place when there is none, the count of
-// cells per class), as the stability panel and the shader lab show them; drawn by drawMap.js.
+// A stability map's figure (title and the chosen map's mark, canvas, a message in its place when
+// there is none, the count of cells per class), as the stability panel and the shader lab show them;
+// drawn by drawMap.js.
 import { el } from '../../ui/el.js';
 import { context2d } from '../../ui/context2d.js';
 import { precise } from '../../ui/format.js';
 import { CLASS_NAMES } from '../../methods/stabilityMap.js';
 import { CLASS_COLORS } from './drawMap.js';
 import './stabilityMaps.css';
+import english from 'virtual:messages/en/panelsShared';
+import { messages } from '../../i18n/messages.js';
 
-export const CLASS_LABELS = Object.freeze({
-  fine: 'fine',
-  aboveTolerance: 'error above tolerance',
-  outOfRange: 'outside [0, 1]',
-  notFinite: 'NaN or infinite',
+const t = messages('panelsShared', english);
+const CLASS_WORDS = Object.freeze({
+  fine: 'classFine', aboveTolerance: 'classAboveTolerance', outOfRange: 'classOutOfRange', notFinite: 'classNotFinite',
 });
+
+/** A class's name in the page's language: fine, error above tolerance, outside [0, 1], NaN or infinite. */
+export const classLabel = (cls) => t(CLASS_WORDS[cls]);
+
+/** The same by class, read when the words are written (each a getter). */
+export const CLASS_LABELS = Object.freeze(Object.defineProperties({}, Object.fromEntries(
+  Object.keys(CLASS_WORDS).map((cls) => [cls, { get: () => classLabel(cls), enumerable: true }]),
+)));
 
 export function swatch(cls) {
   const s = el('span', 'st-swatch');
@@ -25,6 +34,11 @@ export function createMapFigure(side, { focusable = true } = {}) {
   const figure = el('figure', 'st-map');
   figure.dataset.side = side;
   const title = el('h3', 'st-map-title');
+  // The chosen map's mark, beside its heading (whose text stays the map's name alone).
+  const chosen = el('span', 'st-chosen');
+  chosen.hidden = true;
+  const head = el('div', 'st-map-head');
+  head.append(title, chosen);
   const canvas = el('canvas', 'st-canvas');
   context2d(canvas); // claimed now, before the first map: see context2d.js
   canvas.tabIndex = focusable ? 0 : -1; // focusable where arrow keys move a probe over it
@@ -38,7 +52,7 @@ export function createMapFigure(side, { focusable = true } = {}) {
     const row = el('tr');
     const name = el('th', '');
     name.scope = 'row';
-    name.append(swatch(cls), CLASS_LABELS[cls]);
+    name.append(swatch(cls), classLabel(cls));
     cells[cls] = el('td', '', '');
     cells[cls].dataset.count = cls;
     row.append(name, cells[cls]);
@@ -46,17 +60,19 @@ export function createMapFigure(side, { focusable = true } = {}) {
   }
   counts.append(body);
   const max = el('p', 'st-max');
-  figure.append(title, canvas, message, counts, max);
+  figure.append(head, canvas, message, counts, max);
   return {
     figure,
     canvas,
     setTitle(text, selected) {
       title.textContent = text;
+      chosen.textContent = selected ? t('chosen') : '';
+      chosen.hidden = !selected;
       figure.classList.toggle('st-selected', selected);
     },
     setCounts(map) {
       for (const cls of CLASS_NAMES) cells[cls].textContent = map ? String(map.counts[cls]) : '–';
-      max.textContent = map ? `largest finite |R − R_exact|: ${precise(map.maxError, 3)}` : '';
+      max.textContent = map ? t('largestError', { error: precise(map.maxError, 3) }) : '';
     },
     showMessage(text) {
       message.textContent = text;

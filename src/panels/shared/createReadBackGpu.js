@@ -12,6 +12,10 @@ import { createContext } from '../../gl/createContext.js';
 import { createMethodsGpu, GpuFloatUnavailable, gpuPrecisionInfo } from '../../gl/evaluateMethodsGpu.js';
 import { refusalLine, ShaderError } from '../../gl/shaderError.js';
 import { createRunGate } from './createRunGate.js';
+import english from 'virtual:messages/en/panelsShared';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('panelsShared', english);
 
 /** @typedef {ReturnType<typeof createMethodsGpu>} MethodsGpu */
 /** @typedef {import('./createRunGate.js').Run} Run */
@@ -106,7 +110,7 @@ export function createReadBackGpu({
         return;
       }
       // After a restore nothing may throw out of the event; every failure is said.
-      problem = words.restartFailed?.(error) || wordProblem(error, words) || `The GPU evaluator could not start again: ${error.message}`;
+      problem = words.restartFailed?.(error) || wordProblem(error, words) || t('evaluatorRestartFailed', { error: error.message });
     }
   }
 

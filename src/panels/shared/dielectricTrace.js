@@ -4,13 +4,18 @@
 import { cosDeg, DEG } from '../../optics/angles.js';
 import { brewsterAngle, criticalAngle, fresnelExact, fresnelPolarized, fresnelSchlick, fresnelSchlickTIR } from '../../optics/fresnel.js';
 import { createAudioTrace } from '../../ui/createAudioTrace.js';
+import english from 'virtual:messages/en/panelsShared';
+import { messages } from '../../i18n/messages.js';
 
+const t = messages('panelsShared', english);
+
+// Each curve's spoken name (the catalogue's key) and its function.
 const CURVES = {
-  exact: ['Exact R', fresnelExact],
-  schlick: ['Schlick', fresnelSchlick],
-  schlickT: ['Schlick on cos θt', fresnelSchlickTIR],
-  s: ['Rs', (c, nI, nT) => fresnelPolarized(c, nI, nT).s],
-  p: ['Rp', (c, nI, nT) => fresnelPolarized(c, nI, nT).p],
+  exact: ['traceExact', fresnelExact],
+  schlick: ['traceSchlick', fresnelSchlick],
+  schlickT: ['traceSchlickT', fresnelSchlickTIR],
+  s: ['traceS', (c, nI, nT) => fresnelPolarized(c, nI, nT).s],
+  p: ['traceP', (c, nI, nT) => fresnelPolarized(c, nI, nT).p],
 };
 
 /** Degrees: the Brewster angle atan(n_t/n_i) and the critical angle asin(n_t/n_i) (null when n_i ≤ n_t). */
@@ -34,8 +39,8 @@ export function addDielectricTrace(plotHost, plot, indices, keys = ['exact'], la
     curves: () => {
       const { nI, nT } = indices();
       return keys.map((key) => {
-        const [label, f] = CURVES[key];
-        return { label: labels[key] ?? label, at: (deg) => f(cosDeg(deg), nI, nT) };
+        const [word, f] = CURVES[key];
+        return { label: labels[key] ?? t(word), at: (deg) => f(cosDeg(deg), nI, nT) };
       });
     },
     landmarks: () => {

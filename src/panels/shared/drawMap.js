@@ -7,6 +7,10 @@ import { context2d } from '../../ui/context2d.js';
 import { fixed } from '../../ui/format.js';
 import { criticalAngleDeg } from '../../methods/classifyGrid.js';
 import { FINE } from '../../methods/stabilityMap.js';
+import english from 'virtual:messages/en/panelsShared';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('panelsShared', english);
 
 /** Class index → theme colour: fine is a quiet neutral so every failure stands out. */
 export const CLASS_COLORS = Object.freeze(['--border', '--c-schlick', '--c-error', '--c-red']);
@@ -96,7 +100,7 @@ function axes(g, L, fontPx) {
     g.stroke();
     g.fillText(`${t}°`, L.x(t), L.plot.y + L.plot.h + fontPx * 0.45);
   }
-  g.fillText('angle of incidence θ', L.plot.x + L.plot.w / 2, L.plot.y + L.plot.h + fontPx * 1.65);
+  g.fillText(t('mapAxisTheta'), L.plot.x + L.plot.w / 2, L.plot.y + L.plot.h + fontPx * 1.65);
   g.textAlign = 'right';
   g.textBaseline = 'middle';
   for (const r of [0.5, 1, 1.5, 2, 2.5]) {

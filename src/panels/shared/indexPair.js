@@ -29,10 +29,13 @@ export function transmittedIndex({ nT = 1.5, step = 0.001, aliases }) {
 }
 
 /**
- * A button that swaps n_i and n_t (light leaving the denser side).
+ * A button that swaps n_i and n_t (light leaving the denser side), named by the panel in the page's
+ * language (the catalogue's panelsShared.swap: "Swap n_i ↔ n_t", or words of its own). No words here:
+ * the schemas that import this module come with every page and its workers.
  * @param {import('../../host/panelContract.js').PanelContext} ctx
  * @param {import('lil-gui').default} folder
+ * @param {string} name
  */
-export function addSwap(ctx, folder, name = 'Swap n_i ↔ n_t') {
+export function addSwap(ctx, folder, name) {
   return ctx.tie(folder.add({ swap: () => ctx.set({ nI: ctx.values.nT, nT: ctx.values.nI }) }, 'swap').name(name), ['nI', 'nT']);
 }

@@ -4,6 +4,10 @@
 import { WebGL2Unavailable } from '../../gl/contextBudget.js';
 import { ShaderError } from '../../gl/shaderError.js';
 import { el } from '../../ui/el.js';
+import english from 'virtual:messages/en/panelsShared';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('panelsShared', english);
 
 /** Replaces what the stage shows with a message (its children stay in the DOM, out of sight). */
 export function showStageFallback(stage, text) {
@@ -22,14 +26,14 @@ export function showStageFallback(stage, text) {
 export function shaderFailureText(error, lines = 4) {
   const log = error.message.split('\n').map((line) => line.trim()).filter(Boolean);
   const shown = log.slice(0, lines).join(' ');
-  return `This GPU could not compile the picture’s shader, so the picture is not drawn. ${shown}${log.length > lines ? ' …' : ''}`;
+  return t('shaderRefused', { log: `${shown}${log.length > lines ? ' …' : ''}` });
 }
 
 /**
  * Returns start() (which creates the view), or null when WebGL2 is unavailable or this GPU
  * refuses the picture's shader (an unusual driver); then the stage shows why and what still
- * works. fallback: "The X needs WebGL2; the plot below still works." (after a refused shader only
- * its part after the semicolon is said). Any other error is the panel's and propagates.
+ * works. fallback: "The X needs WebGL2; the plot below still works." in the page's language (after a
+ * refused shader only its part after the semicolon is said). Any other error is the panel's and propagates.
  */
 export function startWebGL(stage, start, fallback) {
   try {

@@ -4,9 +4,14 @@
 import { button, el } from '../../ui/el.js';
 import { angle as formatAngle, fixed } from '../../ui/format.js';
 import { definitionList } from '../../ui/definitionList.js';
+import english from 'virtual:messages/en/spheres';
+import { messages } from '../../i18n/messages.js';
 
-// On a narrow screen the spheres are shown one at a time, at a size that reads, with these to switch.
-const SINGLE = [['exact', 'Exact'], ['schlick', 'Schlick'], ['error', '|Exact − Schlick|']];
+const t = messages('spheres', english);
+
+// On a narrow screen the spheres are shown one at a time, at a size that reads, with these to switch
+// (each mode's word in the catalogue).
+const SINGLE = [['exact', 'exact'], ['schlick', 'schlick'], ['error', 'error']];
 
 export function buildSpheresDom(host) {
   const root = el('div', 'spheres-panel');
@@ -15,27 +20,26 @@ export function buildSpheresDom(host) {
   const canvas = el('canvas', 'stage-canvas');
   canvas.tabIndex = 0;
   canvas.setAttribute('role', 'img');
-  canvas.setAttribute('aria-label',
-    'Three spheres: exact Fresnel, Schlick, and their difference as a heatmap. Drag or use the arrow keys to orbit.');
+  canvas.setAttribute('aria-label', t('canvas'));
   const labels = el('div', 'stage-labels');
-  const labelSpans = ['Exact Fresnel', "Schlick's approximation", '|Exact − Schlick|'].map((text, i) => {
-    const span = el('span', '', text);
+  const labelSpans = ['labelExact', 'labelSchlick', 'error'].map((word, i) => {
+    const span = el('span', '', t(word));
     span.dataset.mode = SINGLE[i][0];
     return span;
   });
   labels.append(...labelSpans);
   const switcher = el('div', 'sphere-switch');
   switcher.setAttribute('role', 'group');
-  switcher.setAttribute('aria-label', 'Sphere shown');
+  switcher.setAttribute('aria-label', t('switcher'));
   switcher.hidden = true;
-  const switches = SINGLE.map(([mode, text]) => {
-    const b = button(text);
+  const switches = SINGLE.map(([mode, word]) => {
+    const b = button(t(word));
     b.dataset.mode = mode;
     switcher.append(b);
     return b;
   });
   const legend = el('div', 'legend');
-  legend.setAttribute('aria-label', 'Heatmap colour legend');
+  legend.setAttribute('aria-label', t('legend'));
   const legendBar = el('div', 'legend-bar');
   const legendTicks = el('div', 'legend-ticks');
   legend.append(legendBar, legendTicks);
@@ -44,16 +48,17 @@ export function buildSpheresDom(host) {
   const readout = el('p', 'readout');
   const summary = definitionList('summary');
   const plot = el('div', 'plot');
-  plot.setAttribute('aria-label', 'Reflectance R against angle θ');
+  plot.setAttribute('aria-label', t('plot'));
   main.append(switcher, stage, readout, summary.element, plot);
   root.append(main);
   host.append(root);
 
   const setReadout = (data) => {
     readout.textContent = data
-      ? `Pixel: θ = ${formatAngle(data.theta)}   F exact = ${fixed(data.exact, 4)}   F Schlick = ${fixed(data.schlick, 4)}   `
-        + `|error| = ${fixed(data.error, 4)}`
-      : 'Hover or tap a sphere to read θ, F exact, F Schlick and the error at that pixel.';
+      ? t('readout', {
+        theta: formatAngle(data.theta), exact: fixed(data.exact, 4), schlick: fixed(data.schlick, 4), error: fixed(data.error, 4),
+      })
+      : t('readoutHint');
   };
   setReadout(null);
 
@@ -78,7 +83,7 @@ export function buildSpheresDom(host) {
       legendBar.style.background = gradient;
       const digits = top < 0.01 ? 3 : top < 0.1 ? 3 : 2;
       const ticks = [0, top / 2, top].map((v) => fixed(v, digits));
-      legendTicks.replaceChildren(...ticks.map((text, i) => el('span', '', i === 2 ? `≥ ${text}` : text)));
+      legendTicks.replaceChildren(...ticks.map((text, i) => el('span', '', i === 2 ? t('legendTop', { value: text }) : text)));
     },
   };
 }

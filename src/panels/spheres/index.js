@@ -16,8 +16,15 @@ import { createSphereTrio } from './createSphereTrio.js';
 import { buildSpheresDom } from './buildSpheresDom.js';
 import { readByPointer } from '../../ui/readByPointer.js';
 import { schema } from './schema.js';
+import { indexText } from '../shared/indexText.js';
+import english from 'virtual:messages/en/spheres';
+import sharedWords from 'virtual:messages/en/panelsShared';
+import { messages } from '../../i18n/messages.js';
 
 export { schema };
+
+const t = messages('spheres', english);
+const shared = messages('panelsShared', sharedWords);
 
 const VIEW_KEYS = ['viewAz', 'viewEl', 'viewDist'];
 
@@ -34,20 +41,20 @@ export function mount(root, ctx) {
   const plot = createRPlot(dom.plot);
   const trace = addDielectricTrace(dom.plot, plot, () => values, ['exact', 'schlick', 's', 'p']);
   const trio = startWebGL(dom.stage, () => createSphereTrio(dom.canvas, { onChange: onViewChange, onFrame: ctx.frameDrawn }),
-    'The spheres need WebGL2; the plot below still works.');
+    t('noWebgl'));
 
   // Controls: index presets (derived from the indices, so the URL holds only n), then the schema.
   const presets = indexPresets();
   const presetState = { matI: presets.idFor(values.nI), matT: presets.idFor(values.nT) };
-  const optics = ctx.gui.addFolder('Indices of refraction');
-  const presetI = ctx.tie(optics.add(presetState, 'matI', presets.options).name('Incident side')
+  const optics = ctx.gui.addFolder(t('folderIndices'));
+  const presetI = ctx.tie(optics.add(presetState, 'matI', presets.options).name(t('presetIncident'))
     .onChange((pid) => pid !== 'custom' && ctx.set({ nI: presets.index(pid) })), ['nI']);
-  const presetT = ctx.tie(optics.add(presetState, 'matT', presets.options).name('Sphere material')
+  const presetT = ctx.tie(optics.add(presetState, 'matT', presets.options).name(t('presetSphere'))
     .onChange((pid) => pid !== 'custom' && ctx.set({ nT: presets.index(pid) })), ['nT']);
   ctx.bind(optics, ['nI', 'nT']);
-  addSwap(ctx, optics, 'Swap n_i ↔ n_t (look out of the glass)');
-  ctx.bind(ctx.gui.addFolder('Look'), ['kd', 'ks', 'lightAz', 'lightEl', 'env', 'errScale']);
-  ctx.bind(ctx.gui.addFolder('Camera (or drag / arrow keys on the spheres)').close(), VIEW_KEYS);
+  addSwap(ctx, optics, shared('swapLookOut'));
+  ctx.bind(ctx.gui.addFolder(t('folderLook')), ['kd', 'ks', 'lightAz', 'lightEl', 'env', 'errScale']);
+  ctx.bind(ctx.gui.addFolder(t('folderCamera')).close(), VIEW_KEYS);
 
   // Only the view keys that moved, so a deck's lock of one (say the distance) leaves the others
   // free; a refused change puts the camera back where the values say.
@@ -80,10 +87,10 @@ export function mount(root, ctx) {
       plot.setCurves(curves, { brewster, critical: critical === null ? null : critical / DEG });
       trace.refresh();
       dom.setSummary([
-        ['R0', fixed(normalIncidence(nI, nT), 5)],
-        ['Brewster', formatAngle(brewster)],
-        ['Critical', critical === null ? 'none (n_i ≤ n_t)' : formatAngle(critical / DEG)],
-        ['Max |exact − Schlick|', `${fixed(worst.value, 4)} at ${formatAngle(worst.theta)}`],
+        [t('r0'), fixed(normalIncidence(nI, nT), 5)],
+        [t('brewster'), formatAngle(brewster)],
+        [t('critical'), critical === null ? t('noCritical') : formatAngle(critical / DEG)],
+        [t('maxError'), t('valueAt', { value: fixed(worst.value, 4), angle: formatAngle(worst.theta) })],
       ]);
     }
     errScale = values.errScale === 'auto' ? niceCeil(worst.value) : Number(values.errScale);
@@ -148,10 +155,12 @@ export function mount(root, ctx) {
       const at60 = fresnelExact(cosDeg(60), values.nI, values.nT);
       const s60 = fresnelSchlick(cosDeg(60), values.nI, values.nT);
       const critical = criticalAngle(values.nI, values.nT);
-      return `From n_i = ${values.nI} into n_t = ${values.nT}: R at 0° is ${fixed(normalIncidence(values.nI, values.nT), 4)}; `
-        + `R at 60° is ${fixed(at60, 4)} exact and ${fixed(s60, 4)} by Schlick; `
-        + `${critical === null ? 'no critical angle' : `critical angle ${formatAngle(critical / DEG)}`}; `
-        + `the largest error of Schlick is ${fixed(worst.value, 4)} at ${formatAngle(worst.theta)}.`;
+      return t('describe', {
+        nI: indexText(values.nI), nT: indexText(values.nT), r0: fixed(normalIncidence(values.nI, values.nT), 4),
+        exact60: fixed(at60, 4), schlick60: fixed(s60, 4),
+        tir: critical === null ? 'no' : 'yes', critical: critical === null ? '' : formatAngle(critical / DEG),
+        worst: fixed(worst.value, 4), worstAngle: formatAngle(worst.theta),
+      });
     },
     csv() {
       const { theta, exact, schlick, s, p, error } = curves;
