@@ -14,13 +14,27 @@
 // computes each graded quantity again without the lab's code.
 import { LIGHT_QUESTIONS } from './lightQuestions.js';
 import { FRESNEL_QUESTIONS } from './fresnelQuestions.js';
+import english from 'virtual:messages/en/questions';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('questions', english);
 
 export const QUESTIONS = Object.freeze([...LIGHT_QUESTIONS, ...FRESNEL_QUESTIONS].map(Object.freeze));
 
 const byId = new Map(QUESTIONS.map((q) => [q.id, q]));
 
-/** What each kind is called on the page. */
-export const KIND_NAMES = Object.freeze({ numeric: 'Number', predict: 'Predict, then see', choice: 'Choice' });
+/** What a kind of question is called on the page, in the page's language. */
+export const kindName = (kind) => t(`kind.${kind}`);
+
+/**
+ * What each kind is called on the page: each name is read when it is written (a getter), so it is
+ * in the language the page chose after this module loaded.
+ */
+export const KIND_NAMES = Object.freeze({
+  get numeric() { return kindName('numeric'); },
+  get predict() { return kindName('predict'); },
+  get choice() { return kindName('choice'); },
+});
 
 /** The question with this id, or undefined. */
 export const questionById = (id) => byId.get(id);

@@ -98,10 +98,11 @@ export function buildQuestionCard({
   } else if (question.kind === 'predict') {
     // Any angle is a prediction, the marker's start included: the button names the one it commits.
     const name = (value) => { commit.textContent = `Commit prediction: ${angle(value, 1)}`; };
+    const axis = question.axis?.() ?? null;
     figure = createPredictFigure({
-      label: `Your prediction for question ${number}, ${question.axis ?? 'θ'} in degrees`,
+      label: `Your prediction for question ${number}, ${axis ?? 'θ'} in degrees`,
       describedBy: prompt.id,
-      ...(question.axis ? { axisTitle: question.axis } : {}),
+      ...(axis ? { axisTitle: axis } : {}),
       onChange: name,
     });
     if (answer !== null) figure.setValue(answer);
