@@ -18,27 +18,28 @@ import './homework/page/classView/classView.css';
 import { connectScorm } from './homework/page/connectScorm.js';
 import { readTextFile } from './homework/page/formParts.js';
 import { startPageLanguage } from './i18n/pageLanguage.js';
+import english from 'virtual:messages/en/homework';
+import { messages } from './i18n/messages.js';
+
+const t = messages('homework', english);
 
 // The language first, so every word below is in it.
 const language = await startPageLanguage();
 setupPageControls(document.querySelector('.page-controls'), {});
 const root = document.getElementById('homework');
-if (language.problem) showNotice(root, 'The page could not load its language, so it is in English:', [language.problem]);
+if (language.problem) showNotice(root, t('page.languageProblem'), [language.problem]);
 installPageFaults((title, lines) => showNotice(root, title, lines, { kind: 'error' }));
 const search = new URLSearchParams(window.location.search);
 window.fresnelLab = { homework: null };
 
 function lecturerPage() {
   const intro = el('section', 'hw-intro');
-  intro.append(el('h1', null, 'Homework on the lecture’s panels'),
-    el('p', null, 'Compose a sheet of questions; students open its link, predict and answer on the panels themselves, '
-      + 'and hand in a file or a code. Every answer is computed by the lab’s own optics, '
-      + 'and checked again here from the seed: no server is involved.'));
+  intro.append(el('h1', null, t('page.heading')), el('p', null, t('page.intro')));
   const openLabel = el('label', 'hw-field');
   const file = el('input');
   file.type = 'file';
   file.accept = '.json,application/json';
-  openLabel.append(el('span', null, 'Open a sheet file'), file);
+  openLabel.append(el('span', null, t('page.openSheet')), file);
   const openStatus = el('div');
   intro.append(openLabel, openStatus);
   file.addEventListener('change', async () => {
@@ -50,12 +51,12 @@ function lecturerPage() {
       try {
         read = readSheet(JSON.parse(picked.text));
       } catch {
-        read = { ok: false, problems: ['This file is not a sheet’s JSON.'] };
+        read = { ok: false, problems: [t('page.notSheetJson')] };
       }
     }
     openStatus.replaceChildren();
     if (read.ok) window.location.assign(sheetUrl(read.sheet));
-    else showNotice(openStatus, `${chosen.name} is not a usable sheet:`, read.problems, { kind: 'error' });
+    else showNotice(openStatus, t('page.unusableFile', { file: chosen.name }), read.problems, { kind: 'error' });
   });
   root.append(intro);
   const composer = buildComposer(root);
@@ -81,7 +82,6 @@ if (code === null) {
     window.fresnelLab.homework = showSheet(root, { sheet: read.sheet, code, urlSeed: seed, scorm });
   } else {
     lecturerPage();
-    showNotice(root, 'This sheet link cannot be used:', [...read.problems, 'Ask for the link again, or compose a sheet below.'],
-      { kind: 'error' });
+    showNotice(root, t('page.unusableLink'), [...read.problems, t('page.askAgain')], { kind: 'error' });
   }
 }

@@ -71,6 +71,7 @@ export const LIGHT_QUESTIONS = [
       + 'sun and sky it depends on that direction alone, not on the camera or its field of view; the panel\'s hover readout gives '
       + 'each spot\'s angle below the horizon with both parts.',
     axis: () => t('asphalt-outshine.axis'),
+    axisInText: () => t('asphalt-outshine.axisInText'), // the axis as a sentence names it
     params: (rng) => ({ nT: rng.pick([1.5, 1.55, 1.6]), sunEl: rng.pick([10, 15, 20]) }),
     prompt: (p) => t('asphalt-outshine.prompt', { nT: number(p.nT), roughness: number(ASPHALT_ROUGHNESS), sunEl: number(p.sunEl) }),
     expected: (p) => angleWhere(specularShare(p), 0.5, 0.5, 90),

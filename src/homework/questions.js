@@ -6,7 +6,8 @@
 //   kind 'numeric': typed, with units, checked at the tolerance stated in the prompt;
 //   kind 'predict': an angle committed before the panel shows the truth; `curve` is what the
 //                   prediction is drawn against once the truth is shown (it stays drawn);
-//                   `axis`, where given, names what the 0°–90° axis measures (else θ from the normal);
+//                   `axis()`, where given, names what the 0°–90° axis measures (else θ from the normal),
+//                   and `axisInText()` names it as a sentence does;
 //   kind 'choice':  one option holds.
 // Every question has `state(p)`: the values its panel starts from, and `graded`: the physical
 // quantity it grades and why a student can reason to it from what the panel shows. A quantity that
