@@ -1,14 +1,15 @@
 // homework.html: with ?sheet=CODE (or a sheet written into the page, in a SCORM package), the sheet
 // a student works on (showSheet); without one, the lecturer's page: open a sheet file, compose a
 // sheet, check handed-in files, grade a class. A sheet that cannot be read is refused with its
-// reasons, and the lecturer's page is shown under them.
+// reasons, and the lecturer's page is shown under them. The page speaks the language the sheet was
+// made in (its `lang`), unless the link asks for another (?lang=).
 import './styles.css';
 import './homework/page/homework.css';
 import { setupPageControls } from './host/setupPageControls.js';
 import { showNotice } from './host/showNotice.js';
 import { installPageFaults } from './host/panelFaults.js';
 import { el } from './ui/el.js';
-import { readSheet } from './homework/readSheet.js';
+import { readSheet, sheetLanguage } from './homework/readSheet.js';
 import { sheetFromCode } from './homework/sheetCodes.js';
 import { showSheet } from './homework/page/showSheet.js';
 import { buildComposer, sheetUrl } from './homework/page/buildComposer.js';
@@ -23,13 +24,29 @@ import { messages } from './i18n/messages.js';
 
 const t = messages('homework', english);
 
+const search = new URLSearchParams(window.location.search);
+// A SCORM package carries its sheet in the page (buildScormPackage.js), and then that sheet and
+// the learner's seed are the only ones: a ?sheet= or ?seed= added to its address is not read (the
+// LMS would be sent the score of another sheet). Elsewhere a link carries the sheet in ?sheet=.
+const carried = document.getElementById('fresnel-lab-sheet');
+const inPackage = carried?.dataset.scorm === '1';
+const code = inPackage ? carried.textContent.trim() : search.get('sheet');
+
+/** The language a sheet's code carries, where it is one of the lab's (the rest of the sheet is read later). */
+function carriedLanguage(sheetCode) {
+  if (sheetCode === null) return null;
+  const decoded = sheetFromCode(sheetCode);
+  const data = decoded.ok ? decoded.data : null;
+  const lang = data !== null && typeof data === 'object' && Object.hasOwn(data, 'lang') ? data.lang : null;
+  return sheetLanguage(lang) ? lang : null;
+}
+
 // The language first, so every word below is in it.
-const language = await startPageLanguage();
+const language = await startPageLanguage({ carried: carriedLanguage(code) });
 setupPageControls(document.querySelector('.page-controls'), {});
 const root = document.getElementById('homework');
 if (language.problem) showNotice(root, t('page.languageProblem'), [language.problem]);
 installPageFaults((title, lines) => showNotice(root, title, lines, { kind: 'error' }));
-const search = new URLSearchParams(window.location.search);
 window.fresnelLab = { homework: null };
 
 function lecturerPage() {
@@ -65,12 +82,6 @@ function lecturerPage() {
   window.fresnelLab.homework = { composer, checker, classView };
 }
 
-// A SCORM package carries its sheet in the page (buildScormPackage.js), and then that sheet and
-// the learner's seed are the only ones: a ?sheet= or ?seed= added to its address is not read (the
-// LMS would be sent the score of another sheet). Elsewhere a link carries the sheet in ?sheet=.
-const carried = document.getElementById('fresnel-lab-sheet');
-const inPackage = carried?.dataset.scorm === '1';
-const code = inPackage ? carried.textContent.trim() : search.get('sheet');
 if (code === null) {
   lecturerPage();
 } else {

@@ -1,9 +1,11 @@
 // A homework sheet (what a lecturer composes), read from untrusted JSON: every field is checked
-// and anything unexpected is refused with a reason. Handed-in files: gradeHandIn.js.
+// and anything unexpected is refused with a reason. Handed-in files: gradeHandIn.js. A sheet may
+// carry the language it was made in (`lang`: one of src/i18n/languages.js), so that it opens in it.
 import { questionById } from './questions.js';
 import { EMBED_KEYS } from '../host/readEmbedOptions.js';
 import { clipText, rawText, resolveKey } from '../host/params.js';
 import { panelSchema } from '../panels/panelSchema.js';
+import { LANGUAGES, languageById } from '../i18n/languages.js';
 import english from 'virtual:messages/en/homework';
 import { messages } from '../i18n/messages.js';
 
@@ -12,7 +14,7 @@ const MAX_ITEMS = 40;
 const MAX_STATE_KEYS = 24;
 const text = (v, max) => typeof v === 'string' && v.length > 0 && v.length <= max;
 const plainObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
-const SHEET_FIELDS = ['version', 'title', 'reveal', 'seed', 'items'];
+const SHEET_FIELDS = ['version', 'title', 'reveal', 'seed', 'lang', 'items'];
 const ITEM_FIELDS = ['question', 'state'];
 
 const t = messages('homework', english);
@@ -23,6 +25,9 @@ const unknownFields = (object, fields, item = null) => Object.keys(object).filte
     const named = { field: rawText(key, 32), fields: fields.join(', ') };
     return item === null ? t('sheet.unknownField', named) : t('sheet.unknownItemField', { ...named, item });
   });
+
+/** Whether a sheet's `lang` is a language of the lab (a listed one, or a pseudo-locale the tests ask for). */
+export const sheetLanguage = (lang) => typeof lang === 'string' && languageById(lang) !== undefined;
 
 /**
  * An item's start state: panel values the question does not set (a view, a roughness). Its shape
@@ -64,6 +69,9 @@ export function readSheet(data) {
   }
   if (data.seed !== undefined && !text(data.seed, 64)) problems.push(t('sheet.seed'));
   if (data.reveal !== undefined && !['after-answer', 'lecturer'].includes(data.reveal)) problems.push(t('sheet.reveal'));
+  if (data.lang !== undefined && !sheetLanguage(data.lang)) {
+    problems.push(t('sheet.lang', { languages: LANGUAGES.map((l) => l.id).join(', '), lang: rawText(data.lang, 32) }));
+  }
   if (problems.length) return { ok: false, problems };
   return {
     ok: true,
@@ -72,6 +80,7 @@ export function readSheet(data) {
       title: data.title,
       reveal: data.reveal ?? 'after-answer',
       ...(data.seed === undefined ? {} : { seed: data.seed }),
+      ...(data.lang === undefined ? {} : { lang: data.lang }),
       items: data.items.map((item) => ({ question: item.question, ...(item.state ? { state: { ...item.state } } : {}) })),
     },
   };

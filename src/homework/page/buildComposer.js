@@ -1,7 +1,8 @@
 // The lecturer's composer: a title, how answers are revealed, an optional seed shared by the
 // class, and the questions, grouped by panel in lecture order, each with an optional start state
 // (a link copied from the panel). The sheet is read back by readSheet as it is built, so what is
-// offered as a link or a file is exactly what a student's page will accept.
+// offered as a link or a file is exactly what a student's page will accept. It carries the
+// language the page is in, so that it opens in the language it was made in.
 import { el } from '../../ui/el.js';
 import { setSubscripted } from '../../ui/subscripts.js';
 import { PANELS } from '../../panels/manifest.js';
@@ -16,7 +17,7 @@ import { buildScormPackage } from './buildScormPackage.js';
 import { button, field, titledSection } from './formParts.js';
 import { panelTitle } from '../../panels/panelText.js';
 import english from 'virtual:messages/en/homework';
-import { messages } from '../../i18n/messages.js';
+import { currentLanguage, messages } from '../../i18n/messages.js';
 
 const t = messages('homework', english);
 
@@ -107,7 +108,8 @@ export function buildComposer(root) {
       return Object.keys(read.state ?? {}).length ? { question: question.id, state: read.state } : { question: question.id };
     });
     const draft = {
-      version: 1, title: title.value.trim(), reveal: reveal.value, items, ...(seed.value.trim() ? { seed: seed.value.trim() } : {}),
+      version: 1, title: title.value.trim(), reveal: reveal.value, ...(seed.value.trim() ? { seed: seed.value.trim() } : {}),
+      lang: currentLanguage(), items,
     };
     const read = readSheet(draft);
     const all = items.length ? [...itemProblems, ...(read.ok ? [] : read.problems)] : [t('composer.pickOne')];
