@@ -6,6 +6,9 @@
 //                                    chunks that use it and the first load carries only its own
 //   virtual:messages/<lang>          a whole other catalogue, loaded when that language is chosen
 //   virtual:messages/languages       { <lang>: () => import(…) } for every other language
+//   virtual:messages/every/<ns>+<ns> { <lang>: { <ns>: … } }: those namespaces of every other language
+//                                    but the pseudo-locales, in one module (a worker's, whose bundle
+//                                    cannot load chunks; it makes a pseudo-locale from English itself)
 // The pseudo-locales en-XA (accented, 35 % longer, bracketed) and ar-XB (the same, right to left)
 // are made from the English catalogue here (pseudoLocale.js), for the tests that find words outside
 // the catalogue and text that is cut off.
@@ -77,6 +80,14 @@ export function messagesPlugin({ dir }) {
       if (parts[0] === 'languages') {
         const others = Object.keys(all).filter((lang) => lang !== 'en');
         return `export default {\n${others.map((lang) => `  ${JSON.stringify(lang)}: () => import(${JSON.stringify(`${PREFIX}/${lang}`)}),`).join('\n')}\n};\n`;
+      }
+      if (parts[0] === 'every') {
+        const others = Object.keys(all).filter((lang) => lang !== 'en' && !Object.hasOwn(PSEUDO_LOCALES, lang));
+        const namespaces = (parts[1] ?? '').split('+').filter(Boolean);
+        const name = (i, j) => `m${i}_${j}`;
+        const imports = others.flatMap((lang, i) => namespaces.map((ns, j) => `import ${name(i, j)} from ${JSON.stringify(`${PREFIX}/${lang}/${ns}`)};`));
+        const entries = others.map((lang, i) => `  ${JSON.stringify(lang)}: { ${namespaces.map((ns, j) => `${JSON.stringify(ns)}: ${name(i, j)}`).join(', ')} },`);
+        return `${imports.join('\n')}\nexport default {\n${entries.join('\n')}\n};\n`;
       }
       const [lang, namespace] = parts;
       if (!Object.hasOwn(all, lang)) throw new Error(`No catalogue locales/${lang}.json for ${id}`);

@@ -1,14 +1,15 @@
 // homework.html: with ?sheet=CODE (or a sheet written into the page, in a SCORM package), the sheet
 // a student works on (showSheet); without one, the lecturer's page: open a sheet file, compose a
 // sheet, check handed-in files, grade a class. A sheet that cannot be read is refused with its
-// reasons, and the lecturer's page is shown under them.
+// reasons, and the lecturer's page is shown under them. The page speaks the language the sheet was
+// made in (its `lang`), unless the link asks for another (?lang=).
 import './styles.css';
 import './homework/page/homework.css';
 import { setupPageControls } from './host/setupPageControls.js';
 import { showNotice } from './host/showNotice.js';
 import { installPageFaults } from './host/panelFaults.js';
 import { el } from './ui/el.js';
-import { readSheet } from './homework/readSheet.js';
+import { readSheet, sheetLanguage } from './homework/readSheet.js';
 import { sheetFromCode } from './homework/sheetCodes.js';
 import { showSheet } from './homework/page/showSheet.js';
 import { buildComposer, sheetUrl } from './homework/page/buildComposer.js';
@@ -18,27 +19,44 @@ import './homework/page/classView/classView.css';
 import { connectScorm } from './homework/page/connectScorm.js';
 import { readTextFile } from './homework/page/formParts.js';
 import { startPageLanguage } from './i18n/pageLanguage.js';
+import english from 'virtual:messages/en/homework';
+import { messages } from './i18n/messages.js';
+
+const t = messages('homework', english);
+
+const search = new URLSearchParams(window.location.search);
+// A SCORM package carries its sheet in the page (buildScormPackage.js), and then that sheet and
+// the learner's seed are the only ones: a ?sheet= or ?seed= added to its address is not read (the
+// LMS would be sent the score of another sheet). Elsewhere a link carries the sheet in ?sheet=.
+const carried = document.getElementById('fresnel-lab-sheet');
+const inPackage = carried?.dataset.scorm === '1';
+const code = inPackage ? carried.textContent.trim() : search.get('sheet');
+
+/** The language a sheet's code carries, where it is one of the lab's (the rest of the sheet is read later). */
+function carriedLanguage(sheetCode) {
+  if (sheetCode === null) return null;
+  const decoded = sheetFromCode(sheetCode);
+  const data = decoded.ok ? decoded.data : null;
+  const lang = data !== null && typeof data === 'object' && Object.hasOwn(data, 'lang') ? data.lang : null;
+  return sheetLanguage(lang) ? lang : null;
+}
 
 // The language first, so every word below is in it.
-const language = await startPageLanguage();
+const language = await startPageLanguage({ carried: carriedLanguage(code) });
 setupPageControls(document.querySelector('.page-controls'), {});
 const root = document.getElementById('homework');
-if (language.problem) showNotice(root, 'The page could not load its language, so it is in English:', [language.problem]);
+if (language.problem) showNotice(root, t('page.languageProblem'), [language.problem]);
 installPageFaults((title, lines) => showNotice(root, title, lines, { kind: 'error' }));
-const search = new URLSearchParams(window.location.search);
 window.fresnelLab = { homework: null };
 
 function lecturerPage() {
   const intro = el('section', 'hw-intro');
-  intro.append(el('h1', null, 'Homework on the lecture’s panels'),
-    el('p', null, 'Compose a sheet of questions; students open its link, predict and answer on the panels themselves, '
-      + 'and hand in a file or a code. Every answer is computed by the lab’s own optics, '
-      + 'and checked again here from the seed: no server is involved.'));
+  intro.append(el('h1', null, t('page.heading')), el('p', null, t('page.intro')));
   const openLabel = el('label', 'hw-field');
   const file = el('input');
   file.type = 'file';
   file.accept = '.json,application/json';
-  openLabel.append(el('span', null, 'Open a sheet file'), file);
+  openLabel.append(el('span', null, t('page.openSheet')), file);
   const openStatus = el('div');
   intro.append(openLabel, openStatus);
   file.addEventListener('change', async () => {
@@ -50,12 +68,12 @@ function lecturerPage() {
       try {
         read = readSheet(JSON.parse(picked.text));
       } catch {
-        read = { ok: false, problems: ['This file is not a sheet’s JSON.'] };
+        read = { ok: false, problems: [t('page.notSheetJson')] };
       }
     }
     openStatus.replaceChildren();
     if (read.ok) window.location.assign(sheetUrl(read.sheet));
-    else showNotice(openStatus, `${chosen.name} is not a usable sheet:`, read.problems, { kind: 'error' });
+    else showNotice(openStatus, t('page.unusableFile', { file: chosen.name }), read.problems, { kind: 'error' });
   });
   root.append(intro);
   const composer = buildComposer(root);
@@ -64,12 +82,6 @@ function lecturerPage() {
   window.fresnelLab.homework = { composer, checker, classView };
 }
 
-// A SCORM package carries its sheet in the page (buildScormPackage.js), and then that sheet and
-// the learner's seed are the only ones: a ?sheet= or ?seed= added to its address is not read (the
-// LMS would be sent the score of another sheet). Elsewhere a link carries the sheet in ?sheet=.
-const carried = document.getElementById('fresnel-lab-sheet');
-const inPackage = carried?.dataset.scorm === '1';
-const code = inPackage ? carried.textContent.trim() : search.get('sheet');
 if (code === null) {
   lecturerPage();
 } else {
@@ -81,7 +93,6 @@ if (code === null) {
     window.fresnelLab.homework = showSheet(root, { sheet: read.sheet, code, urlSeed: seed, scorm });
   } else {
     lecturerPage();
-    showNotice(root, 'This sheet link cannot be used:', [...read.problems, 'Ask for the link again, or compose a sheet below.'],
-      { kind: 'error' });
+    showNotice(root, t('page.unusableLink'), [...read.problems, t('page.askAgain')], { kind: 'error' });
   }
 }

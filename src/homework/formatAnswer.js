@@ -1,6 +1,8 @@
 // How answers and computed values are printed: the decimals a question asks for (its tolerance is
 // half a unit in that place: "to 3 decimals" is ±0.0005) and one more, so a shown value is never
-// rounder than the check it is held to.
+// rounder than the check it is held to. Shown numbers: src/ui/format.js (the page's decimal sign).
+import { fixed } from '../ui/format.js';
+import { number } from './questionParts.js';
 
 /** Decimals for a value checked at this tolerance (angles: at least two). */
 export function decimalsFor(question) {
@@ -9,10 +11,10 @@ export function decimalsFor(question) {
 }
 
 export function formatValue(question, value) {
-  const text = value.toFixed(decimalsFor(question)).replace('-', '−');
+  const text = fixed(value, decimalsFor(question));
   return question.unit === 'deg' ? `${text}°` : text;
 }
 
 export function formatTolerance(question) {
-  return question.unit === 'deg' ? `${question.tolerance}°` : String(question.tolerance);
+  return question.unit === 'deg' ? `${number(question.tolerance)}°` : number(question.tolerance);
 }

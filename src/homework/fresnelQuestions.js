@@ -13,7 +13,13 @@ import { dielectricById, metalById, metals } from '../optics/materials.js';
 import { methodError } from '../methods/advisor.js';
 import { methodById } from '../methods/methods.js';
 import { sceneById } from '../methods/scenes.js';
-import { ANGLES, INDICES, fixed } from './questionParts.js';
+import { ANGLES, INDICES, fixed, number, numberList } from './questionParts.js';
+import english from 'virtual:messages/en/questions';
+import { messages } from '../i18n/messages.js';
+
+// Every word a student reads is the catalogue's (locales/*.json, namespace questions: the
+// question's id, then prompt, option.<id>, why.<id>, curve); `graded` is for engineers.
+const t = messages('questions', english);
 
 /** A hair above 1, as interpolated normals give; it survives rounding to float32 (1 + 2⁻²³). */
 const COS_ABOVE_ONE = 1.0000001;
@@ -40,7 +46,11 @@ function schlickWorstCodes() {
   worstCodes = refined > best.codes ? { codes: refined, theta, nI, nT } : best;
   return worstCodes;
 }
-const codesText = (codes) => (codes < 0.005 ? 'less than 0.01 codes' : `${fixed(codes, 2)} codes`);
+/** Schlick's worst error in words' numbers: its codes, their share of the range, where. */
+function worstShown() {
+  const { codes, theta, nT } = schlickWorstCodes();
+  return { codes: fixed(codes, 1), share: fixed((100 * codes) / 255, 1), theta: fixed(theta, 0), n: fixed(nT, 2) };
+}
 
 /** Indices whose rims the rim-scaling explanation compares. */
 const RIM_INDICES = [1.33, 1.5, 2];
@@ -51,30 +61,28 @@ export const FRESNEL_QUESTIONS = [
     graded: 'R(0°) = ((n_t − n_i)/(n_t + n_i))² for water, glass and diamond from air: it grows with the index and is not 0.04 '
       + 'for all. The panel\'s material table lists R0 per material.',
     params: () => ({}),
-    prompt: () => 'Is R(0°) = 0.04 for every dielectric?',
-    options: () => [
-      {
-        id: 'all-004', text: () => 'Yes: every dielectric reflects 4 % head-on.',
-        holds: () => ['water', 'glass', 'diamond'].every((id) => Math.abs(normalIncidence(1, dielectricById(id).n) - 0.04) < 0.005),
-        why: () => `No: 0.04 belongs to n = 1.5 (R(0°) = ${fixed(normalIncidence(1, 1.5), 3)}). `
-          + `Water gives ${fixed(normalIncidence(1, dielectricById('water').n), 3)}, `
-          + `diamond ${fixed(normalIncidence(1, dielectricById('diamond').n), 3)}.`,
-      },
-      {
-        id: 'depends-on-n', text: () => 'No: it is ((n_t − n_i)/(n_t + n_i))², so it grows with the index.',
-        holds: () => normalIncidence(1, dielectricById('water').n) < normalIncidence(1, dielectricById('glass').n)
-          && normalIncidence(1, dielectricById('glass').n) < normalIncidence(1, dielectricById('diamond').n),
-        why: () => `Right: water ${fixed(normalIncidence(1, dielectricById('water').n), 3)}, `
-          + `glass ${fixed(normalIncidence(1, dielectricById('glass').n), 3)}, `
-          + `diamond ${fixed(normalIncidence(1, dielectricById('diamond').n), 3)}.`,
-      },
-      {
-        id: 'none-head-on', text: () => 'Nothing is reflected head-on: reflection needs a grazing angle.',
-        holds: () => normalIncidence(1, dielectricById('glass').n) === 0,
-        why: () => `No: head-on glass still reflects ${fixed(normalIncidence(1, dielectricById('glass').n), 3)}; `
-          + `grazing only makes it more.`,
-      },
-    ],
+    prompt: () => t('r0-materials.prompt'),
+    options: () => {
+      const r0 = (id) => fixed(normalIncidence(1, dielectricById(id).n), 3);
+      return [
+        {
+          id: 'all-004', text: () => t('r0-materials.option.all-004'),
+          holds: () => ['water', 'glass', 'diamond'].every((id) => Math.abs(normalIncidence(1, dielectricById(id).n) - 0.04) < 0.005),
+          why: () => t('r0-materials.why.all-004', { r0: fixed(normalIncidence(1, 1.5), 3), water: r0('water'), diamond: r0('diamond') }),
+        },
+        {
+          id: 'depends-on-n', text: () => t('r0-materials.option.depends-on-n'),
+          holds: () => normalIncidence(1, dielectricById('water').n) < normalIncidence(1, dielectricById('glass').n)
+            && normalIncidence(1, dielectricById('glass').n) < normalIncidence(1, dielectricById('diamond').n),
+          why: () => t('r0-materials.why.depends-on-n', { water: r0('water'), glass: r0('glass'), diamond: r0('diamond') }),
+        },
+        {
+          id: 'none-head-on', text: () => t('r0-materials.option.none-head-on'),
+          holds: () => normalIncidence(1, dielectricById('glass').n) === 0,
+          why: () => t('r0-materials.why.none-head-on', { glass: r0('glass') }),
+        },
+      ];
+    },
     state: () => ({}),
   },
   {
@@ -82,7 +90,7 @@ export const FRESNEL_QUESTIONS = [
     graded: 'Rs − Rp of the s and p Fresnel equations from air into the given index at the given angle; the panel plots and '
       + 'reads out both.',
     params: (rng) => ({ theta: rng.pick(ANGLES), nT: rng.pick(INDICES) }),
-    prompt: (p) => `From air into n_t = ${p.nT} at θ = ${p.theta}°: what is R_s − R_p? To 3 decimals.`,
+    prompt: (p) => t('exact-rp-rs.prompt', { nT: number(p.nT), theta: number(p.theta) }),
     expected: (p) => {
       const { s, p: rp } = fresnelPolarized(cosDeg(p.theta), 1, p.nT);
       return s - rp;
@@ -93,16 +101,16 @@ export const FRESNEL_QUESTIONS = [
     id: 'brewster-predict', panel: 'polarization', kind: 'predict', unit: 'deg', tolerance: 2,
     graded: 'Brewster\'s angle atan(n_t/n_i), where Rp = 0; the panel\'s plot marks Rp.',
     params: (rng) => ({ nT: rng.pick(INDICES) }),
-    prompt: (p) => `From air into n_t = ${p.nT}: predict the angle at which R_p = 0 (within 2°), then look.`,
+    prompt: (p) => t('brewster-predict.prompt', { nT: number(p.nT) }),
     expected: (p) => deg(brewsterAngle(1, p.nT)),
-    curve: (p) => ({ label: 'Rₚ', f: (t) => fresnelPolarized(cosDeg(t), 1, p.nT).p }),
+    curve: (p) => ({ label: t('brewster-predict.curve'), f: (t) => fresnelPolarized(cosDeg(t), 1, p.nT).p }),
     state: (p) => ({ nI: 1, nT: p.nT }),
   },
   {
     id: 'brewster-exact', panel: 'polarization', kind: 'numeric', unit: 'deg', tolerance: 0.05,
     graded: 'Brewster\'s angle atan(n_t/n_i) for the given pair; the panel marks and states it.',
     params: (rng) => ({ nI: rng.pick([1, 1.33]), nT: rng.pick([1.5, 1.6, 1.75, 2.42]) }),
-    prompt: (p) => `From n_i = ${p.nI} into n_t = ${p.nT}: the Brewster angle, in degrees to 0.1°.`,
+    prompt: (p) => t('brewster-exact.prompt', { nI: number(p.nI), nT: number(p.nT) }),
     expected: (p) => deg(brewsterAngle(p.nI, p.nT)),
     state: (p) => ({ nI: p.nI, nT: p.nT }),
   },
@@ -111,8 +119,7 @@ export const FRESNEL_QUESTIONS = [
     graded: 'The exact unpolarized reflectance (Rs + Rp)/2 at the given angle and index; the panel evaluates the lecture\'s '
       + 'formula term by term.',
     params: (rng) => ({ theta: rng.pick(ANGLES), nT: rng.pick(INDICES) }),
-    prompt: (p) => `Light meets a surface from air at θ = ${p.theta}°, into n_t = ${p.nT}. `
-      + `What fraction R is reflected (unpolarised)? To 3 decimals.`,
+    prompt: (p) => t('exact-r.prompt', { theta: number(p.theta), nT: number(p.nT) }),
     expected: (p) => fresnelExact(cosDeg(p.theta), 1, p.nT),
     state: (p) => ({ nI: 1, nT: p.nT }),
   },
@@ -121,28 +128,25 @@ export const FRESNEL_QUESTIONS = [
     graded: 'R for equal indices on both sides, at 89.9°: 0, since no interface reflects; the panel\'s exact formula gives it at '
       + 'any angle.',
     params: (rng) => ({ n: rng.pick([1.33, 1.5, 2.42]) }),
-    prompt: (p) => `Both sides of an interface have n = ${p.n} (n_i = n_t). `
-      + `What does the exact formula give for R at θ = 89.9°, nearly grazing?`,
+    prompt: (p) => t('matched-grazing.prompt', { n: number(p.n) }),
     options: () => {
       const r = (p) => fresnelExact(cosDeg(89.9), p.n, p.n);
-      const fromAir = (p) => fixed(fresnelExact(cosDeg(89.9), 1, p.n), 3);
+      const shown = (p) => ({ r: fixed(r(p), 3), n: number(p.n), fromAir: fixed(fresnelExact(cosDeg(89.9), 1, p.n), 3) });
       return [
         {
-          id: 'one', text: () => '1: at grazing every surface reflects everything.',
+          id: 'one', text: () => t('matched-grazing.option.one'),
           holds: (p) => r(p) > 0.99,
-          why: (p) => `No: with equal indices there is no interface to reflect from, and R = ${fixed(r(p), 3)} at every angle. `
-            + `Grazing light is reflected strongly only where the indices differ: from air into ${p.n}, R(89.9°) = ${fromAir(p)}.`,
+          why: (p) => t('matched-grazing.why.one', shown(p)),
         },
         {
-          id: 'zero', text: () => '0: nothing tells the two sides apart, so nothing is reflected.',
+          id: 'zero', text: () => t('matched-grazing.option.zero'),
           holds: (p) => r(p) === 0,
-          why: (p) => `Right: R = 0 at every angle, grazing included: `
-            + `with nothing to tell the two sides apart there is no reflection (from air into ${p.n} it would be ${fromAir(p)}).`,
+          why: (p) => t('matched-grazing.why.zero', shown(p)),
         },
         {
-          id: 'half', text: () => 'About 0.5: at grazing the light splits evenly.',
+          id: 'half', text: () => t('matched-grazing.option.half'),
           holds: (p) => Math.abs(r(p) - 0.5) < 0.05,
-          why: (p) => `No: R = ${fixed(r(p), 3)}: with equal indices there is no interface, so nothing is split off.`,
+          why: (p) => t('matched-grazing.why.half', shown(p)),
         },
       ];
     },
@@ -152,8 +156,7 @@ export const FRESNEL_QUESTIONS = [
     id: 'schlick-error', panel: 'schlick', kind: 'numeric', unit: 'fraction', tolerance: 0.0005,
     graded: '|exact R − Schlick| at the given angle and index; the panel plots both curves and their difference.',
     params: (rng) => ({ theta: rng.pick([60, 70, 75, 80, 85]), nT: rng.pick([1.33, 1.5, 2.0]) }),
-    prompt: (p) => `From air into n_t = ${p.nT} at θ = ${p.theta}°: `
-      + `how far is Schlick's approximation from the exact R (|exact − Schlick|)? To 3 decimals.`,
+    prompt: (p) => t('schlick-error.prompt', { nT: number(p.nT), theta: number(p.theta) }),
     expected: (p) => schlickErrorAt(p.theta, 1, p.nT),
     state: (p) => ({ nI: 1, nT: p.nT }),
   },
@@ -162,19 +165,20 @@ export const FRESNEL_QUESTIONS = [
     graded: 'From inside glass past the critical angle (41.8°) the exact R is 1 while Schlick on cos θ_i stays far below; the '
       + 'panel plots both from the denser side.',
     params: (rng) => ({ theta: rng.pick([45, 50, 60]) }),
-    prompt: (p) => `Inside glass (n_i = 1.5) towards air at θ = ${p.theta}°, is Schlick's formula on cos θ_i a good estimate of R?`,
+    prompt: (p) => t('schlick-inside.prompt', { theta: number(p.theta) }),
     options: () => [
       {
-        id: 'good', text: () => 'Yes: Schlick works from either side.',
+        id: 'good', text: () => t('schlick-inside.option.good'),
         holds: (p) => Math.abs(fresnelExact(cosDeg(p.theta), 1.5, 1) - fresnelSchlick(cosDeg(p.theta), 1.5, 1)) < 0.05,
-        why: (p) => `No: past the critical angle (${fixed(deg(criticalAngle(1.5, 1)), 1)}°) `
-          + `the exact R is ${fixed(fresnelExact(cosDeg(p.theta), 1.5, 1), 3)}, `
-          + `Schlick on cos θ_i gives ${fixed(fresnelSchlick(cosDeg(p.theta), 1.5, 1), 3)}.`,
+        why: (p) => t('schlick-inside.why.good', {
+          critical: fixed(deg(criticalAngle(1.5, 1)), 1), exact: fixed(fresnelExact(cosDeg(p.theta), 1.5, 1), 3),
+          schlick: fixed(fresnelSchlick(cosDeg(p.theta), 1.5, 1), 3),
+        }),
       },
       {
-        id: 'misses-tir', text: () => 'No: it misses total internal reflection; it needs cos θ_t, and R = 1 past the critical angle.',
+        id: 'misses-tir', text: () => t('schlick-inside.option.misses-tir'),
         holds: (p) => fresnelExact(cosDeg(p.theta), 1.5, 1) === 1 && fresnelSchlick(cosDeg(p.theta), 1.5, 1) < 0.9,
-        why: (p) => `Right: the exact R is 1 here; Schlick on cos θ_i gives ${fixed(fresnelSchlick(cosDeg(p.theta), 1.5, 1), 3)}.`,
+        why: (p) => t('schlick-inside.why.misses-tir', { schlick: fixed(fresnelSchlick(cosDeg(p.theta), 1.5, 1), 3) }),
       },
     ],
     state: () => ({ nI: 1.5, nT: 1 }),
@@ -183,7 +187,7 @@ export const FRESNEL_QUESTIONS = [
     id: 'r0-value', panel: 'r0-derivation', kind: 'numeric', unit: 'fraction', tolerance: 0.00005,
     graded: 'R(0°) = ((n_t − n_i)/(n_t + n_i))² for the given index; the panel evaluates each step of the derivation.',
     params: (rng) => ({ nT: rng.pick(INDICES) }),
-    prompt: (p) => `R(0°), head-on, from air into n_t = ${p.nT}: to 4 decimals.`,
+    prompt: (p) => t('r0-value.prompt', { nT: number(p.nT) }),
     expected: (p) => normalIncidence(1, p.nT),
     state: (p) => ({ nI: 1, nT: p.nT }),
   },
@@ -192,23 +196,23 @@ export const FRESNEL_QUESTIONS = [
     graded: 'Twice F(85°) for the given coat index exceeds 1, more light than arrives; the panel\'s plot gives F at every angle '
       + '(at its marked 80° twice F is still under 1: it passes 1 beyond about 83°, which is why the prompt names 85°).',
     params: (rng) => ({ nT: rng.pick([1.33, 1.5]) }),
-    prompt: (p) => `A coat of n = ${p.nT} looks too dull at the rim, where the view is about 85° from the surface normal. `
-      + 'Should you scale F up (say ×2) to brighten it? Read F at 85° off the panel\'s plot.',
+    prompt: (p) => t('rim-scaling.prompt', { nT: number(p.nT) }),
     options: () => [
       {
-        id: 'scale-up', text: () => 'Yes: doubling F doubles the rim and keeps the centre right.',
+        id: 'scale-up', text: () => t('rim-scaling.option.scale-up'),
         holds: (p) => 2 * fresnelExact(cosDeg(85), 1, p.nT) <= 1,
-        why: (p) => `No: F at 85° is already ${fixed(fresnelExact(cosDeg(85), 1, p.nT), 3)}; `
-          + `doubled it is ${fixed(2 * fresnelExact(cosDeg(85), 1, p.nT), 3)}, more light than arrives, `
-          + `and the centre's ${fixed(normalIncidence(1, p.nT), 3)} doubles too.`,
+        why: (p) => t('rim-scaling.why.scale-up', {
+          rim: fixed(fresnelExact(cosDeg(85), 1, p.nT), 3), doubled: fixed(2 * fresnelExact(cosDeg(85), 1, p.nT), 3),
+          r0: fixed(normalIncidence(1, p.nT), 3),
+        }),
       },
       {
-        id: 'energy', text: () => 'No: F is a fraction of the light; scaled, it exceeds 1 near grazing and breaks energy conservation.',
+        id: 'energy', text: () => t('rim-scaling.option.energy'),
         holds: (p) => 2 * fresnelExact(cosDeg(85), 1, p.nT) > 1,
-        why: (p) => `Right: 2·F(85°) = ${fixed(2 * fresnelExact(cosDeg(85), 1, p.nT), 3)} > 1. `
-          + `Brighten the light or the environment instead; `
-          + `the index barely moves the rim (F(85°) = ${RIM_INDICES.map((n) => fixed(fresnelExact(cosDeg(85), 1, n), 2)).join(', ')} for `
-          + `n = ${RIM_INDICES.join(', ')}).`,
+        why: (p) => t('rim-scaling.why.energy', {
+          doubled: fixed(2 * fresnelExact(cosDeg(85), 1, p.nT), 3),
+          rims: numberList(RIM_INDICES.map((n) => fixed(fresnelExact(cosDeg(85), 1, n), 2))), indices: numberList(RIM_INDICES.map(number)),
+        }),
       },
     ],
     state: (p) => ({ nT: p.nT }),
@@ -218,30 +222,29 @@ export const FRESNEL_QUESTIONS = [
     graded: 'The conductor reflectance per channel at 0° and 89° from the metal\'s n + ik: every channel approaches 1 and their '
       + 'spread shrinks; the panel\'s table, plot and spheres show it.',
     params: (rng) => ({ metal: rng.pick(['gold', 'copper']) }),
-    prompt: (p) => `${metalById(p.metal).name} reflects its own colour head-on. What does it reflect at grazing incidence (89°)?`,
+    prompt: (p) => t('metal-grazing.prompt', { metal: p.metal }),
     options: () => {
       const channels = (p, theta) => metalById(p.metal).n.map((n, i) => fresnelConductor(cosDeg(theta), n, metalById(p.metal).k[i]));
       const spread = (rgb) => Math.max(...rgb) - Math.min(...rgb);
+      const shown = (rgb) => numberList(rgb.map((x) => fixed(x, 2)));
       return [
         {
-          id: 'keeps-colour', text: () => 'The same colour, brighter: a metal keeps its colour at every angle.',
+          id: 'keeps-colour', text: () => t('metal-grazing.option.keeps-colour'),
           holds: (p) => spread(channels(p, 89)) >= spread(channels(p, 0)),
-          why: (p) => `No: head-on the channels are ${channels(p, 0).map((x) => fixed(x, 2)).join(', ')}; `
-            + `at 89° they are ${channels(p, 89).map((x) => fixed(x, 2)).join(', ')}: nearly white.`,
+          why: (p) => t('metal-grazing.why.keeps-colour', { headOn: shown(channels(p, 0)), grazing: shown(channels(p, 89)) }),
         },
         {
-          id: 'towards-white', text: () => 'Nearly white: every channel tends to 1 at grazing, so the tint fades.',
+          id: 'towards-white', text: () => t('metal-grazing.option.towards-white'),
           holds: (p) => Math.min(...channels(p, 89)) > 0.9 && spread(channels(p, 89)) < spread(channels(p, 0)),
-          why: (p) => `Right: at 89° the channels are ${channels(p, 89).map((x) => fixed(x, 2)).join(', ')}.`,
+          why: (p) => t('metal-grazing.why.towards-white', { grazing: shown(channels(p, 89)) }),
         },
         {
-          id: 'dark', text: () => 'Dark: metals reflect less at grazing, as the diffuse light falls off.',
+          id: 'dark', text: () => t('metal-grazing.option.dark'),
           holds: (p) => channels(p, 89).every((x, i) => x < channels(p, 0)[i]),
           why: (p) => {
             const [head, grazing] = [channels(p, 0), channels(p, 89)];
             const grows = grazing.every((x, i) => x > head[i]);
-            return `No: ${grows ? 'every channel grows' : 'the channels go'} from ${head.map((x) => fixed(x, 2)).join(', ')} head-on to `
-              + `${grazing.map((x) => fixed(x, 2)).join(', ')} at 89°.`;
+            return t('metal-grazing.why.dark', { grows: grows ? 'yes' : 'no', headOn: shown(head), grazing: shown(grazing) });
           },
         },
       ];
@@ -253,8 +256,7 @@ export const FRESNEL_QUESTIONS = [
     graded: 'A conductor\'s R(0°) = ((n − 1)² + k²)/((n + 1)² + k²) in the green channel; the panel\'s swatches and table give '
       + 'F0 per channel.',
     params: (rng) => ({ metal: rng.pick(metals.map((m) => m.id)) }),
-    prompt: (p) => `Head-on (0°), what fraction of green light (${metalById(p.metal).rgbNm[1]} nm) `
-      + `does ${metalById(p.metal).name.toLowerCase()} reflect? To 2 decimals.`,
+    prompt: (p) => t('metal-r0.prompt', { nm: number(metalById(p.metal).rgbNm[1]), metal: p.metal }),
     expected: (p) => fresnelConductor(1, metalById(p.metal).n[1], metalById(p.metal).k[1]),
     state: (p) => ({ metal: p.metal }),
   },
@@ -264,30 +266,23 @@ export const FRESNEL_QUESTIONS = [
       + 'angle), in 8-bit sRGB codes at display white: a display choice, named in the prompt. The panel\'s table gives it '
       + 'per method.',
     params: () => ({}),
-    prompt: () => 'Light from air onto plastic, paint or skin (n from 1.3 to 1.7), at display white on an 8-bit sRGB screen: '
-      + 'does Schlick’s pow(1 − c, 5) err by more than the display’s own rounding, half an 8-bit code, at any pixel?',
-    options: () => {
-      const where = () => {
-        const { codes, theta, nT } = schlickWorstCodes();
-        return `${fixed(codes, 1)} codes (${fixed((100 * codes) / 255, 1)} % of the range) at worst, `
-          + `near θ = ${fixed(theta, 0)}° for n = ${fixed(nT, 2)}`;
-      };
-      return [
-        {
-          id: 'invisible', text: () => 'No: engines ship Schlick, so its error must stay within the display’s rounding.',
-          holds: () => schlickWorstCodes().codes <= 0.5,
-          why: () => `No: it is off by ${where()}. Engines accept an error of that size; that is a judgement about what `
-            + 'viewers notice, not a property of the display.',
+    prompt: () => t('schlick-visible.prompt'),
+    options: () => [
+      {
+        id: 'invisible', text: () => t('schlick-visible.option.invisible'),
+        holds: () => schlickWorstCodes().codes <= 0.5,
+        why: () => t('schlick-visible.why.invisible', worstShown()),
+      },
+      {
+        id: 'visible', text: () => t('schlick-visible.option.visible'),
+        holds: () => schlickWorstCodes().codes > 2,
+        why: () => {
+          const exact = methodError(sceneById('plastic'), methodById('exact-cg')).maxCodes;
+          const shown = { exactTiny: exact < 0.005 ? 'yes' : 'no', exactCodes: fixed(exact, 2) };
+          return t('schlick-visible.why.visible', { ...worstShown(), ...shown });
         },
-        {
-          id: 'visible', text: () => 'Yes: near grazing it is off by more than two codes at worst.',
-          holds: () => schlickWorstCodes().codes > 2,
-          why: () => `Right: ${where()}. The exact c/g form is off by `
-            + `${codesText(methodError(sceneById('plastic'), methodById('exact-cg')).maxCodes)} at worst; `
-            + `the panel weighs that against what each method costs on this device.`,
-        },
-      ];
-    },
+      },
+    ],
     state: () => ({ scene: 'plastic' }),
   },
   {
@@ -296,27 +291,24 @@ export const FRESNEL_QUESTIONS = [
       + 'to 1.0 when c² is below 2⁻²⁴, so g = 0 and R = 1. The shader lab compiles the student\'s own version and grades '
       + 'this case.',
     params: (rng) => ({ n: rng.pick([1.33, 1.5]), theta: rng.pick([89.99, 89.999]) }),
-    prompt: (p) => `Both sides have n = ${p.n}. In float32 (highp), the lecture's code computes g = sqrt(1.0 + c*c - m*m) `
-      + `at θ = ${p.theta}°. What R comes out?`,
+    prompt: (p) => t('lecture-order.prompt', { n: number(p.n), theta: number(p.theta) }),
     options: () => {
       const literal = (p) => methodById('exact-cg-literal').evaluate('fp32', cosDeg(p.theta), p.n, p.n);
       return [
         {
-          id: 'zero', text: () => '0, as it must be with no interface.',
+          id: 'zero', text: () => t('lecture-order.option.zero'),
           holds: (p) => literal(p) === 0,
-          why: (p) => `No: it gives ${fixed(literal(p), 4)}. With c² below half a float32 step of 1, 1.0 + c*c rounds to 1.0, `
-            + `so g² = 0 and R = 1; (1 − m)(1 + m) + c² keeps c².`,
+          why: (p) => t('lecture-order.why.zero', { r: fixed(literal(p), 4) }),
         },
         {
-          id: 'one', text: () => '1: 1.0 + c*c rounds to 1.0, so g = 0 and the formula says everything is reflected.',
+          id: 'one', text: () => t('lecture-order.option.one'),
           holds: (p) => Math.abs(literal(p) - 1) < 1e-6,
-          why: (p) => `Right: ${fixed(literal(p), 4)}, where the exact R is 0. `
-            + `The grader's matched-indices criterion catches exactly this.`,
+          why: (p) => t('lecture-order.why.one', { r: fixed(literal(p), 4) }),
         },
         {
-          id: 'nan', text: () => 'NaN: the square root of a negative number.',
+          id: 'nan', text: () => t('lecture-order.option.nan'),
           holds: (p) => Number.isNaN(literal(p)),
-          why: (p) => `No: 1 + c² − m² is c² ≥ 0 in exact arithmetic and rounds to 0, not below; R comes out ${fixed(literal(p), 4)}.`,
+          why: (p) => t('lecture-order.why.nan', { r: fixed(literal(p), 4) }),
         },
       ];
     },
@@ -327,30 +319,25 @@ export const FRESNEL_QUESTIONS = [
     graded: 'What pow(1 − cos θ, 5) is for cos θ a hair above 1 in a highp shader: 1 − cos θ is negative in float32, and GLSL ES '
       + '3.00 (§8.2) leaves pow undefined there. The stability map shows the column at θ = 0°.',
     params: (rng) => ({ nT: rng.pick([1.33, 1.5]) }),
-    prompt: (p) => `Interpolated normals can give cos θ = ${COS_ABOVE_ONE}, a hair above 1. In a highp shader, `
-      + `what does Schlick's R0 + (1 − R0)·pow(1 − cos θ, 5) give there (from air into n_t = ${p.nT})?`,
+    prompt: (p) => t('pow-above-one.prompt', { cos: number(COS_ABOVE_ONE), nT: number(p.nT) }),
     options: () => {
       const value = (p) => methodById('schlick-pow').evaluate('fp32', COS_ABOVE_ONE, 1, p.nT);
       const r0 = (p) => normalIncidence(1, p.nT);
       return [
         {
-          id: 'undefined', text: () => 'Nothing usable: pow of a negative base is undefined in GLSL (NaN on many GPUs); '
-            + 'clamp cos θ to [0, 1] first.',
+          id: 'undefined', text: () => t('pow-above-one.option.undefined'),
           holds: (p) => !Number.isFinite(value(p)),
-          why: () => 'Right: GLSL ES 3.00 (§8.2) leaves pow(x, y) undefined for x < 0, '
-            + 'and log2 of a negative number is NaN where the GPU computes pow as exp2(y·log2 x). '
-            + 'The stability map shows the column at θ = 0° for this method.',
+          why: () => t('pow-above-one.why.undefined'),
         },
         {
-          id: 'r0', text: () => 'R0, or a hair below it: (1 − cos θ)⁵ is a tiny negative number.',
+          id: 'r0', text: () => t('pow-above-one.option.r0'),
           holds: (p) => Number.isFinite(value(p)) && Math.abs(value(p) - r0(p)) < 1e-6,
-          why: (p) => `No: that is what float64 arithmetic with an odd power gives (R0 = ${fixed(r0(p), 4)}), `
-            + `but a shader's pow of a negative base is undefined, and commonly NaN.`,
+          why: (p) => t('pow-above-one.why.r0', { r0: fixed(r0(p), 4) }),
         },
         {
-          id: 'one', text: () => '1: past its range the shader saturates.',
+          id: 'one', text: () => t('pow-above-one.option.one'),
           holds: (p) => value(p) === 1,
-          why: () => 'No: nothing saturates here; a negative base makes pow undefined, commonly NaN, which then spreads through the sum.',
+          why: () => t('pow-above-one.why.one'),
         },
       ];
     },

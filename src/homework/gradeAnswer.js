@@ -4,6 +4,10 @@
 import { seededRandom } from './seededRandom.js';
 import { parseAnswer } from './parseAnswer.js';
 import { formatTolerance, formatValue } from './formatAnswer.js';
+import english from 'virtual:messages/en/homework';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('homework', english);
 
 const MAX_TYPED = 80;
 
@@ -66,11 +70,11 @@ export function gradeAnswer(question, params, answer) {
   if (question.kind === 'choice') {
     const right = trueOption(question, params);
     const chosen = question.options(params).find((option) => option.id === answer);
-    if (!chosen) return { answered: false, correct: false, expected: right.id, explanation: 'No option was chosen.' };
+    if (!chosen) return { answered: false, correct: false, expected: right.id, explanation: t('grade.noOption') };
     return { answered: true, correct: chosen.id === right.id, expected: right.id, explanation: chosen.why(params) };
   }
   const expected = expectedValue(question, params);
-  const read = typeof answer === 'number' ? { ok: Number.isFinite(answer), value: answer, reason: 'That is not a number.' }
+  const read = typeof answer === 'number' ? { ok: Number.isFinite(answer), value: answer, reason: t('grade.notANumber') }
     : parseAnswer(answer, question.unit);
   const base = { expected, tolerance: question.tolerance, unit: question.unit };
   if (!read.ok) return { ...base, answered: false, correct: false, explanation: read.reason };
@@ -82,6 +86,7 @@ export function gradeAnswer(question, params, answer) {
     answered: true,
     correct,
     value: read.value,
-    explanation: correct ? 'Within the tolerance.' : `Off by ${formatValue(question, off)}; the tolerance is ${formatTolerance(question)}.`,
+    explanation: correct ? t('grade.withinTolerance')
+      : t('grade.offBy', { off: formatValue(question, off), tolerance: formatTolerance(question) }),
   };
 }

@@ -8,6 +8,10 @@ import { gradeAnswer, questionParams, readAnswer } from './gradeAnswer.js';
 import { SHEET_VERSION, readSheet } from './readSheet.js';
 import { hashSeed } from './seededRandom.js';
 import { rawText } from '../host/params.js';
+import english from 'virtual:messages/en/homework';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('homework', english);
 
 const text = (v, max) => typeof v === 'string' && v.length > 0 && v.length <= max;
 
@@ -20,18 +24,17 @@ export const sheetFingerprint = (sheet) => hashSeed(JSON.stringify(sheet)).toStr
  * seed, name, time, score, total, results } or { ok: false, problems }.
  */
 export function gradeHandIn(data, { expected = null } = {}) {
-  if (!data || typeof data !== 'object' || Array.isArray(data)) return { ok: false, problems: ['A handed-in file is a JSON object.'] };
+  if (!data || typeof data !== 'object' || Array.isArray(data)) return { ok: false, problems: [t('handIn.notObject')] };
   const read = readSheet(data.sheet);
-  const problems = read.ok ? [] : read.problems.map((p) => `sheet: ${p}`);
-  if (data.version !== SHEET_VERSION) problems.push(`version must be ${SHEET_VERSION}.`);
-  if (!text(data.seed, 64)) problems.push('seed must be a text of 1 to 64 characters.');
-  if (!Array.isArray(data.answers) || (read.ok && data.answers.length !== read.sheet.items.length)) problems.push('answers must hold '
-    + 'one entry per question.');
-  if (read.ok && read.sheet.seed !== undefined && data.seed !== read.sheet.seed) problems.push(`this sheet gives everyone the seed `
-    + `${read.sheet.seed}, but the file says ${rawText(data.seed, 64)}.`);
+  const problems = read.ok ? [] : read.problems.map((problem) => t('handIn.sheet', { problem }));
+  if (data.version !== SHEET_VERSION) problems.push(t('sheet.version', { version: SHEET_VERSION }));
+  if (!text(data.seed, 64)) problems.push(t('handIn.seed'));
+  if (!Array.isArray(data.answers) || (read.ok && data.answers.length !== read.sheet.items.length)) problems.push(t('handIn.answers'));
+  if (read.ok && read.sheet.seed !== undefined && data.seed !== read.sheet.seed) {
+    problems.push(t('handIn.classSeed', { classSeed: read.sheet.seed, seed: rawText(data.seed, 64) }));
+  }
   if (read.ok && expected && sheetFingerprint(read.sheet) !== sheetFingerprint(expected)) {
-    problems.push(`it answers another sheet (fingerprint ${sheetFingerprint(read.sheet)}) `
-      + `than the one given to check against (${sheetFingerprint(expected)}): an edited copy, or the wrong sheet.`);
+    problems.push(t('handIn.otherSheet', { fingerprint: sheetFingerprint(read.sheet), expected: sheetFingerprint(expected) }));
   }
   if (problems.length) return { ok: false, problems };
   const attempts = Array.isArray(data.attempts) ? data.attempts : [];

@@ -2,6 +2,10 @@
 // written 70, 70°, 70 deg or 70 degrees; a fraction as 0.04 or as 4 %. A unit the question does
 // not take is refused with a reason rather than guessed.
 import { clipText } from '../host/params.js';
+import english from 'virtual:messages/en/homework';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('homework', english);
 
 const UNITS = {
   deg: ['°', 'deg', 'degree', 'degrees'],
@@ -15,17 +19,16 @@ const UNITS = {
 export function parseAnswer(text, unit = null) {
   // Only text is typed: an object from a stored or handed-in answer is no answer (String() of one
   // whose toString is not a function throws).
-  if (typeof text !== 'string' && typeof text !== 'number') return { ok: false, reason: 'No answer was given.' };
+  if (typeof text !== 'string' && typeof text !== 'number') return { ok: false, reason: t('parse.noAnswer') };
   const raw = String(text).trim().toLowerCase().replace(/\s+/g, ' ');
-  if (!raw) return { ok: false, reason: 'No answer was given.' };
+  if (!raw) return { ok: false, reason: t('parse.noAnswer') };
   const match = /^([-+−]?(?:\d+(?:[.,]\d*)?|[.,]\d+)(?:e[-+]?\d+)?)\s*([^\d\s].*)?$/.exec(raw);
-  if (!match) return { ok: false, reason: `“${clipText(String(text), 40)}” is not a number.` };
+  if (!match) return { ok: false, reason: t('parse.notANumber', { text: clipText(String(text), 40) }) };
   const value = Number(match[1].replace(',', '.').replace('−', '-'));
   const written = (match[2] ?? '').trim();
-  if (!Number.isFinite(value)) return { ok: false, reason: 'That number is out of range.' };
+  if (!Number.isFinite(value)) return { ok: false, reason: t('parse.outOfRange') };
   if (!written) return { ok: true, value };
   if (unit === 'deg' && UNITS.deg.includes(written)) return { ok: true, value };
   if (unit === 'fraction' && UNITS.percent.includes(written)) return { ok: true, value: value / 100 };
-  const wanted = unit === 'deg' ? 'degrees (°)' : unit === 'fraction' ? 'a fraction (0.04) or a percentage (4 %)' : 'a plain number';
-  return { ok: false, reason: `“${clipText(written, 20)}” is not a unit of this answer: it takes ${wanted}.` };
+  return { ok: false, reason: t('parse.notThisUnit', { unit: clipText(written, 20), wanted: unit ?? 'none' }) };
 }

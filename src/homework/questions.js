@@ -6,7 +6,8 @@
 //   kind 'numeric': typed, with units, checked at the tolerance stated in the prompt;
 //   kind 'predict': an angle committed before the panel shows the truth; `curve` is what the
 //                   prediction is drawn against once the truth is shown (it stays drawn);
-//                   `axis`, where given, names what the 0°–90° axis measures (else θ from the normal);
+//                   `axis()`, where given, names what the 0°–90° axis measures (else θ from the normal),
+//                   and `axisInText()` names it as a sentence does;
 //   kind 'choice':  one option holds.
 // Every question has `state(p)`: the values its panel starts from, and `graded`: the physical
 // quantity it grades and why a student can reason to it from what the panel shows. A quantity that
@@ -14,13 +15,27 @@
 // computes each graded quantity again without the lab's code.
 import { LIGHT_QUESTIONS } from './lightQuestions.js';
 import { FRESNEL_QUESTIONS } from './fresnelQuestions.js';
+import english from 'virtual:messages/en/questions';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('questions', english);
 
 export const QUESTIONS = Object.freeze([...LIGHT_QUESTIONS, ...FRESNEL_QUESTIONS].map(Object.freeze));
 
 const byId = new Map(QUESTIONS.map((q) => [q.id, q]));
 
-/** What each kind is called on the page. */
-export const KIND_NAMES = Object.freeze({ numeric: 'Number', predict: 'Predict, then see', choice: 'Choice' });
+/** What a kind of question is called on the page, in the page's language. */
+export const kindName = (kind) => t(`kind.${kind}`);
+
+/**
+ * What each kind is called on the page: each name is read when it is written (a getter), so it is
+ * in the language the page chose after this module loaded.
+ */
+export const KIND_NAMES = Object.freeze({
+  get numeric() { return kindName('numeric'); },
+  get predict() { return kindName('predict'); },
+  get choice() { return kindName('choice'); },
+});
 
 /** The question with this id, or undefined. */
 export const questionById = (id) => byId.get(id);

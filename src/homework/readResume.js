@@ -3,6 +3,8 @@
 // an import or an older version of this page may have put something else there. Only answers
 // that fit their question come back; whatever is refused is said in one sentence on the sheet.
 import { readAnswer } from './gradeAnswer.js';
+import english from 'virtual:messages/en/homework';
+import { messages } from '../i18n/messages.js';
 
 // cmi.suspend_data is a CMIString4096 in SCORM 1.2 (RTE §3.4.2, cmi.suspend_data): this page never
 // writes more, so anything longer is not its own and is not parsed.
@@ -10,7 +12,7 @@ export const SUSPEND_LIMIT = 4096;
 
 const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
 const own = (object, key) => Object.prototype.hasOwnProperty.call(object, key);
-const THEN = 'so the sheet starts from the answers this browser kept, if any.';
+const t = messages('homework', english);
 
 /**
  * text: cmi.suspend_data as the LMS gave it; seed: the seed the sheet's numbers come from now;
@@ -19,30 +21,25 @@ const THEN = 'so the sheet starts from the answers this browser kept, if any.';
  * it (readAnswer) or null; notice null or a sentence for the learner.
  */
 export function readResume(text, { seed, classSeed = null, questions, params }) {
-  const none = (why) => ({ answers: null, notice: why ? `Your course’s copy of your answers ${why}, ${THEN}` : null });
+  // why: the notice's key (resume.<why>), each a whole sentence ending in what the sheet does instead.
+  const none = (why, args) => ({ answers: null, notice: why ? t(`resume.${why}`, args) : null });
   if (typeof text !== 'string' || text.trim() === '') return none(null); // the first visit
-  if (text.length > SUSPEND_LIMIT) return none(`is longer than this page ever writes (${text.length} characters) and was not read`);
+  if (text.length > SUSPEND_LIMIT) return none('tooLong', { length: text.length });
   let data;
   try {
     data = JSON.parse(text);
   } catch {
-    return none('cannot be read (cut short or changed)');
+    return none('unreadable');
   }
   if (data === null) return none(null); // what an empty copy parsed to before
-  if (!isObject(data) || !own(data, 'answers') || !Array.isArray(data.answers)) return none('is not in the form this page keeps');
+  if (!isObject(data) || !own(data, 'answers') || !Array.isArray(data.answers)) return none('otherForm');
   // The first version of this page kept { answers } alone, made for the sheet's class seed where it
   // had one (as now) and otherwise for the learner's id unhashed: other numbers than today's.
   const madeFor = own(data, 'seed') ? data.seed : classSeed;
-  if (madeFor !== seed) {
-    return none(own(data, 'seed') ? 'is for other numbers (another seed)' : 'was kept by an earlier version of this '
-      + 'page for other numbers');
-  }
-  if (data.answers.length !== questions.length) {
-    return none(`is for a sheet of ${data.answers.length} questions, and this one has ${questions.length}`);
-  }
+  if (madeFor !== seed) return none(own(data, 'seed') ? 'otherSeed' : 'earlierVersion');
+  if (data.answers.length !== questions.length) return none('otherSheet', { kept: data.answers.length, count: questions.length });
   const answers = questions.map((question, i) => readAnswer(question, params[i], data.answers[i]));
   const dropped = answers.filter((a, i) => a === null && data.answers[i] !== null).length;
-  const notice = dropped ? `${dropped} of the answers your course kept ${dropped === 1 ? 'does' : 'do'} not fit `
-    + `${dropped === 1 ? 'its question and is' : 'their questions and are'} left open.` : null;
+  const notice = dropped ? t('resume.dropped', { dropped }) : null;
   return { answers, notice };
 }

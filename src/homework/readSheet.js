@@ -1,63 +1,77 @@
 // A homework sheet (what a lecturer composes), read from untrusted JSON: every field is checked
-// and anything unexpected is refused with a reason. Handed-in files: gradeHandIn.js.
+// and anything unexpected is refused with a reason. Handed-in files: gradeHandIn.js. A sheet may
+// carry the language it was made in (`lang`: one of src/i18n/languages.js), so that it opens in it.
 import { questionById } from './questions.js';
 import { EMBED_KEYS } from '../host/readEmbedOptions.js';
 import { clipText, rawText, resolveKey } from '../host/params.js';
 import { panelSchema } from '../panels/panelSchema.js';
+import { LANGUAGES, languageById } from '../i18n/languages.js';
+import english from 'virtual:messages/en/homework';
+import { messages } from '../i18n/messages.js';
 
 export const SHEET_VERSION = 1;
 const MAX_ITEMS = 40;
 const MAX_STATE_KEYS = 24;
 const text = (v, max) => typeof v === 'string' && v.length > 0 && v.length <= max;
 const plainObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
-const SHEET_FIELDS = ['version', 'title', 'reveal', 'seed', 'items'];
+const SHEET_FIELDS = ['version', 'title', 'reveal', 'seed', 'lang', 'items'];
 const ITEM_FIELDS = ['question', 'state'];
 
-/** Fields a sheet or an item does not have, named: a typo such as "stat" would lose the start state unseen. */
-const unknownFields = (object, fields, what, where = '') => Object.keys(object).filter((key) => !fields.includes(key))
-  .map((key) => `${where}“${rawText(key, 32)}” is not a field of ${what} (${fields.join(', ')}).`);
+const t = messages('homework', english);
+
+/** Fields a sheet or an item (item: its number) does not have, named: a typo such as "stat" would lose the start state unseen. */
+const unknownFields = (object, fields, item = null) => Object.keys(object).filter((key) => !fields.includes(key))
+  .map((key) => {
+    const named = { field: rawText(key, 32), fields: fields.join(', ') };
+    return item === null ? t('sheet.unknownField', named) : t('sheet.unknownItemField', { ...named, item });
+  });
+
+/** Whether a sheet's `lang` is a language of the lab (a listed one, or a pseudo-locale the tests ask for). */
+export const sheetLanguage = (lang) => typeof lang === 'string' && languageById(lang) !== undefined;
 
 /**
  * An item's start state: panel values the question does not set (a view, a roughness). Its shape
  * and its names are checked here (a name the panel does not know would be dropped there without a
  * word); the panel checks each value against its schema and says so on screen.
  */
-function stateProblems(state, panelId, where) {
+function stateProblems(state, panelId, item) {
   if (state === undefined) return [];
-  if (!plainObject(state)) return [`${where}: state must be an object of panel values.`];
+  if (!plainObject(state)) return [t('sheet.stateNotObject', { item })];
   const entries = Object.entries(state);
-  if (entries.length > MAX_STATE_KEYS) return [`${where}: state holds more than ${MAX_STATE_KEYS} values.`];
+  if (entries.length > MAX_STATE_KEYS) return [t('sheet.stateTooLarge', { item, max: MAX_STATE_KEYS })];
   return entries.flatMap(([key, value]) => {
-    if (!/^[A-Za-z][A-Za-z0-9]{0,31}$/.test(key)) return [`${where}: “${clipText(key, 32)}” is not a panel value's name.`];
+    if (!/^[A-Za-z][A-Za-z0-9]{0,31}$/.test(key)) return [t('sheet.stateBadName', { item, key: clipText(key, 32) })];
     // The frame's own options (which panel, locks, the deck's origin) are the sheet page's to set.
-    if (EMBED_KEYS.includes(key)) return [`${where}: ${key} is not a panel value (it is an option of the embed page).`];
-    if (resolveKey(panelSchema(panelId) ?? {}, key) === undefined) return [`${where}: ${key} is not a value of this question's panel.`];
+    if (EMBED_KEYS.includes(key)) return [t('sheet.stateEmbedOption', { item, key })];
+    if (resolveKey(panelSchema(panelId) ?? {}, key) === undefined) return [t('sheet.stateUnknown', { item, key })];
     const fits = (typeof value === 'number' && Number.isFinite(value)) || typeof value === 'boolean' || text(value, 64);
-    return fits ? [] : [`${where}: ${key} must be a number, true or false, or a short text.`];
+    return fits ? [] : [t('sheet.stateValue', { item, key })];
   });
 }
 
 /** { ok: true, sheet } with the sheet's items normalised, or { ok: false, problems: [text] }. */
 export function readSheet(data) {
   const problems = [];
-  if (!data || typeof data !== 'object' || Array.isArray(data)) return { ok: false, problems: ['A sheet is a JSON object.'] };
-  problems.push(...unknownFields(data, SHEET_FIELDS, 'a sheet'));
-  if (data.version !== SHEET_VERSION) problems.push(`version must be ${SHEET_VERSION}.`);
-  if (!text(data.title, 200)) problems.push('title must be a text of 1 to 200 characters.');
+  if (!data || typeof data !== 'object' || Array.isArray(data)) return { ok: false, problems: [t('sheet.notObject')] };
+  problems.push(...unknownFields(data, SHEET_FIELDS));
+  if (data.version !== SHEET_VERSION) problems.push(t('sheet.version', { version: SHEET_VERSION }));
+  if (!text(data.title, 200)) problems.push(t('sheet.title'));
   if (!Array.isArray(data.items) || data.items.length === 0 || data.items.length > MAX_ITEMS) {
-    problems.push(`items must be a list of 1 to ${MAX_ITEMS} questions.`);
+    problems.push(t('sheet.items', { max: MAX_ITEMS }));
   } else {
     data.items.forEach((item, i) => {
-      if (plainObject(item)) problems.push(...unknownFields(item, ITEM_FIELDS, 'an item', `item ${i + 1}: `));
+      if (plainObject(item)) problems.push(...unknownFields(item, ITEM_FIELDS, i + 1));
       const question = questionById(item?.question);
       // rawText: the id may be any JSON, and String() of an object whose toString is not a function throws.
-      if (!question) problems.push(`item ${i + 1}: there is no question “${rawText(item?.question)}”.`);
-      else problems.push(...stateProblems(item.state, question.panel, `item ${i + 1}`));
+      if (!question) problems.push(t('sheet.noQuestion', { item: i + 1, id: rawText(item?.question) }));
+      else problems.push(...stateProblems(item.state, question.panel, i + 1));
     });
   }
-  if (data.seed !== undefined && !text(data.seed, 64)) problems.push('seed, where given, must be a text of 1 to 64 characters.');
-  if (data.reveal !== undefined && !['after-answer', 'lecturer'].includes(data.reveal)) problems.push('reveal must be '
-    + 'after-answer or lecturer.');
+  if (data.seed !== undefined && !text(data.seed, 64)) problems.push(t('sheet.seed'));
+  if (data.reveal !== undefined && !['after-answer', 'lecturer'].includes(data.reveal)) problems.push(t('sheet.reveal'));
+  if (data.lang !== undefined && !sheetLanguage(data.lang)) {
+    problems.push(t('sheet.lang', { languages: LANGUAGES.map((l) => l.id).join(', '), lang: rawText(data.lang, 32) }));
+  }
   if (problems.length) return { ok: false, problems };
   return {
     ok: true,
@@ -66,6 +80,7 @@ export function readSheet(data) {
       title: data.title,
       reveal: data.reveal ?? 'after-answer',
       ...(data.seed === undefined ? {} : { seed: data.seed }),
+      ...(data.lang === undefined ? {} : { lang: data.lang }),
       items: data.items.map((item) => ({ question: item.question, ...(item.state ? { state: { ...item.state } } : {}) })),
     },
   };

@@ -11,6 +11,10 @@ import { parseValue, rawText, resolveKey } from '../host/params.js';
 import { lecturePrefix, panelEntry } from '../panels/manifest.js';
 import { panelSchema } from '../panels/panelSchema.js';
 import { panelTitle } from '../panels/panelText.js';
+import english from 'virtual:messages/en/homework';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('homework', english);
 
 const titleOf = (panelId) => (panelEntry(panelId) ? panelTitle(panelId) : rawText(panelId));
 
@@ -24,13 +28,17 @@ export function readStartState(text, panelId) {
     // A whole link, a relative one (embed.html?…), or the pairs alone; a lecture link's #hash goes.
     search = /^[a-z]+:/i.test(raw) ? new URL(raw).searchParams : new URLSearchParams(raw.slice(raw.indexOf('?') + 1).replace(/#.*$/, ''));
   } catch {
-    return { ok: false, problem: 'This is neither a link nor key=value pairs.' };
+    return { ok: false, problem: t('startState.notLink') };
   }
   const prefix = lecturePrefix(panelId);
   const fromLecture = !search.has('panel') && prefix && [...search.keys()].some((k) => k.startsWith(prefix));
   if (search.has('panel') && search.get('panel') !== panelId) {
-    const other = panelEntry(search.get('panel')) ? panelTitle(search.get('panel')) : 'another page';
-    return { ok: false, problem: `This link is for “${other}”, not “${titleOf(panelId)}”.` };
+    const other = search.get('panel');
+    return {
+      ok: false,
+      problem: panelEntry(other) ? t('startState.otherPanel', { other: panelTitle(other), panel: titleOf(panelId) })
+        : t('startState.otherPage', { panel: titleOf(panelId) }),
+    };
   }
   const schema = panelSchema(panelId) ?? {};
   const state = {};
@@ -52,8 +60,7 @@ export function readStartState(text, panelId) {
     else refused.push(`${rawText(name)}=${rawText(value)} ${read.reason}`);
   }
   const problems = [];
-  if (unknown.length) problems.push(`${unknown.join(', ')} ${unknown.length === 1 ? 'is not a value' : 'are not values'} of the `
-    + `“${titleOf(panelId)}” panel.`);
+  if (unknown.length) problems.push(t('startState.unknown', { count: unknown.length, names: unknown.join(', '), panel: titleOf(panelId) }));
   if (refused.length) problems.push(`${refused.join('; ')}.`);
   return problems.length ? { ok: false, problem: problems.join(' ') } : { ok: true, state };
 }

@@ -4,6 +4,10 @@
 // HAND_IN_PREFIX so the two cannot be confused. Decoding only turns text into data: readSheet.js
 // decides whether the data is a sheet.
 import { SHEET_VERSION } from './readSheet.js';
+import english from 'virtual:messages/en/homework';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('homework', english);
 
 export const HAND_IN_PREFIX = 'FLH1.';
 export const HAND_IN_KIND = 'fresnel-lab-hand-in';
@@ -16,40 +20,43 @@ function toBase64Url(text) {
   return btoa(binary).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
 }
 
+/** Why a code is damaged: 'badCharacters' or 'notText' (a key of the catalogue's codes.<what>.*). */
 class Damaged extends Error {}
 
 function fromBase64Url(text) {
   // Mail and chat programs wrap long codes; some tools add base64 padding. Both are harmless.
   const code = text.replace(/\s+/g, '').replace(/=+$/, '');
-  if (!/^[A-Za-z0-9_-]*$/.test(code)) throw new Damaged('it holds characters a code never has');
+  if (!/^[A-Za-z0-9_-]*$/.test(code)) throw new Damaged('badCharacters');
   try {
     const binary = atob(code.replace(/-/g, '+').replace(/_/g, '/'));
     return new TextDecoder('utf-8', { fatal: true }).decode(Uint8Array.from(binary, (c) => c.charCodeAt(0)));
   } catch {
-    throw new Damaged('it does not decode to text');
+    throw new Damaged('notText');
   }
 }
 
+// what: 'sheetLink', 'handInCode' or 'handInFile', the catalogue's codes.<what>.* (each a whole sentence).
 function parseJson(text, what) {
   try {
     return { ok: true, data: JSON.parse(text) };
   } catch {
-    return { ok: false, problems: [`This ${what} is not readable JSON.`] };
+    return { ok: false, problems: [t(`codes.${what}.notJson`)] };
   }
 }
 
 // A code or a file is text: anything else (a number, an object whose toString throws) is none.
 const asText = (raw) => (typeof raw === 'string' ? raw : '');
 
+/** damaged: true where the code's characters or bytes are broken (a code cut short when copied, most often). */
 function decode(code, what) {
   const text = asText(code).trim();
-  if (!text) return { ok: false, problems: [`No ${what} was given.`] };
-  if (text.length > MAX_CODE) return { ok: false, problems: [`This ${what} is too long to be one (${text.length} characters).`] };
+  if (!text) return { ok: false, problems: [t(`codes.${what}.none`)] };
+  if (text.length > MAX_CODE) return { ok: false, problems: [t(`codes.${what}.tooLong`, { length: text.length })] };
   try {
     return parseJson(fromBase64Url(text), what);
   } catch (error) {
     if (!(error instanceof Damaged)) throw error;
-    return { ok: false, problems: [`This ${what} is damaged: ${error.message} (was it cut short when copied?).`] };
+    return { ok: false, damaged: true, problems: [t(`codes.${what}.${error.message}`)] };
   }
 }
 
@@ -57,7 +64,7 @@ function decode(code, what) {
 export const sheetToCode = (sheet) => toBase64Url(JSON.stringify(sheet));
 
 /** { ok: true, data } (still to be read by readSheet) or { ok: false, problems }. */
-export const sheetFromCode = (code) => decode(code, 'sheet link');
+export const sheetFromCode = (code) => decode(code, 'sheetLink');
 
 /**
  * A handed-in file's content: what the student answered, for which sheet and seed, how many
@@ -75,8 +82,8 @@ export const handInToCode = (handIn) => HAND_IN_PREFIX + toBase64Url(JSON.string
  */
 export function handInFromText(text) {
   const trimmed = asText(text).trim();
-  if (trimmed.startsWith('{')) return parseJson(trimmed, 'handed-in file');
-  if (trimmed.startsWith(HAND_IN_PREFIX)) return decode(trimmed.slice(HAND_IN_PREFIX.length), 'handed-in code');
-  if (!trimmed) return { ok: false, problems: ['Nothing was given: paste a handed-in code or choose a handed-in file.'] };
-  return { ok: false, problems: [`This is neither a handed-in file (JSON) nor a handed-in code (it starts with ${HAND_IN_PREFIX}).`] };
+  if (trimmed.startsWith('{')) return parseJson(trimmed, 'handInFile');
+  if (trimmed.startsWith(HAND_IN_PREFIX)) return decode(trimmed.slice(HAND_IN_PREFIX.length), 'handInCode');
+  if (!trimmed) return { ok: false, problems: [t('codes.nothing')] };
+  return { ok: false, problems: [t('codes.neither', { prefix: HAND_IN_PREFIX })] };
 }

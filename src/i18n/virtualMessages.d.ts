@@ -4,3 +4,9 @@ declare module 'virtual:messages/en/*' {
   const messages: Record<string, (args?: Record<string, unknown>) => string>;
   export default messages;
 }
+
+// Some namespaces of every other language, in one module: { lang: { namespace: messages } }.
+declare module 'virtual:messages/every/*' {
+  const catalogues: Record<string, Record<string, Record<string, (args?: Record<string, unknown>) => string>>>;
+  export default catalogues;
+}

@@ -220,6 +220,34 @@ test('bad sheets, links and codes are refused with their reasons, and the page s
   await expect(card(page, 1).locator('iframe')).toHaveAttribute('src', /theta=10&nI=1&nT=[\d.]+&panel=exact-fresnel$/);
 });
 
+test('a sheet opens in the language it was made in; the reader\'s ?lang= still wins', async ({ page }) => {
+  // Made on a page in the pseudo-locale (every catalogue message bracketed ⟦…⟧), as a Spanish sheet will be once es.json exists.
+  await page.goto('homework.html?lang=en-XA');
+  await expect(page.locator('html')).toHaveAttribute('lang', 'en-XA');
+  await page.locator('#pick-exact-r').check();
+  const link = await page.locator('.hw-composer-out input[type="text"]').inputValue();
+  const code = new URL(link).searchParams.get('sheet');
+  expect(JSON.parse(Buffer.from(code, 'base64url').toString('utf8')).lang).toBe('en-XA');
+  // Opened without ?lang= (a student's browser, its own language English): the sheet's language.
+  await page.goto(`homework.html?sheet=${code}`);
+  await expect(page.locator('html')).toHaveAttribute('lang', 'en-XA');
+  await expect(card(page, 1).locator('.hw-number')).toHaveText(/^⟦Q/);
+  await expect(card(page, 1).locator('.hw-prompt')).toHaveText(/^⟦/);
+  await expect(page.locator('.hw-meta').first()).toHaveText(/^⟦.*⟧$/);
+  await expect(page.locator('.hw-meta .hw-seed')).toHaveCount(1); // the seed stays in its own element inside the sentence
+  // The reader's ?lang= wins over the sheet's.
+  await page.goto(`homework.html?sheet=${code}&lang=en`);
+  await expect(page.locator('html')).toHaveAttribute('lang', 'en');
+  await expect(card(page, 1).locator('.hw-number')).toHaveText('Question 1');
+  // A sheet made in English carries English, and one made before sheets carried a language opens in the reader's.
+  await page.goto('homework.html');
+  await page.locator('#pick-exact-r').check();
+  const english = new URL(await page.getByLabel('Link for students').inputValue()).searchParams.get('sheet');
+  expect(JSON.parse(Buffer.from(english, 'base64url').toString('utf8')).lang).toBe('en');
+  await page.goto(sheetLink(SHEET));
+  await expect(card(page, 1).locator('.hw-number')).toHaveText('Question 1');
+});
+
 test('keyboard only: compose, predict, answer and check', async ({ page }) => {
   test.setTimeout(180_000);
   await page.goto('homework.html');

@@ -5,7 +5,7 @@
 // seed, keeps answers in cmi.suspend_data (and gets them back from it, on another computer too),
 // records each checked answer as an interaction, and at hand-in reports the recomputed score.
 import { readFileSync } from 'node:fs';
-import { strFromU8, unzipSync } from 'fflate';
+import { strFromU8, strToU8, unzipSync } from 'fflate';
 import { test, expect } from './fixtures.js';
 import { hashSeed } from '../../src/homework/seededRandom.js';
 import { QUESTIONS } from '../../src/homework/questions.js';
@@ -122,6 +122,24 @@ test('a sheet saved for an LMS reports the recomputed score through the SCORM 1.
   await page.goto(`lms/player.html?resume=${encodeURIComponent(suspend.slice(0, 25))}`);
   await expect(page.frameLocator('#sco').locator('.hw-resume-notice')).toHaveText(/^Your course’s copy of your answers cannot be read \(cut short or changed\)/);
   await expect(page.frameLocator('#sco').locator('#question-2').getByRole('radio', { name: /Nearly white/ })).not.toBeChecked();
+});
+
+test('a package opens in the language its sheet was made in', async ({ page }) => {
+  test.setTimeout(120_000);
+  const { files } = await composePackage(page, 'Week 3', ['exact-r']);
+  const inPage = strFromU8(files['homework.html']);
+  // The last such block: the page's own script, inlined before it, writes the same tag around a variable.
+  const code = [...inPage.matchAll(/id="fresnel-lab-sheet" data-scorm="1">([^<]*)</g)].at(-1)[1];
+  const sheet = JSON.parse(Buffer.from(code, 'base64url').toString('utf8'));
+  expect(sheet.lang).toBe('en'); // composed on an English page
+  // The same package had it been made on a page in the pseudo-locale (as it will be in Spanish).
+  const made = Buffer.from(JSON.stringify({ ...sheet, lang: 'en-XA' })).toString('base64url');
+  const at = inPage.lastIndexOf(code);
+  await serveLms(page, { ...files, 'homework.html': strToU8(inPage.slice(0, at) + made + inPage.slice(at + code.length)) }, () => LMS);
+  await page.goto('lms/player.html');
+  const sco = page.frameLocator('#sco');
+  await expect(sco.locator('html')).toHaveAttribute('lang', 'en-XA');
+  await expect(sco.locator('#question-1 .hw-number')).toHaveText(/^⟦Q/);
 });
 
 /** What to answer to question `n` (1-based) of the sheet, and the interaction that check should make. */

@@ -300,4 +300,30 @@ describe('a whole class view', () => {
     await listener({ data: null });
     expect(posted[posted.length - 1]).toMatchObject({ view: { ok: false } });
   });
+
+  it('the worker writes its words in the language the page asks for, and English for one the lab does not speak', async () => {
+    const synthetic = syntheticClass({ students: 3, questions: 4, seed: 'words' });
+    const posted = [];
+    let listener;
+    serveClassView({ addEventListener: (_type, fn) => { listener = fn; }, postMessage: (m) => posted.push(structuredClone(m)) });
+    const request = { sheet: synthetic.sheet, files: [{ name: 'class.zip', bytes: synthetic.zip }, { name: 'photo.png', bytes: new Uint8Array(4) }] };
+    const last = () => posted[posted.length - 1];
+    try {
+      // The pseudo-locale (?lang=en-XA on the page): every word the worker writes is a message, bracketed ⟦…⟧.
+      await listener({ data: { id: 1, request, lang: 'en-XA' } });
+      const { view } = last();
+      expect(view.refused).toEqual([{ source: 'photo.png', reason: expect.stringMatching(/^⟦not read: a \.png file is no hand-in .*⟧$/) }]);
+      const options = view.summary.flatMap((s) => s.options ?? []);
+      expect(options.length).toBeGreaterThan(0);
+      expect(options.every((o) => /^⟦.*⟧$/.test(o.text))).toBe(true);
+      const explanations = view.graded.flatMap((g) => g.result.results.map((r) => r.explanation));
+      expect(explanations.length).toBeGreaterThan(0);
+      expect(explanations.every((text) => /^⟦.*⟧$/.test(text))).toBe(true);
+      await listener({ data: { id: 2, request, lang: 'xx' } });
+      expect(last().view.refused[0].reason).toMatch(/^not read: a \.png file is no hand-in/);
+    } finally {
+      await listener({ data: { id: 3, request: null, lang: 'en' } }); // modules are shared between test files
+    }
+    expect(last().view.ok).toBe(false);
+  });
 });

@@ -75,6 +75,11 @@ describe('a Canvas download', () => {
     expect(lmsUser('lovelaceada_late_12345_67890_handin.json')).toEqual({ lms: 'canvas', name: 'lovelaceada', id: '12345' });
     expect(lmsUser('smith2john_99_1_h.json')).toEqual({ lms: 'canvas', name: 'smith2john', id: '99' });
     expect(lmsUser('obrienseán_23456_text.html, line 3')).toEqual({ lms: 'canvas', name: 'obrienseán', id: '23456' });
+    // A source written in another language says the line in its own words: the online text is still found.
+    for (const line of [', línea 3', ' (Zeile 3)', '⟦, líñé 3 ··⟧']) {
+      expect(lmsUser(`obrienseán_23456_text.html${line}`), line).toEqual({ lms: 'canvas', name: 'obrienseán', id: '23456' });
+    }
+    expect(lmsUser('obrienseán_23456_text.htmlx')).toEqual({ lms: '', name: '', id: '' });
     expect(lmsUser('Ada Lovelace_123456_assignsubmission_file_handin.json')).toEqual({ lms: 'moodle', name: 'Ada Lovelace', id: '123456' });
     expect(lmsUser('g.zip/Homework 3_alovelace_attempt_2026-01-02-10-00-00_h.json')).toEqual({ lms: 'blackboard', name: 'alovelace', id: '' });
     for (const plain of ['handin.json', 'anon_x1y2z_67890_handin.json', 'week_three.json']) expect(lmsUser(plain)).toEqual({ lms: '', name: '', id: '' });

@@ -19,7 +19,9 @@ import { check } from './fuzzConfig.js';
 const text = (v, max) => typeof v === 'string' && v.length > 0 && v.length <= max;
 const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
 const reasons = (problems) => Array.isArray(problems) && problems.length > 0 && problems.every((p) => typeof p === 'string' && /\S/.test(p));
-const SHEET_FIELDS = ['version', 'title', 'reveal', 'seed', 'items'];
+const SHEET_FIELDS = ['version', 'title', 'reveal', 'seed', 'lang', 'items'];
+/** The languages a sheet may carry: the lab's (src/i18n/languages.js) and its pseudo-locales. */
+const SHEET_LANGUAGES = ['en', 'es', 'en-XA', 'ar-XB'];
 /** Whether every text in a value, keys included, is whole Unicode (no half of a surrogate pair). */
 const wellFormed = (v) => (typeof v === 'string' ? v.isWellFormed()
   : v !== null && typeof v === 'object' ? Object.entries(v).every(([k, x]) => k.isWellFormed() && wellFormed(x)) : true);
@@ -52,7 +54,8 @@ const seed = fc.oneof(anyText, fc.string({ unit: 'grapheme', minLength: 1, maxLe
 
 /** A sheet as a lecturer composes or writes one, from the real question bank and panel schemas. */
 const sheet = fc.record({
-  version: fc.constant(1), title, reveal: fc.constantFrom('after-answer', 'lecturer'), seed, items: fc.array(item, { minLength: 1, maxLength: 4 }),
+  version: fc.constant(1), title, reveal: fc.constantFrom('after-answer', 'lecturer'), seed,
+  lang: fc.constantFrom(...SHEET_LANGUAGES), items: fc.array(item, { minLength: 1, maxLength: 4 }),
 }, { requiredKeys: ['version', 'title', 'items'] });
 
 /** The sheet with one thing changed: a field replaced, or an own key (__proto__ among them) added somewhere. */
@@ -63,7 +66,7 @@ const edited = fc.tuple(sheet, fc.constantFrom('top', 'item', 'state', 'question
   else if (where === 'item') setOwn(first, key, value);
   else if (where === 'state') first.state = setOwn({ ...first.state }, key, value);
   else if (where === 'question') first.question = value;
-  else copy[SHEET_FIELDS[key.length % 5]] = value;
+  else copy[SHEET_FIELDS[key.length % SHEET_FIELDS.length]] = value;
   return copy;
 });
 
@@ -74,6 +77,7 @@ function expectValidSheet(s) {
   expect(text(s.title, 200)).toBe(true);
   expect(['after-answer', 'lecturer']).toContain(s.reveal);
   expect(s.seed === undefined || text(s.seed, 64)).toBe(true);
+  expect(s.lang === undefined || SHEET_LANGUAGES.includes(s.lang)).toBe(true);
   expect(s.items.length >= 1 && s.items.length <= 40).toBe(true);
   for (const it of s.items) {
     const question = questionById(it.question);
@@ -99,6 +103,7 @@ describe('a sheet read from JSON', () => {
       const named = [
         ...items.filter((it) => !questionById(it?.question)).map((it) => rawText(it?.question)),
         ...(isObject(data) ? Object.keys(data).filter((k) => !SHEET_FIELDS.includes(k)) : []),
+        ...(isObject(data) && data.lang !== undefined && !SHEET_LANGUAGES.includes(data.lang) ? [rawText(data.lang, 32)] : []),
         ...items.flatMap((it) => (isObject(it) ? Object.keys(it).filter((k) => k !== 'question' && k !== 'state') : [])),
         ...items.flatMap((it) => {
           const question = questionById(it?.question);
@@ -290,7 +295,8 @@ describe('what these properties found', () => {
   it('a field a sheet or an item does not have is named, not dropped: a typo would lose a start state unseen', () => {
     expect(readSheet({ ...base, items: [{ question: 'exact-r', stat: { theta: 10 } }] }))
       .toEqual({ ok: false, problems: ['item 1: “stat” is not a field of an item (question, state).'] });
-    expect(readSheet({ ...base, due: 'Friday' })).toEqual({ ok: false, problems: ['“due” is not a field of a sheet (version, title, reveal, seed, items).'] });
+    expect(readSheet({ ...base, due: 'Friday' }))
+      .toEqual({ ok: false, problems: ['“due” is not a field of a sheet (version, title, reveal, seed, lang, items).'] });
   });
   it('a code that is no text is refused, and a quoted id never ends in half a character', () => {
     const hostile = JSON.parse('{"toString":1}');

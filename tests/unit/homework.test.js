@@ -5,6 +5,7 @@ import { QUESTIONS, questionById } from '../../src/homework/questions.js';
 import { gradeAnswer, questionParams, trueOption } from '../../src/homework/gradeAnswer.js';
 import { readSheet } from '../../src/homework/readSheet.js';
 import { gradeHandIn } from '../../src/homework/gradeHandIn.js';
+import { sheetFromCode, sheetToCode } from '../../src/homework/sheetCodes.js';
 import { PANEL_IDS } from '../../src/panels/manifest.js';
 import { FIXED_PANEL_IDS } from './fixedPanelIds.js';
 import { fresnelExact } from '../../src/optics/fresnel.js';
@@ -179,6 +180,21 @@ describe('sheets and handed-in files', () => {
       const read = readSheet(bad);
       expect(read.ok).toBe(false);
       expect(read.problems.length).toBeGreaterThan(0);
+    }
+  });
+  it('a sheet carries the language it was made in, through its code; any other lang is refused by name', () => {
+    const spanish = { ...sheet, lang: 'es' };
+    const read = readSheet(spanish);
+    expect(read).toEqual({ ok: true, sheet: { ...spanish, reveal: 'after-answer' } });
+    const back = sheetFromCode(sheetToCode(read.sheet));
+    expect(readSheet(back.data)).toEqual(read);
+    expect(readSheet({ ...sheet, lang: 'en-XA' }).sheet.lang).toBe('en-XA'); // the pseudo-locale the browser tests carry
+    // A sheet made before sheets carried a language is read as it was: no lang is added, so its fingerprint stays.
+    expect(Object.hasOwn(readSheet(sheet).sheet, 'lang')).toBe(false);
+    for (const [bad, named] of [['fr', '“fr”'], ['ES', '“ES”'], ['', '“”'], [1, '“1”'], [['es'], '“(a list)”']]) {
+      const refused = readSheet({ ...sheet, lang: bad });
+      expect(refused.ok).toBe(false);
+      expect(refused.problems).toEqual([`lang, where given, must be a language of the lab (en, es), not ${named}.`]);
     }
   });
   it('a handed-in file is graded by recomputation: a forged "correct" changes nothing', () => {

@@ -10,6 +10,10 @@ import { readClassFile } from './classFile.js';
 import { gradeClass } from './gradeClass.js';
 import { buildGradebook } from './buildGradebook.js';
 import { summarizeQuestions } from './summarizeQuestions.js';
+import english from 'virtual:messages/en/class';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('class', english);
 
 /**
  * @typedef {import('./readClassHandIns.js').HandIn} HandIn
@@ -43,13 +47,12 @@ export async function buildClassView(request, { caps, onProgress, signal, pause,
     handIns.push(...saved.handIns);
     refused.push(...saved.refused);
   }
-  if (sheet === undefined || sheet === null) return { ok: false, problems: ['Give the sheet you set: hand-ins are graded against it, '
-    + 'and those for any other sheet are refused.'] };
+  if (sheet === undefined || sheet === null) return { ok: false, problems: [t('grade.giveSheet')] };
   // A saved view's hand-ins count against the cap on hand-ins read in all.
   const left = classCaps(caps).maxHandIns - handIns.length;
   const read = left > 0 ? readClassHandIns({ files: request?.files, text: request?.text }, { ...caps, maxHandIns: left })
-    : { handIns: [], refused: request?.files?.length || (typeof request?.text === 'string' && request.text.trim()) ? [{ source: 'files and '
-      + 'text', reason: 'not read: the saved class view holds as many hand-ins as are read in all.' }] : [] };
+    : { handIns: [], refused: request?.files?.length || (typeof request?.text === 'string' && request.text.trim())
+      ? [{ source: t('source.filesAndText'), reason: t('grade.savedViewFull') }] : [] };
   handIns.push(...read.handIns);
   refused.push(...read.refused);
   const grades = await gradeClass(sheet, handIns, {

@@ -15,6 +15,8 @@
 // file's name), or the LMS's folder name; hand-ins with none of them are never taken for one another.
 import { questionById } from '../questions.js';
 import { lmsUser } from './lmsName.js';
+import english from 'virtual:messages/en/class';
+import { messages } from '../../i18n/messages.js';
 
 /**
  * @typedef {'right' | 'wrong' | 'unanswered'} Mark
@@ -30,6 +32,7 @@ import { lmsUser } from './lmsName.js';
  *   students giving one wrong answer make it a common slip, left out
  */
 
+const t = messages('class', english);
 const COPIED_AT_LEAST = 3;
 const normalName = (text) => text.normalize('NFC').trim().replace(/\s+/g, ' ').toLocaleLowerCase();
 const shown = (row) => row.name || row.lmsName || row.source;
@@ -52,11 +55,13 @@ function supersede(rows, identity) {
     const earlier = group.slice(0, -1);
     for (const row of earlier) {
       row.counted = false;
-      row.flags.push({ kind: 'superseded', text: `Not counted: ${shown(latest)} handed in again later (${latest.time ?? 'no time given'}, `
-        + `${latest.source}).`, others: [latest.key] });
+      const text = t('flag.superseded.text', {
+        name: shown(latest), hasTime: latest.time === null ? 'no' : 'yes', time: latest.time, source: latest.source,
+      });
+      row.flags.push({ kind: 'superseded', text, others: [latest.key] });
     }
     latest.flags.push({
-      kind: 'resubmitted', text: `Handed in ${group.length} times; this one, the latest, counts.`, others: earlier.map((r) => r.key),
+      kind: 'resubmitted', text: t('flag.resubmitted.text', { count: group.length }), others: earlier.map((r) => r.key),
     });
   }
 }
@@ -73,8 +78,8 @@ function sharedSeeds(rows, identity) {
     if (students.size < 2) continue;
     for (const row of group) {
       const others = group.filter((r) => r !== row);
-      row.flags.push({ kind: 'shared-seed', text: `Seed ${row.seed} is also on the hand-in of ${listed(others)}: `
-        + `one sheet under ${students.size} names.`, others: others.map((r) => r.key) });
+      const text = t('flag.shared-seed.text', { seed: row.seed, others: listed(others), count: students.size });
+      row.flags.push({ kind: 'shared-seed', text, others: others.map((r) => r.key) });
     }
   }
 }
@@ -114,9 +119,8 @@ function copiedAnswers(rows, graded, items, identity, atLeast) {
     if (shared.length < atLeast) continue;
     const questions = shared.sort((a, b) => a - b).map((i) => i + 1).join(', ');
     for (const [row, other] of [[x, y], [y, x]]) {
-      row.flags.push({ kind: 'copied', text: `The same wrong answers as ${shown(other)} to the same numbers (seed ${row.seed}) `
-        + `on questions ${questions}: a copied sheet looks like that. (Flagged at ${atLeast} or more such questions; a wrong `
-        + `answer that ${common} or more students give is taken for a common slip and not counted.)`, others: [other.key] });
+      const text = t('flag.copied.text', { name: shown(other), seed: row.seed, questions, atLeast, common });
+      row.flags.push({ kind: 'copied', text, others: [other.key] });
     }
   }
 }
@@ -152,12 +156,18 @@ export function buildGradebook(grades, { copiedAtLeast = COPIED_AT_LEAST } = {})
   supersede(rows, identity);
   const counted = rows.filter((row) => row.counted);
   if (sheet.seed === undefined) sharedSeeds(counted, identity);
-  else for (const row of counted) if (row.seed !== sheet.seed) row.flags.push({ kind: 'class-seed', text: `Seed ${row.seed}, `
-    + `where the sheet gives everyone ${sheet.seed}.`, others: [] });
+  else {
+    for (const row of counted) {
+      if (row.seed === sheet.seed) continue;
+      row.flags.push({ kind: 'class-seed', text: t('flag.class-seed.text', { seed: row.seed, classSeed: sheet.seed }), others: [] });
+    }
+  }
   copiedAnswers(counted, graded, items, identity, copiedAtLeast);
   for (const row of rows) {
-    if (!row.name) row.flags.push({ kind: 'no-name', text: row.lmsName ? `No name in the hand-in; `
-      + `the LMS's folder or file name says ${row.lmsName}.` : 'No name in the hand-in.', others: [] });
+    if (!row.name) {
+      const text = t('flag.no-name.text', { hasLmsName: row.lmsName ? 'yes' : 'no', lmsName: row.lmsName });
+      row.flags.push({ kind: 'no-name', text, others: [] });
+    }
   }
   return {
     title: sheet.title, fingerprint: grades.fingerprint, classSeed: sheet.seed ?? null, items, rows,

@@ -4,11 +4,15 @@
 // small. Each cap refuses by name what passes it; none drops anything silently.
 
 import { fixed } from '../../ui/format.js';
+import english from 'virtual:messages/en/class';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('class', english);
 
 const MB = 1024 * 1024;
 
 /** A size in words for a refusal: megabytes, two decimals below one. */
-export const megabytes = (bytes) => `${fixed(bytes / MB, bytes < MB ? 2 : 1)} MB`;
+export const megabytes = (bytes) => t('megabytes', { size: fixed(bytes / MB, bytes < MB ? 2 : 1) });
 
 export const CLASS_CAPS = Object.freeze({
   /** A .json or .txt file, picked or unpacked: a hand-in is a few kilobytes (40 questions: about 3 KB);

@@ -8,6 +8,10 @@
 import { classCaps, megabytes } from './classCaps.js';
 import { readSheet } from '../readSheet.js';
 import { rawText } from '../../host/params.js';
+import english from 'virtual:messages/en/class';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('class', english);
 
 export const CLASS_FILE_KIND = 'fresnel-lab-class';
 export const CLASS_FILE_VERSION = 1;
@@ -43,48 +47,54 @@ export function writeClassFile({ sheet, handIns, saved = new Date().toISOString(
 export function readClassFile(input, capsGiven = {}) {
   const caps = classCaps(capsGiven);
   const size = typeof input === 'string' ? input.length : input instanceof Uint8Array ? input.length : -1;
-  if (size < 0) return { ok: false, problems: ['A class view is a file of text (JSON).'] };
-  if (size > caps.maxClassFileBytes) return { ok: false, problems: [`This file is ${megabytes(size)}: `
-    + `more than the ${megabytes(caps.maxClassFileBytes)} a class view may have.`] };
+  if (size < 0) return { ok: false, problems: [t('classFile.notText')] };
+  if (size > caps.maxClassFileBytes) {
+    return { ok: false, problems: [t('classFile.tooLarge', { size: megabytes(size), max: megabytes(caps.maxClassFileBytes) })] };
+  }
   let doc;
   try {
     doc = JSON.parse(typeof input === 'string' ? input : new TextDecoder().decode(input));
   } catch {
-    return { ok: false, problems: ['This file is not readable JSON, so it is no saved class view.'] };
+    return { ok: false, problems: [t('classFile.notJson')] };
   }
   if (!plainObject(doc) || own(doc, 'kind') !== CLASS_FILE_KIND) {
-    return { ok: false, problems: [`This is no saved class view (its kind is not ${CLASS_FILE_KIND}).`] };
+    return { ok: false, problems: [t('classFile.otherKind', { kind: CLASS_FILE_KIND })] };
   }
   const problems = [];
-  if (own(doc, 'version') !== CLASS_FILE_VERSION) problems.push(`version must be ${CLASS_FILE_VERSION}; `
-    + `this file says ${rawText(own(doc, 'version'))}.`);
+  if (own(doc, 'version') !== CLASS_FILE_VERSION) {
+    problems.push(t('classFile.version', { version: CLASS_FILE_VERSION, found: rawText(own(doc, 'version')) }));
+  }
   const sheet = readSheet(own(doc, 'sheet'));
-  if (!sheet.ok) problems.push(...sheet.problems.map((p) => `its sheet: ${p}`));
+  if (!sheet.ok) problems.push(...sheet.problems.map((problem) => t('classFile.sheet', { problem })));
   const handIns = own(doc, 'handIns');
-  if (!Array.isArray(handIns)) problems.push('handIns must be a list of hand-ins.');
-  if (problems.length) return { ok: false, problems: problems.map((p) => `This class view cannot be opened: ${p}`) };
+  if (!Array.isArray(handIns)) problems.push(t('classFile.handIns'));
+  if (problems.length) return { ok: false, problems: problems.map((problem) => t('classFile.cannotOpen', { problem })) };
 
   /** @type {Refusal[]} */
   const refused = Object.keys(doc).filter((key) => !FIELDS.includes(key))
-    .map((key) => ({ source: 'class view', reason: `“${rawText(key, 32)}” is not a field of a class view `
-      + `(${FIELDS.join(', ')}); ignored.` }));
+    .map((key) => ({
+      source: t('source.classView'), reason: t('classFile.unknownField', { field: rawText(key, 32), fields: FIELDS.join(', ') }),
+    }));
   /** @type {HandIn[]} */
   const kept = [];
   handIns.forEach((entry, i) => {
-    const label = `hand-in ${i + 1} of the class view`;
+    const label = t('source.classViewHandIn', { number: i + 1 });
     if (i >= caps.maxHandIns) {
-      if (i === caps.maxHandIns) refused.push({ source: `hand-ins ${i + 1}–${handIns.length} of the class view`, reason: `not read: `
-        + `more than the ${caps.maxHandIns} hand-ins read in all.` });
+      if (i === caps.maxHandIns) {
+        const source = t('source.classViewRest', { from: i + 1, to: handIns.length });
+        refused.push({ source, reason: t('classFile.overCap', { max: caps.maxHandIns }) });
+      }
       return;
     }
     if (!plainObject(entry)) {
-      refused.push({ source: label, reason: 'each hand-in is an object { source, data }.' });
+      refused.push({ source: label, reason: t('classFile.notEntry') });
       return;
     }
     const source = own(entry, 'source');
-    if (!Object.hasOwn(entry, 'data')) refused.push({ source: label, reason: 'it has no data.' });
-    else if (typeof source !== 'string' || !source || source.length > MAX_SOURCE) refused.push({ source: label, reason: `its source must `
-      + `be a text of 1 to ${MAX_SOURCE} characters.` });
+    if (!Object.hasOwn(entry, 'data')) refused.push({ source: label, reason: t('classFile.noData') });
+    else if (typeof source !== 'string' || !source || source.length > MAX_SOURCE) {
+      refused.push({ source: label, reason: t('classFile.source', { max: MAX_SOURCE }) });
+    }
     else kept.push({ source, data: entry.data });
   });
   const saved = own(doc, 'saved');

@@ -6,7 +6,12 @@
 // Anything else is refused with its name, from a zip's directory before it is unpacked, so an LMS
 // download with PDFs and photos costs nothing.
 
+import english from 'virtual:messages/en/class';
+import { messages } from '../../i18n/messages.js';
+
 /** @typedef {'json' | 'text' | 'html' | 'zip' | 'by-content'} FileKind */
+
+const t = messages('class', english);
 
 /** The last part of a path (a file in a zip or a dropped folder). */
 export const baseName = (path) => path.slice(path.lastIndexOf('/') + 1);
@@ -21,14 +26,12 @@ const EXTENSIONS = { json: 'json', txt: 'text', html: 'html', htm: 'html', zip: 
 export function fileKind(path) {
   const name = baseName(path);
   // A Mac's zip tool adds a resource-fork twin (__MACOSX/…/._handin.json) for every file: binary, no hand-in.
-  if (path.split('/').includes('__MACOSX') || name.startsWith('._')) return { reason: 'macOS metadata that a Mac adds to '
-    + 'zips, not a hand-in.' };
+  if (path.split('/').includes('__MACOSX') || name.startsWith('._')) return { reason: t('file.macMetadata') };
   const dot = name.lastIndexOf('.');
   if (dot <= 0) return { kind: 'by-content' };
   const extension = name.slice(dot + 1).toLowerCase();
   if (Object.hasOwn(EXTENSIONS, extension)) return { kind: EXTENSIONS[extension] };
-  return { reason: `not read: a .${extension.slice(0, 12)} file is no hand-in (handed-in files are .json, codes come in .txt `
-    + `or .html files, and zips of them are opened).` };
+  return { reason: t('file.otherKind', { extension: extension.slice(0, 12) }) };
 }
 
 const startsWith = (bytes, ...values) => values.every((v, i) => bytes[i] === v);
@@ -41,10 +44,9 @@ const startsWith = (bytes, ...values) => values.every((v, i) => bytes[i] === v);
  */
 export function contentKind(bytes) {
   if (startsWith(bytes, 0x50, 0x4b, 0x03, 0x04) || startsWith(bytes, 0x50, 0x4b, 0x05, 0x06)) return { kind: 'zip' };
-  if (startsWith(bytes, 0x25, 0x50, 0x44, 0x46)) return { reason: 'not read: a PDF (its name has no extension), no hand-in.' };
+  if (startsWith(bytes, 0x25, 0x50, 0x44, 0x46)) return { reason: t('file.pdf') };
   // UTF-16 text has a zero in every other byte; its byte-order mark says so. Any other zero early on is a binary file.
   const utf16 = startsWith(bytes, 0xff, 0xfe) || startsWith(bytes, 0xfe, 0xff);
-  if (!utf16 && bytes.subarray(0, 1024).includes(0)) return { reason: 'not read: a binary file (its name has no extension), '
-    + 'not text that could hold a hand-in.' };
+  if (!utf16 && bytes.subarray(0, 1024).includes(0)) return { reason: t('file.binary') };
   return { kind: 'text' };
 }

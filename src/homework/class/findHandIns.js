@@ -12,11 +12,15 @@
 // taken in, and a line break inside it does not cut it. Cost: a piece is decoded only when its
 // last group of four characters decodes to "}", so a wrapped code is decoded about once.
 import { HAND_IN_KIND, HAND_IN_PREFIX, handInFromText } from '../sheetCodes.js';
+import { fixed } from '../../ui/format.js';
+import english from 'virtual:messages/en/class';
+import { messages } from '../../i18n/messages.js';
 
+const t = messages('class', english);
 const MAX_CODE_CHARS = 200_000; // as sheetCodes.js: far above any sheet
 const MAX_JSON_CHARS = 1_000_000; // a hand-in's JSON: its sheet has at most 40 items of 24 values
 const MARK = `"${HAND_IN_KIND}"`; // the value of a hand-in's "kind"
-const FULL = 'not read: the cap on hand-ins read in all is reached.';
+const full = () => t('find.full');
 const MAX_REFUSALS = 1000; // listed one by one, per text
 
 /**
@@ -98,12 +102,13 @@ function readCode(text, start, limit, explain) {
     const read = handInFromText(HAND_IN_PREFIX + piece);
     if (read.ok && read.data !== null && typeof read.data === 'object' && !Array.isArray(read.data)) return { data: read.data, end };
   }
-  if (!ends.length) return { reason: `${HAND_IN_PREFIX} is followed by no code.` };
-  if (!explain) return { reason: 'This handed-in code cannot be read.' };
+  if (!ends.length) return { reason: t('find.noCode', { prefix: HAND_IN_PREFIX }) };
+  if (!explain) return { reason: t('find.codeUnreadable') };
   const first = handInFromText(HAND_IN_PREFIX + code.slice(0, ends[0][0]));
-  if (first.ok) return { reason: 'This handed-in code does not hold a hand-in (a JSON object).' };
+  if (first.ok) return { reason: t('find.codeNotHandIn') };
   const reason = first.problems.join(' ');
-  return { reason: /cut short/.test(reason) ? reason : `${reason} Was it cut short when copied?` };
+  // A damaged code's reason already asks whether it was cut short; any other does not.
+  return { reason: first.damaged ? reason : t('find.cutShort', { reason }) };
 }
 
 /** Whether the character at i is escaped by an odd run of backslashes (counted up to 1,000). */
@@ -155,6 +160,10 @@ function objectEnd(text, start, ceiling) {
  * Each search stops at the next one's kind, so every character is looked at a bounded number of times.
  */
 function findJson(text) {
+  // Each reason written once: a text can hold a million broken hand-ins.
+  const noStart = t('find.jsonNoStart');
+  const cut = t('find.jsonCut');
+  const unreadable = t('find.jsonUnreadable');
   const found = [];
   const marks = [];
   for (let m = text.indexOf(MARK); m !== -1; m = text.indexOf(MARK, m + 1)) if (!escaped(text, m)) marks.push(m);
@@ -165,20 +174,20 @@ function findJson(text) {
     // "{" stops at the kind before it, as the search for its "}" stops at the kind after it.
     const start = objectStart(text, m, Math.max(floor, m - MAX_JSON_CHARS, k > 0 ? marks[k - 1] + MARK.length : 0));
     if (start < 0) {
-      found.push({ start: m, reason: 'A hand-in\'s JSON whose beginning is missing (its "{" is not there).' });
+      found.push({ start: m, reason: noStart });
       return;
     }
     const ceiling = Math.min(text.length, start + MAX_JSON_CHARS, k + 1 < marks.length ? marks[k + 1] : Infinity);
     const end = objectEnd(text, start, ceiling);
     if (end < 0) {
-      found.push({ start, reason: 'A hand-in\'s JSON that is cut short (it does not close before the next one or the end).' });
+      found.push({ start, reason: cut });
       return;
     }
     try {
       found.push({ start, end: end + 1, data: JSON.parse(text.slice(start, end + 1)) });
       floor = end + 1;
     } catch {
-      found.push({ start, reason: 'A hand-in\'s JSON that is not readable JSON.' });
+      found.push({ start, reason: unreadable });
     }
   });
   return found;
@@ -208,7 +217,7 @@ export function findHandIns(text, source, { maxHandIns = Infinity } = {}) {
     const list = Array.isArray(data) ? data.map((item, i) => ({ source: `${source} [${i + 1}]`, data: item })) : [];
     if (data !== null && typeof data === 'object' && !Array.isArray(data)) list.push({ source, data });
     handIns.push(...list.slice(0, maxHandIns));
-    if (list.length > maxHandIns) refused.push({ source: `${source} [${maxHandIns + 1}–${list.length}]`, reason: FULL });
+    if (list.length > maxHandIns) refused.push({ source: `${source} [${maxHandIns + 1}–${list.length}]`, reason: full() });
     if (data !== undefined && (handIns.length || refused.length)) return { handIns, refused };
   }
   // A CSV cell doubles the quotes of the JSON in it ("{""kind"":…}"): read that JSON undoubled.
@@ -230,18 +239,15 @@ export function findHandIns(text, source, { maxHandIns = Infinity } = {}) {
   }
   found.sort((a, b) => a.start - b.start);
   let unlisted = 0;
+  const where = (f) => t('source.line', { source, line: lineOf(f.start) });
   for (const f of found) {
-    const where = `${source}, line ${lineOf(f.start)}`;
-    const reason = f.reason ?? (handIns.length >= maxHandIns ? FULL : null);
-    if (!reason) handIns.push({ source: where, data: f.data });
-    else if (refused.length < MAX_REFUSALS) refused.push({ source: where, reason });
+    const reason = f.reason ?? (handIns.length >= maxHandIns ? full() : null);
+    if (!reason) handIns.push({ source: where(f), data: f.data });
+    else if (refused.length < MAX_REFUSALS) refused.push({ source: where(f), reason });
     else unlisted += 1;
   }
   // A text of nothing but "FLH1." would list a refusal for each: past a thousand, they are counted.
-  if (unlisted) refused.push({ source, reason: `and ${unlisted} more hand-ins or codes in it that cannot be read (not `
-    + `listed one by one).` });
-  if (!handIns.length && !refused.length) {
-    refused.push({ source, reason: `holds no hand-in: no handed-in code (${HAND_IN_PREFIX}…) and no handed-in file's JSON.` });
-  }
+  if (unlisted) refused.push({ source, reason: t('find.unlisted', { count: unlisted, n: fixed(unlisted, 0) }) });
+  if (!handIns.length && !refused.length) refused.push({ source, reason: t('find.none', { prefix: HAND_IN_PREFIX }) });
   return { handIns, refused };
 }

@@ -13,6 +13,8 @@ import { readSheet } from '../readSheet.js';
 import { HAND_IN_KIND } from '../sheetCodes.js';
 import { rawText } from '../../host/params.js';
 import { CLASS_FILE_KIND } from './classFile.js';
+import english from 'virtual:messages/en/class';
+import { messages } from '../../i18n/messages.js';
 
 /**
  * @typedef {{ source: string, data: unknown }} HandIn
@@ -23,18 +25,18 @@ import { CLASS_FILE_KIND } from './classFile.js';
  * @typedef {{ done: number, total: number }} Progress
  */
 
+const t = messages('class', english);
 const SLICE_MS = 40;
 const plainObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
 const own = (object, key) => (Object.hasOwn(object, key) ? object[key] : undefined);
 
 /** Why `data` is not a hand-in at all, before grading (a sheet or a saved class view dropped among them), or null. */
 function notAHandIn(data) {
-  if (!plainObject(data)) return 'A hand-in is a JSON object.';
+  if (!plainObject(data)) return t('grade.notObject');
   const kind = own(data, 'kind');
-  if (kind === CLASS_FILE_KIND) return 'This is a saved class view, not a hand-in: open it as a class view.';
-  if (kind !== undefined && kind !== HAND_IN_KIND) return `This is not a hand-in: its kind is ${rawText(kind)}.`;
-  if (Object.hasOwn(data, 'items') && !Object.hasOwn(data, 'answers')) return 'This is a sheet, not a hand-in: '
-    + 'it has questions and no answers.';
+  if (kind === CLASS_FILE_KIND) return t('grade.classView');
+  if (kind !== undefined && kind !== HAND_IN_KIND) return t('grade.otherKind', { kind: rawText(kind) });
+  if (Object.hasOwn(data, 'items') && !Object.hasOwn(data, 'answers')) return t('grade.sheet');
   return null;
 }
 
@@ -78,7 +80,7 @@ function* primeQuestions(sheet, list) {
  */
 export function* gradeClassSteps(sheet, handIns, { sliceMs = SLICE_MS, now = () => performance.now() } = {}) {
   const read = readSheet(sheet);
-  if (!read.ok) return { ok: false, problems: read.problems.map((p) => `The sheet you set: ${p}`) };
+  if (!read.ok) return { ok: false, problems: read.problems.map((problem) => t('grade.sheetSet', { problem })) };
   const expected = read.sheet;
   const list = Array.isArray(handIns) ? handIns : [];
   /** @type {Graded[]} */
@@ -96,7 +98,7 @@ export function* gradeClassSteps(sheet, handIns, { sliceMs = SLICE_MS, now = () 
   }
   for (let i = 0; i < list.length; i += 1) {
     const item = list[i];
-    const source = plainObject(item) && typeof own(item, 'source') === 'string' ? item.source : `hand-in ${i + 1}`;
+    const source = plainObject(item) && typeof own(item, 'source') === 'string' ? item.source : t('source.handIn', { number: i + 1 });
     const data = plainObject(item) ? own(item, 'data') : undefined;
     const reason = notAHandIn(data);
     if (reason) refused.push({ source, reason });
@@ -105,7 +107,7 @@ export function* gradeClassSteps(sheet, handIns, { sliceMs = SLICE_MS, now = () 
       try {
         result = gradeHandIn(data, { expected });
       } catch (error) {
-        result = { ok: false, problems: [`A question could not be graded: ${error?.message ?? 'an error'}.`] };
+        result = { ok: false, problems: [t('grade.notGraded', { error: error?.message ?? t('anError') })] };
       }
       // The hand-in's sheet is the class's (the fingerprints agree): one shared object, not 500 copies.
       if (result.ok) graded.push({ source, result: { ...result, sheet: expected } });

@@ -18,10 +18,17 @@
 // injection, so a spreadsheet shows it as text instead of running it (full-width ＝ ＋ － ＠ too,
 // which some spreadsheets read as formulas).
 
+// The column headings are the catalogue's, in the page's language; the cells stay machine-readable
+// (1 and 0, yes and no, flags' ids, ISO 8601 times), so a script reads every language's file alike.
+import english from 'virtual:messages/en/class';
+import { messages } from '../../i18n/messages.js';
+
 /**
  * @typedef {import('./buildGradebook.js').Gradebook} Gradebook
  * @typedef {import('./buildGradebook.js').Row} Row
  */
+
+const t = messages('class', english);
 
 const FORMULA_START = /^[=+\-@\t\r\uff1d\uff0b\uff0d\uff20]/;
 const BOM = '\ufeff';
@@ -49,11 +56,11 @@ export function localTime(time) {
  * @returns {string[][]}
  */
 export function gradebookCells(gradebook, { rows = gradebook.rows, includeSuperseded = false, decimalComma = false } = {}) {
-  const questions = gradebook.items.map((item, i) => `Q${i + 1} ${item.question}`);
+  const questions = gradebook.items.map((item, i) => t('csv.question', { number: i + 1, question: item.question }));
   const header = [
-    'Name', 'LMS name', 'LMS user id', 'Seed', 'Score', 'Out of', 'Percent', ...questions, 'Tries',
-    decimalComma ? 'Handed in (local time)' : 'Handed in', 'Counted', 'Flags', 'Source',
-  ];
+    ...['name', 'lmsName', 'lmsId', 'seed', 'score', 'outOf', 'percent'].map((key) => t(`csv.${key}`)), ...questions, t('csv.tries'),
+    t(decimalComma ? 'csv.localTime' : 'csv.time'), t('csv.counted'), t('csv.flags'), t('csv.source'),
+  ].map(textCell);
   const body = rows.filter((row) => includeSuperseded || row.counted).map((row) => [
     textCell(row.name), textCell(row.lmsName), row.lmsId, textCell(row.seed),
     String(row.score), String(row.total), decimalComma ? row.percent.toFixed(1).replace('.', ',') : row.percent.toFixed(1),

@@ -21,6 +21,8 @@
 // SIS Login ID, Section, then one per assignment; a row whose first cell says "Points Possible"
 // gives a new assignment its points. A student is found by ID (the Canvas user id) first.
 import { textCell } from './gradebookToCsv.js';
+import english from 'virtual:messages/en/class';
+import { messages } from '../../i18n/messages.js';
 
 /**
  * @typedef {import('./buildGradebook.js').Gradebook} Gradebook
@@ -30,11 +32,17 @@ import { textCell } from './gradebookToCsv.js';
  * @typedef {{ cells: string[][], students: { id: string, row: Row }[], left: LeftOut[] }} LmsFile
  */
 
+// The column headings below and "Participant " and "Points Possible" are the LMS's own words, which
+// its importer looks for as they are (Moodle's in the language its pages are in, which the page
+// asks to be English for the upload; Canvas's in English always): they are not translated, and stay
+// out of the message catalogue. Only what the lab names itself (the Canvas column of a sheet without
+// a title) is the catalogue's.
 export const MOODLE_COLUMNS = Object.freeze(['Identifier', 'Full name', 'Grade', 'Maximum grade', 'Last modified (submission)',
   'Last modified (grade)']);
 export const CANVAS_COLUMNS = Object.freeze(['Student', 'ID', 'SIS User ID', 'SIS Login ID', 'Section']);
 /** Moodle's "hiddenuser" string in English: the Identifier is it and the participant number. */
 const PARTICIPANT = 'Participant ';
+const t = messages('class', english);
 const DEFAULT_OUT_OF = 100;
 
 /** A grade as an LMS reads it: out of `outOf`, at most two decimals, a point for the decimal sign. */
@@ -93,7 +101,7 @@ export function moodleWorksheet(gradebook, { outOf, now = new Date() } = {}) {
  * own read-only columns, dropped on import).
  */
 export function canvasColumn(title) {
-  const text = String(title).trim().replace(/\((\d+)\)$/, '[$1]') || 'Fresnel Lab homework';
+  const text = String(title).trim().replace(/\((\d+)\)$/, '[$1]') || t('lms.canvasColumn');
   return /(Current|Final) (Score|Points|Grade)/.test(text) ? `${text} (Fresnel Lab)` : text;
 }
 

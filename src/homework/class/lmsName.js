@@ -19,7 +19,9 @@
 //     "Homework 3_alovelace_attempt_2026-01-02-10-00-00_handin.json"
 
 const MOODLE = /^([^_/]+)_(\d+)_assignsubmission_[a-z]+_/i;
-const CANVAS = /^([\p{L}\p{M}\p{N}_]+?)_(?:late_)?(\d+)_(?:\d+_.|text\.html$|link\.html$)/iu;
+// An online text's page is the whole file name: what follows it in a source is the line a code was
+// on (", line 3" in English, other words in another language), never more of the name.
+const CANVAS = /^([\p{L}\p{M}\p{N}_]+?)_(?:late_)?(\d+)_(?:\d+_.|(?:text|link)\.html(?![\p{L}\p{N}._-]))/iu;
 const BLACKBOARD = /_([^_/]+)_attempt_\d{4}-\d\d-\d\d/;
 
 /**
@@ -29,11 +31,11 @@ const BLACKBOARD = /_([^_/]+)_attempt_\d{4}-\d\d-\d\d/;
 
 /**
  * The student an LMS's path names: which LMS, their name (or user name) and id, or '' for each.
- * @param {string} source a hand-in's source (a path in a zip, perhaps ", line N" after it)
+ * @param {string} source a hand-in's source (a path in a zip, perhaps the line of a code after it: ", line N")
  * @returns {LmsUser}
  */
 export function lmsUser(source) {
-  const parts = String(source).replace(/, line \d+$/, '').split('/');
+  const parts = String(source).split('/');
   for (const part of parts) {
     const moodle = MOODLE.exec(part);
     if (moodle) return { lms: 'moodle', name: moodle[1].trim(), id: moodle[2] };

@@ -10,48 +10,54 @@ import {
 } from '../../optics/fresnel.js';
 import { metalById } from '../../optics/materials.js';
 import { toksvigFactor } from '../../normals/lobeFormulas.js';
+import english from 'virtual:messages/en/questions';
+import { messages } from '../../i18n/messages.js';
+
+// A slip's label is the catalogue's (namespace questions, <question>.slip.<name>), in the language
+// the class view is made in.
+const t = messages('questions', english);
 
 /** @typedef {{ label: string, value: number }} Slip */
 
 /** @type {Record<string, (p: any) => Slip[]>} */
 const SLIPS = {
   'exact-r': (p) => [
-    { label: 'R(0°), head-on, for R(θ)', value: normalIncidence(1, p.nT) },
-    { label: 'the transmitted share 1 − R', value: 1 - fresnelExact(cosDeg(p.theta), 1, p.nT) },
-    { label: 'Schlick’s approximation for the exact R', value: fresnelSchlick(cosDeg(p.theta), 1, p.nT) },
+    { label: t('exact-r.slip.r0'), value: normalIncidence(1, p.nT) },
+    { label: t('exact-r.slip.transmitted'), value: 1 - fresnelExact(cosDeg(p.theta), 1, p.nT) },
+    { label: t('exact-r.slip.schlick'), value: fresnelSchlick(cosDeg(p.theta), 1, p.nT) },
   ],
   'exact-rp-rs': (p) => {
     const { s, p: rp } = fresnelPolarized(cosDeg(p.theta), 1, p.nT);
-    return [{ label: 'R_s alone', value: s }, { label: 'R_p − R_s, the wrong way round', value: rp - s }];
+    return [{ label: t('exact-rp-rs.slip.rsAlone'), value: s }, { label: t('exact-rp-rs.slip.swapped'), value: rp - s }];
   },
   'r0-value': (p) => [
-    { label: '(n − 1)/(n + 1), not squared', value: (p.nT - 1) / (p.nT + 1) },
-    { label: '0.04, as if every material had it', value: 0.04 },
+    { label: t('r0-value.slip.notSquared'), value: (p.nT - 1) / (p.nT + 1) },
+    { label: t('r0-value.slip.always004'), value: 0.04 },
   ],
-  'brewster-exact': (p) => [{ label: 'atan(n_i/n_t), the complement', value: 90 - deg(brewsterAngle(p.nI, p.nT)) }],
-  'critical-angle': (p) => [{ label: 'acos for asin, the complement', value: 90 - deg(criticalAngle(p.nI, 1)) }],
+  'brewster-exact': (p) => [{ label: t('brewster-exact.slip.complement'), value: 90 - deg(brewsterAngle(p.nI, p.nT)) }],
+  'critical-angle': (p) => [{ label: t('critical-angle.slip.complement'), value: 90 - deg(criticalAngle(p.nI, 1)) }],
   'snell-angle': (p) => {
     const swapped = Math.sin(p.theta * DEG) * p.nT;
     return [
-      { label: 'the angle of incidence, not refracted', value: p.theta },
-      ...(swapped <= 1 ? [{ label: 'n_i and n_t swapped', value: deg(Math.asin(swapped)) }] : []),
+      { label: t('snell-angle.slip.incidence'), value: p.theta },
+      ...(swapped <= 1 ? [{ label: t('snell-angle.slip.swapped'), value: deg(Math.asin(swapped)) }] : []),
     ];
   },
   'schlick-error': (p) => [
-    { label: 'Schlick’s R, not the difference', value: fresnelSchlick(cosDeg(p.theta), 1, p.nT) },
-    { label: 'the exact R, not the difference', value: fresnelExact(cosDeg(p.theta), 1, p.nT) },
+    { label: t('schlick-error.slip.schlick'), value: fresnelSchlick(cosDeg(p.theta), 1, p.nT) },
+    { label: t('schlick-error.slip.exact'), value: fresnelExact(cosDeg(p.theta), 1, p.nT) },
   ],
-  'split-half': (p) => [{ label: 'the Brewster angle (R_p = 0), not R = ½', value: deg(brewsterAngle(1, p.nT)) }],
+  'split-half': (p) => [{ label: t('split-half.slip.brewster'), value: deg(brewsterAngle(1, p.nT)) }],
   'metal-r0': (p) => {
     const metal = metalById(p.metal);
     return [
-      { label: 'the red channel for green', value: fresnelConductor(1, metal.n[0], metal.k[0]) },
-      { label: 'the blue channel for green', value: fresnelConductor(1, metal.n[2], metal.k[2]) },
+      { label: t('metal-r0.slip.red'), value: fresnelConductor(1, metal.n[0], metal.k[0]) },
+      { label: t('metal-r0.slip.blue'), value: fresnelConductor(1, metal.n[2], metal.k[2]) },
     ];
   },
   'toksvig-exponent': (p) => [
-    { label: 'the exponent s unchanged', value: p.s },
-    { label: 'Toksvig’s factor, not the exponent', value: toksvigFactor(p.L, p.s) },
+    { label: t('toksvig-exponent.slip.unchanged'), value: p.s },
+    { label: t('toksvig-exponent.slip.factor'), value: toksvigFactor(p.L, p.s) },
   ],
 };
 

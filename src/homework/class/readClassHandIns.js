@@ -10,6 +10,8 @@ import { contentKind, fileKind } from './fileKind.js';
 import { findHandIns } from './findHandIns.js';
 import { htmlToText, looksLikeHtml } from './htmlText.js';
 import { unzipBounded } from './unzipBounded.js';
+import english from 'virtual:messages/en/class';
+import { messages } from '../../i18n/messages.js';
 
 /**
  * @typedef {{ source: string, data: unknown }} HandIn
@@ -17,6 +19,7 @@ import { unzipBounded } from './unzipBounded.js';
  * @typedef {{ name: string, bytes: Uint8Array | ArrayBuffer }} PickedFile
  */
 
+const t = messages('class', english);
 
 /** Text from a file's bytes: UTF-8 (a byte-order mark dropped), or UTF-16 where its mark says so (Windows' "Unicode"). */
 export function decodeText(bytes) {
@@ -48,27 +51,28 @@ export function readClassHandIns({ files = [], text = '' } = {}, capsGiven = {})
     refused.push(...found.refused);
   };
 
+  const tooLarge = (kind, size, max) => t('file.tooLarge', { kind, size: megabytes(size), max: megabytes(max) });
+
   /** A zip entry's size is decided from its directory, before it is unpacked. */
   const admit = (path, claimed) => {
     const kind = fileKind(path);
     if (kind.reason) return kind.reason;
     // A file without an extension may be a zip: held to a zip's cap here, and to a file's once its bytes say it is text.
     const max = kind.kind === 'zip' || kind.kind === 'by-content' ? caps.maxNestedZipBytes : caps.maxFileBytes;
-    return claimed > max ? `its header says it unpacks to ${megabytes(claimed)}, `
-      + `more than the ${megabytes(max)} a ${kind.kind === 'zip' ? 'zip inside a zip' : 'file'} may have.` : null;
+    if (claimed <= max) return null;
+    return t('file.unpacksTooLarge', { kind: kind.kind === 'zip' ? 'zip' : 'file', size: megabytes(claimed), max: megabytes(max) });
   };
 
   /** A text file's content: an HTML page's text (tags dropped, entities decoded), any other as it is. */
   const readTextFile = (name, bytes, html) => {
     if (bytes.length > caps.maxFileBytes) {
-      refused.push({ source: name, reason: `${megabytes(bytes.length)}: more than the ${megabytes(caps.maxFileBytes)} a handed-in `
-        + `file or a text of codes may have.` });
+      refused.push({ source: name, reason: tooLarge('file', bytes.length, caps.maxFileBytes) });
       return;
     }
     const decoded = decodeText(bytes);
     const content = html || looksLikeHtml(decoded) ? htmlToText(decoded) : decoded;
     if (content.trim()) readText(content, name);
-    else refused.push({ source: name, reason: html && decoded.trim() ? 'an HTML page with no text in it.' : 'an empty file.' });
+    else refused.push({ source: name, reason: html && decoded.trim() ? t('file.emptyHtml') : t('file.empty') });
   };
 
   const readFile = (name, bytes, depth) => {
@@ -78,36 +82,35 @@ export function readClassHandIns({ files = [], text = '' } = {}, capsGiven = {})
       refused.push({ source: name, reason: kind.reason });
     } else if (kind.kind === 'zip') {
       const max = depth === 0 ? caps.maxZipBytes : caps.maxNestedZipBytes;
-      if (depth >= caps.maxDepth) refused.push({ source: name, reason: `a zip inside ${depth} others: `
-        + `zips are opened ${caps.maxDepth} deep at most.` });
-      else if (bytes.length > max) refused.push({ source: name, reason: `${megabytes(bytes.length)}: `
-        + `more than the ${megabytes(max)} a zip may have.` });
+      if (depth >= caps.maxDepth) refused.push({ source: name, reason: t('zip.tooDeep', { depth, max: caps.maxDepth }) });
+      else if (bytes.length > max) refused.push({ source: name, reason: tooLarge('zip', bytes.length, max) });
       else {
         const zip = unzipBounded(bytes, { name, admit, budget, maxEntries: caps.maxEntries });
         refused.push(...zip.refused);
         for (const file of zip.files) readFile(file.name, file.bytes, depth + 1);
-        if (!zip.files.length && !zip.refused.length) refused.push({ source: name, reason: 'an empty zip: it holds no files.' });
+        if (!zip.files.length && !zip.refused.length) refused.push({ source: name, reason: t('zip.empty') });
       }
     } else readTextFile(name, bytes, kind.kind === 'html'); // a text that starts as an HTML page is read as one too
   };
 
   const list = Array.isArray(files) ? files : [];
   list.forEach((file, i) => {
-    const name = typeof file?.name === 'string' && file.name ? file.name : `file ${i + 1}`;
+    const name = typeof file?.name === 'string' && file.name ? file.name : t('source.file', { number: i + 1 });
     const bytes = file?.bytes instanceof Uint8Array ? file.bytes : file?.bytes instanceof ArrayBuffer ? new Uint8Array(file.bytes) : null;
     try {
-      if (!bytes) refused.push({ source: name, reason: 'no content was given for this file.' });
+      if (!bytes) refused.push({ source: name, reason: t('file.noContent') });
       else readFile(name, bytes, 0);
     } catch (error) {
       // Not expected (every reader refuses by name); if it happens, the file is still named.
-      refused.push({ source: name, reason: `could not be read: ${error?.message ?? 'an error'}.` });
+      refused.push({ source: name, reason: t('file.error', { error: error?.message ?? t('anError') }) });
     }
   });
 
   if (typeof text === 'string' && text.trim()) {
-    if (text.length > caps.maxTextChars) refused.push({ source: 'pasted text', reason: `${text.length} characters: `
-      + `more than the ${caps.maxTextChars} read at once; paste it in parts or save it as a .txt file.` });
-    else readText(text, 'pasted text');
+    if (text.length > caps.maxTextChars) {
+      refused.push({ source: t('source.pasted'), reason: t('text.tooLong', { length: text.length, max: caps.maxTextChars }) });
+    }
+    else readText(text, t('source.pasted'));
   }
   return { handIns, refused };
 }

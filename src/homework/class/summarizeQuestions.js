@@ -18,19 +18,30 @@
 import { questionById } from '../questions.js';
 import { trueOption } from '../gradeAnswer.js';
 import { questionSlips } from './questionSlips.js';
+import english from 'virtual:messages/en/class';
+import { messages } from '../../i18n/messages.js';
 
 const RATIO_STEP = 0.05; // a twentieth of a decade (×1.12): a rounded answer stays in its factor's bin
 const RATIO_DECADES = 3; // ×0.001 to ×1000
 const OFFSET_STEP = 5; // degrees
+const t = messages('class', english);
 // What a slip by each factor means depends on the answer's unit: ×100 is a percentage typed for a
 // fraction, not for an angle; ×57.3 is degrees for radians only where the answer is an angle.
+// Each factor's label is the catalogue's factor.<name> (the short form a histogram's tick shows),
+// and factor.<name>.<unit> (or .any) where it means a slip for answers in that unit.
 const FACTORS = [
-  { factor: 2, text: '×2' }, { factor: 0.5, text: '×½' },
-  { factor: 10, text: '×10: a decimal place' }, { factor: 0.1, text: '÷10: a decimal place' },
-  { factor: 100, text: '×100', meaning: { fraction: 'a percentage for a fraction' } }, { factor: 0.01, text: '÷100' },
-  { factor: 180 / Math.PI, text: '×57.3', meaning: { deg: 'degrees for radians' } },
-  { factor: Math.PI / 180, text: '÷57.3', meaning: { deg: 'radians for degrees' } },
+  { factor: 2, name: 'double' }, { factor: 0.5, name: 'half' },
+  { factor: 10, name: 'times10', meaning: ['any'] }, { factor: 0.1, name: 'by10', meaning: ['any'] },
+  { factor: 100, name: 'times100', meaning: ['fraction'] }, { factor: 0.01, name: 'by100' },
+  { factor: 180 / Math.PI, name: 'toDegrees', meaning: ['deg'] },
+  { factor: Math.PI / 180, name: 'toRadians', meaning: ['deg'] },
 ];
+
+/** A factor's label for answers in `unit`: with what the slip means where it means one for them. */
+function factorText({ name, meaning = [] }, unit) {
+  if (meaning.includes('any')) return t(`factor.${name}.any`);
+  return meaning.includes(unit) ? t(`factor.${name}.${unit}`) : t(`factor.${name}`);
+}
 
 /**
  * @typedef {{ lo: number, hi: number, count: number, right: number, wrong: number }} Bin  count = right + wrong
@@ -41,7 +52,7 @@ const FACTORS = [
  *   right: number, wrong: number, unanswered: number, shareRight: number | null,
  *   shown: { params: any, sameForAll: boolean } | null,
  *   options?: OptionCount[],
- *   ratio?: { step: number, bins: Bin[], labels: { at: number, factor: number, text: string, count: number }[],
+ *   ratio?: { step: number, bins: Bin[], labels: { at: number, factor: number, short: string, text: string, count: number }[],
  *     below: number, above: number, opposite: number, flipped: number, zero: number, noRatio: number },
  *   slips?: { label: string, count: number }[],
  *   elsewhere?: { zero: number, opposite: number, far: number },
@@ -106,8 +117,8 @@ function numericSummary(question, entries, params) {
   const ratio = {
     step: RATIO_STEP, bins: centredBins(half, RATIO_STEP), labels: [], below: 0, above: 0, opposite: 0, flipped: 0, zero: 0, noRatio: 0,
   };
-  const factors = FACTORS.map(({ factor, text: short, meaning }) => ({
-    at: Math.log10(factor), factor, text: meaning?.[question.unit] ? `${short}: ${meaning[question.unit]}` : short, count: 0,
+  const factors = FACTORS.map((entry) => ({
+    at: Math.log10(entry.factor), factor: entry.factor, short: t(`factor.${entry.name}`), text: factorText(entry, question.unit), count: 0,
   }));
   const elsewhere = { zero: 0, opposite: 0, far: 0 };
   const slipCounts = new Map();

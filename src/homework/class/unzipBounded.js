@@ -13,6 +13,8 @@
 // costs more than its claim plus one step's output (4 MB); the CRC-32 of what came out is checked.
 import { Inflate, inflateSync, strFromU8 } from 'fflate';
 import { megabytes } from './classCaps.js';
+import english from 'virtual:messages/en/class';
+import { messages } from '../../i18n/messages.js';
 
 const END = 0x06054b50; // end of central directory
 const END64 = 0x06064b50;
@@ -100,9 +102,10 @@ function entrySizes(b, p, nameLength, extraLength) {
   return { size, claimed, local };
 }
 
-const BOMB = (claimed) => ({ reason: `a zip bomb: it unpacks to more than the ${claimed} bytes its header claims, `
-  + `so unpacking stopped there.` });
-const DAMAGED = { reason: 'damaged: its compressed data does not unpack to what its header claims (was the zip cut short?).' };
+const t = messages('class', english);
+const BOMB = (claimed) => ({ reason: t('zip.bomb', { claimed }) });
+const DAMAGED = () => ({ reason: t('zip.damagedData') });
+const WRONG_LENGTH = (length, claimed) => ({ reason: t('zip.wrongLength', { length, claimed }) });
 
 /**
  * Inflates `input` to exactly `claimed` bytes, stopping as soon as it would pass them.
@@ -117,11 +120,10 @@ function inflateBounded(input, claimed) {
     try {
       out = inflateSync(input, { out: new Uint8Array(claimed + 1) });
     } catch {
-      return DAMAGED;
+      return DAMAGED();
     }
     if (out.length > claimed) return BOMB(claimed);
-    return out.length === claimed ? { bytes: out.subarray(0, claimed) } : { reason: `damaged: it unpacks to ${out.length} bytes where its `
-      + `header claims ${claimed}.` };
+    return out.length === claimed ? { bytes: out.subarray(0, claimed) } : WRONG_LENGTH(out.length, claimed);
   }
   const out = new Uint8Array(claimed);
   let length = 0;
@@ -138,10 +140,10 @@ function inflateBounded(input, claimed) {
     if (input.length === 0) inflater.push(new Uint8Array(0), true);
     for (let at = 0; at < input.length && !over; at += STEP) inflater.push(input.subarray(at, at + STEP), at + STEP >= input.length);
   } catch {
-    if (!over) return DAMAGED;
+    if (!over) return DAMAGED();
   }
   if (over) return BOMB(claimed);
-  if (length !== claimed) return { reason: `damaged: it unpacks to ${length} bytes where its header claims ${claimed}.` };
+  if (length !== claimed) return WRONG_LENGTH(length, claimed);
   return { bytes: out };
 }
 
@@ -164,19 +166,18 @@ export function unzipBounded(bytes, { name, admit, budget, maxEntries }) {
   const b = bytes;
   const directory = findDirectory(b);
   if (!directory) {
-    refuse(name, 'not a zip that can be read: it has no zip directory at its end (damaged, cut short, or another kind of file).');
+    refuse(name, t('zip.noDirectory'));
     return { files, refused };
   }
   const { count } = directory;
   if (count > maxEntries) {
-    refuse(name, `its directory lists ${count} entries, more than the ${maxEntries} read from one zip: `
-      + `refused before anything was unpacked (a zip bomb can list millions).`);
+    refuse(name, t('zip.tooManyEntries', { count, max: maxEntries }));
     return { files, refused };
   }
   let p = directory.offset;
   for (let i = 0; i < count; i += 1) {
     if (p + 46 > b.length || u32(b, p) !== CENTRAL) {
-      refuse(name, `damaged: its directory breaks off after ${i} of the ${count} entries it lists; the rest are not read.`);
+      refuse(name, t('zip.directoryBroken', { read: i, count }));
       break;
     }
     const flags = u16(b, p + 8);
@@ -191,17 +192,15 @@ export function unzipBounded(bytes, { name, admit, budget, maxEntries }) {
     if (path === '' || path.endsWith('/')) continue; // a folder: its files are entries of their own
     const source = `${name}/${path}`;
     if (budget.entries <= 0) {
-      refuse(source, 'not read: the cap on files unpacked from zips in all is reached.');
+      refuse(source, t('zip.entriesFull'));
       continue;
     }
     budget.entries -= 1;
     const refusal = admit(path, claimed);
     if (refusal) refuse(source, refusal);
-    else if (flags & 1) refuse(source, 'encrypted: it cannot be read without its password.');
-    else if (method !== 0 && method !== 8) refuse(source, `packed with a method this reader does not know (${method}); `
-      + `only stored and deflated entries are read.`);
-    else if (claimed > budget.bytes) refuse(source, `not unpacked: its ${megabytes(claimed)} would pass what is left of the cap on bytes `
-      + `unpacked from zips in all (${megabytes(budget.bytes)}).`);
+    else if (flags & 1) refuse(source, t('zip.encrypted'));
+    else if (method !== 0 && method !== 8) refuse(source, t('zip.method', { method }));
+    else if (claimed > budget.bytes) refuse(source, t('zip.bytesFull', { size: megabytes(claimed), left: megabytes(budget.bytes) }));
     else {
       const read = readEntry(b, { local, size, claimed, method, crc });
       if (read.reason) refuse(source, read.reason);
@@ -219,15 +218,14 @@ export function unzipBounded(bytes, { name, admit, budget, maxEntries }) {
  * @returns {{ bytes?: Uint8Array, reason?: string }}
  */
 function readEntry(b, { local, size, claimed, method, crc }) {
-  if (local + 30 > b.length || u32(b, local) !== LOCAL) return { reason: 'damaged: its data is not where the zip\'s directory says.' };
+  if (local + 30 > b.length || u32(b, local) !== LOCAL) return { reason: t('zip.dataMissing') };
   const start = local + 30 + u16(b, local + 26) + u16(b, local + 28);
-  if (start + size > b.length) return { reason: 'damaged: its data runs past the end of the zip (was it cut short?).' };
+  if (start + size > b.length) return { reason: t('zip.dataCut') };
   const data = b.subarray(start, start + size);
   /** @type {{ bytes?: Uint8Array, reason?: string }} */
   let read;
-  if (method === 0) read = size === claimed ? { bytes: data.slice() } : { reason: `damaged: it is stored unpacked, `
-    + `yet holds ${size} bytes where it claims ${claimed}.` };
+  if (method === 0) read = size === claimed ? { bytes: data.slice() } : { reason: t('zip.storedLength', { size, claimed }) };
   else read = inflateBounded(data, claimed);
-  if (read.bytes && crc32(read.bytes) !== crc) return { reason: 'damaged: what it unpacks to does not match its checksum.' };
+  if (read.bytes && crc32(read.bytes) !== crc) return { reason: t('zip.checksum') };
   return read;
 }

@@ -9,6 +9,10 @@ import { handInFromText } from '../sheetCodes.js';
 import { readSetSheet } from './readSetSheet.js';
 import { gradedReport, problemBox } from './gradedReport.js';
 import { button, field, readTextFile, titledSection } from './formParts.js';
+import english from 'virtual:messages/en/homework';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('homework', english);
 
 /** The graded report of one handed-in file, or its problems. */
 function report(label, text, expected, read = handInFromText(text)) {
@@ -16,38 +20,34 @@ function report(label, text, expected, read = handInFromText(text)) {
   try {
     graded ??= gradeHandIn(read.data, { expected });
   } catch (error) {
-    graded = { ok: false, problems: [`A question could not be graded: ${error.message}`] };
+    graded = { ok: false, problems: [t('grade.notGraded', { error: error.message })] };
   }
-  return gradedReport(label, graded, { against: expected ? 'the sheet given' : 'the sheet the file names' });
+  return gradedReport(label, graded, { against: expected ? 'given' : 'named' });
 }
 
 export function buildChecker(root) {
-  const { section, heading } = titledSection('hw-checker', 'checker-title', 'Check a handed-in file');
+  const { section, heading } = titledSection('hw-checker', 'checker-title', t('checker.title'));
   const sheet = el('input');
   sheet.type = 'text';
-  sheet.placeholder = 'the sheet’s link (or its JSON): hand-ins for any other sheet are refused';
+  sheet.placeholder = t('checker.sheetPlaceholder');
   const code = el('textarea');
   code.rows = 4;
-  const check = button('Check the code');
+  const check = button(t('checker.check'));
   const files = el('input');
   files.type = 'file';
   files.accept = '.json,application/json';
   files.multiple = true;
   const results = el('div', 'hw-reports');
-  section.append(heading,
-    el('p', null, 'Every answer is recomputed from the sheet, the seed and the answer; nothing the file says about being right is read. '
-      + 'For a whole class at once, with a gradebook, use “Grade a class” below.'),
-    field('The sheet you set (optional, recommended)', sheet),
-    field('Paste a hand-in code (FLH1.…) or a handed-in file’s text', code), check,
-    field('Or choose handed-in files', files), results);
+  section.append(heading, el('p', null, t('checker.intro')), field(t('checker.sheet'), sheet), field(t('checker.paste'), code), check,
+    field(t('checker.files'), files), results);
   root.append(section);
 
   const withExpected = (grade) => {
     const expected = readSetSheet(sheet.value);
-    if (!expected.ok) results.replaceChildren(problemBox('The sheet to check against cannot be used:', expected.problems));
+    if (!expected.ok) results.replaceChildren(problemBox(t('checker.sheetUnusable'), expected.problems));
     else results.replaceChildren(...grade(expected.sheet));
   };
-  check.addEventListener('click', () => withExpected((expected) => [report('Pasted code', code.value, expected)]));
+  check.addEventListener('click', () => withExpected((expected) => [report(t('checker.pasted'), code.value, expected)]));
   files.addEventListener('change', async () => {
     const picked = await Promise.all([...files.files].map(async (file) => ({ file, read: await readTextFile(file) })));
     withExpected((expected) => picked.map(({ file, read }) => (read.ok

@@ -1,13 +1,14 @@
 // The lecturer's composer: a title, how answers are revealed, an optional seed shared by the
 // class, and the questions, grouped by panel in lecture order, each with an optional start state
 // (a link copied from the panel). The sheet is read back by readSheet as it is built, so what is
-// offered as a link or a file is exactly what a student's page will accept.
+// offered as a link or a file is exactly what a student's page will accept. It carries the
+// language the page is in, so that it opens in the language it was made in.
 import { el } from '../../ui/el.js';
 import { setSubscripted } from '../../ui/subscripts.js';
 import { PANELS } from '../../panels/manifest.js';
 import { copyText, downloadBlob, downloadText } from '../../host/exporters.js';
-import { fileSlug } from '../../ui/format.js';
-import { KIND_NAMES, QUESTIONS } from '../questions.js';
+import { fileSlug, grouped } from '../../ui/format.js';
+import { QUESTIONS, kindName } from '../questions.js';
 import { questionParams } from '../gradeAnswer.js';
 import { readSheet } from '../readSheet.js';
 import { readStartState } from '../readStartState.js';
@@ -15,6 +16,10 @@ import { sheetToCode } from '../sheetCodes.js';
 import { buildScormPackage } from './buildScormPackage.js';
 import { button, field, titledSection } from './formParts.js';
 import { panelTitle } from '../../panels/panelText.js';
+import english from 'virtual:messages/en/homework';
+import { currentLanguage, messages } from '../../i18n/messages.js';
+
+const t = messages('homework', english);
 
 /** The page's address for a sheet: homework.html?sheet=CODE. */
 export function sheetUrl(sheet) {
@@ -25,20 +30,19 @@ export function sheetUrl(sheet) {
 }
 
 export function buildComposer(root) {
-  const { section, heading } = titledSection('hw-composer', 'composer-title', 'Compose a sheet');
+  const { section, heading } = titledSection('hw-composer', 'composer-title', t('composer.title'));
   const title = el('input');
   title.type = 'text';
-  title.value = 'Fresnel reflection: homework';
+  title.value = t('composer.defaultTitle');
   title.maxLength = 200;
   const reveal = el('select');
-  reveal.add(new Option('after each answer (homework)', 'after-answer'));
-  reveal.add(new Option('when the lecturer reveals them (in class)', 'lecturer'));
+  reveal.add(new Option(t('composer.revealAfterAnswer'), 'after-answer'));
+  reveal.add(new Option(t('composer.revealLecturer'), 'lecturer'));
   const seed = el('input');
   seed.type = 'text';
   seed.maxLength = 64;
-  seed.placeholder = 'empty: each student gets their own numbers';
-  section.append(heading, field('Title', title), field('Answers are shown', reveal), field('One seed for the whole '
-    + 'class (optional)', seed));
+  seed.placeholder = t('composer.seedPlaceholder');
+  section.append(heading, field(t('composer.sheetTitle'), title), field(t('composer.reveal'), reveal), field(t('composer.seed'), seed));
 
   const picks = [];
   for (const panel of PANELS) {
@@ -57,11 +61,11 @@ export function buildComposer(root) {
       label.htmlFor = box.id;
       const text = el('span');
       setSubscripted(text, question.prompt(questionParams(question, 'example')));
-      label.append(el('span', 'hw-kind', KIND_NAMES[question.kind]), ' ', text);
+      label.append(el('span', 'hw-kind', kindName(question.kind)), ' ', text);
       const state = el('input');
       state.type = 'text';
-      state.placeholder = 'a link copied from the panel, or key=value&…';
-      const stateLabel = field('Start state (optional)', state, 'hw-field hw-pick-state');
+      state.placeholder = t('composer.statePlaceholder');
+      const stateLabel = field(t('composer.state'), state, 'hw-field hw-pick-state');
       stateLabel.hidden = true;
       const note = el('span', 'hw-pick-note');
       note.setAttribute('aria-live', 'polite');
@@ -81,11 +85,11 @@ export function buildComposer(root) {
   const link = el('input');
   link.type = 'text';
   link.readOnly = true;
-  const copy = button('Copy the link');
-  const save = button('Save the sheet as a file');
-  const open = el('a', 'hw-open', 'Open the sheet');
-  const scorm = button('Save for an LMS (SCORM 1.2 zip)');
-  out.append(problems, field('Link for students', link), copy, save, scorm, open);
+  const copy = button(t('composer.copy'));
+  const save = button(t('composer.save'));
+  const open = el('a', 'hw-open', t('composer.open'));
+  const scorm = button(t('composer.scorm'));
+  out.append(problems, field(t('composer.link'), link), copy, save, scorm, open);
   section.append(out);
   root.append(section);
 
@@ -94,18 +98,21 @@ export function buildComposer(root) {
     const itemProblems = [];
     const items = picks.filter((p) => p.box.checked).map(({ question, state, note }, i) => {
       const read = readStartState(state.value, question.panel);
-      if (!read.ok) itemProblems.push(`Question ${i + 1} (${panelTitle(question.panel)}): ${read.problem}`);
+      if (!read.ok) {
+        itemProblems.push(t('composer.itemProblem', { number: i + 1, panel: panelTitle(question.panel), problem: read.problem }));
+      }
       // The question's own values win over a start state (its numbers depend on them): say which.
       const own = Object.keys(question.state(questionParams(question, 'example')));
       const overridden = Object.keys(read.state ?? {}).filter((k) => own.includes(k));
-      note.textContent = overridden.length ? `Set by the question itself, so not taken from here: ${overridden.join(', ')}.` : '';
+      note.textContent = overridden.length ? t('composer.overridden', { keys: overridden.join(', ') }) : '';
       return Object.keys(read.state ?? {}).length ? { question: question.id, state: read.state } : { question: question.id };
     });
     const draft = {
-      version: 1, title: title.value.trim(), reveal: reveal.value, items, ...(seed.value.trim() ? { seed: seed.value.trim() } : {}),
+      version: 1, title: title.value.trim(), reveal: reveal.value, ...(seed.value.trim() ? { seed: seed.value.trim() } : {}),
+      lang: currentLanguage(), items,
     };
     const read = readSheet(draft);
-    const all = items.length ? [...itemProblems, ...(read.ok ? [] : read.problems)] : ['Pick at least one question.'];
+    const all = items.length ? [...itemProblems, ...(read.ok ? [] : read.problems)] : [t('composer.pickOne')];
     current = all.length ? null : read.sheet;
     problems.replaceChildren(...all.map((p) => el('p', 'hw-problem', p)));
     link.value = current ? sheetUrl(current) : '';
@@ -118,8 +125,7 @@ export function buildComposer(root) {
   reveal.addEventListener('change', update);
   copy.addEventListener('click', async () => {
     link.select();
-    problems.replaceChildren(el('p', null, (await copyText(link.value)) ? 'The link is copied.' : 'Copying was refused here: '
-      + 'the link is selected, press Ctrl+C (⌘C).'));
+    problems.replaceChildren(el('p', null, (await copyText(link.value)) ? t('composer.linkCopied') : t('composer.copyRefused')));
   });
   save.addEventListener('click', () => {
     if (current) downloadText('fresnel-lab-sheet.json', `${JSON.stringify(current, null, 2)}\n`, 'application/json');
@@ -128,12 +134,11 @@ export function buildComposer(root) {
     if (!current) return;
     const sheet = current;
     scorm.disabled = true;
-    problems.replaceChildren(el('p', null, 'Making the package…'));
+    problems.replaceChildren(el('p', null, t('composer.making')));
     try {
       const blob = await buildScormPackage(sheet);
       downloadBlob(`fresnel-lab-${fileSlug(sheet.title)}-scorm12.zip`, blob);
-      problems.replaceChildren(el('p', null, `The package is saved (${Math.round(blob.size / 1024)} kB): `
-        + `import it into the LMS as a SCORM package; the score of each hand-in goes to its gradebook.`));
+      problems.replaceChildren(el('p', null, t('composer.packageSaved', { size: grouped(blob.size / 1024) })));
     } catch (error) {
       problems.replaceChildren(el('p', 'hw-problem', error.message));
     } finally {

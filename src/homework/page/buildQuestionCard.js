@@ -7,7 +7,7 @@ import { el } from '../../ui/el.js';
 import { angle } from '../../ui/format.js';
 import { setSubscripted } from '../../ui/subscripts.js';
 import { EMBED_KEYS } from '../../host/readEmbedOptions.js';
-import { KIND_NAMES } from '../questions.js';
+import { kindName } from '../questions.js';
 import { MAX_TYPED, gradeAnswer, trueOption } from '../gradeAnswer.js';
 import { formatTolerance, formatValue } from '../formatAnswer.js';
 import { createPredictFigure } from './createPredictFigure.js';
@@ -15,8 +15,12 @@ import { watchPanelFrame } from '../../ui/watchPanelFrame.js';
 import { showNotice } from '../../host/showNotice.js';
 import { button, field } from './formParts.js';
 import { panelTitle } from '../../panels/panelText.js';
+import english from 'virtual:messages/en/homework';
+import questionWords from 'virtual:messages/en/questions';
+import { messages } from '../../i18n/messages.js';
 
-const UNIT_HINTS = { deg: 'in degrees, e.g. 41.8 or 41.8°', fraction: 'a fraction, e.g. 0.042 or 4.2 %' };
+const t = messages('homework', english);
+const tq = messages('questions', questionWords);
 
 /** The panel in a frame of the embed page, started from `state` (values the panel checks itself). */
 function panelFrame(panelId, state) {
@@ -26,7 +30,7 @@ function panelFrame(panelId, state) {
   const frame = el('iframe', 'hw-frame');
   frame.src = url.toString();
   frame.loading = 'lazy';
-  frame.title = `Fresnel Lab: ${panelTitle(panelId)}`;
+  frame.title = t('card.frameTitle', { panel: panelTitle(panelId) });
   frame.allow = 'fullscreen; clipboard-write';
   return frame;
 }
@@ -46,7 +50,7 @@ export function buildQuestionCard({
   element.id = `question-${number}`;
   const heading = el('h2', 'hw-heading');
   heading.id = `question-${number}-title`;
-  heading.append(el('span', 'hw-number', `Question ${number}`), el('span', 'hw-kind', KIND_NAMES[question.kind]));
+  heading.append(el('span', 'hw-number', t('card.number', { number })), el('span', 'hw-kind', kindName(question.kind)));
   const where = el('span', 'hw-panel-name');
   setSubscripted(where, panelTitle(question.panel));
   heading.append(where);
@@ -89,19 +93,20 @@ export function buildQuestionCard({
     input.maxLength = MAX_TYPED;
     input.setAttribute('aria-describedby', prompt.id);
     input.value = answer ?? '';
-    commit.textContent = 'Check';
+    commit.textContent = t('card.check');
     const submit = () => record(input.value.trim() || null);
     commit.addEventListener('click', submit);
     input.addEventListener('keydown', (event) => { if (event.key === 'Enter') submit(); });
-    answerBox.append(field(`Your answer (${UNIT_HINTS[question.unit] ?? 'a number'})`, input), commit);
+    answerBox.append(field(tq('answerLabel', { unit: question.unit ?? 'none' }), input), commit);
     controls.push(input);
   } else if (question.kind === 'predict') {
     // Any angle is a prediction, the marker's start included: the button names the one it commits.
-    const name = (value) => { commit.textContent = `Commit prediction: ${angle(value, 1)}`; };
+    const name = (value) => { commit.textContent = t('card.commit', { angle: angle(value, 1) }); };
+    const axis = question.axis?.() ?? null;
     figure = createPredictFigure({
-      label: `Your prediction for question ${number}, ${question.axis ?? 'θ'} in degrees`,
+      label: t('card.predictionLabel', { number, axis: axis ?? 'θ' }),
       describedBy: prompt.id,
-      ...(question.axis ? { axisTitle: question.axis } : {}),
+      ...(axis ? { axisTitle: axis, axisInText: question.axisInText() } : {}),
       onChange: name,
     });
     if (answer !== null) figure.setValue(answer);
@@ -111,7 +116,7 @@ export function buildQuestionCard({
   } else {
     const group = el('fieldset', 'hw-options');
     group.setAttribute('aria-describedby', prompt.id);
-    group.append(el('legend', 'sr-only', `Options for question ${number}`));
+    group.append(el('legend', 'sr-only', t('card.options', { number })));
     for (const option of question.options(params)) {
       const label = el('label', 'hw-option');
       const radio = el('input');
@@ -127,10 +132,10 @@ export function buildQuestionCard({
       options.push({ option, radio, label, why });
       controls.push(radio);
     }
-    commit.textContent = 'Check';
+    commit.textContent = t('card.check');
     commit.addEventListener('click', () => {
       const chosen = options.find((o) => o.radio.checked);
-      if (!chosen) say('waiting', 'Choose an option first.');
+      if (!chosen) say('waiting', t('card.chooseFirst'));
       else record(chosen.option.id);
     });
     answerBox.append(group, commit);
@@ -146,8 +151,7 @@ export function buildQuestionCard({
   function showPanel() {
     if (panelBox.querySelector('iframe') || frameMissing) return;
     if (!panelsAllowed()) {
-      if (!panelBox.firstChild) panelBox.append(el('p', 'hw-panel-waiting', 'The panel appears once every prediction on this sheet is '
-        + 'committed: it could give one away.'));
+      if (!panelBox.firstChild) panelBox.append(el('p', 'hw-panel-waiting', t('card.panelWaits')));
       return;
     }
     const frame = panelFrame(question.panel, state);
@@ -155,10 +159,7 @@ export function buildQuestionCard({
     watchPanelFrame(frame, () => {
       frame.remove(); // the browser's error page is no part of the lecture
       frameMissing = true;
-      showNotice(panelBox, 'The panel could not be shown here.', [
-        'Its page, embed.html, did not load. A lecture or a sheet opened from disk shows each panel from embed.html in its own '
-          + 'folder: keep the file beside it, as the composer’s offline .zip and the lab’s offline folder have it.',
-      ], { kind: 'error' });
+      showNotice(panelBox, t('card.frameMissing'), [t('card.frameMissingWhy')], { kind: 'error' });
     });
     onFrame(frame);
   }
@@ -172,9 +173,9 @@ export function buildQuestionCard({
       setSubscripted(o.why, judged() && (all || o.option.id === answer) ? o.option.why(params) : '');
     }
     if (!judged()) return;
-    if (!graded) say('shown', `The answer: “${right.text(params)}”`);
-    else if (graded.correct) say('right', 'Right.');
-    else say('wrong', revealed ? 'Not this one: see why under each option.' : 'Not this one: see why under your choice, and try another.');
+    if (!graded) say('shown', t('card.theAnswer', { answer: right.text(params) }));
+    else if (graded.correct) say('right', t('card.right'));
+    else say('wrong', revealed ? t('card.notThisOneRevealed') : t('card.notThisOne'));
   }
 
   function render() {
@@ -193,18 +194,18 @@ export function buildQuestionCard({
     if (revealed) for (const control of controls) control.disabled = true; // the truth is out: no more answers
     if (question.kind === 'choice') renderChoice(graded);
     if (!judged()) {
-      say('waiting', answer === null ? '' : 'Answer saved. The answer is shown when the lecturer reveals it.');
+      say('waiting', answer === null ? '' : t('card.saved'));
       return;
     }
     if (question.kind === 'choice') return;
-    const expected = question.expected(params);
-    const truth = `The computed answer is ${formatValue(question, expected)} (checked within ${formatTolerance(question)}).`;
-    if (!graded) say('shown', question.kind === 'predict' ? `No prediction was committed. ${truth}` : truth);
+    const truth = { value: formatValue(question, question.expected(params)), tolerance: formatTolerance(question) };
+    if (!graded) say('shown', t(question.kind === 'predict' ? 'card.noPrediction' : 'card.truth', truth));
     else if (!graded.answered) say('wrong', graded.explanation);
-    else if (graded.correct) say('right', `Right. ${truth}`);
-    else if (question.kind === 'predict' || revealed) say('wrong', `${question.kind === 'predict' ? 'Off' : 'Not within the tolerance'}: `
-      + `yours ${formatValue(question, graded.value)}. ${truth}`);
-    else say('wrong', `${graded.explanation} Try again.`);
+    else if (graded.correct) say('right', t('card.rightTruth', truth));
+    else if (question.kind === 'predict' || revealed) {
+      const yours = formatValue(question, graded.value);
+      say('wrong', t(question.kind === 'predict' ? 'card.offTruth' : 'card.notWithinTruth', { ...truth, yours }));
+    } else say('wrong', t('card.tryAgain', { explanation: graded.explanation }));
   }
   render();
 

@@ -5,6 +5,10 @@
 import { sheetToCode } from '../sheetCodes.js';
 import { scormManifest } from '../scormManifest.js';
 import { hashSeed } from '../seededRandom.js';
+import english from 'virtual:messages/en/homework';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('homework', english);
 
 const FILES = ['homework.html', 'embed.html', 'favicon.svg'];
 
@@ -19,8 +23,7 @@ export async function buildScormPackage(sheet) {
       return response.text();
     }));
   } catch {
-    throw new Error('The package is made from the offline pages next to this one (offline/homework.html and offline/embed.html), '
-      + 'which this copy cannot reach: open the lab from its built site (npm run build) on a web server.');
+    throw new Error(t('scorm.noOfflinePages'));
   }
   const code = sheetToCode(sheet);
   // The sheet travels as a data block before the page's closing </body> (the last one: the page's

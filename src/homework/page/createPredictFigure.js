@@ -4,7 +4,12 @@
 // prediction beside it, both labelled, and the marker stays where it was committed. SVG, so it is
 // sharp on a projector and needs no WebGL.
 import { el } from '../../ui/el.js';
-import { angle } from '../../ui/format.js';
+import { angle, fixed } from '../../ui/format.js';
+import { number } from '../questionParts.js';
+import english from 'virtual:messages/en/homework';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('homework', english);
 
 const NS = 'http://www.w3.org/2000/svg';
 const W = 640;
@@ -17,15 +22,16 @@ const svg = (tag, attrs = {}) => {
   return node;
 };
 
-const THETA_AXIS = 'θ from the normal';
-
 /**
  * label: the accessible name of the slider; describedBy: the id of the question's text; axisTitle: what
- * the 0°–90° axis measures (a question's own, else the angle from the normal).
+ * the 0°–90° axis measures (a question's own, else the angle from the normal), and axisInText: the
+ * same as a sentence names it (θ where the axis is the angle from the normal).
  * onChange(value) while it moves. Returns { element, value(), setValue(v), lock({ committed }),
  * showTruth({ curve, truth }), hideTruth(), focus() }.
  */
-export function createPredictFigure({ label, describedBy = null, axisTitle = THETA_AXIS, initial = 45, onChange = () => {} }) {
+export function createPredictFigure({
+  label, describedBy = null, axisTitle = t('predict.thetaAxis'), axisInText = 'θ', initial = 45, onChange = () => {},
+}) {
   const element = el('figure', 'predict-figure');
   const picture = svg('svg', { viewBox: `0 0 ${W} ${H}`, class: 'predict-svg', 'aria-hidden': 'false' });
   const axis = svg('g', { class: 'predict-axis', 'aria-hidden': 'true' });
@@ -51,8 +57,7 @@ export function createPredictFigure({ label, describedBy = null, axisTitle = THE
   marker.setAttribute('aria-valuemin', '0');
   marker.setAttribute('aria-valuemax', '90');
   picture.append(axis, truthLayer, marker);
-  const caption = el('figcaption', 'predict-caption', 'Drag the marker, or focus it and use ←/→ (Shift: 0.1°, '
-    + 'Page Up/Down: 10°), then commit.');
+  const caption = el('figcaption', 'predict-caption', t('predict.howTo'));
   element.append(picture, caption);
 
   let value = initial;
@@ -63,10 +68,10 @@ export function createPredictFigure({ label, describedBy = null, axisTitle = THE
     for (const line of [markerLine]) { line.setAttribute('x1', px); line.setAttribute('x2', px); }
     knob.setAttribute('cx', px);
     markerText.setAttribute('x', Math.min(Math.max(px, PAD.left + 40), W - PAD.right - 40));
-    markerText.textContent = `${committed ? 'yours: ' : ''}${angle(value, 1)}`;
+    markerText.textContent = committed ? t('predict.yours', { angle: angle(value, 1) }) : angle(value, 1);
     marker.style.display = locked && !committed ? 'none' : ''; // revealed with nothing committed: no marker
     marker.setAttribute('aria-valuenow', value.toFixed(1));
-    marker.setAttribute('aria-valuetext', `${value.toFixed(1)} degrees`);
+    marker.setAttribute('aria-valuetext', t('predict.valueText', { angle: fixed(value, 1) }));
   };
   const setValue = (v, notify = true) => {
     if (locked || !Number.isFinite(v)) return;
@@ -109,14 +114,14 @@ export function createPredictFigure({ label, describedBy = null, axisTitle = THE
       marker.setAttribute('aria-disabled', 'true');
       if (!made) marker.setAttribute('tabindex', '-1');
       element.classList.add('locked');
-      caption.textContent = made ? 'Your prediction is committed.' : 'The answer was shown before a prediction was committed.';
+      caption.textContent = made ? t('predict.committed') : t('predict.shownFirst');
       draw();
     },
     /** Back to the axis alone (lecture mode switched on again): the prediction stays. */
     hideTruth() {
       truthLayer.replaceChildren();
       element.classList.remove('revealed');
-      if (locked) caption.textContent = committed ? 'Your prediction is committed.' : caption.textContent;
+      if (locked) caption.textContent = committed ? t('predict.committed') : caption.textContent;
     },
     /** curve: { label, f(θ°), level? }; truth: the true angle in degrees. */
     showTruth({ curve, truth }) {
@@ -134,16 +139,16 @@ export function createPredictFigure({ label, describedBy = null, axisTitle = THE
       const name = svg('text', {
         x: x(truth) + (truth > 60 ? -6 : 6), y: PAD.top + 12, 'text-anchor': truth > 60 ? 'end' : 'start', class: 'predict-true-label',
       });
-      name.textContent = `true: ${angle(truth, 2)}`;
+      name.textContent = t('predict.true', { angle: angle(truth, 2) });
       // The curve's name goes top left, or low on the left where the curve starts high there.
       const highOnLeft = Math.max(...ys.slice(0, 145)) > 0.7 * top;
       const curveName = svg('text', { x: PAD.left + 6, y: highOnLeft ? baseline - 40 : PAD.top + 30, class: 'predict-curve-label' });
-      curveName.textContent = `${curve.label}${curve.level !== undefined ? ` (line: ${curve.level})` : ''}`;
+      curveName.textContent = curve.level === undefined ? curve.label
+        : t('predict.curveLevel', { label: curve.label, level: number(curve.level) });
       truthLayer.append(name, curveName);
       element.classList.add('revealed');
-      const against = axisTitle === THETA_AXIS ? 'θ' : `the ${axisTitle.charAt(0).toLowerCase()}${axisTitle.slice(1)}`;
-      caption.textContent = `${curve.label} against ${against}; the true angle is `
-        + `${angle(truth, 2)}${committed ? `, yours ${angle(value, 1)}` : ''}.`;
+      const shown = { label: curve.label, axis: axisInText, truth: angle(truth, 2) };
+      caption.textContent = committed ? t('predict.againstYours', { ...shown, yours: angle(value, 1) }) : t('predict.against', shown);
     },
   };
 }

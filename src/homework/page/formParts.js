@@ -1,6 +1,10 @@
 // The homework page's form pieces: a labelled field, a titled section, and a file read with a
 // size limit (and the plain button of src/ui/el.js). Text only (textContent), never markup.
 import { button, el } from '../../ui/el.js';
+import english from 'virtual:messages/en/homework';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('homework', english);
 
 export { button };
 
@@ -24,11 +28,10 @@ const MAX_FILE_BYTES = 1_000_000; // a sheet or a handed-in file is a few kiloby
 
 /** { ok: true, text } or { ok: false, problems }, for a file the user picked. */
 export async function readTextFile(file) {
-  if (file.size > MAX_FILE_BYTES) return { ok: false, problems: [`${file.name} is ${file.size} bytes: `
-    + `a sheet or a handed-in file is a few kilobytes.`] };
+  if (file.size > MAX_FILE_BYTES) return { ok: false, problems: [t('file.tooLarge', { name: file.name, size: file.size })] };
   try {
     return { ok: true, text: await file.text() };
   } catch {
-    return { ok: false, problems: [`${file.name} could not be read.`] };
+    return { ok: false, problems: [t('file.unreadable', { name: file.name })] };
   }
 }

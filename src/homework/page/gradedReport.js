@@ -7,6 +7,10 @@ import { pageLocale } from '../../ui/safeLocale.js';
 import { questionById } from '../questions.js';
 import { trueOption } from '../gradeAnswer.js';
 import { formatValue } from '../formatAnswer.js';
+import english from 'virtual:messages/en/homework';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('homework', english);
 
 function answerText(question, result, params) {
   if (result.answer === null) return '—';
@@ -30,26 +34,29 @@ export function problemBox(title, problems) {
 /**
  * The report of one graded hand-in (gradeHandIn's result, or { ok: false, problems }): who, the
  * score, the sheet's fingerprint, and a row per question as that student saw it. against: which
- * sheet it was checked against, in words.
+ * sheet it was checked against: 'given' (the sheet the lecturer gave), 'named' (the one the file
+ * names) or 'set' (the class's).
  */
 export function gradedReport(label, graded, { against }) {
   const box = el('section', 'hw-report');
   box.append(el('h3', null, label));
   if (!graded.ok) {
-    box.append(problemBox('This cannot be checked:', graded.problems));
+    box.append(problemBox(t('report.cannotCheck'), graded.problems));
     return box;
   }
-  const who = graded.name || 'no name given';
-  const when = graded.time ? new Date(graded.time).toLocaleString(pageLocale()) : 'no time given';
-  const score = el('p', 'hw-score', `${graded.title}: ${who}, seed ${graded.seed}, handed in ${when}. `
-    + `Score ${graded.score} of ${graded.total}, recomputed.`);
+  const score = el('p', 'hw-score', t('report.score', {
+    title: graded.title, hasName: graded.name ? 'yes' : 'no', name: graded.name, seed: graded.seed,
+    hasTime: graded.time ? 'yes' : 'no', time: graded.time ? new Date(graded.time).toLocaleString(pageLocale()) : '',
+    score: graded.score, total: graded.total,
+  }));
   score.setAttribute('role', 'status');
-  const fingerprint = el('p', 'hw-meta', `Sheet fingerprint ${graded.fingerprint} (checked against ${against}).`);
+  const fingerprint = el('p', 'hw-meta', t('report.fingerprint', { fingerprint: graded.fingerprint, against }));
   const table = el('table', 'hw-report-table');
   table.append(el('thead'), el('tbody'));
   const head = el('tr');
-  const columns = ['#', 'Question (as this student saw it)', 'Answer', 'Computed answer', 'Result', 'Tries'];
-  for (const h of columns) head.append(el('th', null, h));
+  for (const column of ['number', 'question', 'answer', 'expected', 'result', 'tries']) {
+    head.append(el('th', null, t(`report.column.${column}`)));
+  }
   table.tHead.append(head);
   graded.results.forEach((result, i) => {
     const question = questionById(result.question);
@@ -61,7 +68,9 @@ export function gradedReport(label, graded, { against }) {
       prompt,
       el('td', null, answerText(question, result, result.params)),
       el('td', null, expectedText(question, result.params)),
-      el('td', null, `${result.correct ? 'right' : result.answered ? 'wrong' : 'no answer'}: ${result.explanation}`),
+      el('td', null, t('report.result', {
+        result: result.correct ? 'right' : result.answered ? 'wrong' : 'none', explanation: result.explanation,
+      })),
       el('td', null, result.attempts === null ? '—' : String(result.attempts)),
     );
     table.tBodies[0].append(row);

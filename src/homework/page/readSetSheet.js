@@ -2,6 +2,10 @@
 // bare code, or the sheet file's JSON. Empty text is no sheet (ok, null).
 import { readSheet } from '../readSheet.js';
 import { sheetFromCode } from '../sheetCodes.js';
+import english from 'virtual:messages/en/homework';
+import { messages } from '../../i18n/messages.js';
+
+const t = messages('homework', english);
 
 /** The sheet to check against, from a link, a code or a sheet's JSON: { ok, sheet } or problems. */
 export function readSetSheet(text) {
@@ -12,7 +16,7 @@ export function readSetSheet(text) {
     try {
       data = JSON.parse(raw);
     } catch {
-      return { ok: false, problems: ['The sheet to check against is not readable JSON.'] };
+      return { ok: false, problems: [t('setSheet.notJson')] };
     }
   } else {
     let code = raw;
@@ -24,5 +28,5 @@ export function readSetSheet(text) {
     data = decoded.data;
   }
   const read = readSheet(data);
-  return read.ok ? read : { ok: false, problems: read.problems.map((p) => `The sheet to check against: ${p}`) };
+  return read.ok ? read : { ok: false, problems: read.problems.map((problem) => t('setSheet.problem', { problem })) };
 }

@@ -16,15 +16,19 @@ import { handInToCode, makeHandIn } from '../sheetCodes.js';
 import { openAnswerStore } from './answerStore.js';
 import { buildQuestionCard } from './buildQuestionCard.js';
 import { button, field, titledSection } from './formParts.js';
+import { withElement } from './withElement.js';
+import english from 'virtual:messages/en/homework';
+import { messages } from '../../i18n/messages.js';
 
-/** The seed in use and where it comes from (the sheet, the link, the LMS account, this browser). */
+const t = messages('homework', english);
+
+/** The seed in use and where it comes from: 'sheet', 'link', 'course' (the LMS account) or 'browser'. */
 function chooseSeed(sheet, urlSeed, scorm, ownSeed) {
-  if (sheet.seed) return { seed: sheet.seed, source: ' (the same for everyone on this sheet).' };
-  if (urlSeed) return { seed: urlSeed, source: ', given in the link.' };
+  if (sheet.seed) return { seed: sheet.seed, source: 'sheet' };
+  if (urlSeed) return { seed: urlSeed, source: 'link' };
   // Hashed, so two long account ids that share a beginning still get different numbers.
-  if (scorm?.learner.id) return { seed: `lms-${hashSeed(scorm.learner.id).toString(36)}`, source: ', from your course account: '
-    + 'the same numbers wherever you open it.' };
-  return { seed: ownSeed, source: ': the same seed gives the same numbers again, and your hand-in carries it.' };
+  if (scorm?.learner.id) return { seed: `lms-${hashSeed(scorm.learner.id).toString(36)}`, source: 'course' };
+  return { seed: ownSeed, source: 'browser' };
 }
 
 /**
@@ -32,7 +36,7 @@ function chooseSeed(sheet, urlSeed, scorm, ownSeed) {
  * scorm: the LMS connection (connectScorm.js) or null.
  */
 export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
-  document.title = `${sheet.title}: Fresnel Lab homework`;
+  document.title = t('student.documentTitle', { title: sheet.title });
   const store = openAnswerStore(code, sheet.items.length, newSeed);
   const { work } = store;
   const { seed, source } = chooseSeed(sheet, urlSeed, scorm, work.seed);
@@ -51,7 +55,7 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
 
   const head = el('header', 'hw-sheet-head');
   const seedLine = el('p', 'hw-meta');
-  seedLine.append('Your numbers come from the seed ', el('code', 'hw-seed', seed), source);
+  withElement(seedLine, (mark) => t('student.seedLine', { source, seed: mark }), el('code', 'hw-seed', seed));
   const name = el('input');
   name.type = 'text';
   name.maxLength = 100;
@@ -62,22 +66,20 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
   const lectureBox = el('input');
   lectureBox.type = 'checkbox';
   lectureBox.checked = sheet.reveal === 'lecturer';
-  lectureLabel.append(lectureBox, ' Lecture mode: answers stay hidden until revealed');
+  lectureLabel.append(lectureBox, ` ${t('student.lectureMode')}`);
   // In a course's LMS the score counts: the switch (and its reveal) is there only for a sheet set for class.
   lectureLabel.hidden = Boolean(scorm) && sheet.reveal !== 'lecturer';
-  const revealAll = button('Reveal every answer', 'hw-reveal-all');
-  head.append(el('h1', null, sheet.title), seedLine, field('Your name (goes into the hand-in)', name, 'hw-field hw-name'),
-    lectureLabel, revealAll);
-  if (scorm) head.append(el('p', 'hw-meta', 'This sheet is part of your course: handing in sends your score to its gradebook.'));
-  else if (!store.kept()) head.append(el('p', 'notice notice-warning', 'This browser does not let the page keep your answers: '
-    + 'hand in before you close it.'));
+  const revealAll = button(t('student.revealAll'), 'hw-reveal-all');
+  head.append(el('h1', null, sheet.title), seedLine, field(t('student.name'), name, 'hw-field hw-name'), lectureLabel, revealAll);
+  if (scorm) head.append(el('p', 'hw-meta', t('student.inCourse')));
+  else if (!store.kept()) head.append(el('p', 'notice notice-warning', t('student.notKept')));
   if (resumeNotice) head.append(el('p', 'notice notice-warning hw-resume-notice', resumeNotice));
   root.append(head);
 
   const keep = () => {
     store.save();
     if (scorm && !scorm.save({ seed, answers: work.answers })) {
-      status.textContent = 'The course could not keep these answers (too many, or it refused): hand in before you leave.';
+      status.textContent = t('student.courseNotKept');
     }
   };
   const lecture = () => lectureBox.checked;
@@ -108,7 +110,7 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
       },
       onFrame: (frame) => frames.set(frame.contentWindow, frame),
     });
-    const reveal = button('Reveal the answer', 'hw-reveal');
+    const reveal = button(t('student.reveal'), 'hw-reveal');
     reveal.addEventListener('click', () => { card.reveal(); reveal.disabled = true; refreshAll(); });
     card.element.append(reveal);
     root.append(card.element);
@@ -138,16 +140,16 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
   });
   applyLecture();
 
-  const { section: handIn, heading: handInTitle } = titledSection('hw-hand-in', 'hand-in-title', 'Hand in');
-  const send = button('Hand in: save the file and show the code', 'hw-send');
+  const { section: handIn, heading: handInTitle } = titledSection('hw-hand-in', 'hand-in-title', t('student.handIn'));
+  const send = button(t('student.send'), 'hw-send');
   const status = el('p', 'hw-hand-in-status');
   status.setAttribute('role', 'status');
   const codeField = el('textarea');
   codeField.readOnly = true;
   codeField.rows = 4;
-  const codeLabel = field('Hand-in code (the same as the file; paste it where the lecturer asks)', codeField, 'hw-field hw-code');
+  const codeLabel = field(t('student.code'), codeField, 'hw-field hw-code');
   codeLabel.hidden = true;
-  const copy = button('Copy the code', 'hw-copy');
+  const copy = button(t('student.copyCode'), 'hw-copy');
   copy.hidden = true;
   // Asked on the page before handing in nothing or without a name (a hand-in cannot be taken back).
   const confirmBox = el('div', 'notice notice-warning hw-confirm');
@@ -155,26 +157,24 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
   const confirmText = el('p', 'hw-confirm-text');
   confirmText.id = 'hw-confirm-text';
   confirmText.tabIndex = -1;
-  confirmBox.setAttribute('aria-label', 'Before handing in');
+  confirmBox.setAttribute('aria-label', t('student.beforeHandingIn'));
   confirmBox.setAttribute('aria-describedby', confirmText.id);
-  const anyway = button('Hand in anyway', 'hw-anyway');
-  const goBack = button('Go back', 'hw-go-back');
+  const anyway = button(t('student.anyway'), 'hw-anyway');
+  const goBack = button(t('student.goBack'), 'hw-go-back');
   confirmBox.append(confirmText, anyway, goBack);
   confirmBox.hidden = true;
-  handIn.append(handInTitle, el('p', null, 'The file and the code hold your answers, your seed, your name and the time; '
-    + 'they are checked by recomputing every answer.'), send, confirmBox, status, codeLabel, copy);
+  handIn.append(handInTitle, el('p', null, t('student.handInAbout')), send, confirmBox, status, codeLabel, copy);
   root.append(handIn);
 
   /** What is missing that a student would want to know before handing in: nothing answered, no name. */
   const missing = () => [
-    !cards.every(({ card }) => card.answer() === null) ? ''
-      : cards.length === 1 ? 'You have not answered the question.' : `You have answered none of the ${cards.length} questions.`,
-    name.value.trim() ? '' : 'Your name is empty, so the lecturer cannot tell whose hand-in this is.',
+    cards.every(({ card }) => card.answer() === null) ? t('student.noneAnswered', { count: cards.length }) : '',
+    name.value.trim() ? '' : t('student.noName'),
   ].filter(Boolean);
   send.addEventListener('click', () => {
     const problems = missing();
     if (problems.length) {
-      confirmText.textContent = `${problems.join(' ')} Hand in anyway?`;
+      confirmText.textContent = t('student.confirm', { problems: problems.join(' ') });
       confirmBox.hidden = false;
       confirmText.focus();
       return;
@@ -203,25 +203,23 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
     codeLabel.hidden = false;
     copy.hidden = false;
     const open = record.answers.filter((a) => a === null).length;
-    let sent = '';
+    const said = [t('student.handedIn', { time: new Date(record.time).toLocaleTimeString(pageLocale()), file: filename })];
+    if (open) said.push(t('student.unanswered', { open, count: record.answers.length }));
     if (scorm) {
       const graded = gradeHandIn(record); // the same recomputation the lecturer's check does
-      if (!graded.ok) sent = ` It could not be graded for the course: ${graded.problems.join(' ')}`;
-      else if (scorm.report(graded.score, graded.total)) sent = ` Your score, ${graded.score} of ${graded.total}, `
-        + `went to the course's gradebook.`;
-      else sent = ' The course did not take the score: hand in the file or the code instead.';
+      if (!graded.ok) said.push(t('student.notGradedForCourse', { problems: graded.problems.join(' ') }));
+      else if (scorm.report(graded.score, graded.total)) said.push(t('student.scoreSent', { score: graded.score, total: graded.total }));
+      else said.push(t('student.scoreRefused'));
     }
-    status.textContent = `Handed in at ${new Date(record.time).toLocaleTimeString(pageLocale())}: `
-      + `saved as ${filename}.${open ? ` ${open} of ${record.answers.length} questions have no answer.` : ''}${sent}`;
+    status.textContent = said.join(' ');
   }
   copy.addEventListener('click', async () => {
     codeField.select();
-    status.textContent = (await copyText(codeField.value)) ? 'The code is copied.' : 'Copying was refused here: '
-      + 'the code is selected, press Ctrl+C (⌘C).';
+    status.textContent = (await copyText(codeField.value)) ? t('student.codeCopied') : t('student.copyRefused');
   });
 
   const back = el('p', 'hw-back');
-  const link = el('a', null, 'Compose a sheet, or check a handed-in file');
+  const link = el('a', null, t('student.back'));
   link.href = './homework.html';
   back.append(link);
   root.append(back);

@@ -7,7 +7,7 @@
 // and each student's report on demand.
 // Nothing leaves the browser.
 import { button, el } from '../../../ui/el.js';
-import { seconds } from '../../../ui/format.js';
+import { fixed, seconds } from '../../../ui/format.js';
 import { field, titledSection } from '../formParts.js';
 import { readSetSheet } from '../readSetSheet.js';
 import { gradedReport, problemBox } from '../gradedReport.js';
@@ -16,8 +16,12 @@ import { fromDrop, fromInput, readPicked } from './pickedFiles.js';
 import { createGradebookTable, shownName } from './gradebookTable.js';
 import { questionSummaries } from './questionSummaries.js';
 import { buildExportTools } from './exportTools.js';
+import english from 'virtual:messages/en/class';
+import { messages } from '../../../i18n/messages.js';
 
-const PHASES = { reading: 'Reading the hand-ins…', summarising: 'Summarising…' };
+const t = messages('class', english);
+/** What the status line says while a phase without counts runs (section.<phase>). */
+const PHASES = ['reading', 'summarising'];
 
 function fileInput({ accept = '', multiple = true, folder = false } = {}) {
   const input = el('input');
@@ -41,9 +45,9 @@ function makeDialog(className, { print = false } = {}) {
   heading.tabIndex = -1;
   dialog.setAttribute('aria-labelledby', heading.id);
   const tools = el('div', 'hw-dialog-tools');
-  const close = button('Close');
+  const close = button(t('dialog.close'));
   if (print) {
-    const printButton = button('Print');
+    const printButton = button(t('dialog.print'));
     printButton.addEventListener('click', () => window.print());
     tools.append(printButton);
   }
@@ -67,32 +71,25 @@ function makeDialog(className, { print = false } = {}) {
 }
 
 export function buildClassSection(root) {
-  const { section, heading } = titledSection('hw-class', 'class-title', 'Grade a class');
+  const { section, heading } = titledSection('hw-class', 'class-title', t('section.title'));
   const sheet = el('input');
   sheet.type = 'text';
-  sheet.placeholder = 'the sheet’s link (or its JSON): required, hand-ins for any other sheet are refused';
+  sheet.placeholder = t('section.sheetPlaceholder');
   const files = fileInput({ accept: '.json,.txt,.html,.htm,.zip,application/json,application/zip,text/plain,text/html' });
   const folder = fileInput({ folder: true });
-  const drop = el('div', 'hw-drop', 'Or drop files, folders or a zip here.');
+  const drop = el('div', 'hw-drop', t('section.drop'));
   const codes = el('textarea');
   codes.rows = 4;
   const saved = fileInput({ accept: '.json,application/json', multiple: false });
-  const grade = button('Grade the class', 'hw-primary');
+  const grade = button(t('section.grade'), 'hw-primary');
   const status = el('p', 'hw-class-status');
   status.setAttribute('role', 'status');
   const out = el('div', 'hw-class-out');
   const details = makeDialog('hw-student-dialog', { print: true });
   const showDialog = makeDialog('hw-show-dialog');
-  section.append(heading,
-    el('p', null, 'Bring everything the class handed in, as it came: handed-in files, a folder of them, '
-      + 'the zip an LMS gives for “download all submissions” (codes pasted into its online text are read too), '
-      + 'or codes pasted from messages or an export. '
-      + 'Every answer is computed again here; nothing leaves this browser.'),
-    field('The sheet the class answered', sheet),
-    field('Handed-in files, text files of codes, or zips', files), field('Or a whole folder', folder), drop,
-    field('Or paste codes (FLH1.…), one per line or among other text', codes),
-    field('Or open a class view saved before', saved),
-    grade, status, out, details.dialog, showDialog.dialog);
+  section.append(heading, el('p', null, t('section.intro')), field(t('section.sheet'), sheet),
+    field(t('section.files'), files), field(t('section.folder'), folder), drop, field(t('section.codes'), codes),
+    field(t('section.saved'), saved), grade, status, out, details.dialog, showDialog.dialog);
   root.append(section);
 
   const runner = createClassRunner();
@@ -104,26 +101,25 @@ export function buildClassSection(root) {
     const classFile = saved.files[0] ? new Uint8Array(await saved.files[0].arrayBuffer()) : undefined;
     const expected = readSetSheet(sheet.value);
     if (!expected.ok || (!expected.sheet && classFile === undefined)) {
-      out.replaceChildren(problemBox('The sheet to grade against cannot be used:', expected.ok ? ['Give the sheet you set (its link, '
-        + 'code or JSON): the class is graded against it.'] : expected.problems));
+      out.replaceChildren(problemBox(t('section.sheetUnusable'), expected.ok ? [t('section.giveSheet')] : expected.problems));
       status.textContent = '';
       return;
     }
     state.busy = true;
     grade.disabled = true;
     const started = performance.now();
-    status.textContent = 'Reading the files…';
+    status.textContent = t('section.readingFiles');
     const picked = await readPicked([...fromInput(files.files), ...fromInput(folder.files), ...dropped]);
     const request = { sheet: expected.sheet ?? undefined, files: picked.files, text: codes.value, classFile };
     let result;
     try {
       result = await runner.run(request, (p) => {
         status.textContent = p.phase === 'grading' && p.total
-          ? `Grading ${p.done} of ${p.total} hand-ins…`
-          : PHASES[p.phase] ?? status.textContent;
+          ? t('section.grading', { done: p.done, total: p.total })
+          : PHASES.includes(p.phase) ? t(`section.${p.phase}`) : status.textContent;
       });
     } catch (error) {
-      result = { ok: false, problems: [`Grading stopped: ${error.message}`] };
+      result = { ok: false, problems: [t('section.stopped', { error: error.message })] };
     }
     state.busy = false;
     grade.disabled = false;
@@ -131,7 +127,7 @@ export function buildClassSection(root) {
     state.runs += 1;
     if (!result.ok) {
       view = null;
-      out.replaceChildren(problemBox('The class cannot be graded:', result.problems));
+      out.replaceChildren(problemBox(t('section.cannotGrade'), result.problems));
       status.textContent = '';
       return;
     }
@@ -143,18 +139,19 @@ export function buildClassSection(root) {
   async function showView(v, ms) {
     const { gradebook } = v;
     const took = seconds(ms / 1000);
-    status.textContent = `${gradebook.title}: ${gradebook.rows.length} hand-in${gradebook.rows.length === 1 ? '' : 's'} graded, `
-      + `${gradebook.students} student${gradebook.students === 1 ? '' : 's'} counted`
-      + `${gradebook.superseded ? ` (${gradebook.superseded} earlier hand-in${gradebook.superseded === 1 ? '' : 's'} not counted)` : ''}`
-      + `${v.refused.length ? `; ${v.refused.length} could not be used (listed below)` : ''}. Graded in ${runner.where()} in ${took}.`
-      + `${runner.problem() ? ` ${runner.problem()}` : ''}`;
+    const counts = {
+      rows: gradebook.rows.length, students: gradebook.students, superseded: gradebook.superseded, refused: v.refused.length,
+    };
+    const shown = Object.fromEntries(Object.entries(counts).map(([key, n]) => [`${key}N`, fixed(n, 0)]));
+    const graded = t('section.graded', { title: gradebook.title, ...counts, ...shown, where: runner.where(), took });
+    status.textContent = runner.problem() ? `${graded} ${runner.problem()}` : graded;
     const parts = [];
     if (v.refused.length) {
       const box = el('details', 'hw-refused');
       box.open = v.refused.length <= 10;
-      box.append(el('summary', null, `${v.refused.length} could not be used`));
+      box.append(el('summary', null, t('section.refused', { count: v.refused.length, n: fixed(v.refused.length, 0) })));
       const list = el('ul');
-      for (const r of v.refused) list.append(el('li', null, `${r.source}: ${r.reason}`));
+      for (const r of v.refused) list.append(el('li', null, t('section.refusedItem', { source: r.source, reason: r.reason })));
       box.append(list);
       parts.push(box);
     }
@@ -165,22 +162,22 @@ export function buildClassSection(root) {
         const box = el('div');
         const flags = el('ul', 'hw-flag-list');
         for (const flag of row.flags) flags.append(el('li', null, flag.text));
-        box.append(el('p', 'hw-meta', `From ${row.source}.`));
+        box.append(el('p', 'hw-meta', t('dialog.from', { source: row.source })));
         if (row.flags.length) box.append(flags);
-        box.append(gradedReport(shownName(row), graded, { against: 'the sheet you set' }));
-        details.open(box, `Report: ${shownName(row)}`, from);
+        box.append(gradedReport(shownName(row), graded, { against: 'set' }));
+        details.open(box, t('dialog.report', { name: shownName(row) }), from);
       },
     });
     state.table = table;
-    const gradebookHeading = el('h3', null, 'Gradebook');
-    const questionsHeading = el('h3', null, 'What the class got wrong, and why');
+    const gradebookHeading = el('h3', null, t('section.gradebook'));
+    const questionsHeading = el('h3', null, t('section.wrong'));
     const questionCards = () => questionSummaries(v, {
       onShow: (card, i, from) => {
         const copy = /** @type {HTMLElement} */ (card.cloneNode(true));
         copy.querySelector('.hw-show-class')?.remove();
         copy.querySelector('h4')?.removeAttribute('id');
         copy.removeAttribute('aria-labelledby');
-        showDialog.open(copy, `${gradebook.title}: question ${i + 1}`, from);
+        showDialog.open(copy, t('dialog.show', { title: gradebook.title, number: i + 1 }), from);
       },
     });
     parts.push(exports.files, gradebookHeading, table.element, exports.lms, questionsHeading);
@@ -200,7 +197,7 @@ export function buildClassSection(root) {
     event.preventDefault();
     drop.classList.remove('hw-drop-over');
     dropped = await fromDrop(event.dataTransfer);
-    drop.textContent = `${dropped.length} file${dropped.length === 1 ? '' : 's'} dropped; drop again to replace them.`;
+    drop.textContent = t('section.dropped', { count: dropped.length, n: fixed(dropped.length, 0) });
     if (sheet.value.trim()) run();
   });
   return state;

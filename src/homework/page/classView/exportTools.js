@@ -6,38 +6,33 @@
 // is saved, to be graded by hand.
 import { button, el } from '../../../ui/el.js';
 import { downloadText } from '../../../host/exporters.js';
-import { fileSlug } from '../../../ui/format.js';
+import { fileSlug, fixed } from '../../../ui/format.js';
 import { gradebookToCsv, cellsToCsv } from '../../class/gradebookToCsv.js';
 import { writeClassFile } from '../../class/classFile.js';
 import { canvasImport, moodleWorksheet } from '../../class/lmsGrades.js';
 import { field } from '../formParts.js';
+import english from 'virtual:messages/en/class';
+import { messages } from '../../../i18n/messages.js';
 
+const t = messages('class', english);
 const CSV_TYPE = 'text/csv;charset=utf-8';
+// Each LMS's button and what it says are the catalogue's lms.<key>.button and lms.<key>.about; the
+// files' own column names are the LMS's (lmsGrades.js).
 const LMS = {
-  moodle: {
-    button: 'Moodle grading worksheet', file: 'moodle-grading-worksheet', id: 'participant number', make: moodleWorksheet,
-    about: 'Moodle: turn on the assignment’s “Offline grading worksheet” feedback type, then Upload grading worksheet. '
-      + 'Moodle reads the column headings in the language its pages are in, so upload it with Moodle set to English. '
-      + 'Students are found by the participant number in the download’s folder names.',
-  },
-  canvas: {
-    button: 'Canvas gradebook import', file: 'canvas-grades', id: 'user id', make: canvasImport,
-    about: 'Canvas: Grades, then Import. Students are found by the user id in the download’s file names; the column '
-      + 'is named after the sheet, and Canvas asks whether it is a new assignment or one you have.',
-  },
+  moodle: { file: 'moodle-grading-worksheet', make: moodleWorksheet },
+  canvas: { file: 'canvas-grades', make: canvasImport },
 };
-const NAMES = { moodle: 'Moodle', canvas: 'Canvas' };
 
 const nameOf = (row) => row.name || row.lmsName || row.source;
-const students = (n) => `${n} student${n === 1 ? '' : 's'}`;
+/** A count for a plural message: the number that picks the form, and the number shown. */
+const many = (count) => ({ count, n: fixed(count, 0) });
 
 /** Why a student is not in an LMS's file, in a sentence. */
 function leftText(lms, left) {
-  const what = `${NAMES[lms]} ${LMS[lms].id}`;
-  if (left.why === 'two-ids') return `${nameOf(left.row)}: handed in under two ${what}s (${left.ids.join(', ')}).`;
-  if (left.why === 'shared-id') return `${nameOf(left.row)}: ${what} ${left.id} is also on the hand-in of `
-    + `${left.others.map(nameOf).join(', ')}.`;
-  return `${nameOf(left.row)}: no ${what} in the path of their hand-in (${left.row.source}).`;
+  const name = nameOf(left.row);
+  if (left.why === 'two-ids') return t('lms.twoIds', { lms, name, ids: left.ids.join(', ') });
+  if (left.why === 'shared-id') return t('lms.sharedId', { lms, name, id: left.id, others: left.others.map(nameOf).join(', ') });
+  return t('lms.noId', { lms, name, source: left.row.source });
 }
 
 /**
@@ -50,9 +45,9 @@ export function buildExportTools(view) {
   const slug = fileSlug(gradebook.title);
   const files = el('div', 'hw-exports');
   const tools = el('div', 'hw-class-tools');
-  const csv = button('Export CSV');
-  const semicolons = button('Export CSV with semicolons');
-  const keep = button('Save the class view');
+  const csv = button(t('exports.csv'));
+  const semicolons = button(t('exports.semicolons'));
+  const keep = button(t('exports.keep'));
   tools.append(csv, semicolons, keep);
   csv.addEventListener('click', () => downloadText(`${slug}-gradebook.csv`, gradebookToCsv(gradebook, { includeSuperseded: true }),
     CSV_TYPE));
@@ -61,17 +56,10 @@ export function buildExportTools(view) {
   keep.addEventListener('click', () => downloadText(`${slug}-class.json`, writeClassFile({ sheet: view.sheet, handIns: view.handIns }),
     'application/json'));
   const about = el('ul', 'hw-export-about');
-  about.append(
-    el('li', null, 'Export CSV: every hand-in with its marks per question, for a spreadsheet in English or a script '
-      + '(commas between cells, a point in 87.5, times in UTC).'),
-    el('li', null, 'Export CSV with semicolons: the same, for Excel or LibreOffice in German, French and other languages '
-      + 'that write 87,5 (semicolons between cells, a comma in 87,5, times in this computer’s time zone); '
-      + 'the other file opens there in one column.'),
-    el('li', null, 'Save the class view: the sheet and the hand-ins, to open here again later; every answer is graded again then.'),
-  );
+  about.append(el('li', null, t('exports.csvAbout')), el('li', null, t('exports.semicolonsAbout')), el('li', null, t('exports.keepAbout')));
 
   const lms = el('fieldset', 'hw-lms-export');
-  lms.append(el('legend', null, 'Grades back into the LMS'));
+  lms.append(el('legend', null, t('lms.legend')));
   const outOf = el('input');
   outOf.type = 'number';
   outOf.min = '1';
@@ -83,26 +71,25 @@ export function buildExportTools(view) {
   const lmsTools = el('div', 'hw-class-tools');
   const lmsAbout = el('ul', 'hw-export-about');
   for (const [key, lmsEntry] of Object.entries(LMS)) {
-    const save = button(lmsEntry.button);
+    const save = button(t(`lms.${key}.button`));
     save.addEventListener('click', () => {
       const max = Number(outOf.value);
       if (!(max > 0 && max <= 1e6)) {
-        status.textContent = 'Give the assignment’s maximum grade as a number above 0.';
+        status.textContent = t('lms.badOutOf');
         leftList.replaceChildren();
         return;
       }
       const made = lmsEntry.make(gradebook, { outOf: max });
       if (made.students.length) downloadText(`${slug}-${lmsEntry.file}.csv`, cellsToCsv(made.cells), CSV_TYPE);
-      status.textContent = made.students.length
-        ? `Saved for ${NAMES[key]}: ${students(made.students.length)}, graded out of ${outOf.value}.`
-          + `${made.left.length ? ` Not in the file, to grade by hand: ${students(made.left.length)}.` : ''}`
-        : `Nothing saved: no hand-in came with a ${NAMES[key]} ${lmsEntry.id} (it is in the names of the LMS’s download).`;
+      const saved = [t('lms.saved', { lms: key, ...many(made.students.length), outOf: outOf.value })];
+      if (made.left.length) saved.push(t('lms.left', many(made.left.length)));
+      status.textContent = made.students.length ? saved.join(' ') : t('lms.nothing', { lms: key });
       leftList.replaceChildren(...made.left.map((left) => el('li', null, leftText(key, left))));
     });
     lmsTools.append(save);
-    lmsAbout.append(el('li', null, lmsEntry.about));
+    lmsAbout.append(el('li', null, t(`lms.${key}.about`)));
   }
-  lms.append(field('Out of: the assignment’s maximum grade in the LMS', outOf), lmsTools, lmsAbout, status, leftList);
+  lms.append(field(t('lms.outOf'), outOf), lmsTools, lmsAbout, status, leftList);
   files.append(tools, about);
   return { files, lms };
 }

@@ -9,24 +9,16 @@
 import { button, el } from '../../../ui/el.js';
 import { pageLocale } from '../../../ui/safeLocale.js';
 import { sortRows } from '../../class/sortRows.js';
-import { KIND_NAMES } from '../../questions.js';
+import { kindName } from '../../questions.js';
+import english from 'virtual:messages/en/class';
+import { messages } from '../../../i18n/messages.js';
 
-const MARKS = { right: ['✓', 'right'], wrong: ['✗', 'wrong'], unanswered: ['–', 'no answer'] };
-const FLAG_NAMES = {
-  superseded: 'not counted', resubmitted: 'handed in again', 'shared-seed': 'shared seed', 'class-seed': 'other seed',
-  copied: 'same wrong answers', 'no-name': 'no name',
-};
-/** What each flag means, said under the table for the flags it shows. */
-const FLAG_MEANINGS = {
-  superseded: () => 'the same student handed in again later; the latest hand-in counts.',
-  resubmitted: () => 'the latest of a student’s hand-ins, the one that counts.',
-  'shared-seed': () => 'one seed under two or more names: one sheet handed in under several names.',
-  'class-seed': () => 'a seed other than the one the sheet gives everyone.',
-  copied: (rule) => `two students on one seed gave the same wrong answer to ${rule.atLeast} or more number or prediction `
-    + `questions, as a copied sheet does. A wrong answer that ${rule.common} or more students give is taken for a common slip `
-    + 'and not counted.',
-  'no-name': () => 'the hand-in gives no name (the LMS’s folder or file name is shown where it gives one).',
-};
+const t = messages('class', english);
+/** A mark's symbol, seen; its word (mark.<mark>) is heard. */
+const MARKS = { right: '✓', wrong: '✗', unanswered: '–' };
+/** The flags, in the order the legend says what they mean: flag.<kind> names one, flag.<kind>.meaning says it. */
+const FLAG_KINDS = ['superseded', 'resubmitted', 'shared-seed', 'class-seed', 'copied', 'no-name'];
+const flagName = (kind) => (FLAG_KINDS.includes(kind) ? t(`flag.${kind}`) : kind);
 const ROWS_PER_SLICE = 50;
 const nextTask = () => new Promise((resolve) => { setTimeout(resolve, 0); });
 
@@ -39,11 +31,10 @@ function part(role, className, text) {
 
 /** A cell whose symbol is seen and whose word is heard. */
 function markCell(mark) {
-  const [symbol, word] = MARKS[mark];
   const cell = part('cell', `hw-mark hw-mark-${mark}`);
-  const seen = el('span', null, symbol);
+  const seen = el('span', null, MARKS[mark]);
   seen.setAttribute('aria-hidden', 'true');
-  cell.append(seen, el('span', 'sr-only', word));
+  cell.append(seen, el('span', 'sr-only', t(`mark.${mark}`)));
   return cell;
 }
 
@@ -51,7 +42,7 @@ function markCell(mark) {
 // largest cost of making a row.
 const DATES = new Intl.DateTimeFormat(pageLocale(), { dateStyle: 'short', timeStyle: 'short' });
 const when = (time) => (time ? DATES.format(new Date(time)) : '—');
-export const shownName = (row) => row.name || row.lmsName || '(no name)';
+export const shownName = (row) => row.name || row.lmsName || t('table.noName');
 
 /**
  * The table for `gradebook` (buildGradebook.js). onDetails(row): open that student's report.
@@ -62,9 +53,9 @@ export function createGradebookTable(gradebook, { onDetails }) {
   // A wide table scrolls by itself; focusable so a keyboard can scroll it too.
   wrap.tabIndex = 0;
   wrap.setAttribute('role', 'region');
-  wrap.setAttribute('aria-label', 'Gradebook (scrolls sideways)');
+  wrap.setAttribute('aria-label', t('table.label'));
   const table = part('table', 'hw-gradebook');
-  const caption = el('p', 'sr-only', `Gradebook of ${gradebook.title}: a row per hand-in; sort by any column with its header button.`);
+  const caption = el('p', 'sr-only', t('table.caption', { title: gradebook.title }));
   caption.id = 'hw-gradebook-caption';
   table.setAttribute('aria-labelledby', caption.id);
   // Every row is a grid of the same columns (widths in classView.css), so a row lays out alone.
@@ -77,10 +68,13 @@ export function createGradebookTable(gradebook, { onDetails }) {
   wrap.append(caption, table);
 
   const columns = [
-    { id: 'name', text: 'Name' }, { id: 'seed', text: 'Seed' }, { id: 'score', text: 'Score' }, { id: 'percent', text: '%' },
-    ...gradebook.items.map((item, i) => ({ id: `item:${i}`, text: `Q${i + 1}`, title: `${KIND_NAMES[item.kind] ?? item.kind}: `
-      + `${item.question}` })),
-    { id: 'tries', text: 'Tries' }, { id: 'time', text: 'Handed in' }, { id: 'flags', text: 'Flags' },
+    ...['name', 'seed', 'score', 'percent'].map((id) => ({ id, text: t(`table.${id}`) })),
+    ...gradebook.items.map((item, i) => ({
+      id: `item:${i}`,
+      text: t('table.question', { number: i + 1 }),
+      title: t('table.questionTitle', { kind: kindName(item.kind), question: item.question }),
+    })),
+    { id: 'tries', text: t('table.tries') }, { id: 'time', text: t('table.time') }, { id: 'flags', text: t('table.flags') },
   ];
   const headers = new Map();
   let sorted = { column: null, descending: false };
@@ -88,31 +82,32 @@ export function createGradebookTable(gradebook, { onDetails }) {
     const th = part('columnheader');
     const sort = button(column.text, 'hw-sort');
     if (column.title) sort.title = column.title;
-    sort.setAttribute('aria-label', `${column.title ? `${column.text}, ${column.title}` : column.text}: sort`);
+    sort.setAttribute('aria-label', column.title ? t('table.sortTitled', { column: column.text, title: column.title })
+      : t('table.sort', { column: column.text }));
     sort.addEventListener('click', () => sortBy(column.id));
     th.append(sort);
     headers.set(column.id, th);
     headRow.append(th);
   }
-  headRow.append(part('columnheader', null, 'Report'));
+  headRow.append(part('columnheader', null, t('table.report')));
 
   const made = new Map(); // row key → its row
   function makeRow(row) {
     const tr = part('row', `hw-row${row.counted ? '' : ' hw-superseded'}`);
     const name = part('rowheader', 'hw-name', shownName(row));
-    if (!row.counted) name.append(el('span', 'hw-not-counted', ' (not counted)'));
+    if (!row.counted) name.append(el('span', 'hw-not-counted', ` ${t('table.notCounted')}`));
     tr.append(name, part('cell', 'hw-seed-cell', row.seed), part('cell', 'hw-num hw-points', `${row.score} / ${row.total}`),
       part('cell', 'hw-num', String(Math.round(row.percent))));
     for (const mark of row.marks) tr.append(markCell(mark));
     tr.append(part('cell', 'hw-num', row.triesTotal === null ? '—' : String(row.triesTotal)), part('cell', null, when(row.time)));
     const flags = part('cell', 'hw-flags');
     for (const flag of row.flags) {
-      const badge = el('span', `hw-flag hw-flag-${flag.kind}`, FLAG_NAMES[flag.kind] ?? flag.kind);
+      const badge = el('span', `hw-flag hw-flag-${flag.kind}`, flagName(flag.kind));
       badge.title = flag.text;
       flags.append(badge);
     }
-    const open = button('Report', 'hw-details');
-    open.setAttribute('aria-label', `Report of ${shownName(row)}${row.counted ? '' : ' (not counted)'}`);
+    const open = button(t('table.report'), 'hw-details');
+    open.setAttribute('aria-label', t('table.reportOf', { name: shownName(row), counted: row.counted ? 'yes' : 'no' }));
     open.addEventListener('click', () => onDetails(row, open));
     const cell = part('cell');
     cell.append(open);
@@ -148,13 +143,13 @@ export function createGradebookTable(gradebook, { onDetails }) {
   // The flags in this gradebook, each with what it means (a badge's title is seen only on hover).
   const element = el('div', 'hw-gradebook-block');
   element.append(wrap);
-  const kinds = Object.keys(FLAG_MEANINGS).filter((kind) => gradebook.rows.some((row) => row.flags.some((f) => f.kind === kind)));
+  const kinds = FLAG_KINDS.filter((kind) => gradebook.rows.some((row) => row.flags.some((f) => f.kind === kind)));
   if (kinds.length) {
     const legend = el('ul', 'hw-flag-legend');
-    legend.setAttribute('aria-label', 'What the flags mean');
+    legend.setAttribute('aria-label', t('table.flagsMean'));
     for (const kind of kinds) {
       const item = el('li');
-      item.append(el('span', `hw-flag hw-flag-${kind}`, FLAG_NAMES[kind]), ` ${FLAG_MEANINGS[kind](gradebook.copiedRule)}`);
+      item.append(el('span', `hw-flag hw-flag-${kind}`, flagName(kind)), ` ${t(`flag.${kind}.meaning`, gradebook.copiedRule)}`);
       legend.append(item);
     }
     element.append(legend);

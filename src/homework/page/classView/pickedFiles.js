@@ -4,6 +4,10 @@
 // memory; a kind that is never read is passed on empty and refused by name there (fileKind.js).
 import { CLASS_CAPS, megabytes } from '../../class/classCaps.js';
 import { contentKind, fileKind } from '../../class/fileKind.js';
+import english from 'virtual:messages/en/class';
+import { messages } from '../../../i18n/messages.js';
+
+const t = messages('class', english);
 
 const MAX_WALKED = CLASS_CAPS.maxEntries; // files taken from dropped folders, as from a zip
 
@@ -25,7 +29,7 @@ export async function readPicked(entries) {
       try {
         kind = contentKind(new Uint8Array(await file.slice(0, 1024).arrayBuffer()));
       } catch {
-        kind = { reason: 'the browser could not read it.' };
+        kind = { reason: t('file.unreadable') };
       }
       if (kind.reason) {
         refused.push({ source: path, reason: kind.reason });
@@ -34,14 +38,14 @@ export async function readPicked(entries) {
     }
     const max = kind.kind === 'zip' ? CLASS_CAPS.maxZipBytes : CLASS_CAPS.maxFileBytes;
     if (file.size > max) {
-      refused.push({ source: path, reason: `${megabytes(file.size)}: more than the ${megabytes(max)} a `
-        + `${kind.kind === 'zip' ? 'zip' : 'handed-in file or a text of codes'} may have.` });
+      const sizes = { size: megabytes(file.size), max: megabytes(max) };
+      refused.push({ source: path, reason: t('file.tooLarge', { kind: kind.kind === 'zip' ? 'zip' : 'file', ...sizes }) });
       continue;
     }
     try {
       files.push({ name: path, bytes: new Uint8Array(await file.arrayBuffer()) });
     } catch {
-      refused.push({ source: path, reason: 'the browser could not read it.' });
+      refused.push({ source: path, reason: t('file.unreadable') });
     }
   }
   return { files, refused };

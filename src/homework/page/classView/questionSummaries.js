@@ -6,16 +6,20 @@
 // count as text, in the page's colours, so they read on a projector and to a screen reader; no name
 // appears anywhere, so a card can be shown to the class as it is.
 import { button, el } from '../../../ui/el.js';
-import { fixed } from '../../../ui/format.js';
+import { fixed, precise } from '../../../ui/format.js';
 import { setSubscripted } from '../../../ui/subscripts.js';
-import { KIND_NAMES, questionById } from '../../questions.js';
+import { kindName, questionById } from '../../questions.js';
 import { panelEntry } from '../../../panels/manifest.js';
 import { panelTitle } from '../../../panels/panelText.js';
+import english from 'virtual:messages/en/class';
+import { messages } from '../../../i18n/messages.js';
 
+const t = messages('class', english);
 const CARDS_PER_TASK = 8;
 const nextTask = () => new Promise((resolve) => { setTimeout(resolve, 0); });
-const percent = (share) => (share === null ? '—' : `${Math.round(100 * share)} %`);
-const students = (n) => `${n} student${n === 1 ? '' : 's'}`;
+const percent = (share) => (share === null ? '—' : t('summary.percent', { percent: fixed(100 * share, 0) }));
+/** A count for a plural message: the number that picks the form, and the number shown. */
+const many = (count) => ({ count, n: fixed(count, 0) });
 
 /** A horizontal bar with its label and count: a list item, so it is read as "label: n students". */
 function barItem(label, count, total, className = '') {
@@ -27,14 +31,14 @@ function barItem(label, count, total, className = '') {
   fill.style.setProperty('--share', String(total ? count / total : 0));
   track.append(fill);
   track.setAttribute('aria-hidden', 'true');
-  item.append(text, track, el('span', 'hw-bar-count', `: ${students(count)}`));
+  item.append(text, track, el('span', 'hw-bar-count', t('summary.barCount', many(count))));
   return item;
 }
 
 /** A bin's answers in words: how many, and how many of them right and wrong. */
 function answersText(bin) {
-  if (bin.right && bin.wrong) return `${students(bin.count)}: ${bin.right} right, ${bin.wrong} wrong`;
-  return bin.right ? `${students(bin.right)}, right` : `${students(bin.wrong)}${bin.wrong ? ', wrong' : ''}`;
+  if (bin.right && bin.wrong) return t('summary.binBoth', { ...many(bin.count), right: bin.right, wrong: bin.wrong });
+  return bin.right ? t('summary.binRight', many(bin.right)) : t('summary.binWrong', many(bin.wrong));
 }
 
 /**
@@ -59,9 +63,10 @@ function columns(bins, { caption, binText, tick }) {
     }
     const label = tick(bin);
     item.append(el('span', 'hw-column-tick', label));
-    item.append(el('span', 'sr-only', `${binText(bin)}: ${answersText(bin)}`));
+    const says = t('summary.binSays', { bin: binText(bin), answers: answersText(bin) });
+    item.append(el('span', 'sr-only', says));
     if (bin.count === 0) item.setAttribute('aria-hidden', 'true');
-    item.title = `${binText(bin)}: ${answersText(bin)}`;
+    item.title = says;
     list.append(item);
   }
   figure.append(list, el('figcaption', null, caption));
@@ -70,7 +75,7 @@ function columns(bins, { caption, binText, tick }) {
 
 const ratioText = (x) => {
   const q = 10 ** x;
-  const shown = (x) => (x < 10 ? fixed(x, 2) : x.toPrecision(3));
+  const shown = (x) => (x < 10 ? fixed(x, 2) : precise(x, 3));
   return q >= 1 ? `×${shown(q)}` : `÷${shown(1 / q)}`;
 };
 
@@ -78,47 +83,46 @@ function numericParts(summary) {
   const { ratio } = summary;
   const parts = [];
   const answered = summary.right + summary.wrong;
-  if (!answered) return [el('p', null, 'No student answered.')];
-  const named = new Map(ratio.labels.map((l) => [l.at, l.text.split(':')[0]]));
+  if (!answered) return [el('p', null, t('summary.noneAnswered'))];
+  const named = new Map(ratio.labels.map((l) => [l.at, l.short]));
   const tick = (bin) => {
-    if (bin.lo <= 0 && bin.hi > 0) return '×1';
+    if (bin.lo <= 0 && bin.hi > 0) return t('summary.one');
     for (const [at, text] of named) if (at >= bin.lo && at < bin.hi) return text;
     return '';
   };
   parts.push(columns(ratio.bins, {
-    caption: 'Each answer divided by the value computed for that student, on a log scale: right answers (green) stand at ×1, '
-      + 'a slip by a factor as a column at that factor.',
-    binText: (bin) => `${ratioText(bin.lo)} to ${ratioText(bin.hi)}`, tick,
+    caption: t('summary.ratioCaption'),
+    binText: (bin) => t('summary.range', { from: ratioText(bin.lo), to: ratioText(bin.hi) }), tick,
   }));
   const outsideBins = [
-    ratio.below + ratio.above > 0 ? `${students(ratio.below + ratio.above)} off by more than a factor of 1000` : '',
-    ratio.opposite ? `${students(ratio.opposite)} with the opposite sign` : '',
-    ratio.zero ? `${students(ratio.zero)} answered 0` : '',
-    ratio.noRatio ? `${students(ratio.noRatio)} where the computed value is 0 (no ratio to plot)` : '',
+    ratio.below + ratio.above > 0 ? t('summary.outFar', many(ratio.below + ratio.above)) : '',
+    ratio.opposite ? t('summary.outOpposite', many(ratio.opposite)) : '',
+    ratio.zero ? t('summary.outZero', many(ratio.zero)) : '',
+    ratio.noRatio ? t('summary.outNoRatio', many(ratio.noRatio)) : '',
   ].filter(Boolean);
-  if (outsideBins.length) parts.push(el('p', 'hw-meta', `Not in the plot: ${outsideBins.join('; ')}.`));
+  if (outsideBins.length) parts.push(el('p', 'hw-meta', t('summary.notInPlot', { list: outsideBins.join(t('summary.listSeparator')) })));
   // Each wrong answer under one slip at most: a named slip, else a factor, else where it lies.
   const { elsewhere } = summary;
   const slips = [
-    ...(summary.slips ?? []).filter((s) => s.count > 0).map((s) => `${s.label}: ${students(s.count)}`),
-    ...ratio.labels.filter((l) => l.count > 0).map((l) => `${l.text}: ${students(l.count)}`),
-    elsewhere.zero ? `0: ${students(elsewhere.zero)}` : '',
-    elsewhere.opposite ? `the opposite sign: ${students(elsewhere.opposite)}` : '',
-    elsewhere.far ? `more than a factor of 1000 off: ${students(elsewhere.far)}` : '',
+    ...(summary.slips ?? []).filter((s) => s.count > 0).map((s) => t('summary.slip', { slip: s.label, ...many(s.count) })),
+    ...ratio.labels.filter((l) => l.count > 0).map((l) => t('summary.slip', { slip: l.text, ...many(l.count) })),
+    elsewhere.zero ? t('summary.slipZero', many(elsewhere.zero)) : '',
+    elsewhere.opposite ? t('summary.slipOpposite', many(elsewhere.opposite)) : '',
+    elsewhere.far ? t('summary.slipFar', many(elsewhere.far)) : '',
   ].filter(Boolean);
   const list = el('ul', 'hw-slips');
   for (const text of slips) list.append(el('li', null, text));
-  if (list.childElementCount) parts.push(el('p', 'hw-slips-title', 'Slips seen (each wrong answer under one at most):'), list);
+  if (list.childElementCount) parts.push(el('p', 'hw-slips-title', t('summary.slipsTitle')), list);
   return parts;
 }
 
 function predictParts(summary) {
-  if (!(summary.right + summary.wrong)) return [el('p', null, 'No student predicted.')];
+  if (!(summary.right + summary.wrong)) return [el('p', null, t('summary.nonePredicted'))];
   const { step, bins } = summary.offset;
-  const signed = (x) => `${x > 0 ? '+' : x < 0 ? '−' : ''}${Math.abs(x)}°`;
+  const signed = (x) => `${x > 0 ? '+' : x < 0 ? '−' : ''}${fixed(Math.abs(x), Number.isInteger(x) ? 0 : 1)}°`;
   return [columns(bins, {
-    caption: `Predicted minus true angle, in ${step}° steps: to the right, predictions too large.`,
-    binText: (bin) => `${signed(bin.lo)} to ${signed(bin.hi)}`,
+    caption: t('summary.offsetCaption', { step }),
+    binText: (bin) => t('summary.range', { from: signed(bin.lo), to: signed(bin.hi) }),
     tick: (bin) => { const mid = (bin.lo + bin.hi) / 2; return mid % 15 === 0 ? signed(mid) : ''; },
   })];
 }
@@ -132,8 +136,8 @@ function choiceParts(summary) {
     if (option.chosenWhenWrong) {
       const why = el('span', 'hw-bar-why');
       // The explanation of the numbers in the prompt above; an option that holds for them was wrong only for others'.
-      setSubscripted(why, option.why ? `Why it is wrong: ${option.why}`
-        : `Right for the numbers above; wrong for the ${students(option.chosenWhenWrong)} who chose it with other numbers.`);
+      setSubscripted(why, option.why ? t('summary.whyWrong', { why: option.why })
+        : t('summary.rightForOthers', many(option.chosenWhenWrong)));
       item.append(why);
     }
     list.append(item);
@@ -145,8 +149,7 @@ function choiceParts(summary) {
 function promptText(question, { params, sameForAll }) {
   const text = question.prompt(params);
   if (sameForAll) return text;
-  return `${text} (Numbers differ from student to student; these are one student's${question.kind === 'choice'
-    ? ', and so are the options and explanations below' : ''}.)`;
+  return t('summary.oneStudent', { prompt: text, choice: question.kind === 'choice' ? 'yes' : 'no' });
 }
 
 /**
@@ -164,20 +167,22 @@ export async function questionSummaries(view, { onShow }) {
     card.setAttribute('aria-labelledby', heading.id);
     const panel = el('span', 'hw-panel-name');
     setSubscripted(panel, panelEntry(question.panel) ? panelTitle(question.panel) : question.panel);
-    heading.append(el('span', null, `Question ${i + 1}`), el('span', 'hw-kind', KIND_NAMES[question.kind]), panel);
+    heading.append(el('span', null, t('summary.question', { number: i + 1 })), el('span', 'hw-kind', kindName(question.kind)), panel);
     card.append(heading);
     if (summary.shown) {
       const prompt = el('p', 'hw-prompt');
       setSubscripted(prompt, promptText(question, summary.shown));
       card.append(prompt);
     }
-    card.append(el('p', 'hw-share', `${percent(summary.shareRight)} right: ${summary.right} right, ${summary.wrong} wrong, `
-      + `${summary.unanswered} unanswered, of ${students(summary.students)}.`));
+    card.append(el('p', 'hw-share', t('summary.share', {
+      share: percent(summary.shareRight), right: summary.right, wrong: summary.wrong, unanswered: summary.unanswered,
+      students: summary.students, studentsN: fixed(summary.students, 0),
+    })));
     if (summary.kind === 'choice') card.append(...choiceParts(summary));
     else if (summary.kind === 'numeric') card.append(...numericParts(summary));
     else card.append(...predictParts(summary));
-    const show = button('Show the class', 'hw-show-class');
-    show.setAttribute('aria-label', `Show question ${i + 1} to the class (no names)`);
+    const show = button(t('summary.show'), 'hw-show-class');
+    show.setAttribute('aria-label', t('summary.showLabel', { number: i + 1 }));
     show.addEventListener('click', () => onShow(card, i, show));
     card.append(show);
     holder.append(card);

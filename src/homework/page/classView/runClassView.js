@@ -4,12 +4,16 @@
 // a yield between them, and the page says so. Files' bytes are copied to the worker, not
 // transferred, so that a worker that fails midway leaves them for the page to grade. The grading
 // code is loaded on the page only then: the homework page a student opens does not carry it.
+// The worker speaks the page's language: each request says which (currentLanguage), and the
+// worker loads that catalogue before it reads a file (classWorker.js).
 import ClassWorker from '../../class/classWorker.js?worker';
+import english from 'virtual:messages/en/class';
+import { currentLanguage, messages } from '../../../i18n/messages.js';
 
-const ON_PAGE = 'graded on the page’s thread instead, in short slices';
+const t = messages('class', english);
 
 /**
- * { run(request, onProgress) → Promise<view>, where(): 'a worker' | 'the page’s thread', problem(), dispose() }.
+ * { run(request, onProgress) → Promise<view>, where(): 'worker' | 'page', problem(), dispose() }.
  * A run started while another is going supersedes it: the older one resolves null.
  */
 export function createClassRunner({ useWorker = true } = {}) {
@@ -24,7 +28,7 @@ export function createClassRunner({ useWorker = true } = {}) {
   };
 
   function fallBack(reason) {
-    problem = `The grading worker failed (${reason}): ${ON_PAGE}.`;
+    problem = t('runner.failed', { reason });
     worker?.terminate();
     worker = null;
     for (const [id, entry] of pending) {
@@ -35,7 +39,7 @@ export function createClassRunner({ useWorker = true } = {}) {
 
   if (useWorker) {
     try {
-      if (typeof Worker === 'undefined') throw new Error('this browser has no Web Workers');
+      if (typeof Worker === 'undefined') throw new Error(t('runner.noWorkers'));
       worker = new ClassWorker();
       worker.addEventListener('message', ({ data }) => {
         const entry = pending.get(data?.id);
@@ -45,10 +49,10 @@ export function createClassRunner({ useWorker = true } = {}) {
         if (data.error !== undefined) entry.reject(new Error(data.error));
         else entry.resolve(data.id === latest ? data.view : null);
       });
-      worker.addEventListener('error', (event) => { event.preventDefault?.(); fallBack(event.message || 'it could not load'); });
+      worker.addEventListener('error', (event) => { event.preventDefault?.(); fallBack(event.message || t('runner.notLoaded')); });
     } catch (error) {
       worker = null;
-      problem = `The grading worker could not start (${error?.message || error}): ${ON_PAGE}.`;
+      problem = t('runner.noStart', { reason: error?.message || error });
     }
   }
 
@@ -59,10 +63,10 @@ export function createClassRunner({ useWorker = true } = {}) {
       if (!worker) return onPage(request, onProgress).then((view) => (id === latest ? view : null));
       return new Promise((resolve, reject) => {
         pending.set(id, { resolve, reject, request, onProgress });
-        worker.postMessage({ id, request });
+        worker.postMessage({ id, request, lang: currentLanguage() });
       });
     },
-    where: () => (worker ? 'a worker' : 'the page’s thread'),
+    where: () => (worker ? 'worker' : 'page'),
     problem: () => problem,
     dispose() {
       worker?.terminate();

@@ -1,0 +1,49 @@
+// @ts-check
+// The class view's worker in the language of the page that started it: a worker has modules of its
+// own, so the catalogue the page chose (src/i18n/language.js) is not its until it sets it too. Its
+// words are those of three namespaces (the refusals, flags, summaries and explanations it writes),
+// which travel in the worker for every language (a worker's bundle cannot load a chunk, and each
+// whole catalogue would more than double it). A pseudo-locale is made here from English, each
+// message bracketed ⟦…⟧ and padded as the build's are (scripts/pseudoLocale.js), rather than
+// carried: a word that is not the catalogue's still stands out. Shown numbers take the language's
+// decimal sign.
+import every from 'virtual:messages/every/class+homework+questions';
+import classWords from 'virtual:messages/en/class';
+import homeworkWords from 'virtual:messages/en/homework';
+import questionWords from 'virtual:messages/en/questions';
+import { PSEUDO_LANGUAGES, SOURCE_LANGUAGE, languageById } from '../../i18n/languages.js';
+import { currentLanguage, setCatalogue } from '../../i18n/messages.js';
+import { setNumberLocale } from '../../ui/format.js';
+
+const ENGLISH = { class: classWords, homework: homeworkWords, questions: questionWords };
+const GROWTH = 0.35; // as scripts/pseudoLocale.js
+
+/** English's messages of one namespace, each bracketed and about 35 % longer. */
+const pseudo = (english) => Object.fromEntries(Object.entries(english).map(([key, message]) => [key, (args) => {
+  const text = message(args);
+  return `⟦${text} ${'·'.repeat(Math.ceil(GROWTH * text.length))}⟧`;
+}]));
+
+/** The compiled catalogue of `id` for this worker's namespaces, or null where it has none. */
+function catalogueOf(id) {
+  if (PSEUDO_LANGUAGES.some((l) => l.id === id)) {
+    return Object.fromEntries(Object.entries(ENGLISH).map(([namespace, messages]) => [namespace, pseudo(messages)]));
+  }
+  return Object.hasOwn(every, id) ? every[id] : null;
+}
+
+/**
+ * Makes `id` (a language of the lab; anything else is English) the language of this worker's words.
+ * @param {unknown} id
+ * @returns {string} the language now spoken
+ */
+export function useWorkerLanguage(id) {
+  const asked = languageById(id) ?? languageById(SOURCE_LANGUAGE);
+  const compiled = asked.id === SOURCE_LANGUAGE ? null : catalogueOf(asked.id);
+  const language = compiled || asked.id === SOURCE_LANGUAGE ? asked : languageById(SOURCE_LANGUAGE);
+  if (language.id !== currentLanguage()) {
+    setCatalogue(language.id, compiled);
+    setNumberLocale(language.numbers);
+  }
+  return language.id;
+}
