@@ -1,11 +1,15 @@
 // A stability map's figure (title, canvas, a message in its place when there is none, the count of
 // cells per class), as the stability panel and the shader lab show them; drawn by drawMap.js.
+import english from 'virtual:messages/en/panelsShared';
+import { messages } from '../../i18n/messages.js';
 import { el } from '../../ui/el.js';
 import { context2d } from '../../ui/context2d.js';
 import { precise } from '../../ui/format.js';
 import { CLASS_NAMES } from '../../methods/stabilityMap.js';
 import { CLASS_COLORS } from './drawMap.js';
 import './stabilityMaps.css';
+
+const t = messages('panelsShared', english);
 
 export const CLASS_LABELS = Object.freeze({
   fine: 'fine',
@@ -52,6 +56,7 @@ export function createMapFigure(side, { focusable = true } = {}) {
     canvas,
     setTitle(text, selected) {
       title.textContent = text;
+      if (selected) title.append(' ', el('span', 'st-chosen', t('chosenMap')));
       figure.classList.toggle('st-selected', selected);
     },
     setCounts(map) {
