@@ -56,7 +56,7 @@ const OUTSIDE = ['.hw-name', '.hw-seed', '.hw-seed-cell', '.hw-sheet-head h1', '
  * derivation set out in columns.
  */
 const GEOMETRY = ['.katex', 'code', 'pre', '.sl-editor', '.stage', '.legend', '.twin-stage', '.cspec-stage', '.cspec-diagram',
-  '.nm-stage', '.nm-legend', '.ar-svg', '.predict-figure', '.hw-columns', '.lil-slider', '.r0-steps'];
+  '.nm-stage', '.nm-legend', '.ar-svg', '.predict-svg', '.hw-columns', '.lil-slider', '.r0-steps'];
 
 const LANGUAGES = [
   { lang: 'en-XA', words: true, rtl: false },
