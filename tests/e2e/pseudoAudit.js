@@ -96,14 +96,15 @@ export const wordsOutsideCatalogue = (page, { root = 'body', outside = [], live 
 
 /**
  * The init script every page of a pseudo-locale test needs (context.addInitScript): `where(el)`,
- * an element named by its panel, the part of the panel's frame it sits in (toolbar, controls,
- * trace, fault line, notice, page controls) and its tag and classes; and `said`, every text a
+ * an element named by its panel, the shared part it sits in (the toolbar, controls, trace and fault
+ * line every panel has, a notice, the page controls, a stability map's counts and legend) and its
+ * tag and classes; and `said`, every text a
  * live region ([aria-live], role status, alert or log) was given, as a screen reader says it
  * (a line replaced at once is heard too).
  */
 export function pseudoAuditScript() {
   const FRAME = ['.toolbar', '.lil-gui', '.trace', '.panel-fault', '.notice', '.page-controls', '.keys-help', '.site-header',
-    '.site-footer'];
+    '.site-footer', '.st-counts', '.st-legend'];
   const where = (el) => {
     const panel = el.closest('[data-panel]')?.getAttribute('data-panel');
     const frame = FRAME.find((selector) => el.parentElement?.closest(selector));

@@ -23,6 +23,10 @@ const NOT_YET_MOVED = [
     area: 'the frame of every panel: toolbar, controls, trace, fault line', page: /^(lecture page|embed|composed lecture)/,
     where: /(^|\] )\.(toolbar|lil-gui|trace|panel-fault) › /,
   },
+  {
+    area: 'the stability maps\' counts and legend (stability, shader lab)', page: /^(lecture page|embed|composed lecture)/,
+    where: /(^|\] )(\.st-(counts|legend) › |p\.st-max)/,
+  },
   { area: 'notices', page: /^(embed with bad link values|lecture page with .*)$/, where: /(^|\] )(\.notice › |div\.notice)/ },
   { area: 'the pages\' titles', where: /^title$/ },
   {
@@ -32,7 +36,6 @@ const NOT_YET_MOVED = [
   },
   ...['spheres', 'normal-mips', 'asphalt', 'changing-specular', 'reflect-refract', 'refraction-waves', 'angle-ratio',
     'refractive-index', 'polarization', 'exact-fresnel', 'schlick', 'r0-derivation', 'fresnel-lighting', 'metals',
-    'speed-accuracy', 'stability', 'shader-lab',
   ].map((id) => ({ area: `the ${id} panel`, page: new RegExp(`^(lecture page|embed|composed lecture) ${id}\\b`) })),
   { area: 'what the panels\' live regions say on the lecture page', page: /^lecture page, every panel seen$/ },
   { area: 'the lecture page and the embed page', page: /^(lecture page|embed with bad link values|lecture page with .*)$/ },
