@@ -33,9 +33,9 @@ export const DEFAULT_EMBED_URL = 'offline/embed.html';
 // Slides fill the 1280 × 720 stage as columns (reveal's display: 'flex'), so a panel's frame takes
 // the height its slide's text leaves; long text scrolls in its own box.
 const DECK_CSS = `
-.reveal .slides section { height: 100%; box-sizing: border-box; flex-direction: column; text-align: left; padding: 0; }
+.reveal .slides section { height: 100%; box-sizing: border-box; flex-direction: column; text-align: start; padding: 0; }
 .reveal .slides > section.stack { padding: 0; }
-.reveal h1, .reveal h2 { text-align: left; text-transform: none; }
+.reveal h1, .reveal h2 { text-align: start; text-transform: none; }
 .reveal h2 { font-size: 1.1em; margin: 0 0 0.3em; flex: none; }
 .reveal .fl-title { justify-content: center; }
 .reveal .fl-title h1 { font-size: 1.8em; }
