@@ -7,7 +7,7 @@
 import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { strFromU8, unzipSync } from 'fflate';
-import { test, expect } from './fixtures.js';
+import { test, expect, labReady } from './fixtures.js';
 import { seriousViolations } from './audit.js';
 import { deflateRawSync, inflateRawSync } from 'node:zlib';
 
@@ -135,7 +135,7 @@ test('a lecture composed in a language carries it: in its data and its link, and
   expect(await page.evaluate(() => window.fresnelLab.composer.lecture().lang)).toBe('en-XA');
 
   await page.goto(link);
-  await page.evaluate(() => window.fresnelLab.ready);
+  await labReady(page);
   expect(await page.evaluate(() => document.documentElement.lang)).toBe('en-XA');
   await expect(page.locator('.site-title p')).toHaveText(/^⟦.+⟧$/); // the composed lecture's intro
   await expect(page.locator('section[data-panel="schlick"] h2')).toHaveText(/^⟦.+⟧$/);

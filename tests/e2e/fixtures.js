@@ -21,9 +21,18 @@ export const test = base.extend({
 });
 
 /** Opens a page, waits for its panels, and logs the WebGL renderer once. */
+/**
+ * Waits for the page's script to start (a language other than English is fetched first, so
+ * window.fresnelLab may not exist yet when a navigation ends) and for everything it loads.
+ */
+export async function labReady(page) {
+  await page.waitForFunction(() => Boolean(window.fresnelLab?.ready));
+  await page.evaluate(() => window.fresnelLab.ready);
+}
+
 export async function openLab(page, path = './') {
   await page.goto(path);
-  await page.evaluate(() => window.fresnelLab.ready);
+  await labReady(page);
   if (!rendererLogged) {
     rendererLogged = true;
     const renderer = await page.evaluate(() => {

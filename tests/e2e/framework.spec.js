@@ -1,7 +1,7 @@
 // The lecture page as a whole: lecture-mode keys, the context budget while scrolling, the message
 // API of embeds, bad links, themes. (Every panel mounting, here and alone: contract.spec.js; markup
 // through each embed's message door: embeds.spec.js.)
-import { test, expect, animationFrames, openLab, nextFrames } from './fixtures.js';
+import { test, expect, animationFrames, openLab, nextFrames, labReady } from './fixtures.js';
 import { embedInDeck } from './deckFrame.js';
 import { XSS, injected } from './doorFuzz.js';
 
@@ -116,13 +116,13 @@ test('lecture-mode keys move between panels and keep the panel in the hash', asy
   await expect(page.locator(`section#${ids[1]} .panel-side`)).toBeVisible();
   // A reload returns to the panel in the hash.
   await page.reload();
-  await page.evaluate(() => window.fresnelLab.ready);
+  await labReady(page);
   await expect.poll(() => page.locator(`section#${ids[1]}`).evaluate((s) => Math.abs(s.getBoundingClientRect().top))).toBeLessThan(40);
   // Also deep in the page, where the panels above it mount and change height after the load.
   const deep = ids.at(-3); // (the last ones cannot reach the top: the page ends below them)
   await page.goto('about:blank');
   await page.goto(`./#${deep}`);
-  await page.evaluate(() => window.fresnelLab.ready);
+  await labReady(page);
   // Once every panel within a screen of the view has mounted (they mount on approach), the target
   // is still at the top, and stays there (the window in which it may not move).
   await expect.poll(() => page.evaluate(() => [...document.querySelectorAll('section[data-panel]')].every((s) => {
@@ -174,7 +174,7 @@ test('theme and projector mode are remembered across reloads', async ({ page }) 
   await page.locator('.page-controls').getByLabel('Theme').selectOption('light');
   await page.locator('.page-controls input[type="checkbox"]').check();
   await page.reload();
-  await page.evaluate(() => window.fresnelLab.ready);
+  await labReady(page);
   await expect(page.locator('html')).toHaveAttribute('data-theme', 'light');
   await expect(page.locator('html')).toHaveClass(/projector/);
   const bg = await page.evaluate(() => getComputedStyle(document.documentElement).backgroundColor);

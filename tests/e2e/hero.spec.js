@@ -1,4 +1,4 @@
-import { test, expect, openLab, expectIdle, expectOneFrame } from './fixtures.js';
+import { test, expect, openLab, expectIdle, expectOneFrame, labReady } from './fixtures.js';
 
 // Pixel probes on the three spheres. The camera looks at each sphere's centre, so the centre of
 // each third of the canvas is θ = 0; the rim probe walks outward until the view angle passes 84°.
@@ -115,7 +115,7 @@ test('without WebGL2 the page says so and the plot still works', async ({ page }
     };
   });
   await page.goto('./');
-  await page.evaluate(() => window.fresnelLab.ready);
+  await labReady(page);
   const hero = page.locator('section[data-panel="spheres"]');
   await expect(hero.locator('.stage-message')).toContainText('WebGL2');
   await expect(hero.locator('.stage-canvas')).toBeHidden(); // the message replaces the picture
@@ -123,7 +123,7 @@ test('without WebGL2 the page says so and the plot still works', async ({ page }
   await expect(hero.locator('.summary')).toContainText('0.04000');
   // The two-sphere stage falls back the same way: no blank canvas, no labels over nothing.
   await page.goto('./embed.html?panel=fresnel-lighting');
-  await page.evaluate(() => window.fresnelLab.ready);
+  await labReady(page);
   await expect(page.locator('.stage-message')).toContainText('The spheres need WebGL2');
   await expect(page.locator('.twin-stage-canvas')).toBeHidden();
   await expect(page.locator('.twin-stage-labels')).toBeHidden();

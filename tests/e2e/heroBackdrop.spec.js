@@ -1,4 +1,4 @@
-import { test, expect, openLab } from './fixtures.js';
+import { test, expect, expectOneFrame, openLab, settledFrames } from './fixtures.js';
 import { compare } from './cachedTerms.js';
 
 // The hero keeps its sky between frames (createBackdrop.js) and redraws only the squares round the
@@ -45,13 +45,13 @@ test('the kept sky and the squares make the one-pass picture, in every layout', 
 
 test('a change of n redraws the squares over the kept sky; a change of view draws the sky again', async ({ page }) => {
   await openLab(page, 'embed.html?panel=spheres');
-  const counts = () => page.evaluate(() => ({
-    frames: window.fresnelLab.hosts.spheres.frames, sky: window.fresnelLab.panels.spheres.trio.shaderView.backdropDrawn,
-  }));
-  for (const [params, skies] of [[{ nT: 1.7 }, 0], [{ viewAz: 40 }, 1], [{ kd: '#2040a0' }, 0], [{ lightEl: 20 }, 1]]) {
-    const before = await counts();
+  const skies = () => page.evaluate(() => window.fresnelLab.panels.spheres.trio.shaderView.backdropDrawn);
+  for (const [params, drawn] of [[{ nT: 1.7 }, 0], [{ viewAz: 40 }, 1], [{ kd: '#2040a0' }, 0], [{ lightEl: 20 }, 1]]) {
+    // Whatever the page was still doing (a late layout's resize draws the sky again) ends first.
+    const frames = await settledFrames(page, 'spheres');
+    const sky = await skies();
     await page.evaluate((p) => window.fresnelLab.hosts.spheres.set(p), params);
-    await expect.poll(async () => (await counts()).frames).toBeGreaterThan(before.frames);
-    expect((await counts()).sky, JSON.stringify(params)).toBe(before.sky + skies);
+    await expectOneFrame(page, 'spheres', frames);
+    expect(await skies(), JSON.stringify(params)).toBe(sky + drawn);
   }
 });

@@ -2,7 +2,7 @@
 // controls (named from the catalogue; a choice reloads the page in it and is kept in this browser),
 // an embed's lang= option, and a deck's fresnel-lab:language message, which starts the panel again
 // in that language as it was. The pseudo-locale en-XA shows every catalogue message ⟦bracketed⟧.
-import { test, expect } from './fixtures.js';
+import { test, expect, labReady } from './fixtures.js';
 import { english, englishPanelTitle } from './englishText.js';
 
 const BRACKETED = /^⟦[^⟦⟧]+⟧$/;
@@ -16,7 +16,7 @@ const KEPT = 'fresnel-lab:language';
 async function openLab(page, path) {
   await page.goto(path);
   await page.waitForFunction(() => window.fresnelLab?.ready);
-  await page.evaluate(() => window.fresnelLab.ready);
+  await labReady(page);
 }
 
 /** The page's language selector and the name its label gives it. */
@@ -77,7 +77,7 @@ test('a deck\'s language message starts the embed again in that language, as it 
   });
   await page.waitForURL(/[?&]lang=en-XA(&|$)/);
   await page.waitForFunction(() => window.fresnelLab?.ready);
-  await page.evaluate(() => window.fresnelLab.ready);
+  await labReady(page);
   expect(await page.evaluate(() => document.documentElement.lang)).toBe('en-XA');
   await expect(page.locator('h1.embed-title')).toHaveText(BRACKETED);
   await expect(page.locator('.toolbar button').first()).toHaveText(BRACKETED);

@@ -13,7 +13,7 @@ import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { createServer } from 'vite';
-import { test, expect } from './fixtures.js';
+import { test, expect, labReady } from './fixtures.js';
 import { XSS } from './doorFuzz.js';
 
 const root = resolve(import.meta.dirname, '../..');
@@ -72,7 +72,7 @@ const fileUrl = (path) => pathToFileURL(join(dir, path)).href;
 test('the offline lecture opened from disk shows the composed lecture, its markup as text', async ({ page }) => {
   test.setTimeout(60_000);
   await page.goto(fileUrl('unzipped/glass-twice/index.html')); // the composer's .zip, unpacked
-  await page.evaluate(() => window.fresnelLab.ready);
+  await labReady(page);
   expect(await page.evaluate(() => window.fresnelLab.lecture.source)).toBe('data');
   await expect(page.locator('.site-title h1')).toHaveText(lecture.title);
   expect(await page.title()).toBe(`${lecture.title}: Fresnel Lab`);
@@ -105,7 +105,7 @@ test.describe('the lecture file alone, apart from its folder', () => {
   test('says in the lab\'s words that a question\'s panel cannot load, and shows no error page', async ({ page }) => {
     test.setTimeout(60_000);
     await page.goto(fileUrl('alone/lecture.html'));
-    await page.evaluate(() => window.fresnelLab.ready);
+    await labReady(page);
     const question = page.locator('section[data-item="question--6"]');
     await question.getByRole('button', { name: 'Reveal the answer' }).click();
     await expect(question.locator('.notice')).toContainText('The panel could not be shown here.', { timeout: 30_000 });

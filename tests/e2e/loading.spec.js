@@ -1,6 +1,6 @@
 // Download only what is used, draw only on screen: which modules a page fetches, and what it
 // announces. three.js is recognised by its WebGLRenderer in a script's text.
-import { test, expect, openDeck, openLab } from './fixtures.js';
+import { test, expect, openDeck, openLab, labReady } from './fixtures.js';
 import { mountedHeight, reservedHeight } from './layout.js';
 import { pathToFileURL } from 'node:url';
 import { resolve } from 'node:path';
@@ -154,7 +154,7 @@ test.describe('the built pages\' Content-Security-Policy meta', () => {
     test.setTimeout(180_000);
     await recordViolations(page);
     await page.goto(pathToFileURL(resolve(import.meta.dirname, '../../dist/offline/index.html')).href);
-    await page.evaluate(() => window.fresnelLab.ready);
+    await labReady(page);
     const policy = await policyMeta(page);
     expect(policy).toMatch(/script-src 'sha256-[\w+/=]+'; style-src 'sha256-[\w+/=]+'; img-src 'self' data:; font-src data:; worker-src blob:/);
     await everyPanelDrawn(page);

@@ -1,5 +1,5 @@
-// Adding a panel takes its folder and its manifest entry, nothing else (docs/panels.md). The
-// smallest panel of docs/panels.md is added that way to a copy of the project: without its
+// Adding a panel takes its folder, its manifest entry and its words, nothing else (docs/panels.md).
+// The smallest panel of docs/panels.md is added that way to a copy of the project: without its
 // schema.js or without a place in its entry the build stops and names which; with both the copy
 // type-checks and builds as `npm run build` does, the unit tests that read the manifest pass
 // there, the lecture page keeps the panel's place from its entry in each layout, and its embed
@@ -33,9 +33,10 @@ test.afterAll(async () => {
 /** The copy's manifest entry of the new panel, as its build read it. */
 const entryOf = async () => (await import(pathToFileURL(join(dir, 'src/panels/manifest.js')).href)).panelEntry(panel.id);
 
-test('docs/panels.md gives the smallest panel whole: schema.js, index.js and an entry with its place', () => {
+test('docs/panels.md gives the smallest panel whole: schema.js, index.js, an entry with its place, its words', () => {
   expect(Object.keys(panel.files).sort()).toEqual([`src/panels/${panel.id}/index.js`, `src/panels/${panel.id}/schema.js`]);
   expect(panel.entry).toMatch(/\bplace: \{/);
+  expect(Object.keys(panel.words?.panels ?? {}).sort()).toEqual(['title', 'lede', 'cite'].map((f) => `${panel.id}.${f}`).sort());
 });
 
 test('without its schema.js, or with no place in its entry, the build stops and says which', async () => {
@@ -97,6 +98,6 @@ test.describe('with its folder and its entry alone, built as npm run build does'
 
   test('its embed keeps the panel contract', async ({ page }) => {
     await openLab(page, `${url()}embed.html?panel=${panel.id}`);
-    await expectPanelContract(page, await entryOf());
+    await expectPanelContract(page, await entryOf(), JSON.parse(readFileSync(join(dir, 'locales/en.json'), 'utf8')));
   });
 });

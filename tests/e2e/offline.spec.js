@@ -6,7 +6,7 @@ import { resolve } from 'node:path';
 import { readFileSync } from 'node:fs';
 import { gzipSync } from 'node:zlib';
 import { test as plain } from '@playwright/test';
-import { test, expect } from './fixtures.js';
+import { test, expect, labReady } from './fixtures.js';
 import { PANEL_IDS } from '../../src/panels/manifest.js';
 
 const offline = (file) => pathToFileURL(resolve(import.meta.dirname, '../../dist/offline', file)).href;
@@ -32,7 +32,7 @@ test('the single-file lecture page opened from disk mounts and draws every panel
   test.setTimeout(120_000);
   const urls = requests(page);
   await page.goto(offline('index.html'));
-  await page.evaluate(() => window.fresnelLab.ready);
+  await labReady(page);
   for (const id of PANEL_IDS) {
     await page.locator(`section[data-panel="${id}"]`).evaluate((s) => s.scrollIntoView({ block: 'center' }));
     await expect.poll(() => page.evaluate((pid) => window.fresnelLab.hosts[pid].frames, id), { message: id, timeout: 30_000 })
@@ -51,7 +51,7 @@ test('the single-file embed opened from disk shows a panel, with its URL paramet
   const urls = requests(page);
   for (const [id, query] of [['schlick', '&nT=1.33'], ['spheres', '&nT=2'], ['normal-mips', '']]) {
     await page.goto(`${offline('embed.html')}?panel=${id}${query}`);
-    await page.evaluate(() => window.fresnelLab.ready);
+    await labReady(page);
     await expect.poll(() => page.evaluate((pid) => window.fresnelLab.hosts[pid].frames, id), { message: id }).toBeGreaterThan(0);
     if (query) expect(await page.evaluate((pid) => window.fresnelLab.hosts[pid].values.nT, id)).toBe(Number(query.split('=')[1]));
   }
@@ -60,7 +60,7 @@ test('the single-file embed opened from disk shows a panel, with its URL paramet
 
 test('the single-file embed works in a sandboxed iframe on a plain static server and answers messages', async ({ page }) => {
   await page.goto('./embed.html?panel=angle-ratio'); // a page of the server, to be the embedding page
-  await page.evaluate(() => window.fresnelLab.ready);
+  await labReady(page);
   const answers = await page.evaluate(async () => {
     document.body.innerHTML = '';
     const frame = document.createElement('iframe');
@@ -121,6 +121,6 @@ plain('the ordinary build opened from disk says which page to open instead', asy
   await expect(page.locator('.needs-server')).toContainText('offline/homework.html');
   // Served, and in the single-file pages, the line never shows.
   await page.goto(offline('index.html'));
-  await page.evaluate(() => window.fresnelLab.ready);
+  await labReady(page);
   await expect(page.locator('.needs-server')).toBeHidden();
 });

@@ -2,7 +2,7 @@
 // a compile error is marked at the student's line, a loop is refused before the GPU sees it, the
 // code round-trips through the link, typing in the editor grades, and homework mode hides the
 // reference answers.
-import { test, expect, openLab } from './fixtures.js';
+import { test, expect, openLab, labReady } from './fixtures.js';
 import { EXERCISE_IDS } from '../../src/panels/shader-lab/exercises.js';
 import { deflateSync } from 'fflate';
 import { encodeCode, useDeflate } from '../../src/panels/shader-lab/codeCodec.js';
@@ -72,7 +72,7 @@ test('the code round-trips through the link, compact, and typing in the editor g
   await expect.poll(() => new URL(page.url()).searchParams.get('shader-lab.code')).toBe(encodeCode(`${code}\n// a note`));
   expect(encodeCode(code).length).toBeLessThan(encodeURIComponent(code).length);
   await page.goto(page.url());
-  await page.evaluate(() => window.fresnelLab.ready);
+  await labReady(page);
   await page.locator('section[data-panel="shader-lab"]').scrollIntoViewIfNeeded();
   await expect.poll(() => lab(page, () => window.fresnelLab.panels['shader-lab']?.editor.text())).toBe(`${code}\n// a note`);
 });

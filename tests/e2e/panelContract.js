@@ -4,7 +4,7 @@
 // disposed and comes back with its values when remounted.
 import { expect, expectIdle, settledFrames } from './fixtures.js';
 import { stepDecimals } from '../../src/host/params.js';
-import { english, englishPanelTitle } from './englishText.js';
+import { english } from './englishText.js';
 
 /** The first parameter, a value for it other than the default, and how the link writes it. */
 export function probeValue(spec) {
@@ -25,10 +25,13 @@ export function probeValue(spec) {
 /** The panel's schema as the page has it (specs are plain data). */
 export const schemaOf = (page, id) => page.evaluate((i) => JSON.parse(JSON.stringify(window.fresnelLab.hosts[i].panel.schema)), id);
 
-/** The contract, on the embed of manifest `entry` already open in `page`. */
-export async function expectPanelContract(page, entry) {
+/**
+ * The contract, on the embed of manifest `entry` already open in `page`; `words`: the English
+ * catalogue that page was built from (a copy of the project has its own).
+ */
+export async function expectPanelContract(page, entry, words = english) {
   const { id } = entry;
-  const title = englishPanelTitle(id);
+  const title = words.panels[`${id}.title`];
   await expect(page.locator('.embed-title')).toHaveText(title.replace(/_([a-z])/g, '$1')); // n_t as n with subscript t
   await expect(page).toHaveTitle(`Fresnel Lab: ${title}`);
   const host = (fn, arg) => page.evaluate(fn, [id, arg]);
@@ -100,11 +103,11 @@ export async function expectPanelContract(page, entry) {
   expect(await host(([i]) => ({ ...window.fresnelLab.hosts[i].values }))).toEqual(valuesBefore);
   if (entry.webgl) expect(await host(() => window.fresnelLab.contexts.live)).toBeGreaterThan(0);
   await expect(description).toHaveText(/\d/);
-  const control = page.locator('.lil-controller', { hasText: english.controls[`${id}.${key}`] }).first();
+  const control = page.locator('.lil-controller', { hasText: words.controls[`${id}.${key}`] }).first();
   if (schema[key].type === 'number') {
     expect(Number(await control.locator('input').first().inputValue())).toBeCloseTo(value, 6);
   } else if (schema[key].type === 'enum') {
-    const label = english.controls[`${id}.${key}.${value}`] ?? String(value);
+    const label = words.controls[`${id}.${key}.${value}`] ?? String(value);
     await expect(control.locator('.lil-display')).toHaveText(label);
   }
 }

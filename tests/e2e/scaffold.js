@@ -8,11 +8,12 @@ import { dirname, join, resolve } from 'node:path';
 const root = resolve(import.meta.dirname, '../..');
 /** What `npm run build` and the unit tests read (the benchmark's peer page is built only for it). */
 const PROJECT = ['index.html', 'embed.html', 'homework.html', 'compose.html', 'vite.config.js', 'package.json', 'jsconfig.json',
-  'README.md', 'docs', 'src', 'shaders', 'public', 'examples', 'scripts', 'tests/unit'];
+  'README.md', 'docs', 'locales', 'src', 'shaders', 'public', 'examples', 'scripts', 'tests/unit'];
 
 /**
  * The smallest panel of docs/panels.md, as written there: its files by path (the blocks whose
- * first lines name src/panels/<id>/schema.js or index.js) and its manifest entry.
+ * first lines name src/panels/<id>/schema.js or index.js), its manifest entry and its words (the
+ * JSON block for locales/en.json).
  */
 export function docsPanel() {
   const blocks = [...readFileSync(join(root, 'docs/panels.md'), 'utf8').matchAll(/```js\n([\s\S]*?)```/g)].map((m) => m[1]);
@@ -22,7 +23,8 @@ export function docsPanel() {
     if (path) files[path] = block;
   }
   const entry = blocks.find((block) => block.startsWith('// src/panels/manifest.js'));
-  return { id: entry?.match(/\bid: '([a-z0-9-]+)'/)?.[1], files, entry };
+  const json = [...readFileSync(join(root, 'docs/panels.md'), 'utf8').matchAll(/```json\n\/\/ locales\/en\.json[^\n]*\n([\s\S]*?)```/g)][0]?.[1];
+  return { id: entry?.match(/\bid: '([a-z0-9-]+)'/)?.[1], files, entry, words: json ? JSON.parse(json) : null };
 }
 
 /** A copy of the project with `panel` added: its files, and its entry last in the manifest. */
@@ -34,6 +36,11 @@ export function scaffold(panel) {
     mkdirSync(dirname(join(dir, path)), { recursive: true });
     writeFileSync(join(dir, path), text);
   }
+  editFile(dir, 'locales/en.json', (text) => {
+    const catalogue = JSON.parse(text);
+    for (const [namespace, words] of Object.entries(panel.words ?? {})) catalogue[namespace] = { ...catalogue[namespace], ...words };
+    return `${JSON.stringify(catalogue, null, 2)}\n`;
+  });
   editFile(dir, 'src/panels/manifest.js', (text) => {
     const end = text.indexOf('\n]);', text.indexOf('export const PANELS'));
     return `${text.slice(0, end)}\n${panel.entry.trimEnd()}${text.slice(end)}`;

@@ -4,6 +4,7 @@
 // the folders and names of its controls, its description), visible text and what a screen reader
 // reads alike; formulas (KaTeX, and their TeX while KaTeX loads: aria-busy) and canvases are left
 // out, as are the lecture note's label and the controls' title, which the frame around the panel writes.
+import { labReady } from './fixtures.js';
 
 /** The words (two letters or more) outside ⟦…⟧ in an embed's panel, each with where it was found. */
 export function panelWordsOutside(page) {
@@ -43,13 +44,8 @@ export function panelWordsOutside(page) {
   });
 }
 
-/**
- * Opens `path` in the pseudo-locale and waits for its panels. The page sets window.fresnelLab only
- * once the language's catalogue has arrived (a chunk of its own), which may be after the load event
- * that page.goto waits for: hence the wait for it first.
- */
+/** Opens `path` in the pseudo-locale and waits for its panels (labReady: after its catalogue). */
 export async function openInPseudoLocale(page, path) {
   await page.goto(`${path}${path.includes('?') ? '&' : '?'}lang=en-XA`);
-  await page.waitForFunction(() => window.fresnelLab?.ready);
-  await page.evaluate(() => window.fresnelLab.ready);
+  await labReady(page);
 }
