@@ -124,11 +124,11 @@ export default defineConfig({
   // The message catalogues (locales/*.json) first: the pages' own words are written from them, and
   // the manifest's sections after them.
   plugins: singleFile
-    ? [messagesPlugin({ dir: resolve(root, 'locales') }), panelManifest(), offlineAssets(), viteSingleFile(), policyMeta()]
+    ? [messagesPlugin({ dir: resolve(root, 'locales'), pseudo: false }), panelManifest(), offlineAssets(), viteSingleFile(), policyMeta()]
     : [messagesPlugin({ dir: resolve(root, 'locales') }), panelManifest(), policyMeta()],
   // Workers are bundled apart, with these plugins only: the modules they share with the page (the
   // methods and their scenes, the class view's grading) import their words from the catalogue too.
-  worker: { plugins: () => [messagesPlugin({ dir: resolve(root, 'locales') })] },
+  worker: { plugins: () => [messagesPlugin({ dir: resolve(root, 'locales'), pseudo: !singleFile })] },
   build: {
     ...(singleFile ? { outDir: 'dist/offline', emptyOutDir: false } : {}),
     target: 'es2022',

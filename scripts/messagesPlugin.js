@@ -26,14 +26,17 @@ const PREFIX = 'virtual:messages';
 const RESOLVED = `\0${PREFIX}`;
 export const PSEUDO_LOCALES = Object.freeze({ 'en-XA': { dir: 'ltr' }, 'ar-XB': { dir: 'rtl' } });
 
-/** The catalogues in `dir`: { lang: { namespace: { key: message } } }, English first. */
-export function readCatalogues(dir) {
+/**
+ * The catalogues in `dir`: { lang: { namespace: { key: message } } }, English first, with the
+ * pseudo-locales unless `pseudo` is false (the single-file pages, which carry every language inline).
+ */
+export function readCatalogues(dir, pseudo = true) {
   const catalogues = {};
   for (const file of readdirSync(dir).filter((f) => f.endsWith('.json')).sort()) {
     catalogues[file.slice(0, -'.json'.length)] = JSON.parse(readFileSync(resolve(dir, file), 'utf8'));
   }
   if (!catalogues.en) throw new Error(`${dir}/en.json, the source catalogue, is missing.`);
-  for (const [lang, make] of Object.entries(PSEUDO_LOCALES)) catalogues[lang] = pseudoCatalogue(catalogues.en, make);
+  if (pseudo) for (const [lang, make] of Object.entries(PSEUDO_LOCALES)) catalogues[lang] = pseudoCatalogue(catalogues.en, make);
   return catalogues;
 }
 
@@ -63,9 +66,9 @@ export function fillPageText(html, english, file = 'page') {
 /** The plural rules a language's messages are compiled with (a pseudo-locale uses English's). */
 const pluralLocale = (lang) => (Object.hasOwn(PSEUDO_LOCALES, lang) ? 'en' : lang.split('-')[0]);
 
-export function messagesPlugin({ dir }) {
+export function messagesPlugin({ dir, pseudo = true }) {
   let catalogues = null;
-  const load = () => (catalogues ??= readCatalogues(dir));
+  const load = () => (catalogues ??= readCatalogues(dir, pseudo));
   return {
     name: 'fresnel-lab-messages',
     enforce: 'pre',

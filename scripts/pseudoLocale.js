@@ -45,10 +45,13 @@ function write(tokens, inPlural = false) {
 const textLength = (tokens) => tokens.reduce((n, t) => n + (t.type === 'content' ? t.value.replace(/<[^>]*>/g, '').length
   : t.cases ? Math.max(0, ...t.cases.map((c) => textLength(c.tokens))) : 0), 0);
 
-/** One message, pseudo-localised. */
+/**
+ * One message, pseudo-localised. The growth is words of at most eight dots: a long message grows
+ * as a translation does, by more words, never by one word no line can hold.
+ */
 export function pseudoMessage(message) {
   const tokens = parse(message);
-  const pad = '·'.repeat(Math.ceil(GROWTH * textLength(tokens)));
+  const pad = Array.from({ length: Math.ceil(GROWTH * textLength(tokens)) }, (_, i) => (i % 9 === 8 ? ' ' : '·')).join('').trimEnd();
   return `${OPEN}${write(tokens)}${pad ? ` ${pad}` : ''}${CLOSE}`;
 }
 

@@ -133,6 +133,7 @@ export function buildLectureList({ actions, editor }) {
       if (list.children[i] !== entry.card) list.insertBefore(entry.card, list.children[i] ?? null);
       entry.number.textContent = t('itemNumber', { n: fixed(i + 1, 0) });
       entry.name.textContent = itemName(item);
+      entry.name.classList.toggle('cp-name-own', item.type === 'text'); // the lecturer's own words
       entry.up.setAttribute('aria-disabled', String(i === 0));
       entry.down.setAttribute('aria-disabled', String(i === keys.length - 1));
     });

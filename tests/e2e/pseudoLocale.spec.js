@@ -6,51 +6,18 @@
 // lists every finding as “page — element: text”. Pages are shared: the embeds open in one page in
 // turn, the lecture page mounts its panels section by section.
 import { deflateSync } from 'fflate';
-import { test, expect } from './fixtures.js';
+import { test, expect, labReady } from './fixtures.js';
 import { PANELS } from '../../src/panels/manifest.js';
 import { mirroredGeometry, pseudoAuditScript, textLayoutFaults, wordsOutsideCatalogue } from './pseudoAudit.js';
 
-/**
- * For now: areas whose words are still being moved into the catalogue (issue 35), each with where
- * its words show: on pages whose label matches `page`, at elements whose name matches `where` (each
- * when given). A finding of (a) there is allowed while its area is listed, and belongs to the first
- * area that allows it; an area that no longer shows any fails the test, so the list only shrinks.
- * Empty when every word is in the catalogue. Layout findings (b) are never allowed.
- * @type {{ area: string, page?: RegExp, where?: RegExp }[]}
- */
-const NOT_YET_MOVED = [
-  {
-    area: 'the frame of every panel: toolbar, controls, trace, fault line', page: /^(lecture page|embed|composed lecture)/,
-    where: /(^|\] )\.(toolbar|lil-gui|trace|panel-fault) › /,
-  },
-  {
-    area: 'the stability maps\' counts and legend (stability, shader lab)', page: /^(lecture page|embed|composed lecture)/,
-    where: /(^|\] )(\.st-(counts|legend) › |p\.st-max)/,
-  },
-  { area: 'notices', page: /^(embed with bad link values|lecture page with .*)$/, where: /(^|\] )(\.notice › |div\.notice)/ },
-  { area: 'the pages\' titles', where: /^title$/ },
-  {
-    area: 'the pages\' header, footer, page controls and keys help',
-    page: /^(lecture page(, every panel seen)?|homework page.*|sheet.*|class view|composer|composed lecture)$/,
-    where: /^\.(page-controls|keys-help|site-header|site-footer) › |^div\.page-controls/,
-  },
-  ...['spheres', 'normal-mips', 'asphalt', 'changing-specular', 'reflect-refract', 'refraction-waves', 'angle-ratio',
-    'refractive-index', 'polarization', 'exact-fresnel', 'schlick', 'r0-derivation', 'fresnel-lighting', 'metals',
-  ].map((id) => ({ area: `the ${id} panel`, page: new RegExp(`^(lecture page|embed|composed lecture) ${id}\\b`) })),
-  { area: 'what the panels\' live regions say on the lecture page', page: /^lecture page, every panel seen$/ },
-  { area: 'the lecture page and the embed page', page: /^(lecture page|embed with bad link values|lecture page with .*)$/ },
-  { area: 'the homework page and a sheet', page: /^(homework page|sheet)/ },
-  { area: 'the class view', page: /^class view/ },
-  { area: 'the composer', page: /^composer$/ },
-  { area: 'a composed lecture', page: /^composed lecture/ },
-];
-const allows = (entry, finding) => (!entry.page || entry.page.test(finding.page)) && (!entry.where || entry.where.test(finding.where));
 
 /**
  * Words from outside the lab, which no catalogue holds: a student's name and seed (from a hand-in),
- * a sheet's and a lecture's title and the lecturer's own headings and text (from their links).
+ * a sheet's and a lecture's title and the lecturer's own headings and text (from their links); and
+ * a hand-in's time, which Intl writes in the page's language.
  */
-const OUTSIDE = ['.hw-name', '.hw-seed', '.hw-seed-cell', '.hw-sheet-head h1', '.site-title h1', '.lecture-own', '.cp-preview'];
+const OUTSIDE = ['.hw-name', '.hw-report-who', '.hw-seed', '.hw-seed-cell', '.hw-time', '.hw-sheet-head h1', '.site-title h1',
+  '.lecture-own', '.cp-name-own', '.cp-preview'];
 
 /**
  * What keeps left to right in a right-to-left language: formulas and code, the pictures with labels
@@ -90,21 +57,19 @@ const LECTURE = {
 /** Waits for a lab page's panels (a page in another language sets window.fresnelLab once its catalogue is in). */
 async function ready(page) {
   await page.waitForFunction(() => window.fresnelLab?.ready);
-  await page.evaluate(() => window.fresnelLab.ready);
+  await labReady(page);
 }
 const twoFrames = (page) => page.evaluate(() => new Promise((resolve) => { requestAnimationFrame(() => requestAnimationFrame(resolve)); }));
 
-/** The findings of one test: check() reads the page as it stands, done() fails on what is not allowed. */
+/** The findings of one test: check() reads the page as it stands, done() fails on any. */
 function audit(page, { lang, words, rtl }) {
   const findings = [];
-  const pages = [];
   return {
     /** Reads `root` (a selector); said: also what live regions said and the page's title (once a page is done). */
     async check(label, { root = 'body', outside = OUTSIDE, said = root === 'body' } = {}) {
       // Formulas show their TeX source until KaTeX is here (ui/tex.js): read them typeset.
       await page.waitForFunction((r) => ![...document.querySelectorAll(r)]
         .some((e) => e.matches('[aria-busy="true"]') || e.querySelector('[aria-busy="true"]')), root);
-      pages.push(label);
       if (words) {
         for (const f of await wordsOutsideCatalogue(page, { root, outside, live: said })) findings.push({ page: label, ...f, kind: 'words' });
       }
@@ -115,15 +80,7 @@ function audit(page, { lang, words, rtl }) {
       const seen = new Set();
       const unique = findings.map((f) => ({ ...f, line: `${f.page} — ${f.where}: ${f.text}` }))
         .filter((f) => !seen.has(f.line) && seen.add(f.line));
-      // The panels' frame is listed before the panels: a toolbar's words are not a panel's.
-      const owners = new Map(unique.filter((f) => f.kind === 'words').map((f) => [f, NOT_YET_MOVED.find((entry) => allows(entry, f))]));
-      const open = unique.filter((f) => f.kind === 'layout' || !owners.get(f));
-      const moved = !words ? [] : NOT_YET_MOVED
-        .filter((entry) => (!entry.page || pages.some((label) => entry.page.test(label))) && ![...owners.values()].includes(entry))
-        .map((entry) => `NOT_YET_MOVED lists ${entry.area}, which shows no word outside the catalogue here: take it off the list`);
-      const waiting = unique.length - open.length;
-      if (waiting) console.log(`?lang=${lang}: ${waiting} findings allowed while NOT_YET_MOVED lists their areas`);
-      expect([...open.map((f) => f.line), ...moved], `?lang=${lang}: words outside the catalogue, or text that does not fit`).toEqual([]);
+      expect(unique.map((f) => f.line), `?lang=${lang}: words outside the catalogue, or text that does not fit`).toEqual([]);
     },
   };
 }

@@ -57,7 +57,7 @@ describe('panel words in English', () => {
     for (const entry of [...data.dielectrics, ...data.metals]) expect(materialName(entry.id), entry.id).toBe(entry.name);
     // Inside a sentence a metal is written in lower case ("for silver it is close").
     expect(materialNameInText('silver')).toBe('silver');
-    expect(materialNameInText('water')).toBe('Water (20 C)');
+    expect(materialNameInText('water')).toBe('Water (20 °C)');
   });
 
   it('the table shows each dielectric\'s source as the data gives it', () => {

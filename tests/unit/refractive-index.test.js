@@ -64,6 +64,6 @@ describe('phase and group speed', async () => {
     expect(byId('air').groupSpeedKmS).toBeNull();
     expect(byId('skin').groupSpeedKmS).toBeNull();
     expect(customRow(1.7).groupSpeedKmS).toBeNull();
-    expect(byId('air').source).toContain('0 C');
+    expect(byId('air').source).toContain('0 °C');
   });
 });

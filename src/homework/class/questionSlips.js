@@ -3,7 +3,7 @@
 // R(θ), Schlick for exact, the complement of an angle, the wrong colour channel). Each is computed by
 // the optics core from the student's own parameters, as the expected value is, so a class view can
 // count how many made each slip although every student had other numbers. A factor that any question
-// can show (×2, degrees for radians) is labelled on the histogram instead (summarizeQuestions.js).
+// can show (×2, degrees converted twice) is labelled on the histogram instead (summarizeQuestions.js).
 import { DEG, cosDeg, toDegrees as deg } from '../../optics/angles.js';
 import {
   brewsterAngle, criticalAngle, fresnelConductor, fresnelExact, fresnelPolarized, fresnelSchlick, normalIncidence,

@@ -3,7 +3,7 @@
 // labels): the share right; for a choice, how often each option was chosen and, for each wrong one,
 // the misconception it stands for (the option's explanation); for a number, a histogram of answer ÷
 // computed value on a log scale, where a slip by a factor shows as a peak at the same place for
-// every student whatever their numbers (×2, ×½, degrees for radians, a percentage for a fraction),
+// every student whatever their numbers (×2, ×½, degrees converted twice, a percentage for a fraction),
 // plus counts of the question's named slips (questionSlips.js); for a prediction, a histogram of the
 // predicted minus the true angle. Only hand-ins that count are used.
 //
@@ -26,7 +26,7 @@ const RATIO_DECADES = 3; // ×0.001 to ×1000
 const OFFSET_STEP = 5; // degrees
 const t = messages('class', english);
 // What a slip by each factor means depends on the answer's unit: ×100 is a percentage typed for a
-// fraction, not for an angle; ×57.3 is degrees for radians only where the answer is an angle.
+// fraction, not for an angle; ×57.3 is degrees converted twice only where the answer is an angle.
 // Each factor's label is the catalogue's factor.<name> (the short form a histogram's tick shows),
 // and factor.<name>.<unit> (or .any) where it means a slip for answers in that unit.
 const FACTORS = [

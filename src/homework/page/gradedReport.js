@@ -39,7 +39,7 @@ export function problemBox(title, problems) {
  */
 export function gradedReport(label, graded, { against }) {
   const box = el('section', 'hw-report');
-  box.append(el('h3', null, label));
+  box.append(el('h3', 'hw-report-who', label)); // a student's name or a file's: words from outside
   if (!graded.ok) {
     box.append(problemBox(t('report.cannotCheck'), graded.problems));
     return box;

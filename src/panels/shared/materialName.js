@@ -13,7 +13,7 @@ const has = (key) => Object.hasOwn(english, key);
 /** True when the catalogue names this material (a preset of a panel's own is not one). */
 export const hasMaterialName = (id) => has(keyOf(id));
 
-/** A material's name as a table row, an option or a swatch shows it: "Water (20 C)", "Gold". */
+/** A material's name as a table row, an option or a swatch shows it: "Water (20 °C)", "Gold". */
 export const materialName = (id) => t(keyOf(id));
 
 /** Its name inside a sentence ("for gold it is close"), where a language writes it otherwise; else its name. */

@@ -38,10 +38,16 @@ function markCell(mark) {
   return cell;
 }
 
-// One formatter for every row: toLocaleString with options builds a formatter per call, the
-// largest cost of making a row.
-const DATES = new Intl.DateTimeFormat(pageLocale(), { dateStyle: 'short', timeStyle: 'short' });
-const when = (time) => (time ? DATES.format(new Date(time)) : '—');
+// One formatter for every row (toLocaleString with options builds a formatter per call, the
+// largest cost of making a row), made in the page's language when the first row is.
+let dates = { locale: '', format: (/** @type {Date} */ _date) => '' };
+const when = (time) => {
+  if (!time) return '—';
+  if (dates.locale !== pageLocale()) {
+    dates = { locale: pageLocale(), format: new Intl.DateTimeFormat(pageLocale(), { dateStyle: 'short', timeStyle: 'short' }).format };
+  }
+  return dates.format(new Date(time));
+};
 export const shownName = (row) => row.name || row.lmsName || t('table.noName');
 
 /**
@@ -99,7 +105,7 @@ export function createGradebookTable(gradebook, { onDetails }) {
     tr.append(name, part('cell', 'hw-seed-cell', row.seed), part('cell', 'hw-num hw-points', `${row.score} / ${row.total}`),
       part('cell', 'hw-num', String(Math.round(row.percent))));
     for (const mark of row.marks) tr.append(markCell(mark));
-    tr.append(part('cell', 'hw-num', row.triesTotal === null ? '—' : String(row.triesTotal)), part('cell', null, when(row.time)));
+    tr.append(part('cell', 'hw-num', row.triesTotal === null ? '—' : String(row.triesTotal)), part('cell', 'hw-time', when(row.time)));
     const flags = part('cell', 'hw-flags');
     for (const flag of row.flags) {
       const badge = el('span', `hw-flag hw-flag-${flag.kind}`, flagName(flag.kind));
