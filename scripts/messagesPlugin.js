@@ -4,6 +4,9 @@
 //   virtual:messages/en/<namespace>  one namespace of the English catalogue; imported statically by
 //                                    the modules that show its words, so English travels in the
 //                                    chunks that use it and the first load carries only its own
+//   virtual:messages/en/<ns>:<f>+<f> the keys of that namespace whose last part (after the last dot)
+//                                    is one of those fields: panels:title+titleHtml, the panels'
+//                                    headings, which every page needs, apart from their ledes
 //   virtual:messages/<lang>          a whole other catalogue, loaded when that language is chosen
 //   virtual:messages/languages       { <lang>: () => import(…) } for every other language
 //   virtual:messages/every/<ns>+<ns> { <lang>: { <ns>: … } }: those namespaces of every other language
@@ -92,10 +95,13 @@ export function messagesPlugin({ dir, pseudo = true }) {
         const entries = others.map((lang, i) => `  ${JSON.stringify(lang)}: { ${namespaces.map((ns, j) => `${JSON.stringify(ns)}: ${name(i, j)}`).join(', ')} },`);
         return `${imports.join('\n')}\nexport default {\n${entries.join('\n')}\n};\n`;
       }
-      const [lang, namespace] = parts;
+      const [lang, spec] = parts;
+      const [namespace, fields] = spec === undefined ? [] : spec.split(':');
       if (!Object.hasOwn(all, lang)) throw new Error(`No catalogue locales/${lang}.json for ${id}`);
-      const messages = namespace === undefined ? all[lang] : all[lang][namespace];
-      if (!messages) throw new Error(`locales/${lang}.json has no namespace “${namespace}” (${id})`);
+      const whole = namespace === undefined ? all[lang] : all[lang][namespace];
+      if (!whole) throw new Error(`locales/${lang}.json has no namespace “${namespace}” (${id})`);
+      const wanted = fields?.split('+');
+      const messages = wanted ? Object.fromEntries(Object.entries(whole).filter(([key]) => wanted.includes(key.slice(key.lastIndexOf('.') + 1)))) : whole;
       return compileModule(new MessageFormat(pluralLocale(lang)), messages);
     },
     transformIndexHtml: {

@@ -3,7 +3,8 @@
 // manifest's ledes are HTML written for the lecture page; the composer shows them as text only),
 // and every question of the homework bank by its prompt, with the numbers the room gets (ROOM_SEED) or its seed gives.
 import { PANELS, panelEntry } from '../panels/manifest.js';
-import { panelLede, panelTitle } from '../panels/panelText.js';
+import { panelTitle } from '../panels/panelText.js';
+import { panelLede } from '../panels/panelLede.js';
 import { KIND_NAMES, QUESTIONS as BANK } from '../homework/questions.js';
 import { questionParams } from '../homework/gradeAnswer.js';
 import { ROOM_SEED } from '../lecture/readLecture.js';

@@ -4,7 +4,7 @@
 // lecturer's heading and text above it; a text item is its heading and text; a question item is a
 // homework question asked of the room (questionItem.js, loaded only for a lecture that has one).
 import { PLACE_LAYOUTS, panelEntry, sectionHtml } from '../panels/manifest.js';
-import { panelText } from '../panels/panelText.js';
+import { panelText } from '../panels/panelLede.js';
 import english from 'virtual:messages/en/lecture';
 import { messages } from '../i18n/messages.js';
 import { el } from '../ui/el.js';

@@ -1,10 +1,10 @@
 // A panel's words in the page's language, from the catalogue's "panels" namespace (the manifest,
-// src/panels/manifest.js, holds what is not words): its title as plain text, its title with markup
-// for a heading, its lede and its citation (markup as the catalogue has it: richText.js); and from
-// its "controls" namespace the names of its controls and of their options (`<panel>.<key>`,
-// `<panel>.<key>.<value>`), which come with the page, before any panel's module, since a notice
-// about a value in the link names its control.
-import english from 'virtual:messages/en/panels';
+// src/panels/manifest.js, holds what is not words): its title as plain text and its title with
+// markup for a heading; and from its "controls" namespace the names of its controls and of their
+// options (`<panel>.<key>`, `<panel>.<key>.<value>`), which come with the page, before any panel's
+// module, since a notice about a value in the link names its control. Its lede and its citation,
+// which only a lecture the page composes or the composer writes, are panelLede.js's.
+import english from 'virtual:messages/en/panels:title+titleHtml';
 import controlWords from 'virtual:messages/en/controls';
 import { messages } from '../i18n/messages.js';
 import { plainText } from '../i18n/richText.js';
@@ -18,15 +18,6 @@ export const panelTitle = (id) => plainText(t(`${id}.title`));
 
 /** The heading with its markup (n<sub>t</sub>), where the catalogue has one; else the title. */
 export const panelTitleHtml = (id) => (has(`${id}.titleHtml`) ? t(`${id}.titleHtml`) : t(`${id}.title`));
-
-/** The lede (markup) under the heading. */
-export const panelLede = (id) => t(`${id}.lede`);
-
-/** Where in the lecture, or beyond it, the concept comes from (markup). */
-export const panelCite = (id) => t(`${id}.cite`);
-
-/** All four, as sectionHtml takes them. */
-export const panelText = (id) => ({ title: panelTitle(id), titleHtml: panelTitleHtml(id), lede: panelLede(id), cite: panelCite(id) });
 
 /** The name of a panel's control (a schema key), in the page's language. */
 export const controlLabel = (id, key) => controls(`${id}.${key}`);

@@ -175,7 +175,7 @@ function staticClosure(manifest, key, seen = new Set()) {
   return seen;
 }
 
-test('before its first picture the lecture page fetches only what that picture needs, at most 100 KB of gzipped JS', async ({ page }) => {
+test('before its first picture the lecture page fetches only what that picture needs, at most 96.8 KB of gzipped JS', async ({ page }) => {
   const { readFileSync } = await import('node:fs');
   const { gzipSync } = await import('node:zlib');
   const dist = resolve(import.meta.dirname, '../../dist');
@@ -199,5 +199,6 @@ test('before its first picture the lecture page fetches only what that picture n
   expect(before.filter((file) => lectureOnly.test(`/${file}`)), 'the lecture reader, Markdown or KaTeX before the first picture').toEqual([]);
   const kb = before.reduce((sum, file) => sum + gzipSync(readFileSync(resolve(dist, file))).length, 0) / 1024;
   console.log(`[first load] lecture page: ${kb.toFixed(1)} KB of gzipped JS before the hero's first frame (${before.length} files)`);
-  expect(kb).toBeLessThanOrEqual(100);
+  // 96.8 KB before the words moved into the message catalogue: English must not cost more than that.
+  expect(kb).toBeLessThanOrEqual(96.8);
 });
