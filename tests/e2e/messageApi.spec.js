@@ -197,6 +197,8 @@ test('parentOrigin: messages go only to that origin and only its messages are he
   // An origin that cannot be used leaves the panel to no page rather than to every page.
   const closed = await embedInDeck(page, baseURL, 'panel=spheres&parentOrigin=deck.example', { waitReady: false });
   await expect(closed.frame.locator('.notice')).toContainText('no page may drive this panel');
+  // The notice comes before the panel's module: the message goes to a panel that is there.
+  await expect.poll(() => inFrame(closed, () => window.fresnelLab?.hosts.spheres?.frames ?? 0)).toBeGreaterThan(0);
   await closed.delivered({ type: 'fresnel-lab:set', params: { nT: 2.1 } });
   expect((await hero(closed)).nT).toBe(1.5);
   expect(await closed.count('fresnel-lab:ready')).toBe(0);
