@@ -69,6 +69,19 @@ export function fillPageText(html, english, file = 'page') {
 /** The plural rules a language's messages are compiled with (a pseudo-locale uses English's). */
 const pluralLocale = (lang) => (Object.hasOwn(PSEUDO_LOCALES, lang) ? 'en' : lang.split('-')[0]);
 
+/**
+ * The messages of `spec` in one language's catalogue: a namespace ("panels"), or part of one
+ * ("panels:title+titleHtml": the keys whose last part, after the last dot, is one of those fields);
+ * undefined where the catalogue has no such namespace.
+ */
+export function namespaceMessages(catalogue, spec) {
+  const [namespace, fields] = spec.split(':');
+  if (!Object.hasOwn(catalogue, namespace)) return undefined;
+  const wanted = fields?.split('+');
+  const whole = catalogue[namespace];
+  return wanted ? Object.fromEntries(Object.entries(whole).filter(([key]) => wanted.includes(key.slice(key.lastIndexOf('.') + 1)))) : whole;
+}
+
 export function messagesPlugin({ dir, pseudo = true }) {
   let catalogues = null;
   const load = () => (catalogues ??= readCatalogues(dir, pseudo));
@@ -96,12 +109,9 @@ export function messagesPlugin({ dir, pseudo = true }) {
         return `${imports.join('\n')}\nexport default {\n${entries.join('\n')}\n};\n`;
       }
       const [lang, spec] = parts;
-      const [namespace, fields] = spec === undefined ? [] : spec.split(':');
       if (!Object.hasOwn(all, lang)) throw new Error(`No catalogue locales/${lang}.json for ${id}`);
-      const whole = namespace === undefined ? all[lang] : all[lang][namespace];
-      if (!whole) throw new Error(`locales/${lang}.json has no namespace “${namespace}” (${id})`);
-      const wanted = fields?.split('+');
-      const messages = wanted ? Object.fromEntries(Object.entries(whole).filter(([key]) => wanted.includes(key.slice(key.lastIndexOf('.') + 1)))) : whole;
+      const messages = spec === undefined ? all[lang] : namespaceMessages(all[lang], spec);
+      if (!messages) throw new Error(`locales/${lang}.json has no namespace “${spec}” (${id})`);
       return compileModule(new MessageFormat(pluralLocale(lang)), messages);
     },
     transformIndexHtml: {

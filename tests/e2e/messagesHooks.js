@@ -6,6 +6,7 @@
 import { readFileSync } from 'node:fs';
 import MessageFormat from '@messageformat/core';
 import compileModule from '@messageformat/core/compile-module.js';
+import { namespaceMessages } from '../../scripts/messagesPlugin.js';
 
 const PREFIX = 'virtual:messages/';
 const ROOT = new URL('../../', import.meta.url);
@@ -19,10 +20,11 @@ export async function resolve(specifier, context, next) {
 
 export async function load(url, context, next) {
   if (!url.startsWith(PREFIX)) return next(url, context);
-  const [lang, namespace] = url.slice(PREFIX.length).split('/');
+  const [lang, spec] = url.slice(PREFIX.length).split('/');
   // Only English is compiled here: the specs expect the source language; other languages load in the pages.
   if (lang === 'languages') return { format: 'module', source: 'export default {};\n', shortCircuit: true };
   const english = JSON.parse(readFileSync(new URL('locales/en.json', ROOT), 'utf8'));
-  if (lang !== 'en' || !Object.hasOwn(english, namespace)) throw new Error(`${url}: only English namespaces are compiled for the specs.`);
-  return { format: 'module', source: compileModule(new MessageFormat('en'), english[namespace]), shortCircuit: true };
+  const messages = lang === 'en' ? namespaceMessages(english, spec ?? '') : undefined;
+  if (!messages) throw new Error(`${url}: only English namespaces are compiled for the specs.`);
+  return { format: 'module', source: compileModule(new MessageFormat('en'), messages), shortCircuit: true };
 }
