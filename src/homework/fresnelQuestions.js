@@ -317,7 +317,8 @@ export const FRESNEL_QUESTIONS = [
   {
     id: 'pow-above-one', panel: 'stability', kind: 'choice',
     graded: 'What pow(1 − cos θ, 5) is for cos θ a hair above 1 in a highp shader: 1 − cos θ is negative in float32, and GLSL ES '
-      + '3.00 (§8.2) leaves pow undefined there. The stability map shows the column at θ = 0°.',
+      + '3.00 (§8.2) leaves pow undefined there. The stability map cannot show it (its θ = 0° column is cos θ = 1 exactly, '
+      + 'classifyGrid.js columnCos), and the answer says so; the shader lab\'s "safe" exercise runs a student\'s code at such inputs.',
     params: (rng) => ({ nT: rng.pick([1.33, 1.5]) }),
     prompt: (p) => t('pow-above-one.prompt', { cos: number(COS_ABOVE_ONE), nT: number(p.nT) }),
     options: () => {

@@ -7,6 +7,7 @@
 import { describe, expect, it } from 'vitest';
 import { QUESTIONS, questionById } from '../../src/homework/questions.js';
 import { seededRandom } from '../../src/homework/seededRandom.js';
+import { columnCos } from '../../src/methods/classifyGrid.js';
 import { brewsterDegrees, conductorR, cosOfDegrees, criticalDegrees, dielectricR, dielectricSP } from './oracle/fresnelOracle.js';
 import materials from '../../src/optics/materials.json';
 
@@ -190,6 +191,8 @@ const CHECKS = {
     expect(Math.fround(1 - c)).toBeLessThan(0);
     expect(q.prompt(p)).toContain('1.0000001');
     expect(holding(q, p)).toEqual(['undefined']);
+    // The answer says the stability map cannot show it: its θ = 0° column is cos θ = 1 exactly.
+    expect(columnCos(0)).toBe(1);
   },
 };
 

@@ -33,9 +33,9 @@ function caseText(kind, args) {
 }
 
 /**
- * The cheaper pick under the "acceptable" budget (5 % of the range, the judgement behind the
- * Schlick that Filament, Godot, three.js and UE4 ship; see displayBudgets.js), when it differs
- * from the strict one, with its measured cost in error.
+ * The cheaper pick under the "acceptable" budget (5 % of the range, a round figure just above the
+ * worst error on plastics of the Schlick that Filament, Godot, three.js and UE4 ship; see
+ * displayBudgets.js), when it differs from the strict one, with its measured cost in error.
  */
 function practicalNote(alt, rec, rows) {
   if (!alt?.invisible || alt.methodId === rec.methodId) return '';
