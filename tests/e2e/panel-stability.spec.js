@@ -142,7 +142,9 @@ test('URL and controls: method, precision and tolerance; CSV, description, on-de
   const host = () => page.evaluate(() => ({ ...window.fresnelLab.hosts.stability.values }));
   expect(await host()).toEqual({ method: 'schlick-mul', precision: 'highp', tolerance: 0.05 });
   await expect(page.locator('.st-map[data-side="gpu"]')).toHaveClass(/st-selected/);
-  await expect(page.locator('.st-map[data-side="gpu"] .st-map-title')).toHaveText('On this GPU · highp (chosen)');
+  await expect(page.locator('.st-map[data-side="gpu"] .st-map-title')).toHaveText('On this GPU · highp');
+  await expect(page.locator('.st-map[data-side="gpu"] .st-chosen')).toHaveText('(chosen)');
+  await expect(page.locator('.st-map[data-side="js"] .st-chosen')).toBeHidden();
   const loose = (await readMaps(page)).gpu.counts.aboveTolerance;
   await setValues(page, { tolerance: 0.001 });
   const tight = (await readMaps(page)).gpu.counts.aboveTolerance;
@@ -150,7 +152,9 @@ test('URL and controls: method, precision and tolerance; CSV, description, on-de
   await page.locator('.lil-gui .lil-controller', { hasText: 'Method' }).locator('select').selectOption({ label: 'Exact s/p (Snell)' });
   await page.locator('.lil-gui .lil-controller', { hasText: 'Precision' }).locator('select').selectOption({ label: 'JS float64' });
   expect((await host()).method).toBe('exact-sp');
-  await expect(page.locator('.st-map[data-side="js"] .st-map-title')).toHaveText('JavaScript · fp64 (chosen)');
+  await expect(page.locator('.st-map[data-side="js"] .st-map-title')).toHaveText('JavaScript · fp64');
+  await expect(page.locator('.st-map[data-side="js"] .st-chosen')).toHaveText('(chosen)');
+  await expect(page.locator('.st-map[data-side="gpu"] .st-chosen')).toBeHidden();
   await expect(page.locator('.st-map[data-side="js"]')).toHaveClass(/st-selected/);
   const csv = await page.evaluate(() => window.fresnelLab.panels.stability.csv());
   expect(csv.columns.class).toEqual(['fine', 'aboveTolerance', 'outOfRange', 'notFinite']);

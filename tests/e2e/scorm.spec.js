@@ -12,6 +12,7 @@ import { QUESTIONS } from '../../src/homework/questions.js';
 import { questionParams, trueOption } from '../../src/homework/gradeAnswer.js';
 import { decimalsFor } from '../../src/homework/formatAnswer.js';
 import { interactionProblems } from '../unit/scorm12Formats.js';
+import spanish from '../../locales/es.json' with { type: 'json' };
 
 const LMS = `<!doctype html><html><head><meta charset="utf-8"><title>LMS</title><script>
   const data = { 'cmi.core.student_id': 's123', 'cmi.core.student_name': 'Lovelace, Ada', 'cmi.core.lesson_status': 'not attempted',
@@ -132,14 +133,14 @@ test('a package opens in the language its sheet was made in', async ({ page }) =
   const code = [...inPage.matchAll(/id="fresnel-lab-sheet" data-scorm="1">([^<]*)</g)].at(-1)[1];
   const sheet = JSON.parse(Buffer.from(code, 'base64url').toString('utf8'));
   expect(sheet.lang).toBe('en'); // composed on an English page
-  // The same package had it been made on a page in the pseudo-locale (as it will be in Spanish).
-  const made = Buffer.from(JSON.stringify({ ...sheet, lang: 'en-XA' })).toString('base64url');
+  // The same package had it been made on a page in Spanish (the single-file page carries every listed language).
+  const made = Buffer.from(JSON.stringify({ ...sheet, lang: 'es' })).toString('base64url');
   const at = inPage.lastIndexOf(code);
   await serveLms(page, { ...files, 'homework.html': strToU8(inPage.slice(0, at) + made + inPage.slice(at + code.length)) }, () => LMS);
   await page.goto('lms/player.html');
   const sco = page.frameLocator('#sco');
-  await expect(sco.locator('html')).toHaveAttribute('lang', 'en-XA');
-  await expect(sco.locator('#question-1 .hw-number')).toHaveText(/^⟦Q/);
+  await expect(sco.locator('html')).toHaveAttribute('lang', 'es');
+  await expect(sco.locator('#question-1 .hw-number')).toHaveText(`${spanish.homework['card.number'].replace('{number}', '1')}`);
 });
 
 /** What to answer to question `n` (1-based) of the sheet, and the interaction that check should make. */
