@@ -1,7 +1,8 @@
 // The documentation site (VitePress): `npm run docs:dev`, `npm run docs:build` (into
 // docs/.vitepress/dist, apart from the lab's dist/). The build fails on a link to a page that does
-// not exist (VitePress's own check, left strict) and on a panel without its section in the parameter
-// reference, which is written here from the panels' schemas.
+// not exist (VitePress's own check, left strict), on a panel without its section in the parameter
+// reference, which is written here from the panels' schemas, and on a package without its line in the
+// dependency list.
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vitepress';
@@ -9,8 +10,10 @@ import { PANEL_IDS } from '../../src/panels/manifest.js';
 import {
   REFERENCE_MARKER, apiReference, htmlHasSection, loadReferenceInputs, markdownHasSection, missingSections,
 } from '../../scripts/apiReference.js';
+import { unlistedDependencies } from '../../scripts/dependencyList.js';
 
 const root = fileURLToPath(new URL('../..', import.meta.url));
+const at = (path) => fileURLToPath(new URL(path, new URL('../..', import.meta.url)));
 
 /** Stops the build with every problem named. */
 function fail(what, problems) {
@@ -19,6 +22,8 @@ function fail(what, problems) {
 
 const reference = apiReference(await loadReferenceInputs(root));
 fail('Parameter reference', missingSections(PANEL_IDS, (id) => markdownHasSection(reference, id)));
+fail('Dependency list', unlistedDependencies(JSON.parse(readFileSync(at('package.json'), 'utf8')),
+  readFileSync(at('docs/developer/dependencies.md'), 'utf8')));
 
 /** The reference's sections go where docs/deck/reference.md has the marker, before Markdown is read. */
 function referencePlugin(md) {

@@ -1,7 +1,7 @@
 // The docs' parameter reference (scripts/apiReference.js) is written from src/panels/manifest.js, the
 // schemas and the English catalogue: every panel has its section with a row per parameter, whatever
 // the panels are (tests/e2e/newPanel.spec.js runs this file in a copy with one more panel), and a
-// panel left out is named.
+// panel left out is named. The dependency list's check (scripts/dependencyList.js) is here too.
 import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { describe, expect, it } from 'vitest';
@@ -9,6 +9,7 @@ import { PANEL_IDS } from '../../src/panels/manifest.js';
 import {
   apiReference, htmlHasSection, loadReferenceInputs, markdownHasSection, missingSections,
 } from '../../scripts/apiReference.js';
+import { unlistedDependencies } from '../../scripts/dependencyList.js';
 
 const root = resolve(import.meta.dirname, '../..');
 const inputs = await loadReferenceInputs(root);
@@ -68,3 +69,24 @@ describe('the parameter reference', () => {
   });
 });
 
+describe('the dependency list', () => {
+  const list = [
+    '| package | why |', '|---|---|', '| three | peer |', '| uplot (1.6.32, pinned and patched) | plots |',
+    '| @codemirror/view, state, lint | editor |', '| eslint, @eslint/js, globals | lint |',
+  ].join('\n');
+  it('finds each package as written, with notes in parentheses and a scope shortened after its first package', () => {
+    const pkg = { dependencies: { three: '1', uplot: '1', '@codemirror/view': '1', '@codemirror/state': '1' },
+      devDependencies: { '@codemirror/lint': '1', eslint: '1', '@eslint/js': '1', globals: '1' } };
+    expect(unlistedDependencies(pkg, list)).toEqual([]);
+  });
+  it('names a package without its line', () => {
+    expect(unlistedDependencies({ dependencies: { three: '1', '@codemirror/commands': '1' }, devDependencies: { why: '1' } }, list)).toEqual([
+      'The package “@codemirror/commands” has no line in the dependency list (docs/developer/dependencies.md): say why it is there.',
+      'The package “why” has no line in the dependency list (docs/developer/dependencies.md): say why it is there.',
+    ]);
+  });
+  it('holds for this project', () => {
+    const pkg = JSON.parse(readFileSync(resolve(root, 'package.json'), 'utf8'));
+    expect(unlistedDependencies(pkg, readFileSync(resolve(root, 'docs/developer/dependencies.md'), 'utf8'))).toEqual([]);
+  });
+});
