@@ -15,7 +15,7 @@ const LOCALE_RULES = [
   }));
 
 export default [
-  { ignores: ['dist/', 'node_modules/', 'test-results/', 'playwright-report/'] },
+  { ignores: ['dist/', 'node_modules/', 'test-results/', 'playwright-report/', 'docs/.vitepress/dist/', 'docs/.vitepress/cache/'] },
   js.configs.recommended,
   {
     languageOptions: {
@@ -48,7 +48,7 @@ export default [
     },
   },
   {
-    files: ['*.config.js', 'tests/**', 'bench/**', 'scripts/**', '.ci/**'],
+    files: ['*.config.js', 'tests/**', 'bench/**', 'scripts/**', '.ci/**', 'docs/.vitepress/**'],
     languageOptions: { globals: { ...globals.node, ...globals.browser } },
   },
 ];

@@ -1,4 +1,4 @@
-// The page measurements of npm run bench as text: the lines it prints, and the README's table.
+// The page measurements of npm run bench as text: the lines it prints, and the table of bench/RESULTS.md.
 const ms = ({ median, min, max }) => `${median.toFixed(0)} [${min.toFixed(0)}, ${max.toFixed(0)}]`;
 const ratio = ({ median, min, max }) => `${median.toFixed(2)} [${min.toFixed(2)}, ${max.toFixed(2)}]`;
 const kb = (bytes) => `${(bytes / 1024).toFixed(0)} KB`;

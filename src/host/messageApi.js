@@ -1,5 +1,5 @@
 // The message API between a slide deck (or any page) and an embedded panel, version 1
-// (window.postMessage; the README has the table). Deck → panel:
+// (window.postMessage; docs/deck/messages.md has the table). Deck → panel:
 //   {type:'fresnel-lab:set', params}              validated; rejected values answer fresnel-lab:error
 //   {type:'fresnel-lab:get'}                      answers fresnel-lab:state
 //   {type:'fresnel-lab:reset', to?}               to 'start' (the embed URL's values, the default) or 'defaults'

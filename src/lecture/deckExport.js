@@ -59,7 +59,7 @@ const LIGHT_CSS = `
 `;
 
 // The deck's own lines: reveal.js with the choices above and the keys a panel hands back
-// (fresnel-lab:key, README "In a reveal.js deck"), heard only from the deck's own frames (from disk
+// (fresnel-lab:key, docs/deck/reveal.md), heard only from the deck's own frames (from disk
 // every origin is "null", so the origin tells nothing). Linear navigation: → and Space step through
 // a question's answer too, as a clicker does.
 const DECK_SCRIPT = `

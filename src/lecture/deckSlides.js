@@ -1,7 +1,7 @@
 // The slides of a lecture's reveal.js deck (deckExport.js), as HTML text: one <section> per item.
 // Everything that comes from the lecture is escaped (lectureTextHtml.js); a panel's frame is the
 // embed page with the item's start state, locks and hidden controls as embed options
-// (src/host/readEmbedOptions.js, README "Embed options in the link").
+// (src/host/readEmbedOptions.js, docs/deck/embed.md).
 //
 // At most two live WebGL contexts: a WebGL panel's frame has data-src alone, so reveal.js loads it
 // when its slide is shown and unloads it (after posting 'slide:stop') when the slide is left; one

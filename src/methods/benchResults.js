@@ -172,7 +172,7 @@ export function benchCsv(results) {
   return { filename: 'fresnel-lab-speed-accuracy.csv', columns };
 }
 
-/** The results as a fixed-width text table (stdout of npm run bench, the README). */
+/** The results as a fixed-width text table (stdout of npm run bench, bench/RESULTS.md). */
 export function benchTable(results) {
   const ns = (s) => (s ? `${fixed(s.median, 3)} [${fixed(s.min, 3)}, ${fixed(s.max, 3)}]` : '–');
   const head = ['method', 'GPU highp ns/eval med [min, max]', 'GPU mediump ns/eval', 'CPU ns/eval', 'max|ΔR| fp64', 'fp32', 'fp16',

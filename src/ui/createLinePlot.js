@@ -21,7 +21,7 @@ export function resolveColor(color) {
  * canvas on the CPU. uPlot makes its canvas and context inside its constructor and takes no context
  * attributes, hence the wrap. Why: a plot redraw is a few thick dashed polylines and some text,
  * which a CPU rasterizes in a millisecond or two; drawn through a software GPU (SwiftShader) Skia's
- * GPU path cost the hero about as much as its whole WebGL pass (npm run bench, README).
+ * GPU path cost the hero about as much as its whole WebGL pass (npm run bench, bench/RESULTS.md).
  */
 function withCpuCanvas(make) {
   const proto = HTMLCanvasElement.prototype;

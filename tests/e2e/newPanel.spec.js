@@ -3,7 +3,7 @@
 // schema.js or without a place in its entry the build stops and names which; with both the copy
 // type-checks and builds as `npm run build` does, the unit tests that read the manifest pass
 // there, the lecture page keeps the panel's place from its entry in each layout, and its embed
-// keeps the panel contract. A panel that needed more (a CSS rule, a README line, a test's list of
+// keeps the panel contract. A panel that needed more (a CSS rule, a line of the docs, a test's list of
 // ids, a homework question) fails here. 40–90 s on two cores, most of it the copy's type check,
 // builds and unit tests.
 import { readdirSync, readFileSync, renameSync } from 'node:fs';

@@ -30,7 +30,9 @@ export function docsPanel() {
 /** A copy of the project with `panel` added: its files, and its entry last in the manifest. */
 export function scaffold(panel) {
   const dir = mkdtempSync(join(tmpdir(), 'fresnel-lab-new-panel-'));
-  for (const path of PROJECT) cpSync(join(root, path), join(dir, path), { recursive: true });
+  // Not the docs site's build output or cache (docs/.vitepress/dist, cache), which only slow the copy.
+  const notBuilt = (source) => !/[\\/]docs[\\/]\.vitepress[\\/](dist|cache)$/.test(source);
+  for (const path of PROJECT) cpSync(join(root, path), join(dir, path), { recursive: true, filter: notBuilt });
   symlinkSync(join(root, 'node_modules'), join(dir, 'node_modules'), 'dir');
   for (const [path, text] of Object.entries(panel.files)) {
     mkdirSync(dirname(join(dir, path)), { recursive: true });

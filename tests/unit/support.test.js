@@ -25,7 +25,7 @@ describe('GLSL includes', () => {
     const files = Object.fromEntries(readdirSync('shaders').map((f) => [f.replace(/\.glsl$/, ''), readFileSync(`shaders/${f}`, 'utf8')]));
     for (const [name, text] of Object.entries(files)) expect(() => resolveIncludes(text, files), name).not.toThrow();
   });
-  it('the GLSL twin defines every JS export of the optics core but the one the README names', async () => {
+  it('the GLSL twin defines every JS export of the optics core but the one docs/developer/architecture.md names', async () => {
     const glsl = readFileSync('shaders/fresnel.glsl', 'utf8');
     const jsOnly = ['conductorNormalIncidence']; // shaders take a metal's F0 from fresnelConductor at cos θ = 1
     const exported = Object.entries(await import('../../src/optics/fresnel.js')).filter(([, v]) => typeof v === 'function').map(([k]) => k);
