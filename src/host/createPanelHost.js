@@ -2,13 +2,14 @@
 // The frame around every panel. The host owns the panel's values: it reads them from the URL,
 // validates every write against the schema (from a control, the panel itself, a message or the
 // page), says on screen what it rejected, and passes each change on to the controls, the URL, the
-// panel's picture, its description and any listener (the message API). It also holds the toolbar
-// (copy link, copy embed code, PNG, CSV) and mounts and disposes the panel's view. Values outlive
+// panel's picture, its description and any listener (the message API); the values, their checks
+// and that order are the store's (createValueStore.js), the rest is this frame's DOM. It also
+// holds the toolbar (createToolbar.js) and mounts and disposes the panel's view. Values outlive
 // the view, so a panel disposed to free its WebGL context comes back exactly as it was.
 import { warmGpu } from '../gl/warmGpu.js';
 import { ownedBy } from '../gl/faultOwner.js';
 import { createPanelFaults, watchInputs } from './panelFaults.js';
-import { applyParams, defaults, describeProblem, resolveKey, withDefaults } from './params.js';
+import { defaults, describeProblem, withDefaults } from './params.js';
 import { createControlState } from './createControlState.js';
 import { bindGui, createPanelGui } from './bindGui.js';
 import { readUrlState, urlWriter } from './urlState.js';
@@ -17,6 +18,7 @@ import { resizePng, toCsv } from './exporters.js';
 import { embedCode, embedUrl, labTitle, lectureUrl } from './shareLinks.js';
 import { createToolbar } from './createToolbar.js';
 import { checkInstance } from './panelContract.js';
+import { createValueStore } from './createValueStore.js';
 import { el } from '../ui/el.js';
 import { cssVar } from '../ui/theme.js';
 import { panelTitle } from '../panels/panelText.js';
@@ -25,14 +27,6 @@ import { messages } from '../i18n/messages.js';
 
 const t = messages('host', english);
 let nextDescriptionId = 0;
-
-/** A view of `values` that can be read but not written: panels change values through the host. */
-function readOnly(values, id) {
-  const refuse = (_target, key) => {
-    throw new TypeError(`The ${id} panel wrote values.${String(key)}: panels change values with ctx.set().`);
-  };
-  return new Proxy(values, { set: refuse, deleteProperty: refuse, defineProperty: refuse });
-}
 
 /**
  * container: where the panel lives (a section's .panel-mount, or the embed root).
@@ -54,13 +48,10 @@ export function createPanelHost(container, panel, {
 } = {}) {
   const { schema } = panel;
   const urlSchema = withDefaults(schema, itemStart); // the link says what differs from where the panel starts
-  const { values, problems } = readUrlState(urlSchema, prefix);
-  const start = { ...values }; // what the link asked for: `reset` returns here
+  const { values: start, problems } = readUrlState(urlSchema, prefix); // what the link asked for: `reset` returns here
   showNotice(noticeHost, t('linkValuesTitle'), problems.map(describeProblem));
   const writeUrl = urlWriter(urlSchema, prefix);
-  const view = readOnly(values, panel.id);
-  const draft = { ...values }; // what the controls edit; the host writes it back after each change
-  const listeners = new Set();
+  const draft = { ...start }; // what the controls edit; the host writes it back after each change
 
   const shell = el('div', 'panel-shell');
   const content = el('div', 'panel-content');
@@ -109,6 +100,29 @@ export function createPanelHost(container, panel, {
   let wanted = false;
   let startFailed = false; // mount() threw: not tried again by itself (the notice says so)
 
+  // The values (createValueStore.js): a change reaches the controls, the picture, the description,
+  // the URL and then the listeners (the message API).
+  const store = createValueStore(panel.id, schema, start, {
+    isLocked: (key) => controlState.isLocked(key),
+    show(keys) {
+      for (const key of keys) {
+        draft[key] = values[key];
+        controllers[key]?.updateDisplay();
+      }
+    },
+    refused(rejected) {
+      rejectedNotice?.remove();
+      rejectedNotice = showNotice(noticeHost, t('panelValuesTitle', { title: panelTitle(panel.id) }), rejected.map(describeProblem));
+    },
+    redraw: (keys) => guarded(() => instance?.update(keys)),
+    settled() {
+      refreshDescription();
+      domFrameDrawn();
+      writeUrl(values);
+    },
+  });
+  const { values, set } = store;
+
   /** A frame of the panel's picture is drawn: counted, marked once for timing, and announced. */
   function frameDrawn() {
     frames += 1;
@@ -145,69 +159,6 @@ export function createPanelHost(container, panel, {
     for (const canvas of content.querySelectorAll('canvas')) canvas.setAttribute('aria-describedby', description.id);
   }
 
-  // A change made while the panel is redrawing (ctx.set inside update) waits for that redraw to
-  // end, then redraws in turn: update never runs inside itself, and the description, the URL and
-  // the listeners follow once, with every key.
-  let updating = false;
-  let waiting = [];
-  let mounting = false;
-
-  /** Values changed: controls, picture, description, URL, listeners. */
-  function changed(keys, source) {
-    for (const key of keys) {
-      draft[key] = values[key];
-      controllers[key]?.updateDisplay();
-    }
-    if (updating) {
-      waiting.push(...keys);
-      return;
-    }
-    const all = new Set(keys);
-    updating = true;
-    try {
-      guarded(() => instance?.update(keys));
-      while (waiting.length) {
-        const next = [...new Set(waiting)];
-        waiting = [];
-        next.forEach((key) => all.add(key));
-        guarded(() => instance?.update(next));
-      }
-    } finally {
-      updating = false;
-      waiting = [];
-    }
-    refreshDescription();
-    domFrameDrawn();
-    writeUrl(values);
-    // A set during mount (code kept in this browser) is where the panel starts, not a change:
-    // listeners and a deck learn those values from ready.
-    if (!mounting) for (const listener of listeners) listener({ keys: [...all], source });
-  }
-
-  /**
-   * Validated partial update; keys may be aliases. Rejected values are named on screen and the
-   * controls show the values kept. source: 'user' (a control or the panel), 'api' (a message),
-   * 'page' (the page-wide material).
-   */
-  function set(update, { source = 'api' } = {}) {
-    // A locked control's value changes only when the deck changes it: a change made in the panel
-    // that touches one (a swap of n_i and n_t with n_t locked) is refused whole.
-    const touchesLocked = source !== 'api' && Object.keys(update ?? {}).some((name) => controlState.isLocked(resolveKey(schema, name)));
-    const result = { ...applyParams(schema, values, touchesLocked ? {} : update), refused: touchesLocked };
-    if (result.rejected.length) {
-      rejectedNotice?.remove();
-      rejectedNotice = showNotice(noticeHost, t('panelValuesTitle', { title: panelTitle(panel.id) }), result.rejected.map(describeProblem));
-      for (const { key } of result.rejected) {
-        if (Object.hasOwn(values, key)) {
-          draft[key] = values[key];
-          controllers[key]?.updateDisplay();
-        }
-      }
-    }
-    if (result.changed.length) changed(result.changed, source);
-    return result;
-  }
-
   /** Loads the panel's module once; a failure is shown in the panel and rejects. */
   function load() {
     if (mountPanel) return Promise.resolve();
@@ -226,9 +177,9 @@ export function createPanelHost(container, panel, {
     toolbar.hidden = false;
     controllers = Object.create(null);
     controlState.clear();
-    mounting = true;
     try {
-      instance = checkInstance(panel.id, ownedBy(faults, () => mountPanel(content, ctx)));
+      // Values set during mount (code kept in this browser) are where the panel starts, not a change.
+      instance = checkInstance(panel.id, store.quietly(() => ownedBy(faults, () => mountPanel(content, ctx))));
     } catch (error) {
       instance = null;
       startFailed = true;
@@ -239,8 +190,6 @@ export function createPanelHost(container, panel, {
       showNotice(noticeHost, t('panelStartFailed', { title: panelTitle(panel.id) }), [error.message, t('panelStartAgain')],
         { kind: 'error' });
       throw error;
-    } finally {
-      mounting = false;
     }
     tools.offer(instance);
     if (titleLevel !== 2) for (const heading of content.querySelectorAll('h3')) heading.setAttribute('aria-level', String(titleLevel + 1));
@@ -291,7 +240,7 @@ export function createPanelHost(container, panel, {
 
   /** @type {import('./panelContract.js').PanelContext} */
   const ctx = {
-    values: view,
+    values,
     get gui() { return gui; },
     bind(folder, keys) {
       const made = bindGui(folder ?? gui, panel.id, schema, draft, (key, value) => set({ [key]: value }, { source: 'user' }), keys);
@@ -316,7 +265,7 @@ export function createPanelHost(container, panel, {
     id: panel.id,
     panel,
     container,
-    values: view,
+    values,
     usesWebGL: panel.webgl,
     get mounted() { return instance !== null; },
     get instance() { return instance; },
@@ -330,10 +279,7 @@ export function createPanelHost(container, panel, {
     unmount,
     set,
     /** listener({ keys, source }) after every change; returns a function that removes it. */
-    onChange(listener) {
-      listeners.add(listener);
-      return () => listeners.delete(listener);
-    },
+    onChange: store.onChange,
     links: () => ({ lecture: lectureLink(values), embed: embedUrl(panel, values, embedOptions) }),
     /** The keys the link set to something other than their default. */
     urlKeys: Object.keys(schema).filter((key) => start[key] !== schema[key].default),

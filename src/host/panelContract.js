@@ -26,6 +26,18 @@
 
 /** @typedef {Record<string, ParamSpec>} Schema */
 
+/** One value, as the schema's type makes it: a number, an enum's option or a colour or text, a boolean. */
+/** @typedef {number | string | boolean} Value */
+
+/** A panel's values, by schema key. @typedef {Record<string, Value>} Values */
+
+/**
+ * What a set did. applied: the values taken, by key; rejected: the names and values refused, and
+ * why; changed: the keys whose value is now different; refused: the change touched a control a deck
+ * has locked, and nothing of it was applied.
+ * @typedef {{ applied: Values, rejected: import('./params.js').Problem[], changed: string[], refused: boolean }} SetResult
+ */
+
 /**
  * Where a change came from: a control or the panel's own picture ('user'), a message ('api'), or
  * the page-wide material ('page'). (Values read from the link at start are not a change.)
@@ -35,11 +47,10 @@
 /**
  * What mount() gets.
  * @typedef {object} PanelContext
- * @property {any} values  the current values, read-only (writing one throws): the host owns them
- * @property {(update: Record<string, any>, options?: { source?: ChangeSource }) =>
- *   { applied: object, rejected: object[], changed: string[], refused: boolean }} set
+ * @property {any} values  the current values, read-only (writing one throws): the host owns them. Typed by each
+ *   panel (its functions take { nI: number, … }), since their types come from that panel's schema
+ * @property {(update: Record<string, unknown>, options?: { source?: ChangeSource }) => SetResult} set
  *   change values: validated, then controls, URL, picture and messages follow (update(keys) runs).
- *   refused: the change touched a control a deck has locked, and nothing of it was applied.
  *   Called inside update, the host runs update again with those keys once this one returns;
  *   called during mount (before mount returns), it sets the values, the controls and the link, and
  *   tells no listener: where a panel starts is no change (a deck reads those values from ready).

@@ -18,6 +18,12 @@ import { shortNumber } from '../ui/format.js';
 
 const t = messages('host', english);
 
+/**
+ * A value refused: the name it came under, the value as it came, why (a phrase in the page's
+ * language), and for a link's value the default used instead, as the link would write it.
+ * @typedef {{ key: string, raw: unknown, reason: string, fallback?: string }} Problem
+ */
+
 const HEX = /^#?([0-9a-f]{6})$/i;
 // A number as a person writes one: decimal, optionally signed, with an exponent. Number() also
 // takes 0x1, 0b1, 0o7 and Infinity, which no link or control writes.
@@ -171,6 +177,7 @@ export function readParams(schema, search, prefix = '') {
  * { applied, rejected, changed }: changed lists the keys whose value is now different.
  */
 export function applyParams(schema, values, update) {
+  /** @type {import('./panelContract.js').Values} */
   const applied = {};
   const rejected = [];
   const changed = [];

@@ -8,29 +8,10 @@ import { applyParams, defaults, describeProblem, formatValue, parseValue, readPa
 import { PANELS } from '../../src/panels/manifest.js';
 import { anyKey, anyText, anyValue, ownObject } from './fuzzArbitraries.js';
 import { check } from './fuzzConfig.js';
+import { validValues } from './validValues.js';
 
 const ids = readdirSync(new URL('../../src/panels/', import.meta.url)).filter((d) => PANELS.some((p) => p.id === d));
 const schemas = await Promise.all(ids.map(async (id) => [id, (await import(`../../src/panels/${id}/schema.js`)).schema]));
-
-/** Whether `value` is one the schema could hold for `spec` (parseValue is not used to judge itself). */
-function valid(spec, value) {
-  switch (spec.type) {
-    case 'number':
-      return typeof value === 'number' && Number.isFinite(value) && value >= spec.min && value <= spec.max
-        && (!spec.integer || Number.isInteger(value)) && !Object.is(value, -0);
-    case 'enum': {
-      const values = Array.isArray(spec.options) ? spec.options.map(String) : Object.keys(spec.options);
-      return typeof value === 'string' && values.includes(value);
-    }
-    case 'color': return typeof value === 'string' && /^#[0-9a-f]{6}$/.test(value);
-    case 'boolean': return typeof value === 'boolean';
-    case 'text': return typeof value === 'string' && value.length <= spec.maxLength;
-    default: return false;
-  }
-}
-
-const validValues = (schema, values) => Object.keys(values).length === Object.keys(schema).length
-  && Object.entries(schema).every(([key, spec]) => Object.hasOwn(values, key) && valid(spec, values[key]));
 
 /** A key a link or a message might use for this schema: its own, an alias, or anything else. */
 const keyFor = (schema) => {
