@@ -1,14 +1,33 @@
+// @ts-check
 // Which of a panel's controls a deck has locked (shown, not editable) or hidden: by the message
 // API (lock, unlock, hide, show) or the embed URL (&lock=nI,nT, &hide=…, &controls=0). The host
 // asks it before applying a change made in the panel, and applies it to the controllers of every
 // mount, so the state outlives a remount.
 import { resolveKey } from './params.js';
 
-/** shell: the panel's frame (its class no-controls hides the whole control column). */
+/**
+ * What a deck does to controls: lock, unlock, hide or show.
+ * @typedef {'lock' | 'unlock' | 'hide' | 'show'} ControlChange
+ */
+
+/**
+ * What the state needs of a control (a lil-gui controller).
+ * @typedef {{ enable(on: boolean): unknown, show(on: boolean): unknown }} Control
+ */
+
+/**
+ * shell: the panel's frame (its class no-controls hides the whole control column).
+ * @param {import('./panelContract.js').Schema} schema
+ * @param {{ classList: { toggle(name: string, on: boolean): unknown } }} shell
+ */
 export function createControlState(schema, shell) {
+  /** @type {Set<string>} */
   const locked = new Set();
+  /** @type {Set<string>} */
   const hidden = new Set();
+  /** @type {Record<string, Control>} */
   let controllers = {};
+  /** @type {{ controller: Control, keys: string[] }[]} */
   let tied = []; // controls that are not a schema key but change some (a preset, a swap button)
 
   function apply() {
@@ -26,6 +45,9 @@ export function createControlState(schema, shell) {
     /**
      * kind: lock, unlock, hide or show; names: keys or aliases, or null for every control (for
      * hide and show, the whole control column). Returns the names that are not controls.
+     * @param {ControlChange} kind
+     * @param {readonly string[] | null} names
+     * @returns {string[]}
      */
     change(kind, names) {
       if (names === null && (kind === 'hide' || kind === 'show')) {
@@ -51,18 +73,27 @@ export function createControlState(schema, shell) {
       controllers = {};
       tied = [];
     },
-    /** The controllers of this mount ({ key: lil-gui controller }), kept in step from now on. */
+    /**
+     * The controllers of this mount ({ key: lil-gui controller }), kept in step from now on.
+     * @param {Record<string, Control>} made
+     */
     bind(made) {
       controllers = made;
       apply();
     },
-    /** A control that changes `keys`: locked when any of them is, hidden when all of them are. */
+    /**
+     * A control that changes `keys`: locked when any of them is, hidden when all of them are.
+     * @template {Control} C
+     * @param {C} controller
+     * @param {string[]} keys
+     * @returns {C}
+     */
     tie(controller, keys) {
       tied.push({ controller, keys });
       apply();
       return controller;
     },
-    isLocked: (key) => locked.has(key),
+    isLocked: (/** @type {string} */ key) => locked.has(key),
     get locked() { return [...locked]; },
     get hidden() { return [...hidden]; },
   };

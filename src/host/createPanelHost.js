@@ -28,6 +28,14 @@ import { messages } from '../i18n/messages.js';
 const t = messages('host', english);
 let nextDescriptionId = 0;
 
+/** @typedef {import('./panelContract.js').PanelInstance} PanelInstance */
+/** @typedef {import('./panelContract.js').Values} Values */
+/** @typedef {NonNullable<import('./panelContract.js').PanelDefinition['mount']>} MountPanel */
+/** @typedef {ReturnType<typeof createPanelHost>} PanelHost */
+
+/** What was thrown, in words. @param {unknown} error */
+const messageOf = (error) => (error instanceof Error ? error.message : String(error));
+
 /**
  * container: where the panel lives (a section's .panel-mount, or the embed root).
  * panel: its definition (manifest entry, schema, mount; see panelContract.js).
@@ -39,8 +47,8 @@ let nextDescriptionId = 0;
  * start: where the panel starts when the link says nothing (a composed lecture's item; else its defaults);
  * lectureLink(values): the Copy link's address (else the lecture page's); embedOptions: lock and hide for the embed code.
  * @param {{ prefix?: string, noticeHost?: HTMLElement, onFrame?: (frame: number) => void, titleLevel?: number,
- *   applyMaterial?: (material: { id?: string, name?: string, n: number }) => void, start?: Record<string, unknown>,
- *   lectureLink?: (values: Record<string, unknown>) => string, embedOptions?: { lock?: string[], hide?: string[] } }} [options]
+ *   applyMaterial?: (material: { id?: string, name?: string, n: number }) => void, start?: Readonly<Values>,
+ *   lectureLink?: (values: Readonly<Values>) => string, embedOptions?: { lock?: readonly string[], hide?: readonly string[] } }} [options]
  */
 export function createPanelHost(container, panel, {
   prefix = '', noticeHost = container, onFrame = () => {}, applyMaterial = () => {}, titleLevel = 2,
@@ -77,7 +85,12 @@ export function createPanelHost(container, panel, {
   const faults = createPanelFaults({ title: panelTitle(panel.id), restart: () => restart() });
   shell.before(faults.element);
   watchInputs(container, faults);
-  /** Runs the panel's own code: what it makes is the panel's, and what it throws is said in the panel. */
+  /**
+   * Runs the panel's own code: what it makes is the panel's, and what it throws is said in the panel.
+   * @template T
+   * @param {() => T} fn
+   * @returns {T | undefined}
+   */
   const guarded = (fn) => {
     try {
       return ownedBy(faults, fn);
@@ -88,14 +101,21 @@ export function createPanelHost(container, panel, {
   };
   const controlState = createControlState(schema, shell);
   const prefersReducedMotion = window.matchMedia?.('(prefers-reduced-motion: reduce)').matches ?? false;
+  /** @type {boolean | null} */
   let reducedMotion = null; // set by the embed's URL or a message; null: the reader's preference
 
+  /** @type {PanelInstance | null} */
   let instance = null;
+  /** @type {import('lil-gui').default | null} */
   let gui = null;
+  /** @type {Record<string, import('lil-gui').Controller>} */
   let controllers = Object.create(null); // keyed by schema keys only: a name from outside finds nothing inherited
   let frames = 0;
+  /** @type {HTMLElement | null} */
   let rejectedNotice = null;
+  /** @type {MountPanel | null} */
   let mountPanel = panel.mount ?? null; // or, until panel.load() resolves, null
+  /** @type {Promise<void> | null} */
   let loading = null;
   let wanted = false;
   let startFailed = false; // mount() threw: not tried again by itself (the notice says so)
@@ -148,54 +168,59 @@ export function createPanelHost(container, panel, {
     const { makePoster } = await import('./makePoster.js');
     return makePoster({
       picture,
-      title: `${labTitle(panel.id).replace(/_([it])\b/g, (_, c) => ({ i: 'ᵢ', t: 'ₜ' })[c])}`,
+      title: `${labTitle(panel.id).replace(/_([it])\b/g, (_, /** @type {'i' | 't'} */ c) => ({ i: 'ᵢ', t: 'ₜ' })[c])}`,
       link: lectureLink(values),
       colours: { background: cssVar('--bg', '#0d1117'), text: cssVar('--text', '#f0f3f6'), muted: cssVar('--muted', '#c2cad3') },
     });
   }
 
   function refreshDescription() {
-    description.textContent = (instance && guarded(() => instance.describe())) ?? '';
+    const shown = instance;
+    description.textContent = (shown && guarded(() => shown.describe())) ?? '';
     for (const canvas of content.querySelectorAll('canvas')) canvas.setAttribute('aria-describedby', description.id);
   }
 
   /** Loads the panel's module once; a failure is shown in the panel and rejects. */
   function load() {
     if (mountPanel) return Promise.resolve();
+    const module = panel.load?.() ?? Promise.reject(new Error(`The ${panel.id} panel has neither mount() nor load().`));
     // A WebGL panel also waits for the GPU channel to open off the page's thread (warmGpu.js).
-    loading ??= Promise.all([panel.load(), panel.webgl ? warmGpu() : null]).then(([fn]) => { mountPanel = fn; }, (error) => {
-      showNotice(noticeHost, t('panelLoadFailed', { title: panelTitle(panel.id) }), [error.message], { kind: 'error' });
+    loading ??= Promise.all([module, panel.webgl ? warmGpu() : null]).then(([fn]) => { mountPanel = fn; }, (error) => {
+      showNotice(noticeHost, t('panelLoadFailed', { title: panelTitle(panel.id) }), [messageOf(error)], { kind: 'error' });
       throw error;
     });
     return loading;
   }
 
-  function mountNow() {
+  /** @param {MountPanel} start the panel's mount() */
+  function mountNow(start) {
     wanted = true;
     container.style.minHeight = '';
-    gui = createPanelGui(guiHost, t('controlsTitle', { title: panelTitle(panel.id) }));
+    const root = createPanelGui(guiHost, t('controlsTitle', { title: panelTitle(panel.id) }));
+    gui = root;
     toolbar.hidden = false;
     controllers = Object.create(null);
     controlState.clear();
     try {
       // Values set during mount (code kept in this browser) are where the panel starts, not a change.
-      instance = checkInstance(panel.id, store.quietly(() => ownedBy(faults, () => mountPanel(content, ctx))));
+      instance = checkInstance(panel.id, store.quietly(() => ownedBy(faults, () => start(content, ctx))));
     } catch (error) {
       instance = null;
       startFailed = true;
-      gui.destroy();
+      root.destroy();
       gui = null;
       toolbar.hidden = true;
       content.replaceChildren();
-      showNotice(noticeHost, t('panelStartFailed', { title: panelTitle(panel.id) }), [error.message, t('panelStartAgain')],
+      showNotice(noticeHost, t('panelStartFailed', { title: panelTitle(panel.id) }), [messageOf(error), t('panelStartAgain')],
         { kind: 'error' });
       throw error;
     }
-    tools.offer(instance);
+    const made = instance;
+    tools.offer(made);
     if (titleLevel !== 2) for (const heading of content.querySelectorAll('h3')) heading.setAttribute('aria-level', String(titleLevel + 1));
     refreshDescription();
     domFrameDrawn();
-    return instance;
+    return made;
   }
 
   /**
@@ -206,9 +231,9 @@ export function createPanelHost(container, panel, {
   function mount() {
     if (instance) return instance;
     if (startFailed) return null;
-    if (mountPanel) return mountNow();
+    if (mountPanel) return mountNow(mountPanel);
     wanted = true;
-    return load().then(() => (wanted && !instance && !startFailed ? mountNow() : instance));
+    return load().then(() => (wanted && !instance && !startFailed && mountPanel ? mountNow(mountPanel) : instance));
   }
 
   function unmount() {
@@ -238,12 +263,19 @@ export function createPanelHost(container, panel, {
     if (again instanceof Promise) again.catch(() => {}); // a failure is said in the panel
   }
 
+  // The GUI is made before the panel's mount() runs, and lives as long as the panel is mounted.
+  const mountedGui = () => {
+    if (!gui) throw new Error(`The ${panel.id} panel asked for its controls while not mounted.`);
+    return gui;
+  };
+
   /** @type {import('./panelContract.js').PanelContext} */
   const ctx = {
     values,
-    get gui() { return gui; },
+    get gui() { return mountedGui(); },
     bind(folder, keys) {
-      const made = bindGui(folder ?? gui, panel.id, schema, draft, (key, value) => set({ [key]: value }, { source: 'user' }), keys);
+      const onChange = (/** @type {string} */ key, /** @type {unknown} */ value) => set({ [key]: value }, { source: 'user' });
+      const made = bindGui(folder ?? mountedGui(), panel.id, schema, draft, onChange, keys);
       Object.assign(controllers, made);
       controlState.bind(controllers);
       return made;
@@ -283,17 +315,27 @@ export function createPanelHost(container, panel, {
     links: () => ({ lecture: lectureLink(values), embed: embedUrl(panel, values, embedOptions) }),
     /** The keys the link set to something other than their default. */
     urlKeys: Object.keys(schema).filter((key) => start[key] !== schema[key].default),
-    /** Back to the link's values ('start') or the schema's defaults ('defaults'), as a change made by the API. */
+    /**
+     * Back to the link's values ('start') or the schema's defaults ('defaults'), as a change made by the API.
+     * @param {'start' | 'defaults'} [to]
+     */
     reset(to = 'start') {
       const target = { ...(to === 'defaults' ? defaults(schema) : start) };
       if (ctx.reducedMotion && panel.animates) target[panel.animates] = false; // still, as it was started
       return set(target, { source: 'api' });
     },
-    /** lock, unlock, hide or show controls (names, or null for all); returns the unknown names. */
+    /**
+     * lock, unlock, hide or show controls (names, or null for all); returns the unknown names.
+     * @param {import('./createControlState.js').ControlChange} kind
+     * @param {readonly string[] | null} names
+     */
     controls: (kind, names) => controlState.change(kind, names),
     get locked() { return controlState.locked; },
     get hiddenControls() { return controlState.hidden; },
-    /** Reduced motion asked for by the embed (true/false) or left to the reader (null): an animation stops. */
+    /**
+     * Reduced motion asked for by the embed (true/false) or left to the reader (null): an animation stops.
+     * @param {boolean | null} on
+     */
     setReducedMotion(on) {
       reducedMotion = on;
       if (on && panel.animates && values[panel.animates]) set({ [panel.animates]: false }, { source: 'api' });
@@ -303,6 +345,7 @@ export function createPanelHost(container, panel, {
     /**
      * The picture as a PNG data URL (fitted into width × height when given; null for a panel
      * without one), the plotted numbers as CSV text, and the values.
+     * @param {{ width?: number | null, height?: number | null }} [size]
      */
     async snapshot({ width = null, height = null } = {}) {
       const url = instance?.png?.() ?? null;

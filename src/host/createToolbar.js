@@ -4,7 +4,7 @@
 // from the host (the panel's link, embed code, picture, poster and table at the moment of the click).
 import english from 'virtual:messages/en/host';
 import { messages } from '../i18n/messages.js';
-import { el } from '../ui/el.js';
+import { button, el } from '../ui/el.js';
 import { copyText, downloadText, downloadUrl, offerForCopy, toCsv } from './exporters.js';
 
 const t = messages('host', english);
@@ -12,31 +12,33 @@ const t = messages('host', english);
 /**
  * @param {string} id  the panel's id (file names)
  * @param {{ link: () => string, embed: () => string, png: () => string | null | undefined,
- *   poster: () => Promise<string | null>, csv: () => { columns: Record<string, unknown[]>, filename?: string } | null | undefined }} make
+ *   poster: () => Promise<string | null>, csv: () => import('./panelContract.js').CsvTable | null | undefined }} make
  */
 export function createToolbar(id, make) {
   const element = el('div', 'toolbar');
   const status = el('span', 'toolbar-status');
   status.setAttribute('role', 'status');
   const buttons = {
-    link: el('button', '', t('copyLink')),
-    embed: el('button', '', t('copyEmbed')),
-    png: /** @type {HTMLButtonElement} */ (el('button', '', t('exportPng'))),
-    poster: el('button', '', t('exportPoster')),
-    csv: /** @type {HTMLButtonElement} */ (el('button', '', t('exportCsv'))),
+    link: button(t('copyLink')),
+    embed: button(t('copyEmbed')),
+    png: button(t('exportPng')),
+    poster: button(t('exportPoster')),
+    csv: button(t('exportCsv')),
   };
-  for (const b of Object.values(buttons)) /** @type {HTMLButtonElement} */ (b).type = 'button';
   element.append(...Object.values(buttons), status);
 
-  const say = (text) => {
+  const say = (/** @type {string} */ text) => {
     status.textContent = text;
     setTimeout(() => { if (status.textContent === text) status.textContent = ''; }, 2500);
   };
-  // Copied, or (the clipboard refused) offered selected for Ctrl+C.
-  const copy = async (button, text, done, label) => {
+  /**
+   * Copied, or (the clipboard refused) offered selected for Ctrl+C.
+   * @param {HTMLButtonElement} from @param {string} text @param {string} done @param {string} label
+   */
+  const copy = async (from, text, done, label) => {
     if (await copyText(text)) say(done);
     else {
-      offerForCopy(button, text, label);
+      offerForCopy(from, text, label);
       say(t('pressCtrlC'));
     }
   };
@@ -57,7 +59,10 @@ export function createToolbar(id, make) {
 
   return {
     element,
-    /** Which exports the mounted panel has (a panel without a picture has no PNG). */
+    /**
+     * Which exports the mounted panel has (a panel without a picture has no PNG).
+     * @param {Pick<import('./panelContract.js').PanelInstance, 'png' | 'csv'>} instance
+     */
     offer({ png, csv }) {
       buttons.png.disabled = !png;
       buttons.csv.disabled = !csv;

@@ -1,3 +1,4 @@
+// @ts-check
 // A panel on a slide shows whole, without scrolling inside its frame (embed option fit=1): the
 // embed's root is scaled down with CSS zoom, which lays the panel out smaller (type, plots and
 // canvases alike, pointer positions kept) until its content fits the frame's height. zoom rather
@@ -18,12 +19,15 @@ export function shrunkZoom(needed, available, current) {
   return Math.max(MIN_ZOOM, Math.floor(current * (available / needed) * 1000) / 1000);
 }
 
-/** Keeps `root` zoomed to fit the window's height as both change. Returns a function that stops it. */
+/**
+ * Keeps `root` zoomed to fit the window's height as both change. Returns a function that stops it.
+ * @param {HTMLElement} root
+ */
 export function fitToFrame(root) {
   let zoom = 1;
   let scheduled = 0;
   let fresh = true; // start again from full size: at first, and when the frame is resized
-  const apply = (value) => { zoom = value; root.style.zoom = String(value); };
+  const apply = (/** @type {number} */ value) => { zoom = value; root.style.zoom = String(value); };
   const fit = () => {
     scheduled = 0;
     if (fresh) {

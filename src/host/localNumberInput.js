@@ -1,3 +1,4 @@
+// @ts-check
 // A lil-gui number field in the page's language: shown with its decimal comma where the language
 // writes one (es: 1,5), and read with a comma or a point as typed. lil-gui reads its field with
 // parseFloat, which stops at a comma, so while the field has the focus it holds the point form:

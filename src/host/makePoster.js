@@ -1,3 +1,4 @@
+// @ts-check
 // "Export poster": for hosts that cannot embed a frame (Google Slides, a printed handout), the
 // panel's picture on a slide-sized PNG with its title, its link printed in full and a QR code of
 // the link, so a slide can link out to the live panel. The QR code comes from qrcode-generator,
@@ -11,24 +12,36 @@ const t = messages('host', english);
 
 export const POSTER = { width: 1920, height: 1080, margin: 64 };
 
-/** The QR code of `text` as { size, isDark(row, col) } (error correction M: 15 % of the code may be lost). */
+/**
+ * The QR code of `text` as { size, isDark(row, col) } (error correction M: 15 % of the code may be lost).
+ * @param {string} text
+ */
 export async function qrMatrix(text) {
   const { default: qrcode } = await import('qrcode-generator');
   const qr = qrcode(0, 'M');
   qr.addData(text);
   qr.make();
-  return { size: qr.getModuleCount(), isDark: (row, col) => qr.isDark(row, col) };
+  return { size: qr.getModuleCount(), isDark: (/** @type {number} */ row, /** @type {number} */ col) => qr.isDark(row, col) };
 }
 
-/** Where the QR code goes on the poster: its top-left corner and its module size (px). */
+/**
+ * Where the QR code goes on the poster: its top-left corner and its module size (px).
+ * @param {number} size  the code's modules on a side
+ */
 export function qrPlace(size) {
   const module = Math.floor(240 / (size + 8)); // a 4-module quiet zone on each side
   const side = module * (size + 8);
   return { x: POSTER.width - POSTER.margin - side, y: POSTER.height - POSTER.margin - side, module, side };
 }
 
-/** text broken at any character into lines no wider than `width` in the context's font. */
+/**
+ * text broken at any character into lines no wider than `width` in the context's font.
+ * @param {{ measureText(text: string): { width: number } }} g  a 2D context
+ * @param {string} text
+ * @param {number} width
+ */
 export function wrapText(g, text, width) {
+  /** @type {string[]} */
   const lines = [];
   let line = '';
   for (const char of text) {
@@ -45,6 +58,7 @@ export function wrapText(g, text, width) {
 /**
  * picture: a PNG data URL of the panel (or null); title; link: the lecture URL of this view;
  * colours: { background, text, muted }. Resolves a PNG data URL of POSTER.width × POSTER.height.
+ * @param {{ picture: string | null, title: string, link: string, colours: { background: string, text: string, muted: string } }} poster
  */
 export async function makePoster({ picture, title, link, colours }) {
   const { width, height, margin } = POSTER;
@@ -52,6 +66,7 @@ export async function makePoster({ picture, title, link, colours }) {
   canvas.width = width;
   canvas.height = height;
   const g = canvas.getContext('2d');
+  if (!g) throw new Error('This browser gives no 2D canvas to draw the poster on.');
   g.fillStyle = colours.background;
   g.fillRect(0, 0, width, height);
   g.fillStyle = colours.text;

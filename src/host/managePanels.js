@@ -1,3 +1,4 @@
+// @ts-check
 // Mount on approach, dispose when far: only panels on or near the screen hold a view, and never
 // more than maxLive WebGL panels at once (the farthest one gives its context up first).
 // Panels without WebGL stay mounted once they have been seen. A panel's module is fetched when the
@@ -5,9 +6,24 @@
 // the module arrives, if it is still near.
 import { MAX_LIVE_CONTEXTS } from '../gl/contextBudget.js';
 
+/**
+ * A panel of the page: its section and its host.
+ * @typedef {{ section: HTMLElement, host: Pick<import('./createPanelHost.js').PanelHost,
+ *   'id' | 'mounted' | 'usesWebGL' | 'loaded' | 'load' | 'mount' | 'unmount'> }} PanelEntry
+ */
+
+/**
+ * margin: how far off screen a panel counts as near (an IntersectionObserver rootMargin);
+ * maxLive: the most WebGL panels mounted at once.
+ * @param {PanelEntry[]} entries
+ * @param {{ margin?: string, maxLive?: number }} [options]
+ */
 export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = MAX_LIVE_CONTEXTS } = {}) {
+  /** @type {Set<PanelEntry>} */
   const near = new Set();
+  /** @type {Set<PanelEntry>} */
   const loading = new Set(); // near entries whose module is on its way (they hold a place in the budget)
+  /** @type {Set<PanelEntry>} */
   const failed = new Set(); // entries whose module would not load (their notice says so; never retried in a loop)
   // At start only the panels on screen fetch their modules; those just ahead wait until the first
   // picture is up, so the reader's panel is not queued behind modules nobody sees yet.
@@ -16,14 +32,17 @@ export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = 
   // software GPU ~0.1 s of the page's thread, which is better spent when the reader moves (the
   // places are reserved, so a panel that mounts as it comes into view moves nothing).
   let moved = false;
+  /** @param {PanelEntry} entry */
   const inWindow = ({ section }) => {
     const r = section.getBoundingClientRect();
     return r.bottom > 0 && r.top < window.innerHeight;
   };
+  /** @param {PanelEntry} entry */
   const onScreen = ({ section }) => {
     const r = section.getBoundingClientRect();
     return r.bottom > 0 && r.top < window.innerHeight / 2; // under the reader's eye, not peeking in at the bottom
   };
+  /** @param {PanelEntry} entry */
   const distance = ({ section }) => {
     const r = section.getBoundingClientRect();
     return Math.abs(r.top + r.height / 2 - window.innerHeight / 2);
@@ -38,10 +57,13 @@ export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = 
     }) ?? null;
   };
 
-  /** Mounts what is near and unmounts what is far; resolves once the modules it asked for have mounted. */
+  /**
+   * Mounts what is near and unmounts what is far; resolves once the modules it asked for have mounted.
+   * @returns {Promise<void>}
+   */
   function settle() {
     const anchor = anchorEntry();
-    const before = anchor?.section.getBoundingClientRect().top;
+    const before = anchor ? anchor.section.getBoundingClientRect().top : 0;
     const arrived = mountAndUnmount();
     if (anchor) {
       const shift = anchor.section.getBoundingClientRect().top - before;
@@ -50,12 +72,14 @@ export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = 
     return arrived;
   }
 
+  /** @returns {Promise<void>} */
   function mountAndUnmount() {
     for (const entry of entries) {
       if (entry.host.mounted && entry.host.usesWebGL && !near.has(entry)) entry.host.unmount();
     }
     const wanted = [...near].sort((a, b) => distance(a) - distance(b));
     let glMounted = entries.filter((e) => (e.host.mounted || loading.has(e)) && e.host.usesWebGL).length;
+    /** @type {Promise<void>[]} */
     const arrivals = [];
     for (const entry of wanted) {
       if (entry.host.mounted || loading.has(entry) || failed.has(entry)) continue;
@@ -92,11 +116,14 @@ export function managePanels(entries, { margin = '100% 0px 100% 0px', maxLive = 
     return arrivals.length ? Promise.all(arrivals).then(() => settle()) : Promise.resolve();
   }
 
-  let firstSettled;
+  /** @type {() => void} */
+  let firstSettled = () => {};
+  /** @type {Promise<void>} */
   const first = new Promise((resolve) => { firstSettled = resolve; });
   const observer = new IntersectionObserver((records) => {
     for (const record of records) {
       const entry = entries.find((e) => e.section === record.target);
+      if (!entry) continue;
       if (record.isIntersecting) near.add(entry);
       else near.delete(entry);
     }

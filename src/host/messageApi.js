@@ -1,3 +1,4 @@
+// @ts-check
 // The message API between a slide deck (or any page) and an embedded panel, version 1
 // (window.postMessage; docs/deck/messages.md has the table). Deck → panel:
 //   {type:'fresnel-lab:set', params}              validated; rejected values answer fresnel-lab:error
@@ -28,21 +29,49 @@ export const API_VERSION = 1;
 /** How long changes are gathered into one `changed` message (a slider drag sends a few a second). */
 export const CHANGED_MS = 80;
 
+/** @typedef {import('./createControlState.js').ControlChange} ControlChange */
+
+/**
+ * A message the panel takes, as parseMessage reads it.
+ * @typedef {{ kind: 'get' | 'pause' | 'resume' }
+ *   | { kind: 'set', params: Record<string, unknown> }
+ *   | { kind: 'reset', to: 'start' | 'defaults' }
+ *   | { kind: 'snapshot', width: number | null, height: number | null, id: string | null }
+ *   | { kind: 'theme', theme: 'light' | 'dark' }
+ *   | { kind: 'language', lang: string }
+ *   | { kind: 'projector' | 'reducedMotion' | 'audio', on: boolean }
+ *   | { kind: ControlChange, keys: string[] | null }} Message
+ */
+
+/** @type {readonly string[]} */
 const CONTROL_KINDS = ['lock', 'unlock', 'hide', 'show'];
 const MAX_SNAPSHOT = 4096;
 
+/** @type {(v: unknown) => v is Record<string, unknown>} */
 const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
 
-/** keys: absent (all), or a list of up to 64 short strings; anything else is not a message. */
+/** @type {(kind: string) => kind is ControlChange} */
+const isControlChange = (kind) => CONTROL_KINDS.includes(kind);
+
+/**
+ * keys: absent (all), or a list of up to 64 short strings; anything else is not a message.
+ * @param {unknown} keys
+ * @returns {{ ok: true, keys: string[] | null } | { ok: false, keys?: undefined }}
+ */
 function keyList(keys) {
   if (keys === undefined || keys === null) return { ok: true, keys: null };
   if (!Array.isArray(keys) || keys.length > 64 || !keys.every((k) => typeof k === 'string' && k.length <= 64)) return { ok: false };
   return { ok: true, keys };
 }
 
-const size = (v) => (v === undefined ? null : Number.isInteger(v) && v >= 1 && v <= MAX_SNAPSHOT ? v : undefined);
+/** A snapshot's side: null when absent, undefined when it is not a size. @param {unknown} v */
+const size = (v) => (v === undefined ? null : typeof v === 'number' && Number.isInteger(v) && v >= 1 && v <= MAX_SNAPSHOT ? v : undefined);
 
-/** The message as { kind, … } when it has one of the accepted shapes, else null. */
+/**
+ * The message as { kind, … } when it has one of the accepted shapes, else null.
+ * @param {unknown} data
+ * @returns {Message | null}
+ */
 export function parseMessage(data) {
   if (data === 'slide:start') return { kind: 'resume' };
   if (data === 'slide:stop') return { kind: 'pause' };
@@ -56,8 +85,8 @@ export function parseMessage(data) {
     case 'set':
       return isObject(data.params) ? { kind, params: data.params } : null;
     case 'reset':
-      if (data.to !== undefined && data.to !== 'start' && data.to !== 'defaults') return null;
-      return { kind, to: data.to ?? 'start' };
+      if (data.to === undefined || data.to === 'start') return { kind, to: 'start' };
+      return data.to === 'defaults' ? { kind, to: data.to } : null;
     case 'snapshot': {
       const width = size(data.width);
       const height = size(data.height);
@@ -75,32 +104,51 @@ export function parseMessage(data) {
     case 'audio':
       return typeof data.on === 'boolean' ? { kind, on: data.on } : null;
     default: {
-      if (!CONTROL_KINDS.includes(kind)) return null;
+      if (!isControlChange(kind)) return null;
       const list = keyList(data.keys);
       return list.ok ? { kind, keys: list.keys } : null;
     }
   }
 }
 
-/** Plain copy of the values (no prototype, no functions) for posting. */
+/**
+ * Plain copy of the values (no prototype, no functions) for posting.
+ * @param {Readonly<import('./panelContract.js').Values>} values
+ * @returns {import('./panelContract.js').Values}
+ */
 function plain(values) {
   return JSON.parse(JSON.stringify(values));
 }
+
+/**
+ * What the embed page does for the page-wide messages.
+ * @typedef {{ theme?: (scheme: 'light' | 'dark') => void, language?: (lang: string) => void,
+ *   projector?: (on: boolean) => void, reducedMotion?: (on: boolean) => void, audio?: (on: boolean) => void,
+ *   pause?: () => void, resume?: () => void }} PageHooks
+ */
 
 /**
  * Connects `host` to the messages of its parent page. origin: the deck's origin from
  * `?parentOrigin=` (messages go only there and only its messages are heard), 'none' (an unusable
  * parentOrigin: nothing is posted and nothing heard), or '*'. page: what
  * the embed page does for the page-wide messages: { theme(scheme), projector(on),
- * reducedMotion(on), audio(on), pause(), resume() }.
+ * reducedMotion(on), audio(on), language(lang), pause(), resume() }.
+ * @param {Pick<import('./createPanelHost.js').PanelHost, 'id' | 'values' | 'set' | 'reset' | 'snapshot' | 'controls' | 'onChange'
+ *   | 'urlKeys'>} host
+ * @param {{ parent?: Window | null, origin?: string, page?: PageHooks }} [options]
  */
 export function connectMessages(host, { parent = window.parent, origin = '*', page = {} } = {}) {
+  /** @param {Window | null} target @param {object} message */
   const post = (target, message) => { if (origin !== 'none') target?.postMessage(message, origin); };
+  /** @param {object} message */
   const announce = (message) => { if (parent && parent !== window) post(parent, message); };
   const state = () => ({ type: 'fresnel-lab:state', panel: host.id, params: plain(host.values) });
 
+  /** @param {Message} message @param {Window | null} reply */
   async function answer(message, reply) {
+    /** @param {object} m */
     const say = (m) => post(reply, m);
+    /** @param {string} text */
     const sayError = (text) => say({ type: 'fresnel-lab:error', panel: host.id, message: text });
     switch (message.kind) {
       case 'get':
@@ -132,21 +180,35 @@ export function connectMessages(host, { parent = window.parent, origin = '*', pa
         if (unknown.length) sayError(t('apiNoControl', { names: unknown.map((k) => k.slice(0, 40)).join(', ') }));
         return;
       }
+      case 'theme':
+        page.theme?.(message.theme);
+        return;
+      case 'language':
+        page.language?.(message.lang);
+        return;
+      case 'projector':
+      case 'reducedMotion':
+      case 'audio':
+        page[message.kind]?.(message.on);
+        return;
       default:
-        page[message.kind]?.(message.theme ?? message.lang ?? message.on);
+        page[message.kind]?.();
     }
   }
 
+  /** @param {MessageEvent} event */
   const onMessage = (event) => {
     if (origin === 'none' || (origin !== '*' && event.origin !== origin)) return;
     const message = parseMessage(event.data);
-    if (message) answer(message, event.source ?? parent);
+    // A message posted by a page: its source is that page's window (ports and workers post through other APIs).
+    if (message) answer(message, /** @type {Window | null} */ (event.source) ?? parent);
   };
   window.addEventListener('message', onMessage);
 
   // Every change, gathered for CHANGED_MS per source (a timer, not an animation frame: a frame
   // off screen or on a hidden slide gets none). Changes the deck did not ask for also send
   // `state`, as before version 1.
+  /** @type {Map<import('./panelContract.js').ChangeSource, Set<string>>} */
   const gathered = new Map();
   let timer = 0;
   const flush = () => {
@@ -159,14 +221,16 @@ export function connectMessages(host, { parent = window.parent, origin = '*', pa
     gathered.clear();
   };
   const stopListening = host.onChange(({ keys, source }) => {
-    if (!gathered.has(source)) gathered.set(source, new Set());
-    keys.forEach((k) => gathered.get(source).add(k));
+    const set = gathered.get(source) ?? new Set();
+    gathered.set(source, set);
+    keys.forEach((k) => set.add(k));
     timer ||= setTimeout(flush, CHANGED_MS);
   });
 
   // Clicker and arrow keys that nothing in the panel used go to the deck, so a presenter's
   // Page Down still moves the slides after a click in the panel (hakimel/reveal.js#1619).
   const FORWARDED = ['PageDown', 'PageUp', ' ', 'ArrowLeft', 'ArrowRight', 'ArrowUp', 'ArrowDown', 'Home', 'End'];
+  /** @param {KeyboardEvent} event */
   const onKey = (event) => {
     if (event.defaultPrevented || !FORWARDED.includes(event.key) || event.ctrlKey || event.metaKey || event.altKey) return;
     const target = /** @type {HTMLElement} */ (event.target);
@@ -185,9 +249,9 @@ export function connectMessages(host, { parent = window.parent, origin = '*', pa
       announce({ type: 'fresnel-lab:ready', apiVersion: API_VERSION, panel: host.id, params });
       if (host.urlKeys?.length) announce({ type: 'fresnel-lab:changed', panel: host.id, source: 'url', keys: host.urlKeys, params });
     },
-    rendered: (frame) => announce({ type: 'fresnel-lab:rendered', panel: host.id, frame }),
-    size: (height) => announce({ type: 'fresnel-lab:size', panel: host.id, height }),
-    audio: (on) => announce({ type: 'fresnel-lab:audio', panel: host.id, on }),
+    rendered: (/** @type {number} */ frame) => announce({ type: 'fresnel-lab:rendered', panel: host.id, frame }),
+    size: (/** @type {number} */ height) => announce({ type: 'fresnel-lab:size', panel: host.id, height }),
+    audio: (/** @type {boolean} */ on) => announce({ type: 'fresnel-lab:audio', panel: host.id, on }),
     disconnect() {
       window.removeEventListener('message', onMessage);
       window.removeEventListener('keydown', onKey);

@@ -7,21 +7,44 @@
 
 /**
  * One parameter. The schema is the single source of truth for the panel's controls, its URL keys
- * and its messages; a value that breaks it is reported and replaced by the default.
- * @typedef {object} ParamSpec
- * @property {'number'|'enum'|'color'|'boolean'|'text'} type
- * @property {number|string|boolean} default
- * @property {number} [min]
- * @property {number} [max]
- * @property {number} [step]       also sets how many decimals the URL keeps
- * @property {boolean} [integer]   numbers: whole numbers only (an index or a count)
- * @property {string[]} [options]  enum values (their names, and the control's, are the catalogue's: panelText.js)
+ * and its messages; a value that breaks it is reported and replaced by the default. Each type has
+ * its own fields:
+ * @typedef {NumberSpec | EnumSpec | ColorSpec | BooleanSpec | TextSpec} ParamSpec
+ */
+
+/**
+ * What every type may have.
+ * @typedef {object} SpecCommon
  * @property {string[]} [aliases]  older keys that still read, so links made before a rename work
- * @property {number} [maxLength]  texts: the longest accepted
- * @property {(text: string) => string} [encode]  texts: the compact form the link writes
- * @property {(raw: string) => string | null} [decode]  texts: the link's form (or plain text) back, null if unreadable
- * @property {string} [defaultText]  texts: the default in words, for a notice (the text itself may be long or empty): the key
- *   of those words in the catalogue, host.defaultText.<key>
+ */
+
+/**
+ * @typedef {SpecCommon & {
+ *   type: 'number', default: number, min: number, max: number,
+ *   step?: number,
+ *   integer?: boolean,
+ * }} NumberSpec  step also sets how many decimals the URL keeps; integer: whole numbers only (an index or a count)
+ */
+
+/**
+ * @typedef {SpecCommon & { type: 'enum', default: string, options: string[] | Record<string, string> }} EnumSpec
+ *   options: the values (their names, and the control's, are the catalogue's: panelText.js); an object's keys are
+ *   the values too
+ */
+
+/** @typedef {SpecCommon & { type: 'color', default: string }} ColorSpec  a colour as #rrggbb */
+
+/** @typedef {SpecCommon & { type: 'boolean', default: boolean }} BooleanSpec */
+
+/**
+ * @typedef {SpecCommon & {
+ *   type: 'text', default: string, maxLength: number,
+ *   encode?: (text: string) => string,
+ *   decode?: (raw: string) => string | null,
+ *   defaultText?: string,
+ * }} TextSpec  maxLength: the longest accepted; encode: the compact form the link writes; decode: the link's form (or
+ *   plain text) back, null if unreadable; defaultText: the default in words, for a notice (the text itself may be long
+ *   or empty): the key of those words in the catalogue, host.defaultText.<key>
  */
 
 /** @typedef {Record<string, ParamSpec>} Schema */
@@ -56,26 +79,42 @@
  *   tells no listener: where a panel starts is no change (a deck reads those values from ready).
  * @property {() => void} invalidate  something other than the values changed (a result arrived): update([]) and describe() again
  * @property {import('lil-gui').default} gui  this mount's lil-gui root
- * @property {(folder: import('lil-gui').default | null, keys: string[]) => Record<string, object>} bind
+ * @property {(folder: import('lil-gui').default | null, keys: string[]) => Record<string, import('lil-gui').Controller>} bind
  *   controllers for these schema keys in a folder (or the root)
- * @property {(controller: any, keys: string[]) => any} tie  a control of the panel's own that changes `keys`
- *   (a preset, a button): a deck's lock or hide of those keys applies to it too; returns the controller
+ * @property {<C extends import('./createControlState.js').Control>(controller: C, keys: string[]) => C} tie  a control of the
+ *   panel's own that changes `keys` (a preset, a button): a deck's lock or hide of those keys applies to it too; returns
+ *   the controller
  * @property {() => void} frameDrawn  call after each WebGL frame (frame counters, `rendered` messages)
  * @property {(material: { id?: string, name?: string, n: number }) => void} applyMaterial  to every panel of the page
  * @property {boolean} reducedMotion  the reader (or the embed's link or deck) asked for reduced motion
  */
 
 /**
- * What mount() returns (PanelInstance: these, and any members of its own, for tests and the benchmark).
+ * What mount() returns: these, and members of its own that tests and the benchmark read (a scene,
+ * a plot, a model: `unknown` here, typed where the panel makes them).
  * @typedef {object} PanelCore
  * @property {(keys?: string[]) => void} update  values changed (keys: which; [] for a re-describe)
  * @property {() => string} describe  the key numbers in words: shown under the panel, and every canvas's description
- * @property {(() => { filename?: string, columns: Record<string, Array<number|string>> })} [csv]  the plotted numbers
+ * @property {(() => CsvTable) | null} [csv]  the plotted numbers
  * @property {(() => string | null) | null} [png]  a PNG data URL of the picture
+ * @property {AudioTrace} [trace]  the audio trace of its R(θ) plot, where it has one
  * @property {() => void} dispose  free everything: contexts, observers, listeners, timers
  */
 
-/** @typedef {PanelCore & { [member: string]: any }} PanelInstance */
+/** @typedef {{ filename?: string, columns: Record<string, ArrayLike<number | string>> }} CsvTable */
+
+/**
+ * The audio trace under an R(θ) plot (src/ui/createAudioTrace.js), as tests and decks drive it.
+ * @typedef {object} AudioTrace
+ * @property {HTMLElement} element
+ * @property {number} deg  where its cursor is (degrees)
+ * @property {string | null} readout  the words read out there
+ * @property {(to: number) => void} moveTo  move the cursor as the keys do
+ * @property {() => void} refresh  the values changed: the words and the cursor follow
+ * @property {() => void} dispose
+ */
+
+/** @typedef {PanelCore & { [member: string]: unknown }} PanelInstance */
 
 /**
  * @typedef {import('../panels/manifest.js').PanelEntry & {
@@ -85,12 +124,19 @@
  * }} PanelDefinition  mount, or load() that resolves to it (the module arrives when the panel is first wanted)
  */
 
-/** The instance, if it keeps the contract; otherwise an error that names the panel and what is missing. */
+/**
+ * The instance, if it keeps the contract; otherwise an error that names the panel and what is missing.
+ * @param {string} id
+ * @param {unknown} instance  what the panel's mount() returned
+ * @returns {PanelInstance}
+ */
 export function checkInstance(id, instance) {
-  const missing = ['update', 'describe', 'dispose'].filter((name) => typeof instance?.[name] !== 'function');
+  /** @param {string} name */
+  const member = (name) => (instance == null ? undefined : /** @type {Record<string, unknown>} */ (instance)[name]);
+  const missing = ['update', 'describe', 'dispose'].filter((name) => typeof member(name) !== 'function');
   for (const name of ['csv', 'png']) {
-    if (instance?.[name] != null && typeof instance[name] !== 'function') missing.push(`${name} (a function or null)`);
+    if (member(name) != null && typeof member(name) !== 'function') missing.push(`${name} (a function or null)`);
   }
   if (missing.length) throw new TypeError(`The ${id} panel's mount() returned no ${missing.join(', ')}.`);
-  return instance;
+  return /** @type {PanelInstance} */ (instance); // its members checked above
 }

@@ -15,7 +15,7 @@ const t = messages('host', english);
 
 /** @typedef {import('../gl/faultOwner.js').FaultOwner} PanelFaults */
 
-const messageOf = (error) => (error instanceof Error ? error.message : String(error)) || t('unknownError');
+const messageOf = (/** @type {unknown} */ error) => (error instanceof Error ? error.message : String(error)) || t('unknownError');
 
 /**
  * The fault line of one panel (`element`, for the host to place above the picture), shown while
@@ -39,6 +39,7 @@ export function createPanelFaults({ title, restart }) {
   line.append(text, again);
   let lost = 0;
   let count = 0;
+  /** @type {string | null} */
   let error = null; // the last error's message
 
   function show() {
@@ -86,7 +87,11 @@ const INPUTS = ['pointerdown', 'pointermove', 'pointerup', 'click', 'dblclick', 
 let inputOwner = null;
 let clearing = 0;
 
-/** Errors thrown while an input event inside `container` is dispatched belong to `faults`. */
+/**
+ * Errors thrown while an input event inside `container` is dispatched belong to `faults`.
+ * @param {HTMLElement} container
+ * @param {PanelFaults} faults
+ */
 export function watchInputs(container, faults) {
   const mark = () => {
     inputOwner = faults;
@@ -104,7 +109,7 @@ export function watchInputs(container, faults) {
  */
 export function installPageFaults(sayOnPage) {
   const seen = new Set();
-  const report = (reason) => {
+  const report = (/** @type {unknown} */ reason) => {
     if (inputOwner) {
       inputOwner.fail(reason);
       return;

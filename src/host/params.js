@@ -29,20 +29,30 @@ const HEX = /^#?([0-9a-f]{6})$/i;
 // takes 0x1, 0b1, 0o7 and Infinity, which no link or control writes.
 const DECIMAL = /^[-+]?(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?$/i;
 
-/** A decimal number written as text (surrounding spaces allowed), or NaN. */
+/** @typedef {import('./panelContract.js').ParamSpec} ParamSpec */
+/** @typedef {import('./panelContract.js').Schema} Schema */
+/** @typedef {import('./panelContract.js').Value} Value */
+/** @typedef {import('./panelContract.js').Values} Values */
+
+/**
+ * A decimal number written as text (surrounding spaces allowed), or NaN.
+ * @param {string} text
+ */
 export function readNumber(text) {
   const trimmed = text.trim();
   return DECIMAL.test(trimmed) ? Number(trimmed) : NaN;
 }
 
+/** @param {import('./panelContract.js').EnumSpec} spec */
 function enumValues(spec) {
-  return Array.isArray(spec.options) ? spec.options.map(String) : Object.keys(spec.options);
+  return Array.isArray(spec.options) ? spec.options.map(String) : Object.keys(spec.options ?? {});
 }
 
 /**
  * Any value from outside as a short text for a notice or an error message, without running any of
  * its code: String() of an object calls its toString, which a message can set to something that
  * throws ({ toString: 'x' }), and a getter could run anything.
+ * @param {unknown} raw
  */
 export function rawText(raw, max = 40) {
   let text;
@@ -51,22 +61,38 @@ export function rawText(raw, max = 40) {
   return text.length > max ? `${clipText(text, max)}…` : text;
 }
 
-/** At most `max` UTF-16 units of a text, without half of a character beyond the BMP at the cut (it would show as �). */
+/**
+ * At most `max` UTF-16 units of a text, without half of a character beyond the BMP at the cut (it would show as �).
+ * @param {string} text
+ * @param {number} max
+ */
 export function clipText(text, max) {
   return text.slice(0, /[\ud800-\udbff]/.test(text.charAt(max - 1)) ? max - 1 : max);
 }
 
-/** Number of decimals implied by a step (0.001 → 3), used to write short, exact URLs. */
+/**
+ * Number of decimals implied by a step (0.001 → 3), used to write short, exact URLs.
+ * @param {number | undefined} step
+ */
 export function stepDecimals(step) {
   if (!step || step >= 1) return 0;
   return Math.min(12, Math.max(0, Math.ceil(-Math.log10(step) - 1e-9)));
 }
 
 /**
+ * A raw value checked: the value it stands for, or why it was refused.
+ * @typedef {{ ok: true, value: Value, reason?: undefined } | { ok: false, reason: string, value?: undefined }} Parsed
+ */
+
+/**
  * Checks one raw value (a URL string, a control's value or a message field) against its spec.
  * Returns { ok: true, value } or { ok: false, reason }.
+ * @param {ParamSpec} spec
+ * @param {unknown} raw
+ * @returns {Parsed}
  */
 export function parseValue(spec, raw) {
+  const { type } = spec; // as written: a schema that is not type-checked may name another type
   switch (spec.type) {
     case 'number': {
       const value = typeof raw === 'number' ? raw : typeof raw === 'string' ? readNumber(raw) : NaN;
@@ -104,28 +130,38 @@ export function parseValue(spec, raw) {
       return { ok: true, value: text };
     }
     default:
-      return { ok: false, reason: t('reasonUnknownType', { type: rawText(spec.type) }) };
+      return { ok: false, reason: t('reasonUnknownType', { type: rawText(type) }) };
   }
 }
 
-/** Writes a value as it appears in a URL. */
+/**
+ * Writes a value as it appears in a URL.
+ * @param {ParamSpec} spec
+ * @param {Value} value
+ * @returns {string}
+ */
 export function formatValue(spec, value) {
   switch (spec.type) {
     case 'number': {
+      if (typeof value !== 'number') return String(value); // not a value of this spec: written as it is
       const text = value.toFixed(stepDecimals(spec.step));
       const short = text.includes('.') ? text.replace(/\.?0+$/, '') : text;
       return short === '-0' ? '0' : short; // a tiny negative value rounds to 0, not to a link of its own
     }
     case 'color':
-      return value.replace('#', '');
+      return String(value).replace('#', '');
     case 'text':
-      return spec.encode ? spec.encode(value) : value;
+      return spec.encode ? spec.encode(String(value)) : String(value);
     default:
       return String(value);
   }
 }
 
-/** The schema's defaults as a fresh values object. */
+/**
+ * The schema's defaults as a fresh values object.
+ * @param {Schema} schema
+ * @returns {Values}
+ */
 export function defaults(schema) {
   return Object.fromEntries(Object.entries(schema).map(([key, spec]) => [key, spec.default]));
 }
@@ -134,13 +170,23 @@ export function defaults(schema) {
  * The schema with other defaults: `start` (values already checked against it) where it has them.
  * Read and written with it, a link carries only what differs from that start, as a lecture's panel
  * that starts elsewhere than the panel's defaults needs (a key left out means the item's value).
+ * @param {Schema} schema
+ * @param {Readonly<Values>} start
+ * @returns {Schema}
  */
 export function withDefaults(schema, start) {
-  const startOf = ([key, spec]) => [key, Object.hasOwn(start, key) ? { ...spec, default: start[key] } : spec];
+  /** @type {(entry: [string, ParamSpec]) => [string, ParamSpec]} */
+  const startOf = ([key, spec]) => [key, Object.hasOwn(start, key)
+    ? /** @type {ParamSpec} */ ({ ...spec, default: start[key] }) // start[key] was checked against this spec
+    : spec];
   return Object.fromEntries(Object.entries(schema).map(startOf));
 }
 
-/** The schema key a name or one of its aliases stands for, or undefined. */
+/**
+ * The schema key a name or one of its aliases stands for, or undefined.
+ * @param {Schema} schema
+ * @param {string} name
+ */
 export function resolveKey(schema, name) {
   if (Object.hasOwn(schema, name)) return name;
   return Object.keys(schema).find((key) => schema[key].aliases?.includes(name));
@@ -151,9 +197,13 @@ export function resolveKey(schema, name) {
  * Keys may carry a prefix (`spheres.nT`) and may be written by an alias (`n2` for `nT`); the key
  * itself wins over an alias. Absent keys take the default silently, bad ones take the default
  * and are listed in `problems`.
+ * @param {Schema} schema
+ * @param {{ get(name: string): string | null, has(name: string): boolean }} search
+ * @returns {{ values: Values, problems: Problem[] }}
  */
 export function readParams(schema, search, prefix = '') {
   const values = defaults(schema);
+  /** @type {Problem[]} */
   const problems = [];
   for (const [key, spec] of Object.entries(schema)) {
     const name = [key, ...(spec.aliases ?? [])].map((k) => prefix + k).find((k) => search.has(k));
@@ -175,11 +225,17 @@ export function readParams(schema, search, prefix = '') {
  * Applies a partial update (from a control, a message, the page) to values. Keys may be aliases.
  * Unknown keys and bad values are rejected and reported; the rest are applied. Returns
  * { applied, rejected, changed }: changed lists the keys whose value is now different.
+ * @param {Schema} schema
+ * @param {Values} values  written in place
+ * @param {unknown} update  an object of names and raw values (anything else applies nothing)
+ * @returns {{ applied: Values, rejected: Problem[], changed: string[] }}
  */
 export function applyParams(schema, values, update) {
-  /** @type {import('./panelContract.js').Values} */
+  /** @type {Values} */
   const applied = {};
+  /** @type {Problem[]} */
   const rejected = [];
+  /** @type {string[]} */
   const changed = [];
   for (const [name, raw] of Object.entries(update ?? {})) {
     const key = resolveKey(schema, name);
@@ -201,6 +257,11 @@ export function applyParams(schema, values, update) {
 /**
  * Writes a schema's values into URLSearchParams: values that differ from their defaults are set,
  * the rest removed, so a page of many panels keeps a short link that still reproduces the view.
+ * @template {URLSearchParams} S
+ * @param {Schema} schema
+ * @param {Readonly<Values>} values
+ * @param {S} search
+ * @returns {S}
  */
 export function writeParams(schema, values, search, prefix = '') {
   for (const [key, spec] of Object.entries(schema)) {
@@ -212,7 +273,10 @@ export function writeParams(schema, values, search, prefix = '') {
   return search;
 }
 
-/** A readable sentence for a problem, for the on-screen notice. */
+/**
+ * A readable sentence for a problem, for the on-screen notice.
+ * @param {Problem} problem
+ */
 export function describeProblem({ key, raw, reason, fallback }) {
   const words = { key: rawText(key), raw: rawText(raw), reason };
   return fallback === undefined ? t('problemIgnored', words) : t('problemUsing', { ...words, fallback });

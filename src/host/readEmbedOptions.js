@@ -1,3 +1,4 @@
+// @ts-check
 // The embed page's own URL parameters, beside the panel's: how it looks and who may drive it.
 //   theme=light|dark, projector=1|0, reducedMotion=1|0   override what the browser remembers
 //   audio=1|0                                             the audio trace of the R(θ) plots on or off (off by default)
@@ -18,13 +19,16 @@ export const EMBED_KEYS = [
   'panel', 'theme', 'projector', 'reducedMotion', 'audio', 'lock', 'hide', 'controls', 'fit', 'lang', 'parentOrigin',
 ];
 
+/** @param {string | null} raw */
 const flag = (raw) => (raw === '1' || raw === 'true' ? true : raw === '0' || raw === 'false' ? false : undefined);
+/** @param {string} raw */
 const list = (raw) => raw.split(',').map((k) => k.trim()).filter(Boolean).slice(0, 64);
 
 /**
  * The origin of an http(s) URL that names nothing but its origin (`https://Deck.example:443/`
  * gives `https://deck.example`), or null: a path, a query, a user name or another scheme is not
  * an origin.
+ * @param {string} raw
  */
 export function parseOrigin(raw) {
   try {
@@ -37,27 +41,40 @@ export function parseOrigin(raw) {
   }
 }
 
-/** @param {URLSearchParams} search */
+/**
+ * The embed page's options. theme, projector, reducedMotion: null where the link says nothing (the
+ * reader's choice holds); parentOrigin: null (any page), 'none' (no page) or an origin.
+ * @typedef {{ theme: 'light' | 'dark' | null, projector: boolean | null, reducedMotion: boolean | null, audio: boolean,
+ *   lock: string[], hide: string[], controls: boolean, fit: boolean, parentOrigin: string | null }} EmbedOptions
+ */
+
+/**
+ * @param {URLSearchParams} search
+ * @returns {{ options: EmbedOptions, problems: import('./params.js').Problem[] }}
+ */
 export function readEmbedOptions(search) {
+  /** @type {EmbedOptions} */
   const options = {
     theme: null, projector: null, reducedMotion: null, audio: false, lock: [], hide: [], controls: true, fit: false, parentOrigin: null,
   };
+  /** @type {import('./params.js').Problem[]} */
   const problems = [];
+  /** @param {string} key @param {string | null} raw @param {string} reason */
   const bad = (key, raw, reason) => problems.push({ key, raw, reason });
   if (search.has('theme')) {
     const raw = search.get('theme');
     if (raw === 'light' || raw === 'dark') options.theme = raw;
     else bad('theme', raw, t('reasonNotTheme'));
   }
-  for (const key of ['projector', 'reducedMotion', 'audio', 'controls', 'fit']) {
+  for (const key of /** @type {const} */ (['projector', 'reducedMotion', 'audio', 'controls', 'fit'])) {
     if (!search.has(key)) continue;
     const value = flag(search.get(key));
     if (value === undefined) bad(key, search.get(key), t('reasonNotFlag'));
     else options[key] = value;
   }
-  for (const key of ['lock', 'hide']) if (search.has(key)) options[key] = list(search.get(key));
+  for (const key of /** @type {const} */ (['lock', 'hide'])) if (search.has(key)) options[key] = list(search.get(key) ?? '');
   if (search.has('parentOrigin')) {
-    options.parentOrigin = parseOrigin(search.get('parentOrigin')) ?? 'none';
+    options.parentOrigin = parseOrigin(search.get('parentOrigin') ?? '') ?? 'none';
     if (options.parentOrigin === 'none') {
       bad('parentOrigin', search.get('parentOrigin'), t('reasonNotOrigin'));
     }

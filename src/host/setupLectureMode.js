@@ -1,26 +1,35 @@
+// @ts-check
 // Lecture mode: a clicker or the keyboard steps panel to panel (arrows, Page Up/Down, Space),
 // `f` toggles full screen, `h` hides every control; the current panel is kept in the URL hash so
 // a reload returns to it.
 const NEXT = new Set(['ArrowDown', 'ArrowRight', 'PageDown', ' ']);
 const PREVIOUS = new Set(['ArrowUp', 'ArrowLeft', 'PageUp']);
 
-/** Keys typed into a form control, or given to a focused canvas or slider, are not navigation. */
+/**
+ * Keys typed into a form control, or given to a focused canvas or slider, are not navigation.
+ * @param {EventTarget | null} target
+ */
 function ownsKeys(target) {
   if (!(target instanceof Element)) return false;
   return Boolean(target.closest('input, select, textarea, button, a, canvas, [contenteditable], [role="slider"], .lil-gui, table'));
 }
 
+/**
+ * Lecture mode over the page's panel sections, in order. onHideControls: the `h` key.
+ * @param {HTMLElement[]} sections
+ * @param {{ onHideControls?: () => void }} [options]
+ */
 export function setupLectureMode(sections, { onHideControls } = {}) {
   let current = Math.max(0, sections.findIndex((s) => `#${s.id}` === window.location.hash));
 
-  const goTo = (index) => {
+  const goTo = (/** @type {number} */ index) => {
     current = Math.min(sections.length - 1, Math.max(0, index));
     const section = sections[current];
     section.scrollIntoView({ behavior: 'auto', block: 'start' });
     section.focus({ preventScroll: true });
     setHash(section.id);
   };
-  const setHash = (id) => {
+  const setHash = (/** @type {string} */ id) => {
     if (window.location.hash !== `#${id}`) window.history.replaceState(window.history.state, '', `#${id}`);
   };
 
@@ -39,6 +48,7 @@ export function setupLectureMode(sections, { onHideControls } = {}) {
   }, { threshold: [0, 0.25, 0.5, 0.75, 1] });
   sections.forEach((s) => observer.observe(s));
 
+  /** @param {KeyboardEvent} event */
   const onKey = (event) => {
     if (event.defaultPrevented || event.ctrlKey || event.metaKey || event.altKey) return;
     if (ownsKeys(event.target)) return;

@@ -1,3 +1,4 @@
+// @ts-check
 // The lecture page's own controls: the language, theme (dark/light), projector mode, one material
 // for every panel, and hiding all controls for a clean projected picture (also the `h` key).
 import english from 'virtual:messages/en/host';
@@ -23,7 +24,7 @@ export function languageSelect() {
   // A pseudo-locale (asked for by link, for tests) is shown while it is the page's, so the select says what the page speaks.
   const current = languageById(currentLanguage());
   const choices = languageChoices();
-  for (const language of choices.includes(current) || !current ? choices : [...choices, current]) {
+  for (const language of !current || choices.includes(current) ? choices : [...choices, current]) {
     const option = new Option('', language.id, false, language.id === current?.id);
     option.label = language.name; // shown as the option's text, and no text of the page's language around it
     option.lang = language.id;
@@ -39,13 +40,20 @@ export function languageSelect() {
 }
 
 /** A refractive index as the table of materials writes it (1.000293, 1.3333): every digit it has, the page's decimal separator. */
-const materialIndex = (n) => fixed(n, Math.max(0, (String(n).split('.')[1] ?? '').length));
+const materialIndex = (/** @type {number} */ n) => fixed(n, Math.max(0, (String(n).split('.')[1] ?? '').length));
 
+/**
+ * The controls, appended to `bar`. onMaterial(material): a material was picked for every panel
+ * (none: a page without panels of its own, which gets no material select and no hide button).
+ * @param {HTMLElement} bar
+ * @param {{ onMaterial?: ((material: (typeof dielectrics)[number]) => void) | null }} [options]
+ */
 export function setupPageControls(bar, { onMaterial = null } = {}) {
   const theme = loadTheme();
   applyTheme(theme);
 
   // The name in an element of its own: the label's text is its name alone, not its options too.
+  /** @param {string} text @param {HTMLElement} control */
   const label = (text, control) => {
     const wrap = document.createElement('label');
     const name = document.createElement('span');
@@ -69,7 +77,7 @@ export function setupPageControls(bar, { onMaterial = null } = {}) {
   for (const m of dielectrics) material.add(new Option(t('materialOption', { name: m.name, n: materialIndex(m.n) }), m.id));
   material.addEventListener('change', () => {
     const chosen = dielectrics.find((m) => m.id === material.value);
-    if (chosen) onMaterial(chosen);
+    if (chosen) onMaterial?.(chosen);
   });
 
   const hide = document.createElement('button');

@@ -1,9 +1,17 @@
+// @ts-check
 // A visible, dismissible notice: bad input is said on screen, in words, never only in the console.
 import english from 'virtual:messages/en/host';
 import { messages } from '../i18n/messages.js';
 
 const t = messages('host', english);
 
+/**
+ * The notice, first in `host`, or null when there is nothing to say (no lines).
+ * @param {HTMLElement} host
+ * @param {string} title
+ * @param {string[]} lines  each said as text, never as markup
+ * @param {{ kind?: 'warning' | 'error' }} [options]
+ */
 export function showNotice(host, title, lines, { kind = 'warning' } = {}) {
   if (!lines.length) return null;
   const box = document.createElement('div');

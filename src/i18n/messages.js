@@ -8,7 +8,7 @@
 // for any key that language lacks. Numbers go in already formatted (src/ui/format.js), so every
 // digit shown keeps the lab's rounding.
 
-/** @type {Record<string, Record<string, (args?: object) => string>> | null} */
+/** @type {Record<string, Record<string, (args?: Record<string, unknown>) => string>> | null} */
 let catalogue = null;
 let current = 'en';
 
@@ -29,7 +29,7 @@ export function setCatalogue(lang, compiled) {
  * a mistake of the code, shown as the key itself in brackets so that it stands out (and fails the
  * pseudo-locale test) rather than breaking the page.
  * @param {string} namespace
- * @param {Record<string, (args?: object) => string>} english
+ * @param {Record<string, (args?: Record<string, unknown>) => string>} english
  * @returns {(key: string, args?: Record<string, unknown>) => string}
  */
 export function messages(namespace, english) {

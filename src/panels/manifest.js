@@ -148,12 +148,18 @@ export const PANELS = Object.freeze([
 /** Panel ids in lecture order. */
 export const PANEL_IDS = Object.freeze(PANELS.map((p) => p.id));
 
-/** The manifest entry of a panel id, or undefined. */
+/**
+ * The manifest entry of a panel id, or undefined.
+ * @param {string} id
+ */
 export function panelEntry(id) {
   return PANELS.find((p) => p.id === id);
 }
 
-/** URL key prefix of a panel on the lecture page: the hero owns the short keys. */
+/**
+ * URL key prefix of a panel on the lecture page: the hero owns the short keys.
+ * @param {string} id
+ */
 export function lecturePrefix(id) {
   return panelEntry(id)?.hero ? '' : `${id}.`;
 }
@@ -177,8 +183,14 @@ export function sectionHtml(entry, text) {
     </section>`;
 }
 
-/** A panel's words from a catalogue's "panels" namespace (the English one, read from JSON). */
+/**
+ * A panel's words from a catalogue's "panels" namespace (the English one, read from JSON).
+ * @param {Record<string, string>} panels
+ * @param {string} id
+ * @returns {{ title?: string, titleHtml?: string, lede?: string, cite?: string }}
+ */
 export function panelTextFrom(panels, id) {
+  /** @param {string} key */
   const at = (key) => (Object.hasOwn(panels, `${id}.${key}`) ? panels[`${id}.${key}`] : undefined);
   return { title: at('title'), titleHtml: at('titleHtml'), lede: at('lede'), cite: at('cite') };
 }
@@ -186,8 +198,14 @@ export function panelTextFrom(panels, id) {
 /** Where the lecture page's sections go in index.html. */
 export const SECTIONS_MARKER = '<!-- panel sections: written at build time from src/panels/manifest.js -->';
 
-/** The media query of each layout of a PanelPlace ('' for every window), narrowest first. */
+/**
+ * The media query of each layout of a PanelPlace ('' for every window), narrowest first.
+ * @type {Readonly<Record<keyof PanelPlace, string>>}
+ */
 export const PLACE_LAYOUTS = Object.freeze({ narrow: '', wide: '(min-width: 1001px)', widest: '(min-width: 1450px)' });
+
+/** The layouts with their media queries, as [layout, query] pairs (Object.entries types a key as any string). */
+const placeLayouts = () => /** @type {[keyof PanelPlace, string][]} */ (Object.entries(PLACE_LAYOUTS));
 
 /** Where the rules that keep each panel's place go in src/panelPlaces.css. */
 export const PLACES_MARKER = '/* panel places: written at build time from src/panels/manifest.js */';
@@ -198,7 +216,7 @@ export const PLACES_MARKER = '/* panel places: written at build time from src/pa
  * @param {readonly PanelEntry[]} [panels]
  */
 export function placesCss(panels = PANELS) {
-  return Object.entries(PLACE_LAYOUTS).map(([layout, media]) => {
+  return placeLayouts().map(([layout, media]) => {
     const rules = panels.map((p) => `#${p.id} > .panel-mount { min-height: ${p.place[layout]}px; }`);
     return media ? `@media ${media} {\n  ${rules.join('\n  ')}\n}` : rules.join('\n');
   }).join('\n');
@@ -228,13 +246,14 @@ export function manifestProblems(files, panelWords, indexHtml, panels = PANELS) 
         + 'its parameters (export const schema) come with the page, apart from its module.');
     }
     const text = panelTextFrom(panelWords, id);
-    for (const field of ['title', 'lede', 'cite']) {
-      if (typeof text[field] !== 'string' || !text[field].trim()) {
+    for (const field of /** @type {const} */ (['title', 'lede', 'cite'])) {
+      const words = text[field];
+      if (typeof words !== 'string' || !words.trim()) {
         problems.push(`The panel “${id}” has no ${field} (“${id}.${field}” in locales/en.json, namespace "panels").`);
       }
     }
     if (typeof entry.webgl !== 'boolean') problems.push(`The panel “${id}” does not say whether it uses WebGL.`);
-    for (const layout of Object.keys(PLACE_LAYOUTS)) {
+    for (const [layout] of placeLayouts()) {
       const height = entry.place?.[layout];
       if (!(Number.isFinite(height) && height > 0)) {
         problems.push(`The panel “${id}” has no place.${layout}: `

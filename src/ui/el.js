@@ -1,4 +1,12 @@
 // The one DOM helper every panel uses: an element with a class and text, never innerHTML.
+
+/**
+ * @template {keyof HTMLElementTagNameMap} K
+ * @param {K} tag
+ * @param {string} [className]
+ * @param {string} [text]
+ * @returns {HTMLElementTagNameMap[K]}
+ */
 export function el(tag, className, text) {
   const node = document.createElement(tag);
   if (className) node.className = className;
@@ -6,7 +14,11 @@ export function el(tag, className, text) {
   return node;
 }
 
-/** A plain button (type="button", so it never submits a form) with its visible text. */
+/**
+ * A plain button (type="button", so it never submits a form) with its visible text.
+ * @param {string} text
+ * @param {string} [className]
+ */
 export function button(text, className) {
   const b = el('button', className, text);
   b.type = 'button';

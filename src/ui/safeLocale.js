@@ -14,7 +14,10 @@ const MAX_TAG = 100;
 // The first of a reported list that reads is taken; no browser reports more than a few.
 const MAX_TAGS = 16;
 
-/** One reported name as a canonical BCP 47 tag, FALLBACK_LOCALE for C or POSIX, or null. */
+/**
+ * One reported name as a canonical BCP 47 tag, FALLBACK_LOCALE for C or POSIX, or null.
+ * @param {unknown} reported
+ */
 function readTag(reported) {
   if (typeof reported !== 'string' || reported.length > MAX_TAG) return null;
   const tag = reported.trim().split('@')[0].split('.')[0].replaceAll('_', '-');

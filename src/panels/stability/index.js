@@ -77,7 +77,8 @@ export function mount(root, ctx) {
   };
   const listeners = SIDES.map((side) => {
     dom[side].canvas.addEventListener('keydown', onKey);
-    return [dom[side].canvas, readByPointer(dom[side].canvas, onMove(side))]; // the probe stays where it was read
+    // The probe stays where it was read.
+    return /** @type {const} */ ([dom[side].canvas, readByPointer(dom[side].canvas, onMove(side))]);
   });
   const redraw = () => draw();
   const resizeObserver = new ResizeObserver(redraw);
