@@ -10,7 +10,7 @@ import { transmittedAngle } from '../optics/waves.js';
 import { toksvigExponent, toksvigFactor } from '../normals/lobeFormulas.js';
 import { INDICES, fixed, number } from './questionParts.js';
 import { angleOfMax, angleWhere } from '../optics/solveAngle.js';
-import { specularShareBelow } from '../panels/asphalt/model.js';
+import { specularShareBelow } from '../panels/asphalt/physics.js';
 import english from 'virtual:messages/en/questions';
 import { messages } from '../i18n/messages.js';
 

@@ -91,7 +91,7 @@
 
 /**
  * What mount() returns: these, and members of its own that tests and the benchmark read (a scene,
- * a plot, a model: `unknown` here, typed where the panel makes them).
+ * a plot, its runs: `unknown` here, typed where the panel makes them).
  * @typedef {object} PanelCore
  * @property {(keys?: string[]) => void} update  values changed (keys: which; [] for a re-describe)
  * @property {() => string} describe  the key numbers in words: shown under the panel, and every canvas's description
@@ -115,6 +115,47 @@
  */
 
 /** @typedef {PanelCore & { [member: string]: unknown }} PanelInstance */
+
+// Besides its view (index.js), its DOM builders and its scene, a panel's folder may hold one module
+// of each kind below, always under the kind's name, so a reader knows what a file may do before
+// opening it. Helpers a kind's module imports from the folder are held to the same rules.
+
+/**
+ * `physics.js`: the math only this panel uses, as pure float64 functions of numbers and plain
+ * values, and its constants. No state, no words, no DOM: it imports src/optics, src/methods,
+ * src/normals and its folder's own physics, nothing else. The panel's numbers, its shader's
+ * uniforms, its homework questions and its Node tests all come from it.
+ * @typedef {{ [name: string]: ((...values: any[]) => any) | number | string | object }} PanelPhysics
+ */
+
+/**
+ * `words.js`: what the panel says, as pure functions of its values and of a snapshot of what its
+ * runs hold: sentences from the catalogue (src/i18n/messages.js; numbers written by src/ui/format.js),
+ * labels, the description, and the columns of its CSV. No state of its own and no DOM, so every
+ * sentence is tested in Node, in any language.
+ * @typedef {{ [name: string]: (...args: any[]) => any }} PanelWords
+ */
+
+/**
+ * What a panel's view gives its runs: its values and the hooks it is told by (each runs module
+ * names its own hooks), with whatever else they drive (a GPU, a chain builder, a benchmark) as a
+ * stand-in in Node.
+ * @template [Hooks=object]
+ * @typedef {object} RunsOptions
+ * @property {any} values  the host's live values, read at each call (never written: ctx.set is the view's)
+ * @property {Hooks} [hooks]  what the view does when the state changes (a result arrived, a run started)
+ */
+
+/**
+ * `runs.js` exports `create<Name>Runs(options)`: the panel's state apart from its DOM and its
+ * values (what was read back, measured or built) and the runs that produce it, each taken from a
+ * run gate (src/panels/shared/createRunGate.js) so a newer run, a lost context or dispose drops a
+ * late result. It writes no sentence: a state or a cause is kept as data (an error, a code) and
+ * words.js says it. No DOM, so it is tested in Node with stand-ins.
+ * @typedef {object} PanelRuns
+ * @property {(keys?: string[] | null) => unknown} update  the values changed (keys: which; none: all)
+ * @property {() => void} dispose  cancels every run and frees what the runs own
+ */
 
 /**
  * @typedef {import('../panels/manifest.js').PanelEntry & {

@@ -1,5 +1,5 @@
 // The phase a conductor adds between p- and s-polarized reflection, and the two angles that stand in
-// for Brewster's on a metal: the pseudo-Brewster angle, where Rp is least (metalCurves.js finds it),
+// for Brewster's on a metal: the pseudo-Brewster angle, where Rp is least (the metals panel's physics.js finds it),
 // and the principal angle, where the p–s phase difference is 90° (Born & Wolf, Principles of
 // Optics, 7th ed., §14.2; the two differ by a few degrees: Azzam, JOSA A 25, 2858, 2008).
 // Pure float64 math, from air (index 1) into n + ik.

@@ -21,7 +21,7 @@ test('mounts in an embed with a labelled canvas and the key numbers', async ({ p
   await expect(entry('Brightest highlight in view')).toContainText(`specular luminance ${peak.specular.toFixed(3)}`);
   await expect(page.locator('.panel-description')).toContainText('n_t = 1.55 (assumed for bitumen)');
   expect(centre.F).toBeGreaterThan(0.4); // default camera 6° above the road: near grazing
-  // The two causes and how little is reflected (model.js, tests/unit/asphalt.test.js): the lede's figures.
+  // The two causes and how little is reflected (physics.js, tests/unit/asphalt.test.js): the lede's figures.
   // At the default view the brightest spot is at the horizon; it is compared with the road seen straight down.
   await expect(entry('Brightest highlight in view')).toContainText('seen 0.0° below the horizon');
   await expect(entry('Highlight against the road straight below')).toHaveText(/^×21\d\.\d: lobe ×18\.5, F ×11\.7 \(diffuse counted too: ×3\d\.\d\)$/);

@@ -242,7 +242,7 @@ test('in the pseudo-locale every word is the catalogue\'s: captions, table, plot
   await page.evaluate((id) => window.fresnelLab.panels[id].whenBuilt(), PANEL);
   expect(await panelWordsOutside(page), 'while the truth converges').toEqual([]);
   await page.waitForFunction((id) => window.fresnelLab.panels[id]?.scene.state.errors, PANEL, { timeout: 45_000 });
-  await page.evaluate((id) => window.fresnelLab.panels[id].model.measureShimmer(), PANEL);
+  await page.evaluate((id) => window.fresnelLab.panels[id].runs.measureShimmer(), PANEL);
   await expect(page.locator('.nm-errors tbody tr')).toHaveCount(6);
   expect(await panelWordsOutside(page), 'with the errors and the shimmer').toEqual([]);
   await page.evaluate((id) => window.fresnelLab.hosts[id].set({ view: 'difference', level: 3, anisotropy: '4', truth: false }), PANEL);

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { interfaceSplit, interfaceSplitCurve } from '../../src/panels/angle-ratio/interfaceSplit.js';
+import { interfaceSplit, interfaceSplitCurve } from '../../src/panels/angle-ratio/physics.js';
 import { cosDeg } from '../../src/optics/angles.js';
 import { fresnelExact } from '../../src/optics/fresnel.js';
 import { absError, cosOfDegrees, dielectricR } from './oracle/fresnelOracle.js';
@@ -57,7 +57,7 @@ describe('interfaceSplit (angle-ratio panel)', () => {
 });
 
 describe('the stone-skipping analogy says how far it holds', async () => {
-  const { halfReflectedAngle, stoneAnalogy } = await import('../../src/panels/angle-ratio/analogy.js');
+  const { halfReflectedAngle, stoneAnalogy } = await import('../../src/panels/angle-ratio/words.js');
   it('from air into glass light mostly reflects only past 82.8°: R = 0.39 at 80°, 0.56 at 84°', () => {
     const half = halfReflectedAngle(1, 1.5);
     expect(fresnelExact(cosDeg(half), 1, 1.5)).toBeCloseTo(0.5, 12);
@@ -105,7 +105,7 @@ describe('the stone-skipping analogy says how far it holds', async () => {
 });
 
 describe('the stone-skipping analogy in another language', async () => {
-  const { stoneAnalogy } = await import('../../src/panels/angle-ratio/analogy.js');
+  const { stoneAnalogy } = await import('../../src/panels/angle-ratio/words.js');
   usePseudoLocale();
   it('is one message of the catalogue in every case: into the denser side, out of it, equal indices, near grazing', () => {
     for (const [nI, nT] of [[1, 1.5], [1.5, 1], [1.5, 1.5], [1.0001, 1], [1, 1.0001]]) {

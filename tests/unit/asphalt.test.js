@@ -3,7 +3,7 @@ import { fresnelExact, normalIncidence } from '../../src/optics/fresnel.js';
 import { microfacetSpecular } from '../../src/optics/microfacet.js';
 import {
   SCENE, cameraBasis, highlightInView, pixelRay, shadeRoad, sheenGrowth, sightBelow, specularAlbedo, sunDirection,
-} from '../../src/panels/asphalt/model.js';
+} from '../../src/panels/asphalt/physics.js';
 import { questionById } from '../../src/homework/questions.js';
 
 const DEG = Math.PI / 180;

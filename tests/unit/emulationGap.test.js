@@ -3,7 +3,7 @@
 import { describe, expect, it } from 'vitest';
 import { readFileSync } from 'node:fs';
 import { EMULATION_GAP } from '../../src/methods/emulationGap.js';
-import { deviceText, mediumpCostRatio } from '../../src/panels/speed-accuracy/speedAccuracyView.js';
+import { deviceText, mediumpCostRatio } from '../../src/panels/speed-accuracy/words.js';
 
 const run = JSON.parse(readFileSync(new URL('../../bench/gpu/results-h200-2026-12-04.json', import.meta.url), 'utf8'));
 const EXACT = ['exact-cg', 'exact-cg-literal', 'exact-sp', 'conductor-exact'];

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { fresnelLiteral, fresnelTerms, gSquared } from '../../src/panels/exact-fresnel/fresnelTerms.js';
+import { fresnelLiteral, fresnelTerms, gSquared } from '../../src/panels/exact-fresnel/physics.js';
 import { criticalAngle, fresnelExact, fresnelPolarized, snellCosT } from '../../src/optics/fresnel.js';
 
 const DEG = Math.PI / 180;

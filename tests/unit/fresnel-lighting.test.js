@@ -49,7 +49,7 @@ describe('two-sphere stage geometry', () => {
 
 describe('the layered coat beside the lecture\'s mix', async () => {
   const { coatConstants, diffuseShares, diffuseSharesRgb, layeredCoat, lectureCoat } = await import(
-    '../../src/panels/fresnel-lighting/model.js');
+    '../../src/panels/fresnel-lighting/physics.js');
   const { hemisphericalReflectance } = await import('../../src/optics/diffuseFresnel.js');
   const { fresnelExact } = await import('../../src/optics/fresnel.js');
   it('diffuse reflectance: 0.60 under a coat of 1.5, 0.09 from the air, and 1 − r_in = (1 − r_out)/n²', () => {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { metalCurves, metalCurveStats, schlickForF0, schlickIndexForF0 } from '../../src/panels/metals/metalCurves.js';
+import { metalCurves, metalCurveStats, schlickForF0, schlickIndexForF0 } from '../../src/panels/metals/physics.js';
 import { metalById } from '../../src/optics/materials.js';
 import { absError, conductorR, cosOfDegrees } from './oracle/fresnelOracle.js';
 
@@ -72,7 +72,7 @@ describe('metal curves', () => {
 });
 
 describe('where the lecture\'s "almost no Fresnel factor" falls short', async () => {
-  const { metalsLectureGap, channelsAt, NEUTRAL } = await import('../../src/panels/metals/lectureGap.js');
+  const { metalsLectureGap, channelsAt, NEUTRAL } = await import('../../src/panels/metals/words.js');
   const { metals } = await import('../../src/optics/materials.js');
   const { fresnelConductorPolarized } = await import('../../src/optics/fresnel.js');
   const stats = (m) => metalCurveStats(metalCurves(m), m);

@@ -3,10 +3,10 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import {
   builtWhere, chainProblemText, describeText, legendText, statusText, summaryText,
-} from '../../src/panels/normal-mips/describeNormalMips.js';
+} from '../../src/panels/normal-mips/words.js';
 import { verdict } from '../../src/panels/normal-mips/createErrorDistancePlot.js';
 import { techniqueName } from '../../src/panels/normal-mips/techniqueName.js';
-import { createNormalMipsModel, shimmerLostText } from '../../src/panels/normal-mips/model.js';
+import { createNormalMipsRuns, shimmerLostText } from '../../src/panels/normal-mips/runs.js';
 import { schema } from '../../src/panels/normal-mips/schema.js';
 import { TECHNIQUES } from '../../src/normals/techniqueLayout.js';
 import { usePseudoLocale, wordsOutside } from './inPseudoLocale.js';
@@ -62,7 +62,7 @@ describe('the normal-mips panel in another language', () => {
       build: () => new Promise((resolve, reject) => { fail = reject; }),
     };
     const hooks = { applied() {}, busy: (text) => busy.push(text), summary() {}, shimmer() {}, invalidate() {} };
-    createNormalMipsModel({ values: defaults(), builder, scene: null, hooks }).update();
+    createNormalMipsRuns({ values: defaults(), builder, scene: null, hooks }).update();
     fail(new RangeError('size must be a power of two'));
     await new Promise((resolve) => { setTimeout(resolve, 0); });
     expect(busy).toHaveLength(2);

@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { buildChainsFor, mergeBuilds, splitTechniques, transferablesOf } from '../../src/normals/buildChainsFor.js';
 import { createChainBuilder, workerCount } from '../../src/normals/createChainBuilder.js';
 import { TECHNIQUES } from '../../src/normals/techniqueLayout.js';
-import { chainProblemText } from '../../src/panels/normal-mips/describeNormalMips.js';
+import { chainProblemText } from '../../src/panels/normal-mips/words.js';
 
 const request = { kind: 'bumps', params: { frequency: 4, edgeAngleDeg: 30 }, size: 32, precision: 'f16', channels: 3 };
 

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { maxSpread, r0Steps } from '../../src/panels/r0-derivation/r0Steps.js';
+import { maxSpread, r0Steps } from '../../src/panels/r0-derivation/physics.js';
 import { fresnelExact, normalIncidence } from '../../src/optics/fresnel.js';
 
 const pairs = [[1, 1.5], [1.5, 1], [1.333, 1], [1, 2.417], [1.31, 1.333], [2, 2], [3, 1]];

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { centreRay, reflectionBand, splitByElevation, REFLECTION_BANDS } from '../../src/panels/reflect-refract/model.js';
+import { centreRay, reflectionBand, splitByElevation, REFLECTION_BANDS } from '../../src/panels/reflect-refract/physics.js';
 import { absError, cosOfDegrees, dielectricR } from './oracle/fresnelOracle.js';
 import { usePseudoLocale, wordsOutside } from './inPseudoLocale.js';
 

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { comparisonAngles, schlickComparison } from '../../src/panels/schlick/schlickComparison.js';
+import { comparisonAngles, schlickComparison } from '../../src/panels/schlick/physics.js';
 import { refinedMax } from '../../src/optics/refinedMax.js';
 import { fresnelExact, fresnelSchlick, fresnelSchlickTIR } from '../../src/optics/fresnel.js';
 

@@ -2,7 +2,7 @@
 // exercise control's options): in the pseudo-locale nothing the lab writes has a word outside the
 // brackets, while the driver's log and the student's code are kept as they were.
 import { describe, expect, it, vi } from 'vitest';
-import { createShaderLabModel, readBackWords } from '../../src/panels/shader-lab/model.js';
+import { createShaderLabRuns, readBackWords } from '../../src/panels/shader-lab/runs.js';
 import { EXERCISES, criterion, exerciseById, exerciseMetal } from '../../src/panels/shader-lab/exercises.js';
 import { EXERCISE_IDS } from '../../src/panels/shader-lab/exerciseIds.js';
 import { conductorCases, dielectricCases } from '../../src/panels/shader-lab/gradingCases.js';
@@ -75,7 +75,7 @@ describe('shader lab words in another language', () => {
     ]) {
       const painter = { paint: vi.fn(() => { throw new ShaderError({ stage: 'fragment', log: '' }); }), dispose: vi.fn() };
       const gpu = createReadBackGpu({ words: readBackWords, prepare: () => painter, ...fake.options() });
-      const model = createShaderLabModel({ values: { code: '', precision: 'highp', homework: false, ...values }, gpu });
+      const model = createShaderLabRuns({ values: { code: '', precision: 'highp', homework: false, ...values }, gpu });
       model.grade();
       texts.push(model.paint(/** @type {any} */ ({})));
       say(model);

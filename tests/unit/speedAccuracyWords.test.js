@@ -2,7 +2,7 @@
 // the methods, scenes and reasons): in the pseudo-locale no word of what it writes is left outside
 // the brackets, whatever the costs, the error source and the GPU's problem.
 import { describe, expect, it } from 'vitest';
-import { describeView, speedAccuracyView } from '../../src/panels/speed-accuracy/speedAccuracyView.js';
+import { describeView, speedAccuracyView } from '../../src/panels/speed-accuracy/words.js';
 import { formatCodes, formatNs } from '../../src/panels/speed-accuracy/formatMeasures.js';
 import { readBackProblem } from '../../src/panels/speed-accuracy/readBackProblem.js';
 import { benchResults } from '../../src/methods/benchResults.js';

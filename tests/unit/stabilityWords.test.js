@@ -1,7 +1,7 @@
 // The stability panel's words come from the catalogue ("stability", and "methods" for the methods'
 // and precisions' names): in the pseudo-locale no word it writes is outside the brackets.
 import { describe, expect, it } from 'vitest';
-import { createStabilityModel, readBackWords } from '../../src/panels/stability/model.js';
+import { createStabilityRuns, readBackWords } from '../../src/panels/stability/runs.js';
 import { createReadBackGpu } from '../../src/panels/shared/createReadBackGpu.js';
 import { GpuFloatUnavailable } from '../../src/gl/evaluateMethodsGpu.js';
 import { fakeGpu, HALF_PRECISION } from './fakeGpu.js';
@@ -9,7 +9,7 @@ import { usePseudoLocale, wordsOutside } from './inPseudoLocale.js';
 
 function setup(values, fake) {
   const gpu = createReadBackGpu({ words: readBackWords, ...fake.options() });
-  const model = createStabilityModel({ values: { method: 'schlick-pow', precision: 'mediump', tolerance: 0.001, ...values }, gpu });
+  const model = createStabilityRuns({ values: { method: 'schlick-pow', precision: 'mediump', tolerance: 0.001, ...values }, gpu });
   model.update();
   return { model, fake };
 }

@@ -5,13 +5,13 @@ import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { describe, expect, it } from 'vitest';
 import { PANELS } from '../../src/panels/manifest.js';
-import { SCENE, sheenGrowth, specularAlbedo } from '../../src/panels/asphalt/model.js';
+import { SCENE, sheenGrowth, specularAlbedo } from '../../src/panels/asphalt/physics.js';
 import { schema as asphaltSchema } from '../../src/panels/asphalt/schema.js';
 import { defaults } from '../../src/host/params.js';
 import { dielectricById, metalF0, metals } from '../../src/optics/materials.js';
 import { normalIncidence } from '../../src/optics/fresnel.js';
-import { NEUTRAL } from '../../src/panels/metals/lectureGap.js';
-import { metalCurves, metalCurveStats } from '../../src/panels/metals/metalCurves.js';
+import { NEUTRAL } from '../../src/panels/metals/words.js';
+import { metalCurves, metalCurveStats } from '../../src/panels/metals/physics.js';
 
 const plain = (html) => html.replace(/<[^>]+>/g, '').replace(/\s+/g, ' ');
 const words = JSON.parse(readFileSync(resolve(import.meta.dirname, '../../locales/en.json'), 'utf8')).panels;

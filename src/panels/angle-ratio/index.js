@@ -1,17 +1,17 @@
 // @ts-check
 // Panel `angle-ratio`: one ray meets a flat interface and splits into a reflected part R and a
 // refracted part T = 1 − R; stroke widths carry the powers. Past the critical angle (n_i > n_t)
-// nothing goes through. Numbers from src/panels/angle-ratio/interfaceSplit.js (which uses fresnel.js).
+// nothing goes through. Numbers from src/panels/angle-ratio/physics.js (which uses fresnel.js).
 import english from 'virtual:messages/en/angle-ratio';
 import { messages } from '../../i18n/messages.js';
-import { interfaceSplit, interfaceSplitCurve } from './interfaceSplit.js';
+import { interfaceSplit, interfaceSplitCurve } from './physics.js';
 import { el } from '../../ui/el.js';
 import { setSubscripted } from '../../ui/subscripts.js';
 import { angle, fixed, markupNumber, tickLabel } from '../../ui/format.js';
 import { cssVar } from '../../ui/theme.js';
 import { addSwap } from '../shared/indexPair.js';
 import { buildAngleRatioDiagram, svgToPng } from './buildAngleRatioDiagram.js';
-import { stoneAnalogy } from './analogy.js';
+import { stoneAnalogy } from './words.js';
 import './styles.css';
 import { schema } from './schema.js';
 

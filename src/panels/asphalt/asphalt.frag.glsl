@@ -2,7 +2,7 @@
 // Road: value-noise albedo (dark bitumen, lighter aggregate, wear) and micro-normals from a value-
 // noise height field; GGX Cook–Torrance specular with F = fresnelExact on the half-vector angle
 // (or the constant R0 when Fresnel is off) plus Lambert diffuse. Camera, sun and light levels come
-// from model.js beside it, which computes the panel's numbers for the same scene.
+// from physics.js beside it, which computes the panel's numbers for the same scene.
 // Deliberately left out: sky reflected in the road (the lesson is the sun's highlight).
 // The picture is radiance = A + uSun·K·F: A and K depend on the view, the sun and the roughness
 // only, F on n and the Fresnel switch. Compiled three ways (createShaderView's `cache`):

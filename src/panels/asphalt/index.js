@@ -5,7 +5,7 @@
 // into a forward beam, and F at the half-vector angle θd rises; the summary gives each one's share.
 // The share of sunlight reflected specularly stays small (a few per cent, about the road's diffuse
 // albedo): the sheen is concentrated light, not a large share of it. Fresnel off keeps F = R0 and
-// shows what a model without it misses. Every number comes from model.js (float64).
+// shows what a model without it misses. Every number comes from physics.js (float64).
 import english from 'virtual:messages/en/asphalt';
 import { messages } from '../../i18n/messages.js';
 import { createShaderView } from '../../gl/createShaderView.js';
@@ -16,7 +16,7 @@ import { readByPointer } from '../../ui/readByPointer.js';
 import { fixed, tickLabel } from '../../ui/format.js';
 import {
   SCENE, cameraBasis, highlightInView, lambertianEquivalent, pixelRay, shadeRoad, sheenGrowth, specularAlbedo, sunDirection,
-} from './model.js';
+} from './physics.js';
 import { buildAsphaltDom } from './buildAsphaltDom.js';
 import fragment from './asphalt.frag.glsl?raw';
 import { schema } from './schema.js';

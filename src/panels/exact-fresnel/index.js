@@ -6,7 +6,7 @@
 import { DEG } from '../../optics/angles.js';
 import { reflectanceCurves } from '../../optics/curves.js';
 import { criticalAngle, fresnelExact, fresnelPolarized } from '../../optics/fresnel.js';
-import { fresnelLiteral, fresnelTerms } from './fresnelTerms.js';
+import { fresnelLiteral, fresnelTerms } from './physics.js';
 import { createLinePlot } from '../../ui/createLinePlot.js';
 import { el } from '../../ui/el.js';
 import { angle, fixed as fixedTo, sci } from '../../ui/format.js';

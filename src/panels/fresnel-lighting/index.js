@@ -3,7 +3,7 @@
 // "Fresnel reflection in lighting"), beside the same sphere with a constant weight w. Only the
 // Fresnel sphere's rim turns toward ks. F is taken at the view angle N·V (for a mirror coat the
 // half vector is N, so V·H = N·V). The lecture's mix is a heuristic; "Layered coat" shades the same
-// sphere as a base under a clear coat (model.js), and a note says how the two differ. The GLSL
+// sphere as a base under a clear coat (physics.js), and a note says how the two differ. The GLSL
 // under the picture is the file the shader includes.
 import { hexToLinear } from '../../ui/srgb.js';
 import { assembleShader } from '../../gl/shaderChunks.js';
@@ -23,7 +23,7 @@ import { makeScrollBox } from '../../ui/scrollBox.js';
 import { lectureNote } from '../../ui/lectureNote.js';
 import { angle, fixed, rounded } from '../../ui/format.js';
 import { definitionList } from '../../ui/definitionList.js';
-import { coatConstants, diffuseSharesRgb } from './model.js';
+import { coatConstants, diffuseSharesRgb } from './physics.js';
 import { indexText } from '../shared/indexText.js';
 import english from 'virtual:messages/en/fresnel-lighting';
 import { messages } from '../../i18n/messages.js';
@@ -122,7 +122,7 @@ export function mount(root, ctx) {
 
   let curves = null;
   let curvesN = null;
-  let layers = null; // ri and re of the coat (model.js)
+  let layers = null; // ri and re of the coat (physics.js)
   function update() {
     const { nT, method, weight } = values;
     if (nT !== curvesN) {

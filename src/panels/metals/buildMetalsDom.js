@@ -96,7 +96,7 @@ export function buildMetalsDom(host, metals, onPick) {
       },
       show() {},
     },
-    /** The note on the lecture's "almost no Fresnel factor" (lectureGap.js) and its source. */
+    /** The note on the lecture's "almost no Fresnel factor" (words.js) and its source. */
     setNote(text, source) {
       note.set(text, source);
     },

@@ -4,17 +4,17 @@
 // coloured; its exact reflectance is compared with Schlick's on the channel's own F0, and near
 // grazing the exact curve dips below F0, which Schlick cannot do, then rises to 1: a metal has a
 // Fresnel factor too, and a note beside the panel says where the lecture's "almost no Fresnel
-// factor" falls short (lectureGap.js).
+// factor" falls short (words.js).
 import { cosDeg } from '../../optics/angles.js';
 import { fresnelConductor, fresnelExact, normalIncidence } from '../../optics/fresnel.js';
 import { metalById, metalF0, metals } from '../../optics/materials.js';
-import { CHANNELS, metalCurveStats, metalCurves, schlickForF0 } from './metalCurves.js';
+import { CHANNELS, metalCurveStats, metalCurves, schlickForF0 } from './physics.js';
 import { createAudioTrace } from '../../ui/createAudioTrace.js';
 import { angle, fixed } from '../../ui/format.js';
 import { createLinePlot } from '../../ui/createLinePlot.js';
 import { createTwinStage } from '../shared/createTwinStage.js';
 import { buildMetalsDom } from './buildMetalsDom.js';
-import { NAMED_DIP, gapSource, metalsLectureGap } from './lectureGap.js';
+import { NAMED_DIP, gapSource, metalsLectureGap } from './words.js';
 import fragment from './metals.frag.glsl?raw';
 import './styles.css';
 import { schema } from './schema.js';

@@ -2,7 +2,7 @@
 // Panel `normal-mips`: a bumpy plane receding to the horizon, its highlight shaded per pixel from
 // the mip chain each technique stores (src/normals/), split-screen against a progressive,
 // supersampled ground truth from the exact analytic normals, with an RMSE per technique. The view:
-// the state and the runs are the model's (model.js), the words describeNormalMips.js's.
+// the state and the runs are runs.js's, the words words.js's.
 import english from 'virtual:messages/en/normal-mips';
 import { messages } from '../../i18n/messages.js';
 import { createChainBuilder } from '../../normals/createChainBuilder.js';
@@ -15,10 +15,10 @@ import { createNormalMipsScene, SAMPLES_PER_FRAME } from './createNormalMipsScen
 import { createErrorDistancePlot } from './createErrorDistancePlot.js';
 import { buildMipStrip } from './buildMipStrip.js';
 import { buildInspector } from './buildInspector.js';
-import { createNormalMipsModel } from './model.js';
+import { createNormalMipsRuns } from './runs.js';
 import {
   chainProblemText, describeText, errorsCsv, legendText, statusText, summaryText,
-} from './describeNormalMips.js';
+} from './words.js';
 import {
   CHAIN_KEYS, INSPECT_KEYS, initialUniforms, LIGHT_KEYS, touches,
 } from './sceneSettings.js';
@@ -49,12 +49,12 @@ export function mount(root, ctx) {
   const scene = startWebGL(dom.stage, () => createNormalMipsScene(dom.canvas, {
     onFrame: () => { ctx.frameDrawn(); showStatus(); },
     onConverged: () => ctx.invalidate(), // re-describe with the error numbers
-    onContextLost: () => model.contextLost(),
+    onContextLost: () => runs.contextLost(),
     uniforms: initialUniforms(values),
   }), t('noWebgl'));
 
-  const showShimmer = () => dom.setShimmer(model.shimmer.result, model.shimmer.busy, model.shimmer.stopped);
-  const model = createNormalMipsModel({
+  const showShimmer = () => dom.setShimmer(runs.shimmer.result, runs.shimmer.busy, runs.shimmer.stopped);
+  const runs = createNormalMipsRuns({
     values,
     builder: createChainBuilder(),
     scene,
@@ -70,7 +70,7 @@ export function mount(root, ctx) {
   ctx.bind(ctx.gui.addFolder(t('folder.map')), ['map', 'frequency', 'angle', 'size']);
   ctx.bind(ctx.gui.addFolder(t('folder.technique')), ['technique', 'alpha', 'precision', 'channels', 'level', 'anisotropy', 'fresnel']);
   ctx.bind(ctx.gui.addFolder(t('folder.inspector')).close(), INSPECT_KEYS);
-  ctx.gui.add({ measure: () => model.measureShimmer() }, 'measure').name(t('measureShimmer'));
+  ctx.gui.add({ measure: () => runs.measureShimmer() }, 'measure').name(t('measureShimmer'));
   ctx.bind(ctx.gui.addFolder(t('folder.viewLight')), ['view', 'overlay', ...LIGHT_KEYS, 'truth', 'truthSamples']);
 
   /** The captions, the error-by-distance plot and the error table, from the scene's progress. */
@@ -89,21 +89,21 @@ export function mount(root, ctx) {
    */
   function describeSettings() {
     dom.setSummary(summaryText(values, {
-      built: model.built,
+      built: runs.built,
       maxAnisotropy: scene ? scene.maxAnisotropy : null,
       floatLinear: scene ? scene.floatLinear : null,
-      problem: chainProblemText(model.problem),
+      problem: chainProblemText(runs.problem),
     }));
     dom.setLegend(legendText(values));
   }
 
-  /** Draws what changed once the model applied the settings (keys: which; [] a re-describe; null all). */
+  /** Draws what changed once the runs applied the settings (keys: which; [] a re-describe; null all). */
   function draw(keys) {
     const has = touches(keys);
     showShimmer();
     const size = Number(values.size);
     const levels = levelCount(size);
-    const { chains, pyramid } = model;
+    const { chains, pyramid } = runs;
     if (has([...CHAIN_KEYS, 'technique', 'alpha']) || !stripStats) {
       const precisionName = optionLabel('normal-mips', 'precision', values.precision);
       const storage = { precision: values.precision, precisionName, channels: Number(values.channels) };
@@ -121,18 +121,18 @@ export function mount(root, ctx) {
     showStatus();
   }
 
-  model.update();
+  runs.update();
 
   return {
     get scene() { return scene; },
-    get chains() { return model.chains; },
-    get buildMs() { return model.built.ms; },
+    get chains() { return runs.chains; },
+    get buildMs() { return runs.built.ms; },
     /** Resolves once the newest chain build has been applied (tests, the benchmark). */
-    whenBuilt: model.whenBuilt,
+    whenBuilt: runs.whenBuilt,
     get stripStats() { return stripStats; },
     get inspected() { return inspected; },
-    get shimmer() { return model.shimmer.result; },
-    model,
+    get shimmer() { return runs.shimmer.result; },
+    runs,
     distancePlot,
     samplesPerFrame: SAMPLES_PER_FRAME,
     /**
@@ -142,7 +142,7 @@ export function mount(root, ctx) {
      */
     async bench({ size = 1024, repeats = 5 } = {}) {
       // The panel's first build and first frame (the shader compiles there) are not part of it.
-      await model.whenBuilt();
+      await runs.whenBuilt();
       await new Promise((resolve) => { requestAnimationFrame(() => requestAnimationFrame(resolve)); });
       const t0 = performance.now();
       const truth = await watchLongTasks(async () => {
@@ -157,17 +157,17 @@ export function mount(root, ctx) {
       const build = await benchChainBuild({ size, repeats });
       const panel = await watchLongTasks(async () => {
         ctx.set({ size: String(size) });
-        await model.whenBuilt();
+        await runs.whenBuilt();
         await new Promise((resolve) => { requestAnimationFrame(() => resolve()); });
       });
       return { ...build, panelLongestTaskMs: panel.longestTaskMs, truth: truthRun };
     },
-    update: model.update,
-    describe: () => describeText(values, { errors: scene?.state.errors, shimmer: model.shimmer.result, plotNote: distancePlot.note }),
+    update: runs.update,
+    describe: () => describeText(values, { errors: scene?.state.errors, shimmer: runs.shimmer.result, plotNote: distancePlot.note }),
     csv: () => errorsCsv(values, scene?.state.errors),
     png: scene ? () => scene.toDataURL() : null,
     dispose() {
-      model.dispose();
+      runs.dispose();
       inspector.dispose();
       distancePlot.dispose();
       scene?.dispose();

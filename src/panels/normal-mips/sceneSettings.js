@@ -1,7 +1,7 @@
 // @ts-check
 // What the normal-mips panel's controls mean for its GPU scene and its chain builds: the light's
 // place, the normal map's parameters, the uniforms of one frame and which keys touch what. Pure,
-// so the model (model.js) and its tests use the same numbers the picture gets.
+// so the runs (runs.js) and their tests use the same numbers the picture gets.
 import { createNormalMap } from '../../normals/createNormalMap.js';
 import { mapUniforms } from '../../normals/mapUniforms.js';
 import { DEG } from '../../optics/angles.js';

@@ -1,9 +1,9 @@
 // @ts-check
 // Panel `r0-derivation`: the lecture's derivation of R(0°), line by line, each line typeset and
-// evaluated as written (src/panels/r0-derivation/r0Steps.js) at the current indices, with a check that all
+// evaluated as written (src/panels/r0-derivation/physics.js) at the current indices, with a check that all
 // lines agree and that the last equals normalIncidence and fresnelExact(1, …). No WebGL: KaTeX.
 import { fresnelExact, normalIncidence } from '../../optics/fresnel.js';
-import { maxSpread, r0Steps } from './r0Steps.js';
+import { maxSpread, r0Steps } from './physics.js';
 import { el } from '../../ui/el.js';
 import { fixed as fixedTo, sci } from '../../ui/format.js';
 import { renderTex, texElement, texNumber } from '../../ui/tex.js';

@@ -4,7 +4,7 @@
 import english from 'virtual:messages/en/reflect-refract';
 import { messages } from '../../i18n/messages.js';
 import { renderTex, texNumber } from '../../ui/tex.js';
-import { REFLECTION_BANDS } from './model.js';
+import { REFLECTION_BANDS } from './physics.js';
 import { el } from '../../ui/el.js';
 import { definitionList } from '../../ui/definitionList.js';
 import { angle, fixed, tickLabel } from '../../ui/format.js';

@@ -11,7 +11,7 @@ import { dielectrics } from '../../optics/materials.js';
 import { indexPresets } from '../shared/indexPresets.js';
 import { angle, fixed, tickLabel } from '../../ui/format.js';
 import { startWebGL } from '../shared/startWebGL.js';
-import { centreRay, splitByElevation } from './model.js';
+import { centreRay, splitByElevation } from './physics.js';
 import { buildReflectRefractDom } from './buildReflectRefractDom.js';
 import fragment from './reflect-refract.frag.glsl?raw';
 import './styles.css';

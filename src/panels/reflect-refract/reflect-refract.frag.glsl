@@ -1,7 +1,7 @@
 // reflect-refract: a camera above a flat water (or glass) surface y = 0, ray-cast analytically.
 // Each pixel's view ray meets the surface at its own angle θ from the normal; the exact Fresnel
 // F(θ) splits it: colour = F·sky(reflected ray) + (1 − F)/n²·floor(refracted ray), in linear RGB.
-// The 1/n² is the floor's radiance spreading into the wider cone above the water (model.js).
+// The 1/n² is the floor's radiance spreading into the wider cone above the water (physics.js).
 // The floor is a checkered pool bottom at depth uDepth, reached by GLSL refract() (Snell).
 // The sky a pixel shows or reflects depends on the view only: compiled with CACHE_PASS it is
 // written to a float target, with CACHED read back (createShaderView's `cache`), so that moving n,

@@ -6,7 +6,7 @@ import { cosDeg, DEG } from '../../optics/angles.js';
 import {
   fresnelExact, fresnelSchlick, fresnelSchlickTIR, normalIncidence, snellCosT,
 } from '../../optics/fresnel.js';
-import { schlickComparison } from './schlickComparison.js';
+import { schlickComparison } from './physics.js';
 import { createLinePlot } from '../../ui/createLinePlot.js';
 import { el } from '../../ui/el.js';
 import { angle as deg, fixed as fixedTo } from '../../ui/format.js';

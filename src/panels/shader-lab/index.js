@@ -4,14 +4,14 @@
 // the results back from a float target and grades them against the float64 core, criterion by
 // criterion, with the worst case named; beside it, two spheres shaded with it and with the exact
 // function, and the stability map of the student's function and of a reference answer. The
-// grading, the GPU and the words are the model's (model.js); this view holds the editor, its
-// buttons and the code kept in the browser, and shows what the model says.
+// grading, the GPU and the words are runs.js's; this view holds the editor, its
+// buttons and the code kept in the browser, and shows what the runs say.
 import { createReadBackGpu } from '../shared/createReadBackGpu.js';
 import { drawMap } from '../shared/drawMap.js';
 import { composePng } from '../shared/composePng.js';
 import { buildShaderLabDom } from './buildShaderLabDom.js';
 import { createCodeEditor } from './createCodeEditor.js';
-import { createShaderLabModel, readBackWords } from './model.js';
+import { createShaderLabRuns, readBackWords } from './runs.js';
 import { createSpherePainter } from './paintSpheres.js';
 import { readStored, writeStored } from './storedCode.js';
 import { useDeflate } from './codeCodec.js';
@@ -27,7 +27,7 @@ export { schema };
 
 useDeflate((bytes) => deflateSync(bytes, { level: 9 })); // the link's compact form, from now on
 
-/** @typedef {import('./model.js').MapSide} MapSide */
+/** @typedef {import('./runs.js').MapSide} MapSide */
 
 /**
  * @param {HTMLElement} root
@@ -46,26 +46,26 @@ export function mount(root, ctx) {
   const gpu = createReadBackGpu({
     words: readBackWords, prepare: (_evaluator, gl) => createSpherePainter(gl), onChange: () => ctx.invalidate(),
   });
-  const model = createShaderLabModel({ values, gpu, onRead: () => ctx.frameDrawn() });
+  const runs = createShaderLabRuns({ values, gpu, onRead: () => ctx.frameDrawn() });
 
   // What the student types is graded a moment after typing stops, and kept in this browser.
   let typing = 0;
   const submit = (text) => {
     clearTimeout(typing);
     typing = 0;
-    const value = text === model.exercise().start ? '' : text;
+    const value = text === runs.exercise().start ? '' : text;
     writeStored(values.exercise, value);
     ctx.set({ code: value });
   };
   const editor = createCodeEditor(dom.editor, {
-    doc: model.code(),
+    doc: runs.code(),
     label: t('editorLabel'),
     onChange(text) {
       clearTimeout(typing);
       typing = window.setTimeout(() => submit(text), 400);
     },
     onRun() {
-      model.retry(); // asked for: graded even if it stalled the GPU before
+      runs.retry(); // asked for: graded even if it stalled the GPU before
       submit(editor.text());
     },
   });
@@ -80,35 +80,35 @@ export function mount(root, ctx) {
     show: (on) => { codeShown = on; showButtons(); },
   };
   ctx.tie(buttons, ['code']);
-  dom.grade.addEventListener('click', () => { model.retry(); submit(editor.text()); editor.focus(); });
-  dom.restart.addEventListener('click', () => submit(model.exercise().start));
-  dom.reference.addEventListener('click', () => ctx.set({ code: model.exercise().reference }));
+  dom.grade.addEventListener('click', () => { runs.retry(); submit(editor.text()); editor.focus(); });
+  dom.restart.addEventListener('click', () => submit(runs.exercise().start));
+  dom.reference.addEventListener('click', () => ctx.set({ code: runs.exercise().reference }));
 
   const figures = /** @type {Record<MapSide, typeof dom.student>} */ ({ student: dom.student, reference: dom.referenceMap });
 
   function show() {
-    const ex = model.exercise();
-    const { state } = model;
-    dom.setTask(ex, model.criteriaRows());
+    const ex = runs.exercise();
+    const { state } = runs;
+    dom.setTask(ex, runs.criteriaRows());
     editor.setErrors(state.errors.filter((e) => e.line !== null));
     dom.setErrors(state.errors);
     showButtons();
-    dom.setSummary(model.summary());
-    dom.setNote(model.note());
+    dom.setSummary(runs.summary());
+    dom.setNote(runs.note());
     dom.maps.hidden = ex.kind !== 'dielectric';
-    dom.setSpheresMessage(model.spheresMessage());
-    dom.spheresCanvas.setAttribute('aria-label', model.spheresLabel());
+    dom.setSpheresMessage(runs.spheresMessage());
+    dom.spheresCanvas.setAttribute('aria-label', runs.spheresLabel());
     for (const side of /** @type {MapSide[]} */ (['student', 'reference'])) {
       const figure = figures[side];
       const map = state.maps[side];
-      figure.setTitle(model.mapTitle(side), false);
+      figure.setTitle(runs.mapTitle(side), false);
       figure.setCounts(map);
-      figure.showMessage(model.mapMessage(side));
-      figure.canvas.setAttribute('aria-label', model.mapLabel(side));
+      figure.showMessage(runs.mapMessage(side));
+      figure.canvas.setAttribute('aria-label', runs.mapLabel(side));
       if (map) drawMap(figure.canvas, map, null);
     }
     // After the canvas is shown, so it is painted at its own size.
-    const refused = model.paint(dom.spheresCanvas);
+    const refused = runs.paint(dom.spheresCanvas);
     if (refused) dom.setSpheresMessage(refused);
   }
 
@@ -121,9 +121,9 @@ export function mount(root, ctx) {
     if (!keys.length || keys.includes('code') || keys.includes('exercise')) {
       clearTimeout(typing);
       typing = 0;
-      editor.setText(model.code(), { history: !keys.includes('exercise') });
+      editor.setText(runs.code(), { history: !keys.includes('exercise') });
     }
-    model.grade();
+    runs.grade();
     show();
   }
   const redraw = () => show();
@@ -138,34 +138,34 @@ export function mount(root, ctx) {
   update();
 
   return {
-    get results() { return model.state.results; },
-    get errors() { return model.state.errors; },
-    get maps() { return model.state.maps; },
+    get results() { return runs.state.results; },
+    get errors() { return runs.state.errors; },
+    get maps() { return runs.state.maps; },
     editor,
-    model,
+    runs,
     /** The grading context (for tests that lose and restore it), or null. */
     get gl() { return gpu.gl; },
     update,
-    describe: () => model.describe(),
-    csv: () => model.csv(),
+    describe: () => runs.describe(),
+    csv: () => runs.csv(),
     png() {
-      const { state } = model;
+      const { state } = runs;
       const sides = /** @type {Array<{ side: MapSide, title: string }>} */ ([
         { side: 'student', title: t('yourFunction') }, { side: 'reference', title: t('referenceAnswer') },
       ]);
       const parts = sides.filter(({ side }) => state.maps[side])
         .map(({ side, title }) => ({ canvas: figures[side].canvas, title, map: state.maps[side] }));
-      if (parts.length) return composePng(parts, t('pngCaption', { exercise: model.exercise().title, precision: values.precision }));
+      if (parts.length) return composePng(parts, t('pngCaption', { exercise: runs.exercise().title, precision: values.precision }));
       return state.summary && !state.spheres ? dom.spheresCanvas.toDataURL('image/png') : null; // the conductor: its spheres
     },
     dispose() {
-      if (typing) writeStored(values.exercise, editor.text() === model.exercise().start ? '' : editor.text()); // nothing typed is lost
+      if (typing) writeStored(values.exercise, editor.text() === runs.exercise().start ? '' : editor.text()); // nothing typed is lost
       clearTimeout(typing);
       cancelAnimationFrame(resizing);
       resizeObserver.disconnect();
       window.removeEventListener('fresnel-lab:theme', redraw);
       editor.destroy();
-      model.dispose();
+      runs.dispose();
     },
   };
 }

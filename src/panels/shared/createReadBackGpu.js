@@ -5,7 +5,7 @@
 // render targets, a shader of the panel's own refused by the driver, a lost context. It asks for the
 // restore after a loss and makes the evaluator anew then, as startWebGL and createShaderView do for
 // pictures. Runs on it come from its gates (createRunGate.js): a loss makes the running one stale,
-// dispose every one. Plain JS apart from the context it is given, so models are tested in Node with a
+// dispose every one. Plain JS apart from the context it is given, so runs are tested in Node with a
 // stand-in context and evaluator.
 import { WebGL2Unavailable } from '../../gl/contextBudget.js';
 import { createContext } from '../../gl/createContext.js';

@@ -7,7 +7,7 @@
 // Errors come from the JS emulation at the scene's precision, or ("Error measured by") from this
 // GPU in highp or mediump: every sample rendered and read back (measureGpuErrors.js, gpuErrors.js).
 // ?bench=normal|tiny runs the benchmark on load (npm run bench uses it). The view: the state and
-// the runs are the model's (model.js), what is shown for them speedAccuracyView.js's.
+// the runs are runs.js's, what is shown for them words.js's.
 import { benchCsv, benchTable } from '../../methods/benchResults.js';
 import { downloadText } from '../../host/exporters.js';
 import { createVisibilityGate } from '../../ui/createVisibilityGate.js';
@@ -15,7 +15,7 @@ import { BENCH_SIZES, loadCachedResults, runBenchmark, saveCachedResults } from 
 import { createScatter } from './createScatter.js';
 import { buildSpeedAccuracyDom } from './buildSpeedAccuracyDom.js';
 import { cachedGpuErrors, gpuPrecisionProbe, measureGpuErrors } from './measureGpuErrors.js';
-import { createSpeedAccuracyModel } from './model.js';
+import { createSpeedAccuracyRuns } from './runs.js';
 import './styles.css';
 import { schema } from './schema.js';
 import english from 'virtual:messages/en/speed-accuracy';
@@ -33,17 +33,17 @@ export { schema };
 export function mount(root, ctx) {
   const { values } = ctx;
   const dom = buildSpeedAccuracyDom(root, {
-    onRun: () => { model.run('normal').catch(() => {}); },
-    onCancel: () => model.cancel(),
+    onRun: () => { runs.run('normal').catch(() => {}); },
+    onCancel: () => runs.cancel(),
     onJson: () => downloadText(
-      'fresnel-lab-speed-accuracy.json', `${JSON.stringify(model.currentResults(), null, 2)}\n`, 'application/json',
+      'fresnel-lab-speed-accuracy.json', `${JSON.stringify(runs.currentResults(), null, 2)}\n`, 'application/json',
     ),
   });
   // A run pauses between its steps while the panel is off screen, and says so.
   const gate = createVisibilityGate(root, {
     onPause: () => dom.setStatus(t('paused')),
   });
-  const model = createSpeedAccuracyModel({
+  const runs = createSpeedAccuracyRuns({
     values,
     readBack: { cached: cachedGpuErrors, measure: measureGpuErrors, probe: gpuPrecisionProbe },
     benchmark: (options) => runBenchmark(dom.stage, { ...options, whenVisible: gate.whenVisible }),
@@ -65,7 +65,7 @@ export function mount(root, ctx) {
   controllers.errors.domElement.after(gpuNote);
 
   function update() {
-    const view = model.update();
+    const view = runs.update();
     chart.setData(view.chart);
     dom.setAdvice(view.advice);
     dom.setSource(view.sourceLine.text, view.sourceLine.warning);
@@ -77,28 +77,28 @@ export function mount(root, ctx) {
 
   update();
   const auto = new URLSearchParams(window.location.search).get('bench');
-  const autorun = auto && Object.hasOwn(BENCH_SIZES, auto) ? model.run(auto).catch(() => null) : null;
+  const autorun = auto && Object.hasOwn(BENCH_SIZES, auto) ? runs.run(auto).catch(() => null) : null;
 
   return {
     chart,
-    model,
-    get results() { return model.results; },
-    get view() { return model.view; },
+    runs,
+    get results() { return runs.results; },
+    get view() { return runs.view; },
     /** The auto-run started by ?bench=…, or null. */
     autorun,
     /** The GPU read-back under way ("Error measured by" this GPU), or null. */
-    get gpuMeasurement() { return model.measurement; },
-    run: model.run,
+    get gpuMeasurement() { return runs.measurement; },
+    run: runs.run,
     update,
-    describe: model.describe,
-    csv: model.csv,
+    describe: runs.describe,
+    csv: runs.csv,
     /** The full results (the last run, or errors only) as benchCsv columns. */
-    resultsCsv: () => benchCsv(model.currentResults()),
-    resultsJson: () => model.currentResults(),
-    resultsTable: () => benchTable(model.currentResults()),
+    resultsCsv: () => benchCsv(runs.currentResults()),
+    resultsJson: () => runs.currentResults(),
+    resultsTable: () => benchTable(runs.currentResults()),
     png: () => chart.toDataURL(),
     dispose() {
-      model.dispose();
+      runs.dispose();
       gate.dispose();
       chart.dispose();
     },

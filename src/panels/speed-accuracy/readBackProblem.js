@@ -16,7 +16,7 @@ export function readBackProblem(/** @type {unknown} */ error) {
     return t('needsFloatTargets', { problem: error.message });
   }
   if (error instanceof ShaderError) {
-    // The driver's first error line (the model logs the whole log with the source lines it names).
+    // The driver's first error line (the runs log the whole log with the source lines it names).
     const first = refusalLine(error);
     const stage = error.stage === 'link' ? 'link' : 'compile';
     const refused = error.label ? t('shaderRefusedNamed', { stage, label: error.label }) : t('shaderRefused', { stage });

@@ -3,9 +3,9 @@
 // 0.4–2.5 (both axes linear), on this GPU (RGBA32F read-back, classified in JS) beside the
 // JavaScript emulation (stabilityMap.classify). The precision picks the pair: GPU highp beside JS
 // float32 (or float64), GPU mediump beside JS float16. The state, the read-back and the words are
-// the model's (model.js); this view draws the maps, shows the words and moves the probe.
+// runs.js's; this view draws the maps, shows the words and moves the probe.
 import { buildStabilityDom } from './buildStabilityDom.js';
-import { createStabilityModel, pairFor, readBackWords } from './model.js';
+import { createStabilityRuns, pairFor, readBackWords } from './runs.js';
 import { createReadBackGpu } from '../shared/createReadBackGpu.js';
 import { drawMap } from '../shared/drawMap.js';
 import { composePng } from '../shared/composePng.js';
@@ -19,7 +19,7 @@ const t = messages('stability', english);
 
 export { schema, pairFor };
 
-/** @typedef {import('./model.js').Side} Side */
+/** @typedef {import('./runs.js').Side} Side */
 const SIDES = /** @type {Side[]} */ (['gpu', 'js']);
 
 /**
@@ -32,46 +32,46 @@ export function mount(root, ctx) {
   // A lost context takes the evaluator with it; the maps already read back stay true, so only maps
   // not yet evaluated wait for the restore (createReadBackGpu makes the evaluator anew then).
   const gpu = createReadBackGpu({ words: readBackWords, onChange: () => ctx.invalidate() });
-  const model = createStabilityModel({ values: ctx.values, gpu, onRead: () => ctx.frameDrawn() });
+  const runs = createStabilityRuns({ values: ctx.values, gpu, onRead: () => ctx.frameDrawn() });
   ctx.bind(ctx.gui.addFolder(t('folder')), ['method', 'precision', 'tolerance']);
 
   /** @type {Partial<Record<Side, ReturnType<typeof drawMap>>>} */
   const layouts = {};
   function draw() {
     for (const side of SIDES) {
-      if (model.maps[side]) layouts[side] = drawMap(dom[side].canvas, model.maps[side], model.probeCell);
+      if (runs.maps[side]) layouts[side] = drawMap(dom[side].canvas, runs.maps[side], runs.probeCell);
     }
   }
   function showProbe() {
     draw();
-    dom.setReadout(model.readout());
+    dom.setReadout(runs.readout());
   }
 
   function update() {
-    model.update();
-    dom.setNote(model.note());
+    runs.update();
+    dom.setNote(runs.note());
     for (const side of SIDES) {
-      dom[side].setTitle(model.sideTitle(side), model.pair.selected === side);
-      dom[side].setCounts(model.maps[side]);
-      const label = model.mapLabel(side);
+      dom[side].setTitle(runs.sideTitle(side), runs.pair.selected === side);
+      dom[side].setCounts(runs.maps[side]);
+      const label = runs.mapLabel(side);
       if (label) dom[side].canvas.setAttribute('aria-label', label);
     }
-    dom.gpu.showMessage(model.gpuMessage());
+    dom.gpu.showMessage(runs.gpuMessage());
     showProbe();
   }
 
   function setProbe(cell) {
-    model.setProbe(cell);
+    runs.setProbe(cell);
     showProbe();
   }
   const onMove = (side) => (event) => {
     const rect = dom[side].canvas.getBoundingClientRect();
     const cell = layouts[side]?.cellAt(event.clientX - rect.left, event.clientY - rect.top);
-    const probed = model.probeCell;
+    const probed = runs.probeCell;
     if (cell && (cell.i !== probed?.i || cell.j !== probed?.j)) setProbe(cell);
   };
   const onKey = (event) => {
-    if (!model.moveProbe(event.key, event.shiftKey)) return;
+    if (!runs.moveProbe(event.key, event.shiftKey)) return;
     event.preventDefault();
     showProbe();
   };
@@ -87,30 +87,30 @@ export function mount(root, ctx) {
   update();
 
   return {
-    get maps() { return model.maps; },
-    get pair() { return model.pair; },
+    get maps() { return runs.maps; },
+    get pair() { return runs.pair; },
     /** The method evaluator on this panel's context (createMethodsGpu's handle), or null. */
     get gpu() { return gpu.evaluator; },
     /** This panel's WebGL2 context (its canvas is never on the page), or null. */
     get gl() { return gpu.gl; },
-    get precisionProbe() { return model.precisionProbe; },
-    get probeCell() { return model.probeCell; },
-    model,
+    get precisionProbe() { return runs.precisionProbe; },
+    get probeCell() { return runs.probeCell; },
+    runs,
     setProbe,
     /** The drawn colour [r, g, b, a] at the centre of cell (i, j) of one map ('gpu' | 'js'). */
     pixelAt(side, i, j) {
       const { canvas } = dom[side];
       const scale = canvas.width / canvas.getBoundingClientRect().width;
-      const x = Math.floor(layouts[side].x(model.maps[side].thetaDeg[i]) * scale);
-      const y = Math.floor(layouts[side].y(model.maps[side].ratio[j]) * scale);
+      const x = Math.floor(layouts[side].x(runs.maps[side].thetaDeg[i]) * scale);
+      const y = Math.floor(layouts[side].y(runs.maps[side].ratio[j]) * scale);
       return [...canvas.getContext('2d').getImageData(x, y, 1, 1).data];
     },
     update,
-    describe: () => model.describe(),
-    csv: () => model.csv(),
+    describe: () => runs.describe(),
+    csv: () => runs.csv(),
     png() {
-      return composePng(SIDES.filter((side) => model.maps[side])
-        .map((side) => ({ canvas: dom[side].canvas, title: model.sideTitle(side), map: model.maps[side] })), model.pngCaption());
+      return composePng(SIDES.filter((side) => runs.maps[side])
+        .map((side) => ({ canvas: dom[side].canvas, title: runs.sideTitle(side), map: runs.maps[side] })), runs.pngCaption());
     },
     dispose() {
       resizeObserver.disconnect();
@@ -119,7 +119,7 @@ export function mount(root, ctx) {
         stopReading();
         canvas.removeEventListener('keydown', onKey);
       }
-      model.dispose();
+      runs.dispose();
     },
   };
 }

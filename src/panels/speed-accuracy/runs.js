@@ -1,7 +1,7 @@
 // @ts-check
 // The state and the runs of the speed-accuracy panel, apart from its DOM: the benchmark's results
 // (kept for the session), a benchmark under way, the GPU read-back of a scene's errors and why it
-// failed, and the view computed from them (speedAccuracyView.js). index.js draws it. Both runs go
+// failed, and the view computed from them (words.js). index.js draws it. Both runs go
 // stale through run gates: the benchmark when it is cancelled or the panel disposed, a read-back
 // when another scene or precision is asked for or the panel disposed, so a late result is dropped.
 import { benchResults } from '../../methods/benchResults.js';
@@ -11,14 +11,14 @@ import { fixed } from '../../ui/format.js';
 import { createRunGate, isStaleRun } from '../shared/createRunGate.js';
 import { glslOf } from './errorSources.js';
 import { readBackProblem } from './readBackProblem.js';
-import { describeView, speedAccuracyView, viewCsv } from './speedAccuracyView.js';
+import { describeView, speedAccuracyView, viewCsv } from './words.js';
 import english from 'virtual:messages/en/speed-accuracy';
 import { messages } from '../../i18n/messages.js';
 
 const t = messages('speed-accuracy', english);
 
 /**
- * The GPU read-back as the model uses it (measureGpuErrors.js), so a stand-in can take its place.
+ * The GPU read-back as the runs use it (measureGpuErrors.js), so a stand-in can take its place.
  * @typedef {object} ReadBack
  * @property {(scene: any, precision: string) => any} cached  the session's measurement, or null
  * @property {(scene: any, precision: string) => Promise<any>} measure  measures (once per session)
@@ -45,7 +45,7 @@ const t = messages('speed-accuracy', english);
  *   now?: () => number,
  * }} options  values: the host's live values; benchmark: runBenchmark on the panel's stage; storage: the session's results
  */
-export function createSpeedAccuracyModel({
+export function createSpeedAccuracyRuns({
   values, readBack, benchmark, storage, hooks, now = () => performance.now(),
 }) {
   const benchGate = createRunGate();

@@ -1,7 +1,7 @@
 import {
   beforeAll, describe, expect, it, vi,
 } from 'vitest';
-import { createSpeedAccuracyModel } from '../../src/panels/speed-accuracy/model.js';
+import { createSpeedAccuracyRuns } from '../../src/panels/speed-accuracy/runs.js';
 import { formatCodes, formatNs, shortDecimal } from '../../src/panels/speed-accuracy/formatMeasures.js';
 import { readBackProblem } from '../../src/panels/speed-accuracy/readBackProblem.js';
 import { schema } from '../../src/panels/speed-accuracy/schema.js';
@@ -55,7 +55,7 @@ function setup({ stored = null, values = defaults() } = {}) {
   const benchmarks = []; // { options, ...deferred }
   const saved = [];
   let clock = 1000;
-  const model = createSpeedAccuracyModel({
+  const model = createSpeedAccuracyRuns({
     values,
     readBack: {
       cached: (scene, precision) => cache.get(`${scene.id}|${precision}`) ?? null,

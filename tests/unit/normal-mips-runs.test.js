@@ -1,9 +1,9 @@
 import { describe, expect, it } from 'vitest';
-import { createNormalMipsModel, shimmerLostText } from '../../src/panels/normal-mips/model.js';
+import { createNormalMipsRuns, shimmerLostText } from '../../src/panels/normal-mips/runs.js';
 import {
   chainRequest, lightPlacement, mapParams, mergeKeys, sceneSettings,
 } from '../../src/panels/normal-mips/sceneSettings.js';
-import { describeText, errorsCsv, statusText, summaryText } from '../../src/panels/normal-mips/describeNormalMips.js';
+import { describeText, errorsCsv, statusText, summaryText } from '../../src/panels/normal-mips/words.js';
 import { schema } from '../../src/panels/normal-mips/schema.js';
 
 const defaults = () => Object.fromEntries(Object.entries(schema).map(([key, spec]) => [key, spec.default]));
@@ -61,7 +61,7 @@ function setup({ withScene = true, values = defaults() } = {}) {
     shimmer: () => events.push(['shimmer']),
     invalidate: () => events.push(['invalidate']),
   };
-  const model = createNormalMipsModel({ values, builder, scene, hooks });
+  const model = createNormalMipsRuns({ values, builder, scene, hooks });
   return { model, builder, scene, events, values };
 }
 

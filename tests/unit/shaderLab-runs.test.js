@@ -1,5 +1,5 @@
 import { afterEach, describe, expect, it, vi } from 'vitest';
-import { createShaderLabModel, readBackWords } from '../../src/panels/shader-lab/model.js';
+import { createShaderLabRuns, readBackWords } from '../../src/panels/shader-lab/runs.js';
 import { exerciseById } from '../../src/panels/shader-lab/exercises.js';
 import { createReadBackGpu } from '../../src/panels/shared/createReadBackGpu.js';
 import { GpuFloatUnavailable } from '../../src/gl/evaluateMethodsGpu.js';
@@ -43,7 +43,7 @@ function setup(values = {}, fake = labGpu()) {
   const painter = { paint: vi.fn(), dispose: vi.fn() };
   const onRead = vi.fn();
   const gpu = createReadBackGpu({ words: readBackWords, prepare: () => painter, ...fake.options() });
-  const model = createShaderLabModel({ values: state, gpu, onRead });
+  const model = createShaderLabRuns({ values: state, gpu, onRead });
   return { model, state, fake, painter, onRead, gpu };
 }
 const sourceCalls = (fake, role) => fake.evaluators.flatMap((e) => e.evaluateSource.mock.calls).filter(([o]) => o.key.startsWith(role));

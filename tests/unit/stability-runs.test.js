@@ -1,5 +1,5 @@
 import { afterEach, describe, expect, it, vi } from 'vitest';
-import { createStabilityModel, pairFor, readBackWords } from '../../src/panels/stability/model.js';
+import { createStabilityRuns, pairFor, readBackWords } from '../../src/panels/stability/runs.js';
 import { createReadBackGpu } from '../../src/panels/shared/createReadBackGpu.js';
 import { GpuFloatUnavailable } from '../../src/gl/evaluateMethodsGpu.js';
 import { ShaderError } from '../../src/gl/shaderError.js';
@@ -21,7 +21,7 @@ function setup(values = {}, fake = float32Gpu()) {
   const state = { method: 'exact-cg', precision: 'mediump', tolerance: 0.001, ...values };
   const onRead = vi.fn();
   const gpu = createReadBackGpu({ words: readBackWords, ...fake.options() });
-  const model = createStabilityModel({ values: state, gpu, onRead });
+  const model = createStabilityRuns({ values: state, gpu, onRead });
   model.update();
   return { model, state, fake, onRead, gpu };
 }

@@ -39,11 +39,11 @@ const errorText = (x) => (Number.isFinite(x) ? sci(x, 2).replace(/e(?=\d)/, 'e+'
 
 /**
  * values: the panel's values, read at each call ({ exercise, code, precision }); gpu: the lab's
- * read-back GPU, which the model owns from here (dispose frees it); onRead: after each grading that
+ * read-back GPU, which the runs own from here (dispose frees it); onRead: after each grading that
  * reached the GPU (the panel's frameDrawn).
  * @param {{ values: { exercise: string, code: string, precision: string }, gpu: ReadBackGpu, onRead?: () => void }} options
  */
-export function createShaderLabModel({ values, gpu, onRead = () => {} }) {
+export function createShaderLabRuns({ values, gpu, onRead = () => {} }) {
   const grading = gpu.gate(); // one grading at a time: a newer one, a loss or dispose makes it stale
   const exercise = () => exerciseById(values.exercise);
   const code = () => values.code || exercise().start;

@@ -2,7 +2,7 @@
 // What the speed-accuracy panel shows for its values: every method of the scene as a row (cost,
 // worst and mean display error, the Pareto front, the budget's verdict), the advisor's pick with
 // its reason, the chart's data and the lines of words around it, the description and the CSV.
-// Pure: the model (model.js) supplies the benchmark's results and the GPU's read-back errors. Its
+// Pure: the runs (runs.js) supply the benchmark's results and the GPU's read-back errors. Its
 // words are the catalogue's ("speed-accuracy"), each sentence one message.
 import english from 'virtual:messages/en/speed-accuracy';
 import { messages } from '../../i18n/messages.js';

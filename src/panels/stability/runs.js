@@ -51,7 +51,7 @@ const failing = (map) => map.width * map.height - map.counts.fine;
  * read-back (the panel's frameDrawn).
  * @param {{ values: { method: string, precision: string, tolerance: number }, gpu: ReadBackGpu, onRead?: () => void }} options
  */
-export function createStabilityModel({ values, gpu, onRead = () => {} }) {
+export function createStabilityRuns({ values, gpu, onRead = () => {} }) {
   const reading = gpu.gate(); // one GPU map at a time: a loss or dispose makes it stale
   const gpuValues = new Map(); // 'method|qualifier' → Float32Array (independent of the tolerance)
   /** @type {{ gpu: any, js: any }} */

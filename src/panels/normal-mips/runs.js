@@ -44,7 +44,7 @@ export const shimmerLostText = () => t('shimmer.lost');
  *   scene: NormalMipsScene | null, hooks: NormalMipsHooks }} options
  *   values: the host's live values; builder: createChainBuilder(); scene: null without WebGL2
  */
-export function createNormalMipsModel({ values, builder, scene, hooks }) {
+export function createNormalMipsRuns({ values, builder, scene, hooks }) {
   const buildGate = createRunGate();
   const shimmerGate = createRunGate();
   let chains = null;
