@@ -57,7 +57,8 @@ describe('interfaceSplit (angle-ratio panel)', () => {
 });
 
 describe('the stone-skipping analogy says how far it holds', async () => {
-  const { halfReflectedAngle, stoneAnalogy } = await import('../../src/panels/angle-ratio/words.js');
+  const { stoneAnalogy } = await import('../../src/panels/angle-ratio/words.js');
+  const { halfReflectedAngle } = await import('../../src/panels/angle-ratio/physics.js');
   it('from air into glass light mostly reflects only past 82.8°: R = 0.39 at 80°, 0.56 at 84°', () => {
     const half = halfReflectedAngle(1, 1.5);
     expect(fresnelExact(cosDeg(half), 1, 1.5)).toBeCloseTo(0.5, 12);

@@ -72,7 +72,8 @@ describe('metal curves', () => {
 });
 
 describe('where the lecture\'s "almost no Fresnel factor" falls short', async () => {
-  const { metalsLectureGap, channelsAt, NEUTRAL } = await import('../../src/panels/metals/words.js');
+  const { metalsLectureGap, NEUTRAL } = await import('../../src/panels/metals/words.js');
+  const { channelsAt } = await import('../../src/panels/metals/physics.js');
   const { metals } = await import('../../src/optics/materials.js');
   const { fresnelConductorPolarized } = await import('../../src/optics/fresnel.js');
   const stats = (m) => metalCurveStats(metalCurves(m), m);

@@ -3,6 +3,7 @@
 import { brewsterAngle, criticalAngle, fresnelExact, snellCosT } from '../../optics/fresnel.js';
 import { sampleAngles } from '../../optics/curves.js';
 import { cosDeg, DEG } from '../../optics/angles.js';
+import { angleWhere } from '../../optics/solveAngle.js';
 
 
 /**
@@ -33,4 +34,10 @@ export function interfaceSplitCurve(nI, nT, count = 181) {
   const theta = sampleAngles(nI, nT, count);
   const R = theta.map((t) => fresnelExact(cosDeg(t), nI, nT));
   return { theta, R, T: R.map((r) => 1 - r) };
+}
+
+/** θ where R = 1/2 (from 0° to 90°), or null when R never reaches it (equal indices). */
+export function halfReflectedAngle(nI, nT) {
+  const R = (t) => fresnelExact(cosDeg(t), nI, nT);
+  return R(90) < 0.5 ? null : angleWhere(R, 0.5);
 }

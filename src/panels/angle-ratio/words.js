@@ -5,21 +5,15 @@
 // from head-on to grazing, or to the critical angle, for every index ratio below 2 + √3 ≈ 3.73
 // (checked numerically in tests/unit/angle-ratio.test.js; above it R dips a little first), which
 // covers every pair the panel offers. What needs a grazing angle is "mostly reflects" (R > 0.5).
-// And reflection is not a bounce. Pure; every number comes from fresnel.js.
+// And reflection is not a bounce. Pure; every number comes from fresnel.js and physics.js.
 import english from 'virtual:messages/en/angle-ratio';
 import { messages } from '../../i18n/messages.js';
 import { DEG, cosDeg } from '../../optics/angles.js';
 import { criticalAngle, fresnelExact } from '../../optics/fresnel.js';
-import { angleWhere } from '../../optics/solveAngle.js';
 import { fixed, precise } from '../../ui/format.js';
+import { halfReflectedAngle } from './physics.js';
 
 const t = messages('angle-ratio', english);
-
-/** θ where R = 1/2 (from 0° to 90°), or null when R never reaches it (equal indices). */
-export function halfReflectedAngle(nI, nT) {
-  const R = (t) => fresnelExact(cosDeg(t), nI, nT);
-  return R(90) < 0.5 ? null : angleWhere(R, 0.5);
-}
 
 /** The analogy's sentence for light from nI into nT. */
 export function stoneAnalogy(nI, nT) {

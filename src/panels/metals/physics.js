@@ -76,3 +76,23 @@ export function metalCurveStats({ theta, f0, exact, error }, metal) {
     };
   });
 }
+
+/** The angle the lecture-gap note calls grazing (degrees): the last whole degree before 90°. */
+export const GRAZING = 89;
+
+/** R per channel at θ (degrees). */
+export function channelsAt(metal, theta) {
+  return metal.n.map((n, ch) => fresnelConductor(cosDeg(theta), n, metal.k[ch]));
+}
+
+const spread = (rgb) => Math.max(...rgb) - Math.min(...rgb);
+
+/** The widest spread of the channels over 0° to 89° (a 0.25° grid): { spread, theta, cool } (cool: blue above red there). */
+export function widestSpread(metal) {
+  let widest = { spread: -1, theta: 0, cool: false };
+  for (let i = 0; i <= 4 * GRAZING; i += 1) {
+    const rgb = channelsAt(metal, i / 4);
+    if (spread(rgb) > widest.spread) widest = { spread: spread(rgb), theta: i / 4, cool: rgb[2] > rgb[0] };
+  }
+  return widest;
+}

@@ -1,16 +1,14 @@
 // Where the lecture's "metal … has almost no Fresnel factor" falls short, for the metal on show:
 // its reflectance head-on and at 89° per channel, the dip between, and whether its tint fades.
-// Every number comes from the exact conductor Fresnel of the lab's data (src/optics/fresnel.js).
-import { cosDeg } from '../../optics/angles.js';
-import { fresnelConductor } from '../../optics/fresnel.js';
+// Every number comes from the exact conductor Fresnel of the lab's data (physics.js, src/optics/fresnel.js).
 import { angle, fixed, precise } from '../../ui/format.js';
+import { channelsAt, GRAZING, widestSpread } from './physics.js';
 import { materialNameInText } from '../shared/materialName.js';
 import english from 'virtual:messages/en/metals';
 import { messages } from '../../i18n/messages.js';
 
 const t = messages('metals', english);
 
-export const GRAZING = 89;
 /** The sources of the note, in the page's language. */
 export const gapSource = () => t('gapSource');
 
@@ -32,21 +30,6 @@ const small = (x) => (fixed(x, 3) === fixed(0, 3) ? precise(x, 2) : fixed(x, 3))
 const channelNames = (names) => t('channels', {
   set: names.length === 3 ? 'all' : names.map((name, i) => (i ? name[0].toUpperCase() + name.slice(1) : name)).join(''),
 });
-
-/** R per channel at θ (degrees). */
-export function channelsAt(metal, theta) {
-  return metal.n.map((n, ch) => fresnelConductor(cosDeg(theta), n, metal.k[ch]));
-}
-
-/** The widest spread of the channels over 0° to 89° (a 0.25° grid): { spread, theta, cool } (cool: blue above red there). */
-export function widestSpread(metal) {
-  let widest = { spread: -1, theta: 0, cool: false };
-  for (let i = 0; i <= 4 * GRAZING; i += 1) {
-    const rgb = channelsAt(metal, i / 4);
-    if (spread(rgb) > widest.spread) widest = { spread: spread(rgb), theta: i / 4, cool: rgb[2] > rgb[0] };
-  }
-  return widest;
-}
 
 /** How far R strays from F0 in any channel between 0° and 89°: below this, the lecture's words hold. */
 export const CLOSE_TO_F0 = 0.02;

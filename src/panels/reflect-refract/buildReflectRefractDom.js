@@ -5,6 +5,7 @@ import english from 'virtual:messages/en/reflect-refract';
 import { messages } from '../../i18n/messages.js';
 import { renderTex, texNumber } from '../../ui/tex.js';
 import { REFLECTION_BANDS } from './physics.js';
+import { bandLabel } from './words.js';
 import { el } from '../../ui/el.js';
 import { definitionList } from '../../ui/definitionList.js';
 import { angle, fixed, tickLabel } from '../../ui/format.js';
@@ -32,7 +33,7 @@ export function buildReflectRefractDom(host) {
   const bands = el('ol', 'rr-bands');
   bands.setAttribute('aria-label', t('bandsLabel'));
   const bandItems = Object.fromEntries(REFLECTION_BANDS.map((band, i) => {
-    const item = el('li', '', band.label);
+    const item = el('li', '', bandLabel(band));
     const lower = i === 0 ? 0 : REFLECTION_BANDS[i - 1].below;
     item.title = Number.isFinite(band.below)
       ? t('bandRange', { low: bound(lower), high: bound(band.below) })
@@ -57,7 +58,7 @@ export function buildReflectRefractDom(host) {
     canvas,
     /** ray: the centreRay() result for the current view. */
     show(ray) {
-      caption.textContent = ray.band.label;
+      caption.textContent = bandLabel(ray.band);
       for (const [bandId, item] of Object.entries(bandItems)) {
         const current = bandId === ray.band.id;
         item.classList.toggle('rr-current', current);

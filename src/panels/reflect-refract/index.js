@@ -12,6 +12,7 @@ import { indexPresets } from '../shared/indexPresets.js';
 import { angle, fixed, tickLabel } from '../../ui/format.js';
 import { startWebGL } from '../shared/startWebGL.js';
 import { centreRay, splitByElevation } from './physics.js';
+import { bandLabel } from './words.js';
 import { buildReflectRefractDom } from './buildReflectRefractDom.js';
 import fragment from './reflect-refract.frag.glsl?raw';
 import './styles.css';
@@ -104,7 +105,7 @@ export function mount(root, ctx) {
         floor: fixed(ray.floorWeight, 4),
         T: fixed(ray.T, 4),
         thetaT: angle(ray.thetaTDeg),
-        band: ray.band.label,
+        band: bandLabel(ray.band),
       });
     },
     csv() {

@@ -1,16 +1,12 @@
 // The numbers of the reflect-refract panel, pure (no DOM) so Node tests can pin them: the split
 // of light between the reflected sky and the refracted floor for the ray through the centre of
-// the view, and the lecture's three captions for how much reflection there is.
+// the view, and which of the lecture's three captions it falls in (their words are words.js's).
 // Light comes from air (n_i = 1) onto water or glass (n_t = n).
-import english from 'virtual:messages/en/reflect-refract';
-import { messages } from '../../i18n/messages.js';
 import { fresnelExact, snellCosT } from '../../optics/fresnel.js';
 import { DEG } from '../../optics/angles.js';
 
-const t = messages('reflect-refract', english);
-
-/** A caption's band: its id, its label in the page's language (read when it is shown) and its upper bound of R. */
-const band = (id, below) => Object.freeze({ id, get label() { return t(`band.${id}`); }, below });
+/** A caption's band: its id and its upper bound of R. */
+const band = (id, below) => Object.freeze({ id, below });
 
 /**
  * The lecture's captions ("Reflection vs. Refraction" slide), assigned by the reflected fraction R
