@@ -1,9 +1,11 @@
 import { describe, expect, it } from 'vitest';
-import { createNormalMipsRuns, shimmerLostText } from '../../src/panels/normal-mips/runs.js';
+import { createNormalMipsRuns } from '../../src/panels/normal-mips/runs.js';
 import {
   chainRequest, lightPlacement, mapParams, mergeKeys, sceneSettings,
 } from '../../src/panels/normal-mips/sceneSettings.js';
-import { describeText, errorsCsv, statusText, summaryText } from '../../src/panels/normal-mips/words.js';
+import {
+  busyText, describeText, errorsCsv, shimmerStoppedText, statusText, summaryText,
+} from '../../src/panels/normal-mips/words.js';
 import { schema } from '../../src/panels/normal-mips/schema.js';
 
 const defaults = () => Object.fromEntries(Object.entries(schema).map(([key, spec]) => [key, spec.default]));
@@ -24,7 +26,7 @@ function stubBuilder() {
   };
 }
 
-/** The GPU scene as the model sees it: calls recorded, shimmer measurements resolved by the test. */
+/** The GPU scene as the runs sees it: calls recorded, shimmer measurements resolved by the test. */
 function stubScene() {
   const scene = {
     maxAnisotropy: 4,
@@ -61,53 +63,53 @@ function setup({ withScene = true, values = defaults() } = {}) {
     shimmer: () => events.push(['shimmer']),
     invalidate: () => events.push(['invalidate']),
   };
-  const model = createNormalMipsRuns({ values, builder, scene, hooks });
-  return { model, builder, scene, events, values };
+  const runs = createNormalMipsRuns({ values, builder, scene, hooks });
+  return { runs, builder, scene, events, values };
 }
 
-/** A model whose first chains have arrived. */
+/** A runs whose first chains have arrived. */
 async function ready(options) {
   const parts = setup(options);
-  parts.model.update();
+  parts.runs.update();
   parts.builder.builds[0].resolve(built('first'));
-  await parts.model.whenBuilt();
+  await parts.runs.whenBuilt();
   parts.events.length = 0;
   if (parts.scene) parts.scene.sets.length = 0;
   return parts;
 }
 
-describe('normal-mips model: chain builds', () => {
+describe('normal-mips runs: chain builds', () => {
   it('builds the chains of the values at mount, says so, then applies everything and tells the scene', async () => {
-    const { model, builder, scene, events, values } = setup();
-    model.update();
+    const { runs, builder, scene, events, values } = setup();
+    runs.update();
     expect(builder.builds).toHaveLength(1);
     expect(builder.builds[0].request).toEqual({
       kind: 'bumps', params: { frequency: 16, edgeAngleDeg: 35 }, size: 256, precision: 'f16', channels: 3,
     });
-    expect(events).toEqual([['busy', 'Building the mip chains of a 256² map…'], ['summary']]);
-    expect(model.building).toBe(true);
+    expect(events).toEqual([['busy', { size: 256 }], ['summary']]);
+    expect(runs.building).toBe(true);
     builder.builds[0].resolve(built('first'));
-    await model.whenBuilt();
-    expect(model.chains).toEqual({ tag: 'first' });
-    expect(model.built).toEqual({ ms: 41.6, workers: 2, size: 256 });
-    expect(model.building).toBe(false);
+    await runs.whenBuilt();
+    expect(runs.chains).toEqual({ tag: 'first' });
+    expect(runs.built).toEqual({ ms: 41.6, workers: 2, size: 256 });
+    expect(runs.building).toBe(false);
     expect(scene.chains).toEqual([{ tag: 'first' }]);
     expect(scene.sets).toHaveLength(1);
     expect(scene.sets[0].truthChanged).toBe(true);
     expect(scene.sets[0].settings).toEqual(sceneSettings(values, { levels: 9, anisotropy: 1 }));
-    expect(events.slice(2)).toEqual([['busy', ''], ['applied', null], ['invalidate']]);
+    expect(events.slice(2)).toEqual([['busy', null], ['applied', null], ['invalidate']]);
   });
 
   it('holds other changes until the newest chains arrive, then applies them together', async () => {
-    const { model, builder, scene, events, values } = await ready();
+    const { runs, builder, scene, events, values } = await ready();
     values.size = '128';
-    model.update(['size']);
+    runs.update(['size']);
     values.technique = 'lean';
-    model.update(['technique']);
+    runs.update(['technique']);
     expect(scene.sets).toHaveLength(0); // the old picture stays while the chains build
-    expect(events).toEqual([['busy', 'Building the mip chains of a 128² map…']]); // chains are there: no summary
+    expect(events).toEqual([['busy', { size: 128 }]]); // chains are there: no summary
     builder.builds[1].resolve(built('second'));
-    await model.whenBuilt();
+    await runs.whenBuilt();
     expect(events.at(-2)).toEqual(['applied', ['size', 'technique']]);
     expect(scene.sets).toHaveLength(1);
     expect(scene.sets[0].truthChanged).toBe(false); // neither size nor technique changes the truth
@@ -117,136 +119,137 @@ describe('normal-mips model: chain builds', () => {
   });
 
   it('drops a build that a newer one made stale, even if it arrives last', async () => {
-    const { model, builder, scene, values } = await ready();
+    const { runs, builder, scene, values } = await ready();
     values.size = '64';
-    model.update(['size']);
+    runs.update(['size']);
     values.size = '512';
-    model.update(['size']);
+    runs.update(['size']);
     builder.builds[2].resolve(built('newest'));
     await flush();
     builder.builds[1].resolve(built('stale'));
-    await model.whenBuilt();
-    expect(model.chains).toEqual({ tag: 'newest' });
-    expect(model.built.size).toBe(512);
+    await runs.whenBuilt();
+    expect(runs.chains).toEqual({ tag: 'newest' });
+    expect(runs.built.size).toBe(512);
     expect(scene.chains.map((c) => c.tag)).toEqual(['first', 'newest']);
   });
 
   it('applies a change that needs no chains at once, and re-describes on []', async () => {
-    const { model, builder, scene, events } = await ready();
-    model.update(['lightEl']);
+    const { runs, builder, scene, events } = await ready();
+    runs.update(['lightEl']);
     expect(scene.sets.at(-1).truthChanged).toBe(true);
-    model.update(['level']);
+    runs.update(['level']);
     expect(scene.sets.at(-1).truthChanged).toBe(false);
     expect(scene.refreshes).toBe(1);
-    model.update([]);
+    runs.update([]);
     expect(scene.sets).toHaveLength(2); // nothing to draw
     expect(events.at(-1)).toEqual(['applied', []]);
     expect(builder.builds).toHaveLength(1);
   });
 
-  it('says why a build failed', async () => {
-    const { model, builder, events, values } = await ready();
+  it('tells the view why a build failed', async () => {
+    const { runs, builder, events, values } = await ready();
     values.size = '64';
-    model.update(['size']);
-    builder.builds[1].reject(new RangeError('size 64 refused'));
-    await model.whenBuilt();
-    expect(events.at(-1)).toEqual(['busy', 'Could not build the mip chains: size 64 refused']);
-    expect(model.building).toBe(false);
+    runs.update(['size']);
+    const refusal = new RangeError('size 64 refused');
+    builder.builds[1].reject(refusal);
+    await runs.whenBuilt();
+    expect(events.at(-1)).toEqual(['busy', { error: refusal }]);
+    expect(runs.building).toBe(false);
   });
 
   it('asks the scene for no more than the GPU offers', async () => {
-    const { model, scene, values } = await ready();
+    const { runs, scene, values } = await ready();
     values.anisotropy = '16';
-    model.update(['anisotropy']);
+    runs.update(['anisotropy']);
     expect(scene.sets.at(-1).settings.anisotropy).toBe(4);
-    expect(model.anisotropyInUse()).toBe(4);
+    expect(runs.anisotropyInUse()).toBe(4);
   });
 });
 
-describe('normal-mips model: the shimmer meter', () => {
+describe('normal-mips runs: the shimmer meter', () => {
   it('measures, shows the numbers and re-describes', async () => {
-    const { model, scene, events } = await ready();
-    const done = model.measureShimmer();
+    const { runs, scene, events } = await ready();
+    const done = runs.measureShimmer();
     await flush();
-    expect(model.shimmer.busy).toBe(true);
+    expect(runs.shimmer.busy).toBe(true);
     expect(events).toEqual([['shimmer']]);
     scene.shimmers[0].resolve({ toksvig: 0.01 });
     await done;
-    expect(model.shimmer).toEqual({ result: { toksvig: 0.01 }, busy: false, stopped: '' });
+    expect(runs.shimmer).toEqual({ result: { toksvig: 0.01 }, busy: false, stopped: '' });
     expect(events.slice(1)).toEqual([['shimmer'], ['invalidate']]);
   });
 
   it('drops a measurement that a newer one made stale', async () => {
-    const { model, scene } = await ready();
-    const first = model.measureShimmer();
+    const { runs, scene } = await ready();
+    const first = runs.measureShimmer();
     await flush();
-    const second = model.measureShimmer();
+    const second = runs.measureShimmer();
     await flush();
     expect(scene.shimmers[0].signal.aborted).toBe(true);
     expect(scene.shimmers[1].signal.aborted).toBe(false);
     await first; // the stale one ends without a word
-    expect(model.shimmer.busy).toBe(true);
+    expect(runs.shimmer.busy).toBe(true);
     scene.shimmers[1].resolve({ toksvig: 0.02 });
     await second;
-    expect(model.shimmer.result).toEqual({ toksvig: 0.02 });
+    expect(runs.shimmer.result).toEqual({ toksvig: 0.02 });
   });
 
   it('forgets the numbers and drops a running measurement when what it measures changes, not otherwise', async () => {
-    const { model, scene } = await ready();
-    const done = model.measureShimmer();
+    const { runs, scene } = await ready();
+    const done = runs.measureShimmer();
     await flush();
     scene.shimmers[0].resolve({ toksvig: 0.01 });
     await done;
-    model.update(['technique']); // the meter measures every technique: still valid
-    expect(model.shimmer.result).toEqual({ toksvig: 0.01 });
-    const running = model.measureShimmer();
+    runs.update(['technique']); // the meter measures every technique: still valid
+    expect(runs.shimmer.result).toEqual({ toksvig: 0.01 });
+    const running = runs.measureShimmer();
     await flush();
-    model.update(['viewEl']);
+    runs.update(['viewEl']);
     expect(scene.shimmers[1].signal.aborted).toBe(true);
-    expect(model.shimmer).toEqual({ result: null, busy: false, stopped: '' });
+    expect(runs.shimmer).toEqual({ result: null, busy: false, stopped: '' });
     await running;
-    expect(model.shimmer.result).toBeNull();
+    expect(runs.shimmer.result).toBeNull();
   });
 
   it('stops on a lost context and says so; a null from the scene says the same', async () => {
-    const { model, scene, events } = await ready();
-    const done = model.measureShimmer();
+    const { runs, scene, events } = await ready();
+    const done = runs.measureShimmer();
     await flush();
-    model.contextLost();
+    runs.contextLost();
     expect(scene.shimmers[0].signal.aborted).toBe(true);
-    expect(model.shimmer).toEqual({ result: null, busy: false, stopped: shimmerLostText() });
+    expect(runs.shimmer).toEqual({ result: null, busy: false, stopped: 'lost' });
     expect(events.slice(-2)).toEqual([['shimmer'], ['invalidate']]);
     await done;
-    expect(model.shimmer.stopped).toBe(shimmerLostText());
-    const again = model.measureShimmer();
+    expect(runs.shimmer.stopped).toBe('lost');
+    const again = runs.measureShimmer();
     await flush();
-    expect(model.shimmer.stopped).toBe('');
+    expect(runs.shimmer.stopped).toBe('');
     scene.shimmers[1].resolve(null); // the context went away under a read-back before its event
     await again;
-    expect(model.shimmer).toEqual({ result: null, busy: false, stopped: shimmerLostText() });
+    expect(runs.shimmer).toEqual({ result: null, busy: false, stopped: 'lost' });
   });
 
   it('a lost context while nothing is measured changes nothing', async () => {
-    const { model, events } = await ready();
-    model.contextLost();
+    const { runs, events } = await ready();
+    runs.contextLost();
     expect(events).toEqual([]);
-    expect(model.shimmer.stopped).toBe('');
+    expect(runs.shimmer.stopped).toBe('');
   });
 
   it('without a scene there are no numbers and no complaint', async () => {
-    const { model } = await ready({ withScene: false });
-    await model.measureShimmer();
-    expect(model.shimmer).toEqual({ result: null, busy: false, stopped: '' });
+    const { runs } = await ready({ withScene: false });
+    await runs.measureShimmer();
+    expect(runs.shimmer).toEqual({ result: null, busy: false, stopped: '' });
   });
 });
 
-describe('normal-mips model: dispose', () => {
+describe('normal-mips runs: dispose', () => {
   it('stops the builder, drops a build and a measurement under way, and calls no hook after', async () => {
-    const { model, builder, scene, events, values } = await ready();
+    const { runs, builder, scene, events, values } = await ready();
     values.size = '64';
-    model.update(['size']);
-    const measuring = model.measureShimmer(); // waits for the build
-    model.dispose();
+    runs.update(['size']);
+    const measuring = runs.measureShimmer(); // waits for the build
+    runs.dispose();
     expect(builder.disposed).toBe(true);
     events.length = 0;
     builder.builds[1].resolve(built('late'));
@@ -254,21 +257,21 @@ describe('normal-mips model: dispose', () => {
     expect(scene.chains.map((c) => c.tag)).toEqual(['first']);
     expect(scene.shimmers).toHaveLength(0); // the measurement never started on a panel that is gone
     expect(events).toEqual([]);
-    expect(model.shimmer.result).toBeNull();
+    expect(runs.shimmer.result).toBeNull();
   });
 });
 
-describe('normal-mips model: dispose of a running measurement', () => {
+describe('normal-mips runs: dispose of a running measurement', () => {
   it('aborts it and keeps its late numbers out', async () => {
-    const { model, scene, events } = await ready();
-    const running = model.measureShimmer();
+    const { runs, scene, events } = await ready();
+    const running = runs.measureShimmer();
     await flush();
-    model.dispose();
+    runs.dispose();
     expect(scene.shimmers[0].signal.aborted).toBe(true);
     events.length = 0;
     await running;
     expect(events).toEqual([]);
-    expect(model.shimmer.result).toBeNull();
+    expect(runs.shimmer.result).toBeNull();
   });
 });
 
@@ -318,6 +321,15 @@ describe('normal-mips words', () => {
     expect(line).toContain('This GPU cannot filter 32-bit float textures');
     const forced = summaryText({ ...defaults(), level: 3 }, { ...facts, problem: 'No workers.' });
     expect(forced).toMatch(/forced to 3 of 0–8; .* No workers\.$/);
+  });
+
+  it('says what the chain build is doing and why a shimmer measurement stopped', () => {
+    expect(busyText({ size: 256 })).toBe('Building the mip chains of a 256² map…');
+    expect(busyText({ error: new RangeError('size 64 refused') })).toBe('Could not build the mip chains: size 64 refused');
+    expect(busyText(null)).toBe('');
+    expect(shimmerStoppedText('lost')).toBe('Shimmer meter: the measurement stopped because the graphics context was lost; '
+      + 'press “Measure shimmer” again once the picture is back.');
+    expect(shimmerStoppedText('')).toBe('');
   });
 
   it('captions the picture and says why there are no numbers yet', () => {

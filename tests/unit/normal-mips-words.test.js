@@ -2,11 +2,10 @@
 // pseudo-locale each sentence, caption and name is bracketed, with no word left outside.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import {
-  builtWhere, chainProblemText, describeText, legendText, statusText, summaryText,
+  builtWhere, busyText, chainProblemText, describeText, legendText, shimmerStoppedText, statusText, summaryText,
 } from '../../src/panels/normal-mips/words.js';
 import { verdict } from '../../src/panels/normal-mips/createErrorDistancePlot.js';
 import { techniqueName } from '../../src/panels/normal-mips/techniqueName.js';
-import { createNormalMipsRuns, shimmerLostText } from '../../src/panels/normal-mips/runs.js';
 import { schema } from '../../src/panels/normal-mips/schema.js';
 import { TECHNIQUES } from '../../src/normals/techniqueLayout.js';
 import { usePseudoLocale, wordsOutside } from './inPseudoLocale.js';
@@ -48,26 +47,17 @@ describe('the normal-mips panel in another language', () => {
       describeText(defaults(), { errors, shimmer: null, plotNote: verdict(errors, 'toksvig', [0, 1]) }),
       verdict(errors, 'naive', [0, 1]),
       verdict({ ...errors, naive: { rmse: 1, bands: [{ level: 0, rmse: 1 }, { level: 1, rmse: 1 }] } }, 'lean', [0, 1]),
-      shimmerLostText(),
+      shimmerStoppedText('lost'),
     ];
     for (const line of lines) expect(wordsOutside(line), line).toBe('');
     expect(lines[0]).toMatch(/^⟦/);
   });
 
-  it('says that the chains are building, and why a build failed', async () => {
-    const busy = [];
-    let fail;
-    const builder = {
-      workers: 0, problem: null, dispose() {},
-      build: () => new Promise((resolve, reject) => { fail = reject; }),
-    };
-    const hooks = { applied() {}, busy: (text) => busy.push(text), summary() {}, shimmer() {}, invalidate() {} };
-    createNormalMipsRuns({ values: defaults(), builder, scene: null, hooks }).update();
-    fail(new RangeError('size must be a power of two'));
-    await new Promise((resolve) => { setTimeout(resolve, 0); });
-    expect(busy).toHaveLength(2);
-    expect(wordsOutside(busy[0])).toBe('');
-    expect(wordsOutside(busy[1].replace('size must be a power of two', ''))).toBe('');
+  it('says that the chains are building, and why a build failed', () => {
+    expect(wordsOutside(busyText({ size: 256 }))).toBe('');
+    const failed = busyText({ error: new RangeError('size must be a power of two') });
+    expect(failed).toContain('size must be a power of two'); // the builder's own words, kept
+    expect(wordsOutside(failed.replace('size must be a power of two', ''))).toBe('');
   });
 });
 

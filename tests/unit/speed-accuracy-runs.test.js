@@ -4,6 +4,9 @@ import {
 import { createSpeedAccuracyRuns } from '../../src/panels/speed-accuracy/runs.js';
 import { formatCodes, formatNs, shortDecimal } from '../../src/panels/speed-accuracy/formatMeasures.js';
 import { readBackProblem } from '../../src/panels/speed-accuracy/readBackProblem.js';
+import {
+  describeView, speedAccuracyView, statusText, viewCsv,
+} from '../../src/panels/speed-accuracy/words.js';
 import { schema } from '../../src/panels/speed-accuracy/schema.js';
 import { benchResults } from '../../src/methods/benchResults.js';
 import { errorsFromValues } from '../../src/methods/gpuErrors.js';
@@ -55,7 +58,7 @@ function setup({ stored = null, values = defaults() } = {}) {
   const benchmarks = []; // { options, ...deferred }
   const saved = [];
   let clock = 1000;
-  const model = createSpeedAccuracyRuns({
+  const runs = createSpeedAccuracyRuns({
     values,
     readBack: {
       cached: (scene, precision) => cache.get(`${scene.id}|${precision}`) ?? null,
@@ -77,29 +80,32 @@ function setup({ stored = null, values = defaults() } = {}) {
       useEmulation: () => events.push(['useEmulation']),
       running: (running) => events.push(['running', running]),
       progress: (fraction, label) => events.push(['progress', fraction, label]),
-      status: (text) => events.push(['status', text]),
+      status: (end) => events.push(['status', end]),
     },
     now: () => clock,
   });
   return {
-    model, values, events, measurements, cache, benchmarks, saved, advance: (ms) => { clock += ms; },
+    runs,
+    /** What the view shows for the values now (the runs' state, through words.js). */
+    show: () => speedAccuracyView(values, runs.update()),
+    values, events, measurements, cache, benchmarks, saved, advance: (ms) => { clock += ms; },
   };
 }
 
 // The first recommendation emulates every method over the scene's domain (seconds on a busy
 // machine); later ones reuse it.
-beforeAll(() => { setup().model.update(); }, 60_000);
+beforeAll(() => { setup().show(); }, 60_000);
 
-describe('speed-accuracy model: costs', () => {
+describe('speed-accuracy runs: costs', () => {
   it('shows static counts without a run, and the session\'s results when there are some', () => {
-    const fresh = setup().model.update();
+    const fresh = setup().show();
     expect(fresh.mode).toBe('static');
     expect(fresh.device).toBe('No benchmark run yet on this device: the costs are static instruction counts.');
     expect(fresh.advice.criterionText).toContain('Costs: static instruction counts until you run the benchmark.');
     const stored = timedResults();
-    const { model } = setup({ stored });
-    const view = model.update();
-    expect(model.results).toBe(stored);
+    const { runs, show } = setup({ stored });
+    const view = show();
+    expect(runs.results).toBe(stored);
     expect(view.mode).toBe('gpu');
     for (const row of view.rows) expect(row.x).toBe(10 + METHODS.findIndex((m) => m.id === row.methodId));
     expect(view.table.costHeader).toBe('Cost (GPU ns/eval)');
@@ -108,7 +114,7 @@ describe('speed-accuracy model: costs', () => {
   });
 
   it('marks the Pareto front and the recommendation in the rows and the chart alike', () => {
-    const view = setup({ stored: timedResults() }).model.update();
+    const view = setup({ stored: timedResults() }).show();
     expect(view.rows.filter((r) => r.recommended)).toEqual([view.chosen]);
     expect(view.chart.points.map((p) => p.id)).toEqual(view.rows.map((r) => r.methodId));
     view.rows.forEach((r, i) => expect(r.onFront).toBe(view.chart.front.includes(i)));
@@ -116,11 +122,13 @@ describe('speed-accuracy model: costs', () => {
   });
 });
 
-describe('speed-accuracy model: the benchmark', () => {
+describe('speed-accuracy runs: the benchmark', () => {
   it('runs once at a time, reports progress, keeps and saves the results and says how long it took', async () => {
-    const { model, events, benchmarks, saved, advance } = setup();
-    const run = model.run('tiny');
-    expect(model.run('tiny')).toBe(run); // a second press joins the run under way
+    const {
+      runs, show, events, benchmarks, saved, advance,
+    } = setup();
+    const run = runs.run('tiny');
+    expect(runs.run('tiny')).toBe(run); // a second press joins the run under way
     await flush();
     expect(benchmarks).toHaveLength(1);
     expect(benchmarks[0].options.size).toBe('tiny');
@@ -129,65 +137,68 @@ describe('speed-accuracy model: the benchmark', () => {
     advance(2460);
     benchmarks[0].resolve(results);
     await expect(run).resolves.toBe(results);
-    expect(model.results).toBe(results);
+    expect(runs.results).toBe(results);
     expect(saved).toEqual([results]);
     expect(events).toEqual([
-      ['running', true], ['progress', 0.25, 'Timing every method on this GPU…'], ['status', 'Done in 2.5 s'], ['invalidate'],
+      ['running', true], ['progress', 0.25, 'Timing every method on this GPU…'], ['status', { done: 2460 }], ['invalidate'],
       ['running', false],
     ]);
-    expect(model.update().mode).toBe('gpu');
-    model.run('tiny').catch(() => {});
+    expect(show().mode).toBe('gpu');
+    runs.run('tiny').catch(() => {});
     await flush();
     expect(benchmarks).toHaveLength(2); // after the end a new run starts
   });
 
   it('cancels: the run rejects, says so, and a result that still arrives is dropped', async () => {
-    const { model, events, benchmarks, saved } = setup();
-    const run = model.run('normal');
+    const { runs, events, benchmarks, saved } = setup();
+    const run = runs.run('normal');
     const outcome = run.then(() => 'done', (error) => error.message);
     await flush();
-    model.cancel();
+    runs.cancel();
     expect(benchmarks[0].options.signal.aborted).toBe(true);
     benchmarks[0].resolve(timedResults()); // a runner that ignored the signal
     expect(await outcome).toBe('Benchmark cancelled');
-    expect(model.results).toBeNull();
+    expect(runs.results).toBeNull();
     expect(saved).toEqual([]);
-    expect(events.slice(-2)).toEqual([['status', 'Cancelled'], ['running', false]]);
+    expect(events.slice(-2)).toEqual([['status', { cancelled: true }], ['running', false]]);
   });
 
-  it('says why a run failed', async () => {
-    const { model, events, benchmarks } = setup();
+  it('tells the view why a run failed', async () => {
+    const { runs, events, benchmarks } = setup();
     const warn = vi.spyOn(console, 'warn').mockImplementation(() => {});
-    const run = model.run('normal').catch((error) => error.message);
+    const run = runs.run('normal').catch((error) => error.message);
     await flush();
-    benchmarks[0].reject(new Error('the worker refused'));
+    const refusal = new Error('the worker refused');
+    benchmarks[0].reject(refusal);
     expect(await run).toBe('the worker refused');
-    expect(events).toContainEqual(['status', 'Benchmark failed: the worker refused']);
+    expect(events).toContainEqual(['status', { failed: refusal }]);
     expect(warn).toHaveBeenCalledOnce();
     warn.mockRestore();
   });
 
   it('dispose aborts a run and tells the view nothing more', async () => {
-    const { model, events, benchmarks } = setup();
-    const run = model.run('normal').catch((error) => error.name);
+    const { runs, events, benchmarks } = setup();
+    const run = runs.run('normal').catch((error) => error.name);
     await flush();
     events.length = 0;
-    model.dispose();
+    runs.dispose();
     expect(benchmarks[0].options.signal.aborted).toBe(true);
     benchmarks[0].options.onProgress(0.5, 'late');
     benchmarks[0].resolve(timedResults());
     expect(await run).toBe('AbortError');
     expect(events).toEqual([]);
-    expect(model.results).toBeNull();
+    expect(runs.results).toBeNull();
   });
 });
 
-describe('speed-accuracy model: errors read back from the GPU', () => {
+describe('speed-accuracy runs: errors read back from the GPU', () => {
   it('starts one read-back, says it is measuring, then plots the GPU\'s errors', async () => {
-    const { model, values, events, measurements, cache } = setup();
+    const {
+      runs, show, values, events, measurements, cache,
+    } = setup();
     values.errors = 'gpu-highp';
-    const waiting = model.update();
-    model.update();
+    const waiting = show();
+    show();
     expect(measurements).toHaveLength(1);
     expect(measurements[0].precision).toBe('highp');
     expect(waiting.source).toBe('js');
@@ -195,40 +206,44 @@ describe('speed-accuracy model: errors read back from the GPU', () => {
       text: 'Measuring the errors on this GPU in highp… The chart shows the JavaScript emulation until the read-back is done.',
       warning: false,
     });
-    expect(model.measurement).toBeInstanceOf(Promise);
+    expect(runs.measurement).toBeInstanceOf(Promise);
     const plastic = sceneById('plastic');
     const measured = readBackOf(plastic);
     cache.set('plastic|highp', measured);
     measurements[0].resolve(measured);
-    await model.measurement;
+    await runs.measurement;
     expect(events).toEqual([['invalidate']]);
-    expect(model.measurement).toBeNull();
-    const view = model.update();
+    expect(runs.measurement).toBeNull();
+    const view = show();
     expect(view.source).toBe('gpu-highp');
     for (const row of view.rows) expect(row.max).toBe(measured.errors[row.methodId].max);
     expect(view.advice.reasonText).toContain('this GPU in highp (read back)');
-    expect(model.csv().filename).toBe('speed-accuracy-plastic-gpu-highp.csv');
-    expect(model.describe()).toContain('with errors measured on this GPU in highp');
+    expect(viewCsv(view).filename).toBe('speed-accuracy-plastic-gpu-highp.csv');
+    expect(describeView(view, null)).toContain('with errors measured on this GPU in highp');
   });
 
   it('drops a read-back that another scene made stale', async () => {
-    const { model, values, events, measurements } = setup();
+    const {
+      runs, show, values, events, measurements,
+    } = setup();
     values.errors = 'gpu-highp';
-    model.update();
+    show();
     values.scene = 'metal';
-    model.update();
+    show();
     expect(measurements.map((m) => m.scene.id)).toEqual(['plastic', 'metal']);
     measurements[0].reject(new GpuFloatUnavailable('This GPU cannot render to float32 textures (no EXT_color_buffer_float).'));
     await flush();
     expect(events).toEqual([]);
-    expect(model.problem).toBe('');
-    expect(model.update().sourceLine.text).toMatch(/^Measuring the errors on this GPU in highp/);
+    expect(runs.readBackError).toBeNull();
+    expect(show().sourceLine.text).toMatch(/^Measuring the errors on this GPU in highp/);
   });
 
   it('words a refused shader as a refused shader, not as missing float targets, and falls back to the emulation', async () => {
-    const { model, values, events, measurements } = setup();
+    const {
+      runs, show, values, events, measurements,
+    } = setup();
     values.errors = 'gpu-mediump';
-    model.update();
+    show();
     const log = 'ERROR: 0:12: \'fm_evaluate\' : no matching overloaded function found\n';
     const refusal = new ShaderError({ stage: 'fragment', log, source: '' });
     const logged = vi.spyOn(console, 'error').mockImplementation(() => {});
@@ -237,23 +252,35 @@ describe('speed-accuracy model: errors read back from the GPU', () => {
     expect(logged).toHaveBeenCalledWith(refusal); // the whole log, with the source lines it names
     logged.mockRestore();
     expect(events).toEqual([['useEmulation']]);
-    expect(model.problem).toBe('This GPU could not compile the shader that evaluates a method, so the errors shown are the JavaScript '
-      + 'emulation. The driver said: ERROR: 0:12: \'fm_evaluate\' : no matching overloaded function found');
-    expect(model.problem).not.toContain('float render targets');
+    expect(runs.readBackError).toBe(refusal);
     values.errors = 'js'; // what useEmulation does through the host
-    expect(model.update().sourceLine).toEqual({ text: model.problem, warning: true });
+    expect(show().sourceLine).toEqual({
+      text: 'This GPU could not compile the shader that evaluates a method, so the errors shown are the JavaScript '
+        + 'emulation. The driver said: ERROR: 0:12: \'fm_evaluate\' : no matching overloaded function found',
+      warning: true,
+    });
     values.errors = 'gpu-highp'; // chosen again: the notice goes, a new read-back starts
-    expect(model.update().sourceLine.warning).toBe(false);
+    expect(show().sourceLine.warning).toBe(false);
   });
 
   it('dispose drops a read-back under way', async () => {
-    const { model, values, events, measurements } = setup();
+    const {
+      runs, show, values, events, measurements,
+    } = setup();
     values.errors = 'gpu-highp';
-    model.update();
-    model.dispose();
+    show();
+    runs.dispose();
     measurements[0].resolve(readBackOf(sceneById('plastic')));
     await flush();
     expect(events).toEqual([]);
+  });
+});
+
+describe('statusText', () => {
+  it('says how a benchmark ended', () => {
+    expect(statusText({ done: 2460 })).toBe('Done in 2.5 s');
+    expect(statusText({ cancelled: true })).toBe('Cancelled');
+    expect(statusText({ failed: new Error('the worker refused') })).toBe('Benchmark failed: the worker refused');
   });
 });
 

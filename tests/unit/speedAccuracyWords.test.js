@@ -2,7 +2,7 @@
 // the methods, scenes and reasons): in the pseudo-locale no word of what it writes is left outside
 // the brackets, whatever the costs, the error source and the GPU's problem.
 import { describe, expect, it } from 'vitest';
-import { describeView, speedAccuracyView } from '../../src/panels/speed-accuracy/words.js';
+import { describeView, speedAccuracyView, statusText } from '../../src/panels/speed-accuracy/words.js';
 import { formatCodes, formatNs } from '../../src/panels/speed-accuracy/formatMeasures.js';
 import { readBackProblem } from '../../src/panels/speed-accuracy/readBackProblem.js';
 import { benchResults } from '../../src/methods/benchResults.js';
@@ -71,7 +71,10 @@ describe('speed-accuracy words in another language', () => {
       ];
       for (const [i, source] of sources.entries()) {
         const probe = PROBES[i % 2];
-        const view = speedAccuracyView({ scene: sceneId, budget, errors: 'js', cost }, { source, results: withRun ? run : null, problem: '', probe });
+        const state = {
+          source, results: withRun ? run : null, readBackError: null, probe,
+        };
+        const view = speedAccuracyView({ scene: sceneId, budget, errors: 'js', cost }, state);
         for (const text of texts(view, probe)) expect(wordsOutside(text), `${sceneId} ${budget} ${cost}: ${text}`).toBe('');
       }
     }
@@ -83,6 +86,7 @@ describe('speed-accuracy words in another language', () => {
     for (const text of [
       refused, readBackProblem(new GpuFloatUnavailable('⟦no float⟧')), readBackProblem(new ShaderError({ stage: 'link', log: '' })),
       readBackProblem(new Error('⟦lost⟧')), formatCodes(NaN), formatNs({ median: 1, min: 0.5, max: 2 }),
+      statusText({ done: 2460 }), statusText({ cancelled: true }), statusText({ failed: new Error('⟦refused⟧') }),
     ]) expect(wordsOutside(text), text).toBe('');
   });
 });

@@ -17,7 +17,7 @@ import { buildMipStrip } from './buildMipStrip.js';
 import { buildInspector } from './buildInspector.js';
 import { createNormalMipsRuns } from './runs.js';
 import {
-  chainProblemText, describeText, errorsCsv, legendText, statusText, summaryText,
+  busyText, chainProblemText, describeText, errorsCsv, legendText, shimmerStoppedText, statusText, summaryText,
 } from './words.js';
 import {
   CHAIN_KEYS, INSPECT_KEYS, initialUniforms, LIGHT_KEYS, touches,
@@ -53,14 +53,14 @@ export function mount(root, ctx) {
     uniforms: initialUniforms(values),
   }), t('noWebgl'));
 
-  const showShimmer = () => dom.setShimmer(runs.shimmer.result, runs.shimmer.busy, runs.shimmer.stopped);
+  const showShimmer = () => dom.setShimmer(runs.shimmer.result, runs.shimmer.busy, shimmerStoppedText(runs.shimmer.stopped));
   const runs = createNormalMipsRuns({
     values,
     builder: createChainBuilder(),
     scene,
     hooks: {
       applied: draw,
-      busy: (text) => dom.setBusy(text),
+      busy: (state) => dom.setBusy(busyText(state)),
       summary: describeSettings,
       shimmer: showShimmer,
       invalidate: () => ctx.invalidate(),

@@ -1,24 +1,30 @@
 // @ts-check
 // The state and the runs of the normal-mips panel, apart from its DOM: the chains of the current
 // settings (built off the page's thread), the changes that wait for them, what the GPU scene is
-// told, and the shimmer measurement. index.js is the view: it draws what the model holds when a
-// hook says so. Long runs (a chain build, a shimmer measurement) go stale through run gates: a
-// newer run, a change of the settings they measure, a lost context or dispose drops their result.
-import english from 'virtual:messages/en/normal-mips';
-import { messages } from '../../i18n/messages.js';
+// told, and the shimmer measurement. index.js is the view: it draws what the runs hold when a
+// hook says so, in words.js's words (these runs keep states and causes as data). Long runs (a
+// chain build, a shimmer measurement) go stale through run gates: a newer run, a change of the
+// settings they measure, a lost context or dispose drops their result.
 import { levelCount } from '../../normals/momentPyramid.js';
 import { createRunGate, isStaleRun } from '../shared/createRunGate.js';
 import {
   CHAIN_KEYS, chainRequest, ERROR_KEYS, mergeKeys, sceneSettings, SHIMMER_KEYS, touches, TRUTH_KEYS,
 } from './sceneSettings.js';
 
-const t = messages('normal-mips', english);
-
-/** Why a shimmer measurement ended without numbers when the graphics context was lost. */
-export const shimmerLostText = () => t('shimmer.lost');
+/**
+ * The line over the stage: the chains of a map of `size`² are building, or their build failed
+ * (`error`); null hides it. words.js's busyText says it.
+ * @typedef {{ size: number } | { error: Error } | null} ChainBuildState
+ */
 
 /**
- * What the model needs of the GPU scene (createNormalMipsScene), so a stand-in can take its place.
+ * Why the last shimmer measurement ended without numbers: '' it did not, 'lost' the graphics
+ * context went under it. words.js's shimmerStoppedText says it.
+ * @typedef {'' | 'lost'} ShimmerStop
+ */
+
+/**
+ * What the runs need of the GPU scene (createNormalMipsScene), so a stand-in can take its place.
  * @typedef {object} NormalMipsScene
  * @property {number} maxAnisotropy
  * @property {boolean} floatLinear
@@ -30,10 +36,10 @@ export const shimmerLostText = () => t('shimmer.lost');
  */
 
 /**
- * What the view does when the model changes.
+ * What the view does when the state changes.
  * @typedef {object} NormalMipsHooks
  * @property {(keys: string[] | null | undefined) => void} applied  settings were applied (keys: which, [] a re-describe, null all)
- * @property {(text: string) => void} busy  the line over the stage while the chains build ('' hides it)
+ * @property {(state: ChainBuildState) => void} busy  the chains started building, failed, or are there (null)
  * @property {() => void} summary  the line of key numbers must be written again (before the first chains arrive)
  * @property {() => void} shimmer  the shimmer meter's state changed
  * @property {() => void} invalidate  a result arrived: describe the panel again
@@ -55,7 +61,7 @@ export function createNormalMipsRuns({ values, builder, scene, hooks }) {
   /** @type {Promise<void>} */
   let buildDone = Promise.resolve();
   /** result: the last numbers (null: none for these settings); stopped: why the last run ended without numbers */
-  const shimmer = { result: /** @type {Record<string, number> | null} */ (null), busy: false, stopped: '' };
+  const shimmer = { result: /** @type {Record<string, number> | null} */ (null), busy: false, stopped: /** @type {ShimmerStop} */ ('') };
 
   /** The anisotropic taps in use: what was asked for, as far as this GPU offers them. */
   const anisotropyInUse = () => (scene ? Math.min(Number(values.anisotropy), scene.maxAnisotropy) : 1);
@@ -65,7 +71,7 @@ export function createNormalMipsRuns({ values, builder, scene, hooks }) {
   // belong to the same map.
   function rebuildChains(/** @type {string[] | null | undefined} */ keys) {
     deferred = mergeKeys(deferred, keys);
-    hooks.busy(t('building', { size: String(Number(values.size)) }));
+    hooks.busy({ size: Number(values.size) });
     if (!chains) hooks.summary(); // the panel has its full height from its mount on
     const run = buildGate.begin();
     const request = chainRequest(values);
@@ -76,13 +82,13 @@ export function createNormalMipsRuns({ values, builder, scene, hooks }) {
       scene?.setChains(chains, result.uploads);
       const keysNow = deferred;
       deferred = undefined;
-      hooks.busy('');
+      hooks.busy(null);
       apply(keysNow);
       hooks.invalidate(); // re-describe, now with this map
     }, (error) => {
       if (!run.live) return;
       deferred = undefined;
-      hooks.busy(t('buildFailed', { reason: error.message }));
+      hooks.busy({ error });
     });
   }
 
@@ -159,7 +165,7 @@ export function createNormalMipsRuns({ values, builder, scene, hooks }) {
       shimmer.busy = false;
       shimmer.result = result;
       // null from a live scene: its context was lost under the read-backs
-      if (result === null && scene) shimmer.stopped = shimmerLostText();
+      if (result === null && scene) shimmer.stopped = 'lost';
       hooks.shimmer();
       hooks.invalidate();
     },
@@ -169,7 +175,7 @@ export function createNormalMipsRuns({ values, builder, scene, hooks }) {
       shimmerGate.cancel('The graphics context was lost');
       shimmer.busy = false;
       shimmer.result = null;
-      shimmer.stopped = shimmerLostText();
+      shimmer.stopped = 'lost';
       hooks.shimmer();
       hooks.invalidate();
     },

@@ -1,7 +1,8 @@
 // @ts-check
 // The normal-mips panel in words and columns: the line of key numbers, the captions and the table's
-// waiting line, the description under the panel and the CSV of the errors. Pure functions of the
-// values and what the model and the scene hold, so they are tested in Node.
+// waiting line, the line over the stage while chains build, why a shimmer measurement stopped, the
+// description under the panel and the CSV of the errors. Pure functions of the values and what the
+// runs (runs.js) and the scene hold, so they are tested in Node.
 import english from 'virtual:messages/en/normal-mips';
 import { messages } from '../../i18n/messages.js';
 import { exponentFromAlpha } from '../../normals/lobeFormulas.js';
@@ -18,6 +19,20 @@ const t = messages('normal-mips', english);
 
 /** Base α as its control writes it: the decimals of its step, in the page's language. */
 const alphaText = (/** @type {number} */ alpha) => tickLabel(alpha, schema.alpha.step);
+
+/**
+ * The line over the stage for the runs' chain build (runs.js ChainBuildState): building a map of
+ * its size, or why the build failed; '' once the chains are there.
+ * @param {import('./runs.js').ChainBuildState} state
+ */
+export function busyText(state) {
+  if (!state) return '';
+  if ('error' in state) return t('buildFailed', { reason: state.error.message });
+  return t('building', { size: String(state.size) });
+}
+
+/** Why the last shimmer measurement ended without numbers (runs.js ShimmerStop); '' when it did not. */
+export const shimmerStoppedText = (/** @type {import('./runs.js').ShimmerStop} */ stopped) => (stopped === 'lost' ? t('shimmer.lost') : '');
 
 /** Where the chains were built, in words: on the page's thread (0 workers) or in so many workers. */
 export const builtWhere = (/** @type {number} */ workers) => t('builtWhere', { workers });

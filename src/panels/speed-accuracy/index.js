@@ -16,6 +16,9 @@ import { createScatter } from './createScatter.js';
 import { buildSpeedAccuracyDom } from './buildSpeedAccuracyDom.js';
 import { cachedGpuErrors, gpuPrecisionProbe, measureGpuErrors } from './measureGpuErrors.js';
 import { createSpeedAccuracyRuns } from './runs.js';
+import {
+  describeView, speedAccuracyView, statusText, viewCsv,
+} from './words.js';
 import './styles.css';
 import { schema } from './schema.js';
 import english from 'virtual:messages/en/speed-accuracy';
@@ -53,7 +56,7 @@ export function mount(root, ctx) {
       useEmulation: () => ctx.set({ errors: 'js' }),
       running: (running) => dom.setRunning(running),
       progress: (fraction, label) => dom.setProgress(fraction, label),
-      status: (text) => dom.setStatus(text),
+      status: (end) => dom.setStatus(statusText(end)),
     },
   });
   const chart = createScatter(dom.chartHost, { ariaLabel: t('chartLabel') });
@@ -64,8 +67,13 @@ export function mount(root, ctx) {
   gpuNote.setAttribute('role', 'status');
   controllers.errors.domElement.after(gpuNote);
 
+  /** @type {import('./runs.js').SpeedAccuracyState} what the runs held at the last update */
+  let state;
+  /** @type {ReturnType<typeof speedAccuracyView>} what is shown for it */
+  let view;
   function update() {
-    const view = runs.update();
+    state = runs.update();
+    view = speedAccuracyView(values, state);
     chart.setData(view.chart);
     dom.setAdvice(view.advice);
     dom.setSource(view.sourceLine.text, view.sourceLine.warning);
@@ -83,15 +91,15 @@ export function mount(root, ctx) {
     chart,
     runs,
     get results() { return runs.results; },
-    get view() { return runs.view; },
+    get view() { return view; },
     /** The auto-run started by ?bench=…, or null. */
     autorun,
     /** The GPU read-back under way ("Error measured by" this GPU), or null. */
     get gpuMeasurement() { return runs.measurement; },
     run: runs.run,
     update,
-    describe: runs.describe,
-    csv: runs.csv,
+    describe: () => describeView(view, state.probe),
+    csv: () => viewCsv(view),
     /** The full results (the last run, or errors only) as benchCsv columns. */
     resultsCsv: () => benchCsv(runs.currentResults()),
     resultsJson: () => runs.currentResults(),

@@ -1,21 +1,15 @@
 // @ts-check
 // The state and the runs of the speed-accuracy panel, apart from its DOM: the benchmark's results
-// (kept for the session), a benchmark under way, the GPU read-back of a scene's errors and why it
-// failed, and the view computed from them (words.js). index.js draws it. Both runs go
-// stale through run gates: the benchmark when it is cancelled or the panel disposed, a read-back
-// when another scene or precision is asked for or the panel disposed, so a late result is dropped.
+// (kept for the session), a benchmark under way, the GPU read-back of a scene's errors and the
+// error that stopped it. index.js shows what they hold through words.js (speedAccuracyView), which
+// also words the causes these runs keep as data. Both runs go stale through run gates: the
+// benchmark when it is cancelled or the panel disposed, a read-back when another scene or
+// precision is asked for or the panel disposed, so a late result is dropped.
 import { benchResults } from '../../methods/benchResults.js';
 import { sceneById } from '../../methods/scenes.js';
 import { ShaderError } from '../../gl/shaderError.js';
-import { fixed } from '../../ui/format.js';
 import { createRunGate, isStaleRun } from '../shared/createRunGate.js';
 import { glslOf } from './errorSources.js';
-import { readBackProblem } from './readBackProblem.js';
-import { describeView, speedAccuracyView, viewCsv } from './words.js';
-import english from 'virtual:messages/en/speed-accuracy';
-import { messages } from '../../i18n/messages.js';
-
-const t = messages('speed-accuracy', english);
 
 /**
  * The GPU read-back as the runs use it (measureGpuErrors.js), so a stand-in can take its place.
@@ -26,13 +20,27 @@ const t = messages('speed-accuracy', english);
  */
 
 /**
- * What the view does when the model changes.
+ * How the last benchmark ended, for the status line (words.js statusText): done in `ms`, cancelled,
+ * or failed with `error`.
+ * @typedef {{ done: number } | { cancelled: true } | { failed: unknown }} BenchmarkEnd
+ */
+
+/**
+ * What the words need of the runs, at each update: the errors to plot ({ source, glsl, measured,
+ * waiting }), the benchmark's results (or null), why the GPU read-back failed (the error, or null)
+ * and what mediump is on this GPU (or null).
+ * @typedef {{ source: { source: string, glsl: string | null, measured: any, waiting: string | null },
+ *   results: any, readBackError: unknown, probe: any }} SpeedAccuracyState
+ */
+
+/**
+ * What the view does when the state changes.
  * @typedef {object} SpeedAccuracyHooks
  * @property {() => void} invalidate  a result arrived: draw and describe again
  * @property {() => void} useEmulation  the read-back cannot be had here: set the error source to the JS emulation
  * @property {(running: boolean) => void} running  a benchmark started or ended
  * @property {(fraction: number, label: string) => void} progress  the benchmark's progress
- * @property {(text: string) => void} status  the benchmark's status line
+ * @property {(end: BenchmarkEnd) => void} status  a benchmark ended (the status line says how)
  */
 
 /**
@@ -55,9 +63,8 @@ export function createSpeedAccuracyRuns({
   let running = null;
   /** @type {{ key: string, promise: Promise<void> } | null} the GPU read-back under way */
   let measuring = null;
-  let problem = ''; // why the GPU read-back failed here, once it has
-  /** @type {any} the last view computed, for describe() and csv() */
-  let view = null;
+  /** @type {unknown} why the GPU read-back failed here, once it has (null while it has not) */
+  let readBackError = null;
   let disposed = false;
 
   /** Starts reading a scene's errors back from the GPU (once per scene and precision per session). */
@@ -68,13 +75,13 @@ export function createSpeedAccuracyRuns({
     const promise = readBack.measure(scene, glsl).then(() => {
       if (!run.live) return; // another scene or precision was asked for meanwhile, or the panel is gone
       measuring = null;
-      problem = '';
+      readBackError = null;
       hooks.invalidate();
     }, (error) => {
       if (!run.live) return;
       measuring = null;
       if (error instanceof ShaderError) console.error(error); // the whole log, for whoever reports it
-      problem = readBackProblem(error);
+      readBackError = error;
       if (glslOf(values.errors)) hooks.useEmulation();
       else hooks.invalidate();
     });
@@ -103,12 +110,12 @@ export function createSpeedAccuracyRuns({
       run.throwIfStale(); // cancelled as it ended: dropped as any cancelled run
       results = next;
       storage.save(next);
-      hooks.status(t('doneIn', { seconds: fixed((now() - started) / 1000, 1) }));
+      hooks.status({ done: now() - started });
       hooks.invalidate(); // redraws and refreshes the description
       return next;
     } catch (error) {
       const stale = isStaleRun(error);
-      if (!disposed) hooks.status(stale ? t('cancelled') : t('benchmarkFailed', { error: String(error?.message ?? error) }));
+      if (!disposed) hooks.status(stale ? { cancelled: true } : { failed: error });
       if (!stale) console.warn(error);
       throw error;
     } finally {
@@ -120,17 +127,17 @@ export function createSpeedAccuracyRuns({
   return {
     /** The benchmark's results (this run's or the session's), or null. */
     get results() { return results; },
-    /** The last view computed (speedAccuracyView), or null before the first update. */
-    get view() { return view; },
     /** The GPU read-back under way, or null. */
     get measurement() { return measuring?.promise ?? null; },
-    /** Why the GPU read-back failed here ('' when it has not). */
-    get problem() { return problem; },
-    /** Computes the view for the values (starting the GPU read-back they ask for, if it is not there yet). */
+    /** Why the GPU read-back failed here (the error; null when it has not). */
+    get readBackError() { return readBackError; },
+    /**
+     * What the words need for the values (starting the GPU read-back they ask for, if it is not there yet).
+     * @returns {SpeedAccuracyState}
+     */
     update() {
       const source = errorSource(sceneById(values.scene));
-      view = speedAccuracyView(values, { source, results, problem, probe: readBack.probe() });
-      return view;
+      return { source, results, readBackError, probe: readBack.probe() };
     },
     /** Runs the benchmark at a size of BENCH_SIZES; while one runs, the same run. Rejects when it is cancelled. */
     run(/** @type {string} */ size) {
@@ -140,8 +147,6 @@ export function createSpeedAccuracyRuns({
     cancel() { benchGate.cancel('Benchmark cancelled'); },
     /** Results to export: the last run, or errors and static costs only. */
     currentResults() { return results ?? benchResults({ meta: { date: new Date().toISOString() } }); },
-    describe: () => describeView(view, readBack.probe()),
-    csv: () => viewCsv(view),
     dispose() {
       disposed = true;
       benchGate.dispose();

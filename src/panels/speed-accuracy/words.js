@@ -20,6 +20,7 @@ import {
   glslOf, mediumpNote, precisionWords, sourceWords,
 } from './errorSources.js';
 import { formatCodes, formatNs, shortDecimal } from './formatMeasures.js';
+import { readBackProblem } from './readBackProblem.js';
 
 const t = messages('speed-accuracy', english);
 const METHOD_MARK = '\u0001'; // where the method's name goes in the pick's sentence
@@ -111,12 +112,28 @@ export function mediumpCostRatio(results) {
 }
 
 /**
- * Everything the panel draws for its values. source: { source, glsl, measured, waiting } from the
- * model (the errors to plot: the GPU's read-back, or null for the JS emulation; waiting: the
- * precision being read back); results: the benchmark's, or null; problem: why the GPU read-back
- * failed ('' if it did not); probe: what mediump is on this GPU, once measured (or null).
+ * The status line after a benchmark (runs.js BenchmarkEnd): how long it took, that it was
+ * cancelled, or why it failed.
+ * @param {import('./runs.js').BenchmarkEnd} end
  */
-export function speedAccuracyView(values, { source: src, results, problem, probe }) {
+export function statusText(end) {
+  if ('done' in end) return t('doneIn', { seconds: fixed(end.done / 1000, 1) });
+  if ('cancelled' in end) return t('cancelled');
+  const { failed } = end;
+  return t('benchmarkFailed', { error: String(failed instanceof Error ? failed.message : failed) });
+}
+
+/**
+ * Everything the panel draws for its values, from what the runs hold (runs.js SpeedAccuracyState).
+ * source: { source, glsl, measured, waiting } (the errors to plot: the GPU's read-back, or null for
+ * the JS emulation; waiting: the precision being read back); results: the benchmark's, or null;
+ * readBackError: why the GPU read-back failed (null if it did not); probe: what mediump is on this
+ * GPU, once measured (or null).
+ * @param {any} values
+ * @param {import('./runs.js').SpeedAccuracyState} state
+ */
+export function speedAccuracyView(values, { source: src, results, readBackError, probe }) {
+  const problem = readBackError ? readBackProblem(readBackError) : '';
   const scene = sceneById(values.scene);
   const budget = displayBudget(values.budget);
   const glsl = src.glsl ?? gpuPrecisionFor(scene.precision); // GPU timings in the read-back's precision
