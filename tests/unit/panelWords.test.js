@@ -15,7 +15,7 @@ import { metalsLectureGap } from '../../src/panels/metals/words.js';
 import { customRow, materialRows } from '../../src/panels/refractive-index/materialRows.js';
 import { r0Steps } from '../../src/panels/r0-derivation/physics.js';
 import { indexPresets } from '../../src/panels/shared/indexPresets.js';
-import { CLASS_LABELS, classLabel } from '../../src/panels/shared/createMapFigure.js';
+import { CLASS_LABELS, classLabel } from '../../src/panels/shared/classLabels.js';
 import { materialName, materialNameInText } from '../../src/panels/shared/materialName.js';
 import { indexText } from '../../src/panels/shared/indexText.js';
 

@@ -2,7 +2,7 @@
 // and counts, so the file makes sense away from the page.
 import { cssVar } from '../../ui/theme.js';
 import { CLASS_NAMES } from '../../methods/stabilityMap.js';
-import { classLabel } from './createMapFigure.js';
+import { classLabel } from './classLabels.js';
 import { CLASS_COLORS } from './drawMap.js';
 import english from 'virtual:messages/en/panelsShared';
 import { messages } from '../../i18n/messages.js';

@@ -6,22 +6,12 @@ import { context2d } from '../../ui/context2d.js';
 import { precise } from '../../ui/format.js';
 import { CLASS_NAMES } from '../../methods/stabilityMap.js';
 import { CLASS_COLORS } from './drawMap.js';
+import { classLabel } from './classLabels.js';
 import './stabilityMaps.css';
 import english from 'virtual:messages/en/panelsShared';
 import { messages } from '../../i18n/messages.js';
 
 const t = messages('panelsShared', english);
-const CLASS_WORDS = Object.freeze({
-  fine: 'classFine', aboveTolerance: 'classAboveTolerance', outOfRange: 'classOutOfRange', notFinite: 'classNotFinite',
-});
-
-/** A class's name in the page's language: fine, error above tolerance, outside [0, 1], NaN or infinite. */
-export const classLabel = (cls) => t(CLASS_WORDS[cls]);
-
-/** The same by class, read when the words are written (each a getter). */
-export const CLASS_LABELS = Object.freeze(Object.defineProperties({}, Object.fromEntries(
-  Object.keys(CLASS_WORDS).map((cls) => [cls, { get: () => classLabel(cls), enumerable: true }]),
-)));
 
 export function swatch(cls) {
   const s = el('span', 'st-swatch');

@@ -2,7 +2,8 @@
 // two maps (GPU and JavaScript) each with its counts, and the probe readout.
 import { el } from '../../ui/el.js';
 import { CLASS_NAMES } from '../../methods/stabilityMap.js';
-import { CLASS_LABELS, createMapFigure, swatch } from '../shared/createMapFigure.js';
+import { CLASS_LABELS } from '../shared/classLabels.js';
+import { createMapFigure, swatch } from '../shared/createMapFigure.js';
 import english from 'virtual:messages/en/stability';
 import { messages } from '../../i18n/messages.js';
 

@@ -2,10 +2,13 @@
 // Panel `stability`: where each dielectric Fresnel method fails, over θ 0°–90° × n_i/n_t
 // 0.4–2.5 (both axes linear), on this GPU (RGBA32F read-back, classified in JS) beside the
 // JavaScript emulation (stabilityMap.classify). The precision picks the pair: GPU highp beside JS
-// float32 (or float64), GPU mediump beside JS float16. The state, the read-back and the words are
-// runs.js's; this view draws the maps, shows the words and moves the probe.
+// float32 (or float64), GPU mediump beside JS float16. The state and the read-back are runs.js's,
+// what is said of them words.js's; this view draws the maps, shows the words and moves the probe.
 import { buildStabilityDom } from './buildStabilityDom.js';
-import { createStabilityRuns, pairFor, readBackWords } from './runs.js';
+import { createStabilityRuns, pairFor } from './runs.js';
+import {
+  describeText, gpuMessage, mapLabel, mapsCsv, noteText, pngCaption, readBackWords, readoutText, sideTitle,
+} from './words.js';
 import { createReadBackGpu } from '../shared/createReadBackGpu.js';
 import { drawMap } from '../shared/drawMap.js';
 import { composePng } from '../shared/composePng.js';
@@ -44,19 +47,19 @@ export function mount(root, ctx) {
   }
   function showProbe() {
     draw();
-    dom.setReadout(runs.readout());
+    dom.setReadout(readoutText(runs));
   }
 
   function update() {
     runs.update();
-    dom.setNote(runs.note());
+    dom.setNote(noteText(runs));
     for (const side of SIDES) {
-      dom[side].setTitle(runs.sideTitle(side), runs.pair.selected === side);
+      dom[side].setTitle(sideTitle(runs.pair, side), runs.pair.selected === side);
       dom[side].setCounts(runs.maps[side]);
-      const label = runs.mapLabel(side);
+      const label = mapLabel(ctx.values, runs, side);
       if (label) dom[side].canvas.setAttribute('aria-label', label);
     }
-    dom.gpu.showMessage(runs.gpuMessage());
+    dom.gpu.showMessage(gpuMessage(runs));
     showProbe();
   }
 
@@ -106,11 +109,12 @@ export function mount(root, ctx) {
       return [...canvas.getContext('2d').getImageData(x, y, 1, 1).data];
     },
     update,
-    describe: () => runs.describe(),
-    csv: () => runs.csv(),
+    describe: () => describeText(ctx.values, runs),
+    csv: () => mapsCsv(ctx.values, runs),
     png() {
-      return composePng(SIDES.filter((side) => runs.maps[side])
-        .map((side) => ({ canvas: dom[side].canvas, title: runs.sideTitle(side), map: runs.maps[side] })), runs.pngCaption());
+      const parts = SIDES.filter((side) => runs.maps[side])
+        .map((side) => ({ canvas: dom[side].canvas, title: sideTitle(runs.pair, side), map: runs.maps[side] }));
+      return composePng(parts, pngCaption(ctx.values, runs));
     },
     dispose() {
       resizeObserver.disconnect();

@@ -1,35 +1,34 @@
 // @ts-check
 // The stability panel's state apart from its DOM: which two maps a precision shows, the JavaScript
 // map (stabilityMap.classify), the GPU map read back once per method and precision (the values do
-// not depend on the tolerance, so only the classes are redone when it moves), the probed cell, and
-// every sentence the panel says. The GPU is a read-back GPU (createReadBackGpu.js); in Node a
-// stand-in. Whether mediump really is half precision here is measured by rendering 1 + 2^-f, not
-// taken from the driver, whose answer Safari/iOS has got wrong (webglfundamentals "WebGL Precision
-// Issues"). Every sentence is the catalogue's ("stability"), numbers through src/ui/format.js.
-import english from 'virtual:messages/en/stability';
-import { messages } from '../../i18n/messages.js';
+// not depend on the tolerance, so only the classes are redone when it moves), why there is no GPU
+// map when there is none, and the probed cell with its numbers. The GPU is a read-back GPU
+// (createReadBackGpu.js); in Node a stand-in. Whether mediump really is half precision here is
+// measured by rendering 1 + 2^-f, not taken from the driver, whose answer Safari/iOS has got wrong
+// (webglfundamentals "WebGL Precision Issues"). What the panel says of all this is words.js's.
 import { cellAt, classifyGrid, criticalAngleDeg, gridInputs } from '../../methods/classifyGrid.js';
 import { methodById } from '../../methods/methods.js';
-import { contextFor } from '../../methods/rounding.js';
 import { classify, classifyValue, CLASS_NAMES } from '../../methods/stabilityMap.js';
-import { angle, fixed, precise as significant } from '../../ui/format.js';
-import { CLASS_LABELS } from '../shared/createMapFigure.js';
-import { emulationGapWords } from '../shared/emulationGapWords.js';
 import { isStaleRun } from '../shared/createRunGate.js';
 
 /** @typedef {import('../shared/createReadBackGpu.js').ReadBackGpu} ReadBackGpu */
+/** @typedef {import('../shared/createReadBackGpu.js').PrecisionFacts} PrecisionFacts */
 /** @typedef {'gpu' | 'js'} Side */
 /** @typedef {{ i: number, j: number }} Cell */
 
-const t = messages('stability', english);
+/**
+ * Why there is no GPU map: the read-back GPU's own problem, in the words it was given (no WebGL2 or
+ * no float targets, a refused shader, a lost context, a failed restore), or the error of an
+ * evaluation that failed on a working GPU.
+ * @typedef {{ problem: string } | { error: Error }} MissingGpuMap
+ */
 
-/** What the panel says about its GPU (createReadBackGpu's words), in the page's language when read. */
-export const readBackWords = Object.freeze({
-  get unavailable() { return t('unavailable'); },
-  refused: (/** @type {string} */ line) => t('refused', { line }),
-  get lost() { return t('lost'); },
-  restartFailed: (/** @type {Error} */ error) => t('restartFailed', { error: error.message }),
-});
+/**
+ * The probed cell in numbers: where it is (θ, n_i/n_t, the critical angle or null), the exact R,
+ * and each map's value there with its class (gpu: null without a GPU map).
+ * @typedef {{ thetaDeg: number, ratio: number, critical: number | null, reference: number,
+ *   gpu: { value: number, class: string } | null, js: { value: number, class: string } }} Probed
+ */
 
 /** The two maps a precision shows: the GPU qualifier, the JS context, and which one was chosen. */
 export function pairFor(precision) {
@@ -41,13 +40,9 @@ export function pairFor(precision) {
   };
 }
 
-// Six significant digits: a value beside the exact R, NaN and ±Infinity as JavaScript names them.
-const precise = (v) => (Number.isFinite(v) ? significant(v, 6) : String(v));
-const failing = (map) => map.width * map.height - map.counts.fine;
-
 /**
  * values: the panel's values, read at each update ({ method, precision, tolerance }); gpu: the
- * panel's read-back GPU, which the model owns from here (dispose frees it); onRead: after each
+ * panel's read-back GPU, which the runs own from here (dispose frees it); onRead: after each
  * read-back (the panel's frameDrawn).
  * @param {{ values: { method: string, precision: string, tolerance: number }, gpu: ReadBackGpu, onRead?: () => void }} options
  */
@@ -59,19 +54,21 @@ export function createStabilityRuns({ values, gpu, onRead = () => {} }) {
   let pair = pairFor(values.precision);
   /** @type {Cell | null} */
   let probeCell = null;
-  let gpuProblem = gpu.problem; // why there is no GPU map, when there is none
+  /** @type {MissingGpuMap | null} */
+  let missing = gpu.evaluator ? null : { problem: gpu.problem };
   if (gpu.evaluator) onRead(); // the precision probe was read back
 
   /** The GPU map of the current method and qualifier over `grid`, read back once; null, and why, when there is none. */
   function gpuMap(grid) {
+    missing = null;
     if (!gpu.evaluator) {
-      gpuProblem = gpu.problem;
+      missing = { problem: gpu.problem };
       return null;
     }
     const key = `${values.method}|${pair.gpu}`;
     if (!gpuValues.has(key)) {
       if (!gpu.ready) { // lost: the maps already read back still stand
-        gpuProblem = gpu.problem;
+        missing = { problem: gpu.problem };
         return null;
       }
       try {
@@ -79,7 +76,7 @@ export function createStabilityRuns({ values, gpu, onRead = () => {} }) {
         const read = (evaluator) => evaluator.evaluate({ methodId: values.method, precision: pair.gpu, inputs });
         gpuValues.set(key, gpu.read(reading.begin(), read));
       } catch (error) { // the JavaScript map still stands
-        gpuProblem = isStaleRun(error) ? gpu.problem : t('evaluationFailed', { error: error.message });
+        missing = isStaleRun(error) ? { problem: gpu.problem } : { error };
         return null;
       }
       onRead();
@@ -88,43 +85,25 @@ export function createStabilityRuns({ values, gpu, onRead = () => {} }) {
   }
 
   const probe = () => gpu.precision?.probe ?? null;
-  const fullMediump = () => Boolean(probe()?.mediumpIsFullPrecision && pair.gpu === 'mediump');
-  const sideTitle = (/** @type {Side} */ side) => (side === 'gpu'
-    ? t('titleGpu', { precision: pair.gpu })
-    : t('titleJs', { precision: contextFor(pair.js).name }));
 
   return {
+    /** The GPU and the JavaScript map of the current values (gpu: null when there is none). */
     get maps() { return maps; },
     get pair() { return pair; },
     get probeCell() { return probeCell; },
     /** What mediump and highp are on this GPU (probePrecision), or null. */
     get precisionProbe() { return probe(); },
+    /** What mediump and highp are here, measured and claimed by the driver, or null before the evaluator ever started. */
+    get precision() { return gpu.precision; },
+    /** Why there is no GPU map (null while there is one). */
+    get missing() { return maps.gpu ? null : missing; },
+    /** The GPU map is of mediump, and mediump runs at full precision here. */
+    get fullMediump() { return Boolean(probe()?.mediumpIsFullPrecision && pair.gpu === 'mediump'); },
     /** The values changed: both maps for the current method, precision and tolerance. */
     update() {
       pair = pairFor(values.precision);
       const js = classify(values.method, pair.js, { tolerance: values.tolerance });
       maps = { js, gpu: gpuMap(js) };
-    },
-    /** The note above the maps: what mediump is here, or why there is no GPU map. */
-    note() {
-      if (!maps.gpu) return gpuProblem;
-      const { probe: measured, claimed } = /** @type {import('../shared/createReadBackGpu.js').PrecisionFacts} */ (gpu.precision);
-      const args = {
-        bits: String(measured.mediumpBits), claimed: claimed?.mediump ? String(claimed.mediump.precision + 1) : '', ...emulationGapWords(),
-      };
-      if (measured.mediumpIsFullPrecision) return t(args.claimed ? 'mediumpFullClaimed' : 'mediumpFull', args);
-      return t(args.claimed ? 'mediumpReducedClaimed' : 'mediumpReduced', args);
-    },
-    /** The message in place of the GPU map ('' when there is one). */
-    gpuMessage: () => (maps.gpu ? '' : gpuProblem),
-    fullMediump,
-    sideTitle,
-    /** A map's accessible name, or null when the side has no map. */
-    mapLabel(/** @type {Side} */ side) {
-      const map = maps[side];
-      if (!map) return null;
-      const method = methodById(values.method).label;
-      return t('mapLabel', { method, side: sideTitle(side), failing: String(failing(map)), cells: String(map.width * map.height) });
     },
     setProbe(/** @type {Cell | null} */ cell) { probeCell = cell; },
     /**
@@ -143,48 +122,25 @@ export function createStabilityRuns({ values, gpu, onRead = () => {} }) {
       probeCell = { i: Math.min(map.width - 1, Math.max(0, cell.i + di)), j: Math.min(map.height - 1, Math.max(0, cell.j + dj)) };
       return true;
     },
-    /** The probed cell in words: θ, n_i/n_t, θc, the exact R and each map's value and class ('' without a probe). */
-    readout() {
-      if (!probeCell || !maps.js) return '';
+    /**
+     * The probed cell's numbers (null without a probe): the GPU's value read back there, and the
+     * JavaScript emulation's, evaluated for this one cell at the current precision.
+     * @returns {Probed | null}
+     */
+    get probed() {
+      if (!probeCell || !maps.js) return null;
       const cell = cellAt(maps.js, probeCell.i, probeCell.j);
-      const method = methodById(values.method);
-      const critical = criticalAngleDeg(cell.ratio);
-      const where = { theta: angle(cell.thetaDeg, 2), ratio: fixed(cell.ratio, 3) };
-      const parts = [
-        critical === null ? t('readoutCell', where) : t('readoutCellCritical', { ...where, critical: angle(critical, 2) }),
-        t('readoutExact', { value: precise(cell.reference) }),
-      ];
       const k = cell.j * maps.js.width + cell.i;
-      if (maps.gpu) {
-        const value = precise(maps.gpu.values[k]);
-        parts.push(t('readoutGpu', { precision: pair.gpu, value, class: CLASS_LABELS[CLASS_NAMES[maps.gpu.cells[k]]] }));
-      }
-      const jsValue = method.evaluate(pair.js, cell.cos, cell.ratio, 1);
-      const jsClass = CLASS_NAMES[classifyValue(jsValue, cell.reference, values.tolerance)];
-      parts.push(t('readoutJs', { precision: contextFor(pair.js).label, value: precise(jsValue), class: CLASS_LABELS[jsClass] }));
-      return parts.join(' · ');
-    },
-    describe() {
-      const words = (map) => t('counts', {
-        fine: String(map.counts.fine), above: String(map.counts.aboveTolerance), tolerance: significant(values.tolerance, 3),
-        outside: String(map.counts.outOfRange), notFinite: String(map.counts.notFinite),
-      });
-      const args = {
-        method: methodById(values.method).label, width: String(maps.js.width), height: String(maps.js.height),
-        js: contextFor(pair.js).label, jsCounts: words(maps.js),
+      const jsValue = methodById(values.method).evaluate(pair.js, cell.cos, cell.ratio, 1);
+      return {
+        thetaDeg: cell.thetaDeg,
+        ratio: cell.ratio,
+        critical: criticalAngleDeg(cell.ratio),
+        reference: cell.reference,
+        gpu: maps.gpu ? { value: maps.gpu.values[k], class: CLASS_NAMES[maps.gpu.cells[k]] } : null,
+        js: { value: jsValue, class: CLASS_NAMES[classifyValue(jsValue, cell.reference, values.tolerance)] },
       };
-      const text = maps.gpu ? t('describe', { ...args, gpu: pair.gpu, gpuCounts: words(maps.gpu) }) : t('describeNoGpu', args);
-      return fullMediump() ? `${text} ${t('describeFullMediump')}` : text;
     },
-    csv() {
-      /** @type {Record<string, Array<number | string>>} */
-      const columns = { class: [...CLASS_NAMES] };
-      if (maps.gpu) columns[`gpu_${pair.gpu}`] = CLASS_NAMES.map((c) => maps.gpu.counts[c]);
-      columns[`js_${pair.js}`] = CLASS_NAMES.map((c) => maps.js.counts[c]);
-      return { filename: `stability-${values.method}-${values.precision}.csv`, columns };
-    },
-    /** The caption of the exported picture. */
-    pngCaption: () => (fullMediump() ? t('pngCaptionFull', { method: methodById(values.method).label }) : methodById(values.method).label),
     /** Frees the GPU (its runs, evaluator and context) and the values read back. */
     dispose() {
       gpu.dispose();
@@ -193,3 +149,5 @@ export function createStabilityRuns({ values, gpu, onRead = () => {} }) {
     },
   };
 }
+
+/** @typedef {ReturnType<typeof createStabilityRuns>} StabilityRuns */
