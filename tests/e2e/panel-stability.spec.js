@@ -185,5 +185,7 @@ test('without float render targets the GPU map says why and the JavaScript map s
   const { gpu, js } = await readMaps(page);
   expect(gpu).toBeNull();
   expect(js.failures).toEqual([{ theta: 90, ratio: 1, cls: ABOVE }]);
-  await expect(page.locator('.panel-description')).toContainText('no GPU map');
+  // The description names the cause, in the same words as the message in place of the map.
+  await expect(page.locator('.panel-description')).toContainText('no GPU map; ');
+  await expect(page.locator('.panel-description')).toContainText('no EXT_color_buffer_float');
 });

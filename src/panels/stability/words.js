@@ -89,7 +89,8 @@ export function readoutText(/** @type {StabilityState} */ { probed, pair }) {
 }
 
 /**
- * The description: each map's counts per class.
+ * The description: each map's counts per class; without a GPU map, why there is none, in the same
+ * words as the message in its place (the read-back GPU's for its problem, or the evaluation's error).
  * @param {{ method: string, tolerance: number }} values
  * @param {StabilityState} state
  */
@@ -105,7 +106,7 @@ export function describeText(values, state) {
   };
   const text = maps.gpu
     ? t('describe', { ...args, gpu: pair.gpu, gpuCounts: words(maps.gpu) })
-    : t('describeNoGpu', args);
+    : t('describeNoGpu', { ...args, problem: gpuMessage(state) });
   return state.fullMediump ? `${text} ${t('describeFullMediump')}` : text;
 }
 
