@@ -2,7 +2,10 @@
 // exercise control's options): in the pseudo-locale nothing the lab writes has a word outside the
 // brackets, while the driver's log and the student's code are kept as they were.
 import { describe, expect, it, vi } from 'vitest';
-import { createShaderLabRuns, readBackWords } from '../../src/panels/shader-lab/runs.js';
+import { createShaderLabRuns } from '../../src/panels/shader-lab/runs.js';
+import {
+  codeErrors, criteriaRows, describeText, mapLabel, mapMessage, mapTitle, noteText, readBackWords, spheresLabel, spheresMessage, summaryText,
+} from '../../src/panels/shader-lab/words.js';
 import { EXERCISES, criterion, exerciseById, exerciseMetal } from '../../src/panels/shader-lab/exercises.js';
 import { EXERCISE_IDS } from '../../src/panels/shader-lab/exerciseIds.js';
 import { conductorCases, dielectricCases } from '../../src/panels/shader-lab/gradingCases.js';
@@ -59,10 +62,10 @@ describe('shader lab words in another language', () => {
 
   it('says the grade, the maps, the spheres and the GPU\'s problems in the catalogue\'s words', () => {
     const texts = [];
-    const say = (model) => {
-      texts.push(model.summary(), model.note(), model.spheresMessage(), model.spheresLabel(), model.describe());
-      for (const side of ['student', 'reference']) texts.push(model.mapTitle(side), model.mapMessage(side), model.mapLabel(side));
-      for (const { label } of model.criteriaRows()) texts.push(label);
+    const say = (runs, values) => {
+      texts.push(summaryText(runs), noteText(runs), spheresMessage(runs), spheresLabel(runs), describeText(runs));
+      for (const side of ['student', 'reference']) texts.push(mapTitle(values, side), mapMessage(runs, side), mapLabel(runs, side));
+      for (const { label } of criteriaRows(runs)) texts.push(label);
     };
     const refusing = fakeGpu({
       evaluateSource: () => { throw new ShaderError({ stage: 'fragment', log: "ERROR: 0:3: 'c' : undeclared\n" }); },
@@ -75,14 +78,16 @@ describe('shader lab words in another language', () => {
     ]) {
       const painter = { paint: vi.fn(() => { throw new ShaderError({ stage: 'fragment', log: '' }); }), dispose: vi.fn() };
       const gpu = createReadBackGpu({ words: readBackWords, prepare: () => painter, ...fake.options() });
-      const model = createShaderLabRuns({ values: { code: '', precision: 'highp', homework: false, ...values }, gpu });
-      model.grade();
-      texts.push(model.paint(/** @type {any} */ ({})));
-      say(model);
+      const state = { code: '', precision: 'highp', homework: false, ...values };
+      const runs = createShaderLabRuns({ values: state, gpu });
+      runs.update();
+      runs.paint(/** @type {any} */ ({}));
+      say(runs, state);
       fake.lose();
-      say(model);
+      say(runs, state);
     }
     texts.push(readBackWords.unavailable, readBackWords.refused('ERROR: 0:1: x'));
+    texts.push(codeErrors(/** @type {any} */ ({ state: { stalled: true, errors: [] } }))[0].message); // code held back after a stall
     for (const text of texts) clean(text);
   });
 });

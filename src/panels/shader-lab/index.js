@@ -4,14 +4,18 @@
 // the results back from a float target and grades them against the float64 core, criterion by
 // criterion, with the worst case named; beside it, two spheres shaded with it and with the exact
 // function, and the stability map of the student's function and of a reference answer. The
-// grading, the GPU and the words are runs.js's; this view holds the editor, its
-// buttons and the code kept in the browser, and shows what the runs say.
+// grading and the GPU are runs.js's, what is said of them words.js's; this view holds the editor,
+// its buttons and the code kept in the browser, and shows what the runs hold.
 import { createReadBackGpu } from '../shared/createReadBackGpu.js';
 import { drawMap } from '../shared/drawMap.js';
 import { composePng } from '../shared/composePng.js';
 import { buildShaderLabDom } from './buildShaderLabDom.js';
 import { createCodeEditor } from './createCodeEditor.js';
-import { createShaderLabRuns, readBackWords } from './runs.js';
+import { createShaderLabRuns } from './runs.js';
+import {
+  codeErrors, criteriaRows, describeText, gradeCsv, mapLabel, mapMessage, mapTitle, noteText, readBackWords,
+  spheresLabel, spheresMessage, summaryText,
+} from './words.js';
 import { createSpherePainter } from './paintSpheres.js';
 import { readStored, writeStored } from './storedCode.js';
 import { useDeflate } from './codeCodec.js';
@@ -89,27 +93,27 @@ export function mount(root, ctx) {
   function show() {
     const ex = runs.exercise();
     const { state } = runs;
-    dom.setTask(ex, runs.criteriaRows());
-    editor.setErrors(state.errors.filter((e) => e.line !== null));
-    dom.setErrors(state.errors);
+    const errors = codeErrors(runs);
+    dom.setTask(ex, criteriaRows(runs));
+    editor.setErrors(errors.filter((e) => e.line !== null));
+    dom.setErrors(errors);
     showButtons();
-    dom.setSummary(runs.summary());
-    dom.setNote(runs.note());
+    dom.setSummary(summaryText(runs));
+    dom.setNote(noteText(runs));
     dom.maps.hidden = ex.kind !== 'dielectric';
-    dom.setSpheresMessage(runs.spheresMessage());
-    dom.spheresCanvas.setAttribute('aria-label', runs.spheresLabel());
+    dom.setSpheresMessage(spheresMessage(runs));
+    dom.spheresCanvas.setAttribute('aria-label', spheresLabel(runs));
     for (const side of /** @type {MapSide[]} */ (['student', 'reference'])) {
       const figure = figures[side];
       const map = state.maps[side];
-      figure.setTitle(runs.mapTitle(side), false);
+      figure.setTitle(mapTitle(values, side), false);
       figure.setCounts(map);
-      figure.showMessage(runs.mapMessage(side));
-      figure.canvas.setAttribute('aria-label', runs.mapLabel(side));
+      figure.showMessage(mapMessage(runs, side));
+      figure.canvas.setAttribute('aria-label', mapLabel(runs, side));
       if (map) drawMap(figure.canvas, map, null);
     }
     // After the canvas is shown, so it is painted at its own size.
-    const refused = runs.paint(dom.spheresCanvas);
-    if (refused) dom.setSpheresMessage(refused);
+    if (runs.paint(dom.spheresCanvas)) dom.setSpheresMessage(spheresMessage(runs));
   }
 
   function update(keys = []) {
@@ -123,7 +127,7 @@ export function mount(root, ctx) {
       typing = 0;
       editor.setText(runs.code(), { history: !keys.includes('exercise') });
     }
-    runs.grade();
+    runs.update();
     show();
   }
   const redraw = () => show();
@@ -139,15 +143,15 @@ export function mount(root, ctx) {
 
   return {
     get results() { return runs.state.results; },
-    get errors() { return runs.state.errors; },
+    get errors() { return codeErrors(runs); },
     get maps() { return runs.state.maps; },
     editor,
     runs,
     /** The grading context (for tests that lose and restore it), or null. */
     get gl() { return gpu.gl; },
     update,
-    describe: () => runs.describe(),
-    csv: () => runs.csv(),
+    describe: () => describeText(runs),
+    csv: () => gradeCsv(runs),
     png() {
       const { state } = runs;
       const sides = /** @type {Array<{ side: MapSide, title: string }>} */ ([
