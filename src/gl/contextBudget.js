@@ -5,8 +5,6 @@
 export const MAX_LIVE_CONTEXTS = 8;
 export const contextStats = { live: 0, peak: 0, created: 0 };
 
-/** WebGL2 is missing or would not start; panels catch it and say so in words (showStageFallback). */
-export class WebGL2Unavailable extends Error {}
 
 /** True when the browser can create a WebGL2 context at all (probed once). */
 let webgl2Probe = null;

@@ -1,7 +1,8 @@
 // A WebGL2 context on a canvas, counted against the page's budget of live contexts
 // (contextBudget.js). No depth, stencil or MSAA unless asked: the lab's passes are full-screen
 // triangles that anti-alias themselves, and read-back contexts draw into float targets.
-import { countContext, WebGL2Unavailable } from './contextBudget.js';
+import { countContext } from './contextBudget.js';
+import { WebGL2Unavailable } from './webgl2Unavailable.js';
 import { currentOwner } from './faultOwner.js';
 import english from 'virtual:messages/en/gl';
 import { messages } from '../i18n/messages.js';

@@ -2,7 +2,8 @@
 // (contextBudget.js). Only the benchmark's peer (the ordinary three.js way of drawing the hero's
 // spheres) uses three.js; the panels draw with createContext / createShaderView.
 import { WebGLRenderer } from 'three';
-import { countContext, hasWebGL2, WebGL2Unavailable } from './contextBudget.js';
+import { countContext, hasWebGL2 } from './contextBudget.js';
+import { WebGL2Unavailable } from './webgl2Unavailable.js';
 import english from 'virtual:messages/en/gl';
 import { messages } from '../i18n/messages.js';
 

@@ -119,6 +119,7 @@
 // Besides its view (index.js), its DOM builders and its scene, a panel's folder may hold one module
 // of each kind below, always under the kind's name, so a reader knows what a file may do before
 // opening it. Helpers a kind's module imports from the folder are held to the same rules.
+// tests/unit/layers.test.js checks them; docs/panels.md lists them.
 
 /**
  * `physics.js`: the math only this panel uses, as pure float64 functions of numbers and plain

@@ -32,9 +32,9 @@ function attributesOf(text) {
  * The nodes of `message` in `doc` (a DocumentFragment): text as text, the allowed tags as
  * elements. Unbalanced closing tags are dropped; unclosed ones close at the end.
  * @param {string} message
- * @param {Document} [doc]
+ * @param {Document} doc  the document the nodes belong to (the element's: setRichText)
  */
-export function richText(message, doc = document) {
+export function richText(message, doc) {
   const fragment = doc.createDocumentFragment();
   const stack = [fragment];
   const top = () => stack[stack.length - 1];

@@ -4,6 +4,8 @@
 // direction fails here, as does a module in optics that no other layer than one panel uses.
 // Words and shown numbers are the exception: any layer that says something to a user takes its
 // messages from src/i18n/messages.js and writes its numbers with src/ui/format.js (both pure).
+// Within a panel's folder, its physics, words and runs (src/host/panelContract.js) keep the rules
+// of their kind, and what they reach by their imports touches no DOM and imports no CSS.
 import { readdirSync, readFileSync } from 'node:fs';
 import { dirname, join, normalize, relative } from 'node:path';
 import { describe, expect, it } from 'vitest';
@@ -38,6 +40,49 @@ const PHYSICS_USED_ONCE = ['src/optics/microfacet.js', 'src/optics/conductorPhas
 const layerOf = (path) => path.split('/')[1];
 const all = sources('src');
 
+/** A module's code without its comments (a URL's // inside a string stays). */
+const codeOf = (path) => readFileSync(path, 'utf8').replace(/\/\*[\s\S]*?\*\//g, '').replace(/(^|\s)\/\/.*$/gm, '$1');
+
+/** What makes a module one of the page's: the browser's document and window, and libraries that draw. */
+const DOM_GLOBALS = /\b(document|window|localStorage|sessionStorage|requestAnimationFrame|ResizeObserver|IntersectionObserver|matchMedia)\b/;
+const DOM_PACKAGES = /^(lil-gui|uplot|katex|@codemirror\/)/;
+
+/** Why a module is the page's ('' when it is not): it is CSS, imports CSS or a drawing library, or uses the DOM. */
+function domUse(path) {
+  if (path.endsWith('.css')) return 'is CSS';
+  const text = readFileSync(path, 'utf8');
+  const bare = [...text.matchAll(/(?:from|import)\s*['"]([^'"./][^'"]*)['"]/g)].map((m) => m[1]);
+  const drawing = bare.find((spec) => DOM_PACKAGES.test(spec));
+  if (drawing) return `imports ${drawing}`;
+  const global = codeOf(path).match(DOM_GLOBALS);
+  return global ? `uses ${global[1]}` : '';
+}
+
+/** The repository paths a module's code imports relatively, styles included: importsOf without the types named in comments. */
+function codeImportsOf(path) {
+  const specs = [...codeOf(path).matchAll(/(?:from|import\s*\(?|new URL\()\s*['"](\.{1,2}\/[^'"]+)['"]/g)].map((m) => m[1]);
+  return specs.map((spec) => normalize(join(dirname(path), spec.split('?')[0])).replaceAll('\\', '/'));
+}
+
+/** Every module of src that `path` reaches by its relative imports, itself included. */
+function reach(path, seen = new Set()) {
+  if (seen.has(path)) return seen;
+  seen.add(path);
+  if (/\.(js|mjs)$/.test(path)) for (const target of codeImportsOf(path)) if (target.startsWith('src/')) reach(target, seen);
+  return seen;
+}
+
+/** "module (via a → b): why" for each module `roots` reach that is the page's. */
+function domReached(roots) {
+  return roots.flatMap((root) => [...reach(root)].map((path) => [path, domUse(path)]).filter(([, why]) => why)
+    .map(([path, why]) => `${root} reaches ${path}: it ${why}`));
+}
+
+const PANEL_KINDS = ['physics', 'words', 'runs'];
+const panelFolders = readdirSync('src/panels', { withFileTypes: true }).filter((e) => e.isDirectory()).map((e) => `src/panels/${e.name}`);
+const kindModules = (kind) => all.filter((p) => p.startsWith('src/panels/') && p.split('/').length === 4 && p.endsWith(`/${kind}.js`));
+const WORDS = /virtual:messages\//;
+
 describe('layers', () => {
   for (const [layer, allowed] of Object.entries(MAY_IMPORT)) {
     it(`src/${layer} imports only ${allowed.length ? allowed.join(', ') : 'itself'}`, () => {
@@ -65,5 +110,41 @@ describe('layers', () => {
     const onePanelOnly = [...users].filter(([target, who]) =>
       who.size === 1 && [...who][0].startsWith('src/panels/') && !PHYSICS_USED_ONCE.includes(target));
     expect(onePanelOnly.map(([target, who]) => `${target} (only ${[...who][0]})`)).toEqual([]);
+  });
+});
+
+describe('the kinds of a panel\'s modules', () => {
+  it('names every panel module by its kind: no folder keeps a model.js', () => {
+    expect(panelFolders.filter((dir) => all.includes(`${dir}/model.js`))).toEqual([]);
+    for (const kind of PANEL_KINDS) expect(kindModules(kind).length, kind).toBeGreaterThan(1);
+  });
+
+  it('physics.js imports only src/optics, src/methods, src/normals and its folder\'s physics', () => {
+    const wrong = kindModules('physics').flatMap((p) => {
+      const own = p;
+      const bare = [...readFileSync(p, 'utf8').matchAll(/(?:from|import)\s*['"]([^'"./][^'"]*)['"]/g)].map((m) => m[1]);
+      return [
+        ...importsOf(p).filter((target) => !['optics', 'methods', 'normals'].includes(layerOf(target)) && target !== own),
+        ...bare,
+      ].map((target) => `${p} → ${target}`);
+    });
+    expect(wrong).toEqual([]);
+  });
+
+  it('physics.js and runs.js write no sentence: they import no words from the catalogue', () => {
+    const wrong = [...kindModules('physics'), ...kindModules('runs')].filter((p) => {
+      const text = readFileSync(p, 'utf8');
+      return WORDS.test(text) || importsOf(p).includes('src/i18n/messages.js');
+    });
+    expect(wrong).toEqual([]);
+  });
+
+  it('runs.js exports its create<Name>Runs', () => {
+    const missing = kindModules('runs').filter((p) => !/export function create[A-Z]\w*Runs\(/.test(readFileSync(p, 'utf8')));
+    expect(missing).toEqual([]);
+  });
+
+  it('nothing a physics, words or runs module reaches by its imports touches the DOM or imports CSS', () => {
+    expect(domReached(PANEL_KINDS.flatMap(kindModules))).toEqual([]);
   });
 });

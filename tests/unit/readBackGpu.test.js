@@ -1,7 +1,7 @@
 import { afterEach, describe, expect, it, vi } from 'vitest';
 import { createReadBackGpu } from '../../src/panels/shared/createReadBackGpu.js';
 import { isStaleRun } from '../../src/panels/shared/createRunGate.js';
-import { WebGL2Unavailable } from '../../src/gl/contextBudget.js';
+import { WebGL2Unavailable } from '../../src/gl/webgl2Unavailable.js';
 import { GpuFloatUnavailable } from '../../src/gl/evaluateMethodsGpu.js';
 import { ShaderError } from '../../src/gl/shaderError.js';
 import { fakeGpu, HALF_PRECISION } from './fakeGpu.js';

@@ -13,7 +13,7 @@ import { errorsFromValues } from '../../src/methods/gpuErrors.js';
 import { thetaSamples } from '../../src/methods/errorMetrics.js';
 import { METHODS, methodsOfKind } from '../../src/methods/methods.js';
 import { referenceFor, sceneById } from '../../src/methods/scenes.js';
-import { WebGL2Unavailable } from '../../src/gl/contextBudget.js';
+import { WebGL2Unavailable } from '../../src/gl/webgl2Unavailable.js';
 import { GpuFloatUnavailable } from '../../src/gl/evaluateMethodsGpu.js';
 import { ShaderError } from '../../src/gl/shaderError.js';
 

@@ -6,7 +6,7 @@
 import english from 'virtual:messages/en/normal-mips';
 import { messages } from '../../i18n/messages.js';
 import { cappedPixelRatio } from '../../gl/cappedPixelRatio.js';
-import { WebGL2Unavailable } from '../../gl/contextBudget.js';
+import { WebGL2Unavailable } from '../../gl/webgl2Unavailable.js';
 import { createContext } from '../../gl/createContext.js';
 import { ContextLostError, createFloatTarget } from '../../gl/createFloatTarget.js';
 import { currentOwner } from '../../gl/faultOwner.js';

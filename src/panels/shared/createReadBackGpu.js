@@ -7,7 +7,7 @@
 // pictures. Runs on it come from its gates (createRunGate.js): a loss makes the running one stale,
 // dispose every one. Plain JS apart from the context it is given, so runs are tested in Node with a
 // stand-in context and evaluator.
-import { WebGL2Unavailable } from '../../gl/contextBudget.js';
+import { WebGL2Unavailable } from '../../gl/webgl2Unavailable.js';
 import { createContext } from '../../gl/createContext.js';
 import { createMethodsGpu, GpuFloatUnavailable, gpuPrecisionInfo } from '../../gl/evaluateMethodsGpu.js';
 import { refusalLine, ShaderError } from '../../gl/shaderError.js';

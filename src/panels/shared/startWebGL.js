@@ -1,7 +1,7 @@
 // Starting a panel's WebGL picture, with the fallback every panel shares: when the browser has no
 // WebGL2 (or it will not start), the stage says so in words in place of the picture, and the rest
 // of the panel (numbers, plots, formulas) goes on working.
-import { WebGL2Unavailable } from '../../gl/contextBudget.js';
+import { WebGL2Unavailable } from '../../gl/webgl2Unavailable.js';
 import { ShaderError } from '../../gl/shaderError.js';
 import { el } from '../../ui/el.js';
 import english from 'virtual:messages/en/panelsShared';

@@ -3,7 +3,7 @@
 // turned into the advisor's statistics by gpuErrors.errorsFromValues. The panel holds no context
 // (its manifest entry says webgl: false): a measurement opens a small one and disposes it when done. Results are kept
 // for the page's session, per scene and precision; the benchmark's read-back seeds them too.
-import { WebGL2Unavailable } from '../../gl/contextBudget.js';
+import { WebGL2Unavailable } from '../../gl/webgl2Unavailable.js';
 import { createContext } from '../../gl/createContext.js';
 import { createMethodsGpu, GpuFloatUnavailable, gpuPrecisionInfo } from '../../gl/evaluateMethodsGpu.js';
 import { deviceInfo } from '../../gl/timeMethodsGpu.js';

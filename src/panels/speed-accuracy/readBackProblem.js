@@ -4,7 +4,7 @@
 // neither. Pure (the error classes carry no WebGL), so each wording is tested in Node.
 import english from 'virtual:messages/en/speed-accuracy';
 import { messages } from '../../i18n/messages.js';
-import { WebGL2Unavailable } from '../../gl/contextBudget.js';
+import { WebGL2Unavailable } from '../../gl/webgl2Unavailable.js';
 import { GpuFloatUnavailable } from '../../gl/evaluateMethodsGpu.js';
 import { refusalLine, ShaderError } from '../../gl/shaderError.js';
 

@@ -3,7 +3,7 @@
 // (timeMethodsCpu, in a worker: timeCpu.js), and the hero's frame cost against three.js MeshPhysicalMaterial, one after the
 // other on the viewer's device, with progress and cancel; results kept for the session
 // (sessionStorage).
-import { WebGL2Unavailable } from '../../gl/contextBudget.js';
+import { WebGL2Unavailable } from '../../gl/webgl2Unavailable.js';
 import { createContext } from '../../gl/createContext.js';
 import { deviceInfo, timeMethodsGpu } from '../../gl/timeMethodsGpu.js';
 import { benchResults, DEFAULT_DOMAIN, GPU_ERROR_KEYS } from '../../methods/benchResults.js';
