@@ -17,7 +17,7 @@ import { buildChecker } from './homework/page/buildChecker.js';
 import { buildClassSection } from './homework/page/classView/buildClassSection.js';
 import './homework/page/classView/classView.css';
 import { connectScorm } from './homework/page/connectScorm.js';
-import { readTextFile } from './homework/page/formParts.js';
+import { readTextFile } from './ui/formParts.js';
 import { startPageLanguage } from './i18n/pageLanguage.js';
 import english from 'virtual:messages/en/homework';
 import { messages } from './i18n/messages.js';
@@ -52,7 +52,7 @@ window.fresnelLab = { homework: null };
 function lecturerPage() {
   const intro = el('section', 'hw-intro');
   intro.append(el('h1', null, t('page.heading')), el('p', null, t('page.intro')));
-  const openLabel = el('label', 'hw-field');
+  const openLabel = el('label', 'ui-field');
   const file = el('input');
   file.type = 'file';
   file.accept = '.json,application/json';

@@ -5,7 +5,7 @@ import english from 'virtual:messages/en/compose';
 import { messages } from '../i18n/messages.js';
 import { button, el } from '../ui/el.js';
 import { setSubscripted } from '../ui/subscripts.js';
-import { field, titledSection } from '../homework/page/formParts.js';
+import { field, titledSection } from '../ui/formParts.js';
 import { panelCatalogue } from './catalogue.js';
 import { questionSelect } from './buildItemEditor.js';
 

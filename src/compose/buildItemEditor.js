@@ -6,7 +6,7 @@ import english from 'virtual:messages/en/compose';
 import { messages } from '../i18n/messages.js';
 import { el } from '../ui/el.js';
 import { setSubscripted } from '../ui/subscripts.js';
-import { field } from '../homework/page/formParts.js';
+import { field } from '../ui/formParts.js';
 import { lectureTextFragment } from '../lecture/lectureTextDom.js';
 import { LECTURE_CAPS } from '../lecture/readLecture.js';
 import { panelEntry } from '../panels/manifest.js';

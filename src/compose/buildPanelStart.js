@@ -8,7 +8,7 @@ import { messages } from '../i18n/messages.js';
 import { button, el } from '../ui/el.js';
 import { setSubscripted } from '../ui/subscripts.js';
 import { fixed } from '../ui/format.js';
-import { field } from '../homework/page/formParts.js';
+import { field } from '../ui/formParts.js';
 import { applyParams, defaults, describeProblem, formatValue, writeParams } from '../host/params.js';
 import { loadTheme } from '../ui/theme.js';
 import { panelEntry } from '../panels/manifest.js';

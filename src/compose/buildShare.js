@@ -8,7 +8,7 @@ import { messages } from '../i18n/messages.js';
 import { button, el } from '../ui/el.js';
 import { fixed, fileSlug } from '../ui/format.js';
 import { copyText, downloadBlob, downloadText } from '../host/exporters.js';
-import { field, readTextFile, titledSection } from '../homework/page/formParts.js';
+import { field, readTextFile, titledSection } from '../ui/formParts.js';
 import { lectureToCode } from '../lecture/lectureLink.js';
 import { readLecture } from '../lecture/readLecture.js';
 import { loadTheme } from '../ui/theme.js';
@@ -59,7 +59,7 @@ export function buildShare({ onOpen }) {
   deckPanels.add(new Option(t('deckFromOffline'), 'offline'));
 
   const linkRow = el('div', 'cp-row');
-  linkRow.append(field(t('linkField'), link, 'hw-field cp-link'), copy, present);
+  linkRow.append(field(t('linkField'), link, 'cp-link'), copy, present);
   const fileRow = el('div', 'cp-row');
   fileRow.append(save, field(t('openFile'), file));
   const exportRow = el('div', 'cp-row');

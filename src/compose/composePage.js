@@ -3,7 +3,6 @@
 // ?lecture=CODE (to edit a shared lecture), else the work kept in this browser, else an empty
 // lecture; whatever cannot be read is named above it, never a blank page.
 import '../styles.css';
-import '../homework/page/homework.css';
 import './compose.css';
 import { setupPageControls } from '../host/setupPageControls.js';
 import { startPageLanguage } from '../i18n/pageLanguage.js';
@@ -11,7 +10,7 @@ import { showNotice } from '../host/showNotice.js';
 import { installPageFaults } from '../host/panelFaults.js';
 import { button, el } from '../ui/el.js';
 import { fixed } from '../ui/format.js';
-import { field } from '../homework/page/formParts.js';
+import { field } from '../ui/formParts.js';
 import { lectureFromCode } from '../lecture/lectureLink.js';
 import { defaultLecture } from '../lecture/defaultLecture.js';
 import { LECTURE_CAPS } from '../lecture/readLecture.js';
@@ -37,7 +36,7 @@ const notices = el('div', 'cp-notices');
 installPageFaults((title, lines) => showNotice(notices, title, lines, { kind: 'error' }));
 if (language.problem) showNotice(notices, t('languageProblem'), [language.problem]);
 
-const intro = el('section', 'hw-intro cp-intro');
+const intro = el('section', 'cp-intro');
 intro.append(el('h1', null, t('heading')), el('p', null, t('intro')));
 const startEmpty = button(t('startEmpty'));
 const startDefault = button(t('startDefault'));

@@ -91,7 +91,7 @@ export function mountLecture(main, lecture, keys) {
       section = panelSection(item, key);
       panels.push({ section, item, key, prefix });
     } else if (item.type === 'question') {
-      section = plainSection(item, key, 'lecture-question hw-lecture-mode', t('questionLabel', { n: fixed(questions.length + 1, 0) }));
+      section = plainSection(item, key, 'lecture-question', t('questionLabel', { n: fixed(questions.length + 1, 0) }));
       questions.push({ section, item, number: questions.length + 1 });
     } else {
       section = plainSection(item, key, 'lecture-text-item', t('textLabel'));

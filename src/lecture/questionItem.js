@@ -1,11 +1,9 @@
 // A question of a composed lecture, asked of the room as the homework page's lecture mode asks it:
-// the card of the homework page (buildQuestionCard) judges nothing until the lecturer reveals it; a
-// prediction's panel appears with the truth. Loaded only by a lecture that has a question, with the
-// homework page's styles for its card.
-import '../homework/page/homework.css';
+// homework's question card (buildQuestionCard, with its styles) judges nothing until the lecturer
+// reveals it; a prediction's panel appears with the truth. Loaded only by a lecture that has a question.
 import { questionById } from '../homework/questions.js';
 import { questionParams } from '../homework/gradeAnswer.js';
-import { buildQuestionCard } from '../homework/page/buildQuestionCard.js';
+import { buildQuestionCard } from '../homework/card/buildQuestionCard.js';
 import { button } from '../ui/el.js';
 import { ROOM_SEED } from './readLecture.js';
 import english from 'virtual:messages/en/lecture';
@@ -31,7 +29,7 @@ export function askQuestions(questions) {
       onAnswer: () => {},
       onFrame: (frame) => frames.add(frame),
     });
-    const reveal = button(t('reveal'), 'hw-reveal');
+    const reveal = button(t('reveal'), 'lecture-reveal');
     reveal.addEventListener('click', () => { card.reveal(); reveal.disabled = true; });
     card.element.append(reveal);
     section.append(card.element);

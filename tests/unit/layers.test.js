@@ -148,3 +148,29 @@ describe('the kinds of a panel\'s modules', () => {
     expect(domReached(PANEL_KINDS.flatMap(kindModules))).toEqual([]);
   });
 });
+
+describe('the pages\' layers', () => {
+  const under = (...dirs) => all.filter((p) => dirs.some((dir) => p.startsWith(`${dir}/`)));
+
+  it('src/homework/class is pure: nothing it reaches touches the DOM or imports CSS', () => {
+    expect(under('src/homework/class').length).toBeGreaterThan(2);
+    expect(domReached(under('src/homework/class'))).toEqual([]);
+  });
+
+  it('src/lecture and src/compose use no part of the homework page: shared parts are src/ui\'s', () => {
+    const wrong = under('src/lecture', 'src/compose').flatMap((p) => codeImportsOf(p)
+      .filter((target) => target.startsWith('src/homework/page/')).map((target) => `${p} → ${target}`));
+    expect(wrong).toEqual([]);
+  });
+
+  it('src/lecture and src/compose write no class of the homework page (hw-…) of their own', () => {
+    const wrong = under('src/lecture', 'src/compose').filter((p) => /['"` ]hw-[a-z]/.test(codeOf(p)));
+    expect(wrong).toEqual([]);
+  });
+
+  it('src/ui, the pages\' kit, imports no page and no panel', () => {
+    const wrong = under('src/ui').flatMap((p) => codeImportsOf(p)
+      .filter((target) => ['homework', 'compose', 'lecture', 'panels'].includes(layerOf(target))).map((target) => `${p} → ${target}`));
+    expect(wrong).toEqual([]);
+  });
+});

@@ -3,12 +3,12 @@
 // about its own score is ignored. Given the sheet that was set (its link or file), a hand-in made
 // for any other sheet is refused. Each file gets a table: the question as that student saw it,
 // their answer, the computed answer, and why.
-import { el } from '../../ui/el.js';
+import { button, el } from '../../ui/el.js';
 import { gradeHandIn } from '../gradeHandIn.js';
 import { handInFromText } from '../sheetCodes.js';
 import { readSetSheet } from './readSetSheet.js';
 import { gradedReport, problemBox } from './gradedReport.js';
-import { button, field, readTextFile, titledSection } from './formParts.js';
+import { field, readTextFile, titledSection } from '../../ui/formParts.js';
 import english from 'virtual:messages/en/homework';
 import { messages } from '../../i18n/messages.js';
 

@@ -3,7 +3,7 @@
 // (a link copied from the panel). The sheet is read back by readSheet as it is built, so what is
 // offered as a link or a file is exactly what a student's page will accept. It carries the
 // language the page is in, so that it opens in the language it was made in.
-import { el } from '../../ui/el.js';
+import { button, el } from '../../ui/el.js';
 import { setSubscripted } from '../../ui/subscripts.js';
 import { PANELS } from '../../panels/manifest.js';
 import { copyText, downloadBlob, downloadText } from '../../host/exporters.js';
@@ -14,7 +14,7 @@ import { readSheet } from '../readSheet.js';
 import { readStartState } from '../readStartState.js';
 import { sheetToCode } from '../sheetCodes.js';
 import { buildScormPackage } from './buildScormPackage.js';
-import { button, field, titledSection } from './formParts.js';
+import { field, titledSection } from '../../ui/formParts.js';
 import { panelTitle } from '../../panels/panelText.js';
 import english from 'virtual:messages/en/homework';
 import { currentLanguage, messages } from '../../i18n/messages.js';
@@ -65,7 +65,7 @@ export function buildComposer(root) {
       const state = el('input');
       state.type = 'text';
       state.placeholder = t('composer.statePlaceholder');
-      const stateLabel = field(t('composer.state'), state, 'hw-field hw-pick-state');
+      const stateLabel = field(t('composer.state'), state, 'hw-pick-state');
       stateLabel.hidden = true;
       const note = el('span', 'hw-pick-note');
       note.setAttribute('aria-live', 'polite');

@@ -2,7 +2,7 @@
 // question on its panel, and "Hand in", which saves a small file and shows the same as a code.
 // Lecture mode (the sheet's choice, or the switch) judges nothing on screen until the lecturer
 // reveals a question: the "predict, then show" of a live class.
-import { el } from '../../ui/el.js';
+import { button, el } from '../../ui/el.js';
 import { fileSlug } from '../../ui/format.js';
 import { pageLocale } from '../../ui/safeLocale.js';
 import { copyText, downloadText } from '../../host/exporters.js';
@@ -14,8 +14,8 @@ import { readResume } from '../readResume.js';
 import { scormInteraction } from '../scormInteraction.js';
 import { handInToCode, makeHandIn } from '../sheetCodes.js';
 import { openAnswerStore } from './answerStore.js';
-import { buildQuestionCard } from './buildQuestionCard.js';
-import { button, field, titledSection } from './formParts.js';
+import { buildQuestionCard } from '../card/buildQuestionCard.js';
+import { field, titledSection } from '../../ui/formParts.js';
 import { withElement } from './withElement.js';
 import english from 'virtual:messages/en/homework';
 import { messages } from '../../i18n/messages.js';
@@ -70,7 +70,7 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
   // In a course's LMS the score counts: the switch (and its reveal) is there only for a sheet set for class.
   lectureLabel.hidden = Boolean(scorm) && sheet.reveal !== 'lecturer';
   const revealAll = button(t('student.revealAll'), 'hw-reveal-all');
-  head.append(el('h1', null, sheet.title), seedLine, field(t('student.name'), name, 'hw-field hw-name'), lectureLabel, revealAll);
+  head.append(el('h1', null, sheet.title), seedLine, field(t('student.name'), name, 'hw-name'), lectureLabel, revealAll);
   if (scorm) head.append(el('p', 'hw-meta', t('student.inCourse')));
   else if (!store.kept()) head.append(el('p', 'notice notice-warning', t('student.notKept')));
   if (resumeNotice) head.append(el('p', 'notice notice-warning hw-resume-notice', resumeNotice));
@@ -147,7 +147,7 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
   const codeField = el('textarea');
   codeField.readOnly = true;
   codeField.rows = 4;
-  const codeLabel = field(t('student.code'), codeField, 'hw-field hw-code');
+  const codeLabel = field(t('student.code'), codeField, 'hw-code');
   codeLabel.hidden = true;
   const copy = button(t('student.copyCode'), 'hw-copy');
   copy.hidden = true;

@@ -8,7 +8,7 @@
 // Nothing leaves the browser.
 import { button, el } from '../../../ui/el.js';
 import { fixed, seconds } from '../../../ui/format.js';
-import { field, titledSection } from '../formParts.js';
+import { field, titledSection } from '../../../ui/formParts.js';
 import { readSetSheet } from '../readSetSheet.js';
 import { gradedReport, problemBox } from '../gradedReport.js';
 import { createClassRunner } from './runClassView.js';

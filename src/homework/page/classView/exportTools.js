@@ -10,7 +10,7 @@ import { fileSlug, fixed } from '../../../ui/format.js';
 import { gradebookToCsv, cellsToCsv } from '../../class/gradebookToCsv.js';
 import { writeClassFile } from '../../class/classFile.js';
 import { canvasImport, moodleWorksheet } from '../../class/lmsGrades.js';
-import { field } from '../formParts.js';
+import { field } from '../../../ui/formParts.js';
 import english from 'virtual:messages/en/class';
 import { messages } from '../../../i18n/messages.js';
 

@@ -1,12 +1,12 @@
-// The homework page's form pieces: a labelled field, a titled section, and a file read with a
-// size limit (and the plain button of src/ui/el.js). Text only (textContent), never markup.
-import { button, el } from '../../ui/el.js';
-import english from 'virtual:messages/en/homework';
-import { messages } from '../../i18n/messages.js';
+// Form pieces the lab's pages share (the homework page, the composer, a question's card): a
+// labelled field, a titled section, and a file read with a size limit. Text only (textContent),
+// never markup. Styles: formParts.css (.ui-field).
+import { el } from './el.js';
+import './formParts.css';
+import english from 'virtual:messages/en/ui';
+import { messages } from '../i18n/messages.js';
 
-const t = messages('homework', english);
-
-export { button };
+const t = messages('ui', english);
 
 /** A section named by its heading: { section, heading }. */
 export function titledSection(className, id, title) {
@@ -17,9 +17,9 @@ export function titledSection(className, id, title) {
   return { section, heading };
 }
 
-/** A label whose visible text names the control (its accessible name). */
-export function field(labelText, control, className = 'hw-field') {
-  const label = el('label', className);
+/** A label whose visible text names the control (its accessible name); `className` adds classes of the page's own. */
+export function field(labelText, control, className = '') {
+  const label = el('label', className ? `ui-field ${className}` : 'ui-field');
   label.append(el('span', null, labelText), control);
   return label;
 }

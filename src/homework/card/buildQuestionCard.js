@@ -3,7 +3,8 @@
 // from the question's state. A prediction is committed before the panel appears, so the panel
 // cannot give it away; the prediction stays drawn next to the truth. In lecture mode nothing is
 // judged on screen until the lecturer reveals the question; revealed, it takes no more answers.
-import { el } from '../../ui/el.js';
+// The homework page and a composed lecture both ask it; its styles are questionCard.css.
+import { button, el } from '../../ui/el.js';
 import { angle } from '../../ui/format.js';
 import { setSubscripted } from '../../ui/subscripts.js';
 import { EMBED_KEYS } from '../../host/readEmbedOptions.js';
@@ -11,9 +12,10 @@ import { kindName } from '../questions.js';
 import { MAX_TYPED, gradeAnswer, trueOption } from '../gradeAnswer.js';
 import { formatTolerance, formatValue } from '../formatAnswer.js';
 import { createPredictFigure } from './createPredictFigure.js';
+import './questionCard.css';
 import { watchPanelFrame } from '../../ui/watchPanelFrame.js';
 import { showNotice } from '../../host/showNotice.js';
-import { button, field } from './formParts.js';
+import { field } from '../../ui/formParts.js';
 import { panelTitle } from '../../panels/panelText.js';
 import english from 'virtual:messages/en/homework';
 import questionWords from 'virtual:messages/en/questions';
