@@ -8,9 +8,9 @@
 // such frame is live at a time, and a second only while the one left is being torn down. A frame
 // that reveal.js preloads off screen starts drawing before any message can reach it (the embed
 // mounts as soon as its module runs and pauses off screen only after a second), so only plot-only
-// panels, which hold no context, get data-preload and show at once; not speed-accuracy, whose GPU
-// read-back holds one while it runs (manifest.js).
-import { panelEntry } from '../panels/manifest.js';
+// panels, which hold no context, get data-preload and show at once; not one whose manifest entry
+// says it holds one at times (webglAtTimes: speed-accuracy's GPU read-back, while it runs).
+import { mayHoldContext, panelEntry } from '../panels/manifest.js';
 import { panelSchema } from '../panels/panelSchema.js';
 import { defaults, writeParams } from '../host/params.js';
 import { KIND_NAMES, questionById } from '../homework/questions.js';
@@ -24,9 +24,6 @@ import english from 'virtual:messages/en/lecture';
 import { messages } from '../i18n/messages.js';
 
 const t = messages('lecture', english);
-
-/** Plot-only panels that create a WebGL context for a while (the manifest's webgl is false). */
-const HOLDS_CONTEXT_AT_TIMES = ['speed-accuracy'];
 
 /** The seed of a question item that names none (readLecture.js): the numbers the room gets on the page. */
 export const DEFAULT_QUESTION_SEED = ROOM_SEED;
@@ -56,8 +53,7 @@ export function embedSource(base, id, {
 
 /** A panel's frame on a slide (see the note at the top on data-preload). */
 function frameHtml(src, id, { short }) {
-  const entry = panelEntry(id);
-  const preload = entry.webgl || HOLDS_CONTEXT_AT_TIMES.includes(id) ? '' : ' data-preload';
+  const preload = mayHoldContext(panelEntry(id)) ? '' : ' data-preload';
   return `<iframe class="fl-embed${short ? ' fl-short' : ''}"${preload} data-src="${escapeHtml(src)}" `
     + `title="${escapeHtml(labTitle(id))}" allow="fullscreen; clipboard-write"></iframe>`;
 }

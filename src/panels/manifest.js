@@ -29,6 +29,8 @@
  * @typedef {object} PanelEntry
  * @property {string} id            fixed: URLs and embeds depend on it
  * @property {boolean} webgl        holds a WebGL context while mounted (counted against the budget)
+ * @property {boolean} [webglAtTimes] webgl false, but it opens a context for a while (a measurement,
+ *                                  a read-back): a deck never loads it off screen (src/lecture/deckSlides.js)
  * @property {string|null} material the parameter the page-wide material sets (its n), or null
  * @property {string} [materialSelect] instead: a parameter that takes the material's id
  * @property {boolean} [hero]       the first, large panel: it owns the short URL keys (?nT=…)
@@ -127,7 +129,8 @@ export const PANELS = Object.freeze([
   },
   {
     id: 'speed-accuracy',
-    webgl: false, // the chart is 2D; contexts live only while a benchmark or a read-back runs
+    webgl: false, // the chart is 2D
+    webglAtTimes: true, // contexts live while a benchmark or a read-back runs
     material: null,
     place: { narrow: 1750, wide: 1570, widest: 1080 },
   },
@@ -155,6 +158,12 @@ export const PANEL_IDS = Object.freeze(PANELS.map((p) => p.id));
 export function panelEntry(id) {
   return PANELS.find((p) => p.id === id);
 }
+
+/**
+ * Whether a panel may hold a WebGL context: all the while it is mounted, or at times.
+ * @param {PanelEntry} entry
+ */
+export const mayHoldContext = (entry) => entry.webgl || entry.webglAtTimes === true;
 
 /**
  * URL key prefix of a panel on the lecture page: the hero owns the short keys.
@@ -253,6 +262,9 @@ export function manifestProblems(files, panelWords, indexHtml, panels = PANELS) 
       }
     }
     if (typeof entry.webgl !== 'boolean') problems.push(`The panel “${id}” does not say whether it uses WebGL.`);
+    if (entry.webglAtTimes !== undefined && (typeof entry.webglAtTimes !== 'boolean' || entry.webgl)) {
+      problems.push(`The panel “${id}” has webglAtTimes ${String(entry.webglAtTimes)}: true or left out, and only with webgl false.`);
+    }
     for (const [layout] of placeLayouts()) {
       const height = entry.place?.[layout];
       if (!(Number.isFinite(height) && height > 0)) {

@@ -1,5 +1,5 @@
 import { readFileSync, readdirSync, existsSync } from 'node:fs';
-import { resolve } from 'node:path';
+import { dirname, join, normalize, relative, resolve } from 'node:path';
 import { describe, expect, it } from 'vitest';
 import {
   PANELS, PANEL_IDS, PLACES_MARKER, lecturePrefix, manifestProblems, panelTextFrom, placesCss, sectionHtml,
@@ -16,6 +16,23 @@ const words = catalogue.panels;
 const { controls } = catalogue;
 const modules = Object.fromEntries(await Promise.all(PANEL_IDS.map(async (id) => [id, await import(`../../src/panels/${id}/index.js`)])));
 const schemas = Object.fromEntries(await Promise.all(PANEL_IDS.map(async (id) => [id, (await import(`../../src/panels/${id}/schema.js`)).schema])));
+
+/** The modules a panel's index.js reaches through relative imports (static, dynamic, workers), as repository paths. */
+function reachedFrom(start) {
+  const seen = new Set();
+  for (const todo = [start]; todo.length;) {
+    const path = todo.pop();
+    if (seen.has(path)) continue;
+    seen.add(path);
+    const text = readFileSync(resolve(root, path), 'utf8');
+    for (const [, spec] of text.matchAll(/(?:from|import\s*\(|new URL\()\s*['"](\.{1,2}\/[^'"?]+\.js)['"?]/g)) {
+      todo.push(relative(root, normalize(join(root, dirname(path), spec))).replaceAll('\\', '/'));
+    }
+  }
+  return seen;
+}
+// Every counted WebGL context is opened by a module that calls countContext (src/gl/contextBudget.js).
+const OPENS_CONTEXT = /\bcountContext\(/;
 
 describe('the panel manifest', () => {
   it('agrees with the panel folders and the lecture page', () => {
@@ -42,6 +59,16 @@ describe('the panel manifest', () => {
       `The panel “${entry.id}” has no place.wide: the height in px the lecture page keeps for it before it mounts (docs/panels.md).`,
     ]);
     expect(manifestProblems(files.filter((f) => f.startsWith(`${entry.id}/`)), words, undefined, [entry])).toHaveLength(3);
+  });
+  it('names a webglAtTimes that is not true, or that comes with webgl true', () => {
+    const entry = PANELS.find((p) => p.id === 'schlick');
+    const own = files.filter((f) => f.startsWith('schlick/'));
+    const problems = (more) => manifestProblems(own, words, undefined, [{ ...entry, ...more }]);
+    expect(problems({ webglAtTimes: true })).toEqual([]);
+    expect(problems({ webglAtTimes: 'yes' })).toEqual(['The panel “schlick” has webglAtTimes yes: true or left out, and only with webgl false.']);
+    expect(problems({ webgl: true, webglAtTimes: true })).toEqual([
+      'The panel “schlick” has webglAtTimes true: true or left out, and only with webgl false.',
+    ]);
   });
   it('keeps every id that links and embeds already use', () => {
     // Renaming or removing an id breaks every link and embed made with it; a new panel adds one.
@@ -107,6 +134,13 @@ describe.each(PANEL_IDS)('the %s module', (id) => {
       if (spec.type === 'number') expect(Math.abs(values[key] - spec.default), `${id}.${key}`).toBeLessThanOrEqual(spec.step / 2);
       else expect(values[key], `${id}.${key}`).toBe(spec.default);
     }
+  });
+  it('says whether it holds a WebGL context, always (webgl) or at times (webglAtTimes), as its code does', () => {
+    const opens = [...reachedFrom(`src/panels/${id}/index.js`)]
+      .filter((path) => !path.endsWith('contextBudget.js') && OPENS_CONTEXT.test(readFileSync(resolve(root, path), 'utf8')));
+    // A panel that never opens one says neither; one that does says one of them (a deck preloads neither).
+    expect(entry.webgl || entry.webglAtTimes === true, `${id} reaches ${opens.join(', ') || 'no module that opens a context'}`)
+      .toBe(opens.length > 0);
   });
   it('takes the page-wide material through a parameter it has', () => {
     if (entry.material) {
