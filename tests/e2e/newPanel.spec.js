@@ -3,7 +3,8 @@
 // schema.js or without a place in its entry the build stops and names which; with both the copy
 // type-checks and builds as `npm run build` does, the unit tests that read the manifest pass
 // there, the lecture page keeps the panel's place from its entry in each layout, and its embed
-// keeps the panel contract. A panel that needed more (a CSS rule, a line of the docs, a test's list of
+// keeps the panel contract; `npm run panel-list` writes its row of the docs' list of panels, as
+// docs/panels.md says. A panel that needed more (a CSS rule, a line of the docs by hand, a test's list of
 // ids, a homework question) fails here. 40–90 s on two cores, most of it the copy's type check,
 // builds and unit tests.
 import { readdirSync, readFileSync, renameSync } from 'node:fs';
@@ -14,6 +15,7 @@ import { test, expect, openLab } from './fixtures.js';
 import { expectPanelContract } from './panelContract.js';
 import { mountedHeight, reservedHeight } from './layout.js';
 import { docsPanel, editFile, removeCopy, runIn, scaffold } from './scaffold.js';
+import { panelListFiles } from '../../scripts/panelListFiles.js';
 
 const panel = docsPanel();
 const VITE = 'node_modules/vite/bin/vite.js';
@@ -57,8 +59,13 @@ test('without its schema.js, or with no place in its entry, the build stops and 
   expect(noPlace.output).toContain(`The panel “${panel.id}” has no place.narrow`);
 });
 
-test('the copy type-checks (the panel keeps the contract\'s types), and the unit tests that read the manifest pass', async () => {
+test('with its panel list written, the copy type-checks (the contract\'s types) and the unit tests that read the manifest pass', async () => {
   test.setTimeout(180_000);
+  const list = await runIn(dir, 'npm', ['run', 'panel-list']);
+  expect(list.code, list.output).toBe(0);
+  const listed = panelListFiles(dir);
+  expect(listed.length).toBeGreaterThan(0);
+  for (const file of listed) expect(readFileSync(join(dir, file), 'utf8'), file).toContain(`| \`${panel.id}\` | no WebGL |`);
   const types = await runIn(dir, 'node_modules/.bin/tsc', ['-p', 'jsconfig.json']);
   expect(types.code, types.output).toBe(0);
   // Every unit test that reads the manifest, the loader or the schemas: none may want more of a panel.
