@@ -9,7 +9,8 @@ import { button, el } from '../ui/el.js';
 import { setSubscripted } from '../ui/subscripts.js';
 import { fixed } from '../ui/format.js';
 import { field } from '../ui/formParts.js';
-import { applyParams, defaults, describeProblem, formatValue, writeParams } from '../host/params.js';
+import { applyParams, defaults, describeProblem, formatValue } from '../host/params.js';
+import { embedLink } from '../host/embedLink.js';
 import { loadTheme } from '../ui/theme.js';
 import { panelEntry } from '../panels/manifest.js';
 import { panelSchema } from '../panels/panelSchema.js';
@@ -37,13 +38,8 @@ function changedValues(schema, values) {
 
 /** The embed page's address for an item: its state, locks and hidden controls, this page's theme. */
 function embedAddress(item) {
-  const url = new URL('./embed.html', window.location.href);
-  url.searchParams.set('panel', item.panel);
-  writeParams(panelSchema(item.panel), { ...defaults(panelSchema(item.panel)), ...item.state }, url.searchParams);
-  if (item.lock.length) url.searchParams.set('lock', item.lock.join(','));
-  if (item.hide.length) url.searchParams.set('hide', item.hide.join(','));
-  url.searchParams.set('theme', loadTheme().scheme);
-  return url.toString();
+  return embedLink(new URL('./embed.html', window.location.href).href, { id: item.panel, schema: panelSchema(item.panel) },
+    item.state, { lock: item.lock, hide: item.hide, theme: loadTheme().scheme });
 }
 
 export function buildPanelStart(initial, { patch }) {

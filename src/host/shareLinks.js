@@ -3,6 +3,7 @@
 import english from 'virtual:messages/en/host';
 import { messages } from '../i18n/messages.js';
 import { writeParams } from './params.js';
+import { embedLink } from './embedLink.js';
 import { lecturePrefix } from '../panels/manifest.js';
 import { panelTitle } from '../panels/panelText.js';
 
@@ -41,12 +42,7 @@ export function lectureUrl(panel, values) {
  * @param {{ lock?: readonly string[], hide?: readonly string[] }} [options]
  */
 export function embedUrl(panel, values, { lock = [], hide = [] } = {}) {
-  const url = pageUrl('./embed.html');
-  url.searchParams.set('panel', panel.id);
-  writeParams(panel.schema, values, url.searchParams);
-  if (lock.length) url.searchParams.set('lock', lock.join(','));
-  if (hide.length) url.searchParams.set('hide', hide.join(','));
-  return url.toString();
+  return embedLink(pageUrl('./embed.html').href, panel, values, { lock, hide });
 }
 
 /**

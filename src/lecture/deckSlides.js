@@ -12,7 +12,7 @@
 // says it holds one at times (webglAtTimes: speed-accuracy's GPU read-back, while it runs).
 import { mayHoldContext, panelEntry } from '../panels/manifest.js';
 import { panelSchema } from '../panels/panelSchema.js';
-import { defaults, writeParams } from '../host/params.js';
+import { embedLink } from '../host/embedLink.js';
 import { KIND_NAMES, questionById } from '../homework/questions.js';
 import { expectedValue, questionParams, trueOption } from '../homework/gradeAnswer.js';
 import { formatTolerance, formatValue } from '../homework/formatAnswer.js';
@@ -29,26 +29,13 @@ const t = messages('lecture', english);
 export const DEFAULT_QUESTION_SEED = ROOM_SEED;
 
 /**
- * The embed page's link for a panel: `base?panel=ID`, the values that differ from the panel's
- * defaults (written as a share link writes them), then lock, hide, theme, projector, fit and lang.
+ * The embed page's link for panel `id` on a slide (src/host/embedLink.js), from its start `state`.
  * @param {string} base  embed.html's address, relative (offline/embed.html) or absolute
  * @param {string} id
- * @param {{ state?: Record<string, unknown>, lock?: string[], hide?: string[], theme?: string | null, projector?: boolean,
- *   fit?: boolean, lang?: string | null }} [options]
+ * @param {{ state?: Record<string, unknown> } & import('../host/embedLink.js').EmbedOptions} [options]
  */
-export function embedSource(base, id, {
-  state = {}, lock = [], hide = [], theme = null, projector = false, fit = false, lang = null,
-} = {}) {
-  const schema = panelSchema(id);
-  const search = new URLSearchParams({ panel: id });
-  writeParams(schema, { ...defaults(schema), ...state }, search);
-  if (lock.length) search.set('lock', lock.join(','));
-  if (hide.length) search.set('hide', hide.join(','));
-  if (theme) search.set('theme', theme);
-  if (projector) search.set('projector', '1');
-  if (fit) search.set('fit', '1');
-  if (lang) search.set('lang', lang);
-  return `${base}${base.includes('?') ? '&' : '?'}${search.toString().replace(/%2C/g, ',')}`;
+export function embedSource(base, id, { state = {}, ...options } = {}) {
+  return embedLink(base, { id, schema: panelSchema(id) }, state, options);
 }
 
 /** A panel's frame on a slide (see the note at the top on data-preload). */
@@ -66,7 +53,8 @@ function panelSlide(item, n, frame) {
   const heading = item.heading ? `<h2>${escapeHtml(item.heading)}</h2>` : '';
   // fit: the panel shows whole on its slide, scaled down as far as it must be (src/host/fitToFrame.js).
   const { theme, projector, lang } = frame;
-  const src = embedSource(frame.embedUrl, item.panel, { ...item, theme, projector, fit: true, lang });
+  const { state, lock, hide } = item;
+  const src = embedSource(frame.embedUrl, item.panel, { state, lock, hide, theme, projector, fit: true, lang });
   return `<section class="fl-panel" data-item="${n}" data-item-type="panel" data-panel="${escapeHtml(item.panel)}">
   ${heading}${textHtml(item.text)}
   ${frameHtml(src, item.panel, { short: Boolean(item.text) })}

@@ -1,17 +1,13 @@
 // Properties of every panel's link and values (src/host/params.js over each src/panels/*/schema.js):
 // whatever a link or a message holds, reading it never throws, what is kept is valid against the
 // schema, what is refused is named with a reason, and a view written to a link reads back the same.
-import { readdirSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { applyParams, defaults, describeProblem, formatValue, parseValue, readParams, resolveKey, writeParams } from '../../src/host/params.js';
-import { PANELS } from '../../src/panels/manifest.js';
 import { anyKey, anyText, anyValue, ownObject } from './fuzzArbitraries.js';
 import { check } from './fuzzConfig.js';
 import { validValues } from './validValues.js';
-
-const ids = readdirSync(new URL('../../src/panels/', import.meta.url)).filter((d) => PANELS.some((p) => p.id === d));
-const schemas = await Promise.all(ids.map(async (id) => [id, (await import(`../../src/panels/${id}/schema.js`)).schema]));
+import { forAnyPanel, schemas, validView } from './schemaArbitraries.js';
 
 /** A key a link or a message might use for this schema: its own, an alias, or anything else. */
 const keyFor = (schema) => {
@@ -31,29 +27,12 @@ const rawFor = (spec) => {
   return fc.oneof(...near, anyValue);
 };
 
-/** A valid value for a spec, drawn as a control or a deck would make it. */
-const validFor = (spec) => ({
-  number: () => (spec.integer ? fc.integer({ min: spec.min, max: spec.max })
-    : fc.oneof(fc.integer({ min: Math.round(spec.min / spec.step), max: Math.round(spec.max / spec.step) })
-      .map((i) => Number((i * spec.step).toFixed(12))).filter((v) => v >= spec.min && v <= spec.max),
-    fc.constantFrom(spec.min, spec.max, spec.default))),
-  enum: () => fc.constantFrom(...(Array.isArray(spec.options) ? spec.options.map(String) : Object.keys(spec.options))),
-  color: () => fc.stringMatching(/^#[0-9a-f]{6}$/),
-  boolean: () => fc.boolean(),
-  text: () => fc.string({ unit: 'grapheme', maxLength: 80 }).map((t) => parseValue(spec, t)).filter((r) => r.ok).map((r) => r.value),
-}[spec.type]());
-
-const validView = (schema) => fc.record(Object.fromEntries(Object.entries(schema).map(([key, spec]) => [key, validFor(spec)])));
-
 describe.each(schemas)('the %s panel\'s schema', (_id, schema) => {
   it('has defaults that it takes itself, written as no link at all', () => {
     expect(validValues(schema, defaults(schema))).toBe(true);
     expect(writeParams(schema, defaults(schema), new URLSearchParams()).toString()).toBe('');
   });
 });
-
-/** A panel's schema and something drawn for it: one property covers every panel. */
-const forAnyPanel = (make) => fc.constantFrom(...schemas).chain(([id, schema]) => fc.tuple(fc.constant(id), fc.constant(schema), make(schema)));
 
 describe('every panel\'s link and values', () => {
   it('reads any query without throwing: each value kept is valid, each one refused is named with a reason', () => {
