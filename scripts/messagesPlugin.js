@@ -24,6 +24,7 @@ import { resolve } from 'node:path';
 import MessageFormat from '@messageformat/core';
 import compileModule from '@messageformat/core/compile-module.js';
 import { pseudoCatalogue } from './pseudoLocale.js';
+import { escapeHtml } from '../src/ui/escapeHtml.js';
 
 const PREFIX = 'virtual:messages';
 const RESOLVED = `\0${PREFIX}`;
@@ -43,7 +44,6 @@ export function readCatalogues(dir, pseudo = true) {
   return catalogues;
 }
 
-const escapeHtml = (text) => String(text).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
 
 /** The English message at "namespace.key" (no arguments), or an error naming what is missing. */
 function englishAt(english, path, file) {

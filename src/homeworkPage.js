@@ -8,6 +8,7 @@ import './homework/page/homework.css';
 import { setupPageControls } from './host/setupPageControls.js';
 import { showNotice } from './host/showNotice.js';
 import { installPageFaults } from './host/panelFaults.js';
+import { own } from './host/own.js';
 import { el } from './ui/el.js';
 import { readSheet, sheetLanguage } from './homework/readSheet.js';
 import { sheetFromCode } from './homework/sheetCodes.js';
@@ -36,8 +37,7 @@ const code = inPackage ? carried.textContent.trim() : search.get('sheet');
 function carriedLanguage(sheetCode) {
   if (sheetCode === null) return null;
   const decoded = sheetFromCode(sheetCode);
-  const data = decoded.ok ? decoded.data : null;
-  const lang = data !== null && typeof data === 'object' && Object.hasOwn(data, 'lang') ? data.lang : null;
+  const lang = decoded.ok ? own(decoded.data, 'lang') ?? null : null;
   return sheetLanguage(lang) ? lang : null;
 }
 

@@ -11,6 +11,7 @@ import { fixed } from '../ui/format.js';
 import { field } from '../ui/formParts.js';
 import { applyParams, defaults, describeProblem, formatValue } from '../host/params.js';
 import { embedLink } from '../host/embedLink.js';
+import { isObject } from '../host/own.js';
 import { loadTheme } from '../ui/theme.js';
 import { panelEntry } from '../panels/manifest.js';
 import { panelSchema } from '../panels/panelSchema.js';
@@ -19,7 +20,6 @@ import { controlLabel, optionLabel, panelTitle } from '../panels/panelText.js';
 
 const t = messages('compose', english);
 const ANSWER_MS = 5000;
-const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
 
 /** A value of panel `id`'s `key` as its controls would show it (numbers through ui/format.js, to the link's decimals). */
 export function shownValue(id, key, spec, value) {

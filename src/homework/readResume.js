@@ -3,6 +3,7 @@
 // an import or an older version of this page may have put something else there. Only answers
 // that fit their question come back; whatever is refused is said in one sentence on the sheet.
 import { readAnswer } from './gradeAnswer.js';
+import { isObject, own } from '../host/own.js';
 import english from 'virtual:messages/en/homework';
 import { messages } from '../i18n/messages.js';
 
@@ -10,8 +11,6 @@ import { messages } from '../i18n/messages.js';
 // writes more, so anything longer is not its own and is not parsed.
 export const SUSPEND_LIMIT = 4096;
 
-const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
-const own = (object, key) => Object.prototype.hasOwnProperty.call(object, key);
 const t = messages('homework', english);
 
 /**
@@ -32,14 +31,16 @@ export function readResume(text, { seed, classSeed = null, questions, params }) 
     return none('unreadable');
   }
   if (data === null) return none(null); // what an empty copy parsed to before
-  if (!isObject(data) || !own(data, 'answers') || !Array.isArray(data.answers)) return none('otherForm');
+  const kept = own(data, 'answers');
+  if (!Array.isArray(kept)) return none('otherForm');
   // The first version of this page kept { answers } alone, made for the sheet's class seed where it
   // had one (as now) and otherwise for the learner's id unhashed: other numbers than today's.
-  const madeFor = own(data, 'seed') ? data.seed : classSeed;
-  if (madeFor !== seed) return none(own(data, 'seed') ? 'otherSeed' : 'earlierVersion');
-  if (data.answers.length !== questions.length) return none('otherSheet', { kept: data.answers.length, count: questions.length });
-  const answers = questions.map((question, i) => readAnswer(question, params[i], data.answers[i]));
-  const dropped = answers.filter((a, i) => a === null && data.answers[i] !== null).length;
+  const saysSeed = isObject(data) && Object.hasOwn(data, 'seed');
+  const madeFor = saysSeed ? data.seed : classSeed;
+  if (madeFor !== seed) return none(saysSeed ? 'otherSeed' : 'earlierVersion');
+  if (kept.length !== questions.length) return none('otherSheet', { kept: kept.length, count: questions.length });
+  const answers = questions.map((question, i) => readAnswer(question, params[i], kept[i]));
+  const dropped = answers.filter((a, i) => a === null && kept[i] !== null).length;
   const notice = dropped ? t('resume.dropped', { dropped }) : null;
   return { answers, notice };
 }

@@ -4,6 +4,7 @@
 import { questionById } from './questions.js';
 import { EMBED_KEYS } from '../host/readEmbedOptions.js';
 import { clipText, rawText, resolveKey } from '../host/params.js';
+import { isObject } from '../host/own.js';
 import { panelSchema } from '../panels/panelSchema.js';
 import { LANGUAGES, languageById } from '../i18n/languages.js';
 import english from 'virtual:messages/en/homework';
@@ -13,7 +14,6 @@ export const SHEET_VERSION = 1;
 const MAX_ITEMS = 40;
 const MAX_STATE_KEYS = 24;
 const text = (v, max) => typeof v === 'string' && v.length > 0 && v.length <= max;
-const plainObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
 const SHEET_FIELDS = ['version', 'title', 'reveal', 'seed', 'lang', 'items'];
 const ITEM_FIELDS = ['question', 'state'];
 
@@ -36,7 +36,7 @@ export const sheetLanguage = (lang) => typeof lang === 'string' && languageById(
  */
 function stateProblems(state, panelId, item) {
   if (state === undefined) return [];
-  if (!plainObject(state)) return [t('sheet.stateNotObject', { item })];
+  if (!isObject(state)) return [t('sheet.stateNotObject', { item })];
   const entries = Object.entries(state);
   if (entries.length > MAX_STATE_KEYS) return [t('sheet.stateTooLarge', { item, max: MAX_STATE_KEYS })];
   return entries.flatMap(([key, value]) => {
@@ -60,7 +60,7 @@ export function readSheet(data) {
     problems.push(t('sheet.items', { max: MAX_ITEMS }));
   } else {
     data.items.forEach((item, i) => {
-      if (plainObject(item)) problems.push(...unknownFields(item, ITEM_FIELDS, i + 1));
+      if (isObject(item)) problems.push(...unknownFields(item, ITEM_FIELDS, i + 1));
       const question = questionById(item?.question);
       // rawText: the id may be any JSON, and String() of an object whose toString is not a function throws.
       if (!question) problems.push(t('sheet.noQuestion', { item: i + 1, id: rawText(item?.question) }));

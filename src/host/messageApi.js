@@ -21,6 +21,7 @@
 import english from 'virtual:messages/en/host';
 import { messages } from '../i18n/messages.js';
 import { rawText } from './params.js';
+import { isObject } from './own.js';
 
 const t = messages('host', english);
 
@@ -46,9 +47,6 @@ export const CHANGED_MS = 80;
 /** @type {readonly string[]} */
 const CONTROL_KINDS = ['lock', 'unlock', 'hide', 'show'];
 const MAX_SNAPSHOT = 4096;
-
-/** @type {(v: unknown) => v is Record<string, unknown>} */
-const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
 
 /** @type {(kind: string) => kind is ControlChange} */
 const isControlChange = (kind) => CONTROL_KINDS.includes(kind);

@@ -4,6 +4,7 @@ import english from 'virtual:messages/en/host';
 import { messages } from '../i18n/messages.js';
 import { writeParams } from './params.js';
 import { embedLink } from './embedLink.js';
+import { escapeHtml } from '../ui/escapeHtml.js';
 import { lecturePrefix } from '../panels/manifest.js';
 import { panelTitle } from '../panels/panelText.js';
 
@@ -52,9 +53,8 @@ export function embedUrl(panel, values, { lock = [], hide = [] } = {}) {
  * @param {{ width?: number, height?: number, lock?: readonly string[], hide?: readonly string[] }} [options]
  */
 export function embedCode(panel, values, { width = 960, height = 720, ...options } = {}) {
-  const escape = (/** @type {string} */ s) => String(s).replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;');
-  return `<iframe src="${escape(embedUrl(panel, values, options))}" width="${width}" height="${height}" `
-    + `style="border:0" loading="lazy" title="${escape(labTitle(panel.id))}" `
+  return `<iframe src="${escapeHtml(embedUrl(panel, values, options))}" width="${width}" height="${height}" `
+    + `style="border:0" loading="lazy" title="${escapeHtml(labTitle(panel.id))}" `
     + 'allow="fullscreen; clipboard-write"></iframe>';
 }
 

@@ -19,7 +19,7 @@ import revealJsText from '../../node_modules/reveal.js/dist/reveal.js?raw';
 import revealCssText from 'reveal.js/reveal.css?raw';
 import revealThemeText from 'reveal.js/theme/dracula.css?raw';
 import { readLecture } from './readLecture.js';
-import { escapeHtml } from './lectureTextHtml.js';
+import { escapeHtml } from '../ui/escapeHtml.js';
 import { lectureSlidesHtml } from './deckSlides.js';
 import { katexDeckCss } from './katexDeckCss.js';
 import english from 'virtual:messages/en/lecture';

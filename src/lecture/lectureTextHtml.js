@@ -8,13 +8,7 @@
 // default) it refuses \href, \url and \html… commands; a formula it cannot read is shown as its source.
 import katex from 'katex';
 import { lectureTextTree } from './lectureText.js';
-
-const ENTITIES = { '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' };
-
-/** Text for an element's content or a quoted attribute value: & < > " ' written as entities. */
-export function escapeHtml(text) {
-  return String(text).replace(/[&<>"']/g, (c) => ENTITIES[c]);
-}
+import { escapeHtml } from '../ui/escapeHtml.js';
 
 // The lecture's notation, as ui/subscripts.js writes it on the page: n_t is n with a subscript t.
 const SUBSCRIPT = /([A-Za-zθλv])_([A-Za-z0-9]+)/g;

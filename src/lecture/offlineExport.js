@@ -12,7 +12,7 @@
 // composer offers the lecture with embed.html in one .zip (offlineLectureZip).
 import { readLecture } from './readLecture.js';
 import { LECTURE_ELEMENT_ID } from './lectureElement.js';
-import { escapeHtml } from './lectureTextHtml.js';
+import { escapeHtml } from '../ui/escapeHtml.js';
 import english from 'virtual:messages/en/lecture';
 import { messages } from '../i18n/messages.js';
 

@@ -10,6 +10,7 @@ import { messages } from '../i18n/messages.js';
 import { LANGUAGES, languageById } from '../i18n/languages.js';
 import { fixed } from '../ui/format.js';
 import { applyParams, defaults, describeProblem, rawText, resolveKey } from '../host/params.js';
+import { isObject, own } from '../host/own.js';
 import { panelEntry } from '../panels/manifest.js';
 import { panelSchema } from '../panels/panelSchema.js';
 import { questionById } from '../homework/questions.js';
@@ -27,9 +28,6 @@ const ITEM_FIELDS = {
   text: ['type', 'heading', 'text'],
   question: ['type', 'question', 'seed', 'heading', 'text'],
 };
-
-const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
-const own = (o, key) => (Object.hasOwn(o, key) ? o[key] : undefined);
 
 /**
  * An optional text: undefined when absent, else the text or a problem (not text, too long). what:

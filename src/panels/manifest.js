@@ -2,12 +2,13 @@
 // The panel manifest: every panel of the lecture, in the lecture's order, with what the page needs
 // to know before the panel's code loads. The lecture page's sections and the places they keep
 // (vite.config.js writes them into index.html and src/panelPlaces.css), the embed page and the
-// tests all come from this list or are checked against it. Plain data with no imports, so Node (the
-// build, the unit tests) reads it too.
+// tests all come from this list or are checked against it. Plain data and pure functions, whose one
+// import has no imports of its own, so Node (the build, the unit tests) reads it too.
 //
 // A panel is the folder src/panels/<id>/ with its parameters in schema.js and its module in index.js
 // (the same schema and mount; see src/host/panelContract.js). Adding a panel is adding its folder
 // and one entry here (docs/panels.md).
+import { escapeHtml } from '../ui/escapeHtml.js';
 
 /**
  * A panel's place on the lecture page before its module arrives, in px, per layout (PLACE_LAYOUTS):
@@ -180,7 +181,7 @@ export function lecturePrefix(id) {
  * @param {{ title: string, titleHtml?: string, lede: string, cite: string }} text
  */
 export function sectionHtml(entry, text) {
-  const heading = text.titleHtml ?? text.title.replace(/&/g, '&amp;').replace(/</g, '&lt;');
+  const heading = text.titleHtml ?? escapeHtml(text.title);
   return `<section data-panel="${entry.id}" id="${entry.id}" class="panel${entry.hero ? ' hero' : ''}" tabindex="-1" `
     + `aria-labelledby="${entry.id}-title">
       <h2 id="${entry.id}-title">${heading}</h2>

@@ -7,6 +7,7 @@ import { makeHandIn } from '../../src/homework/sheetCodes.js';
 import { readStartState } from '../../src/homework/readStartState.js';
 import { parseValue } from '../../src/host/params.js';
 import { panelSchema } from '../../src/panels/panelSchema.js';
+import { isObject, own } from '../../src/host/own.js';
 
 const INHERITED = ['constructor', 'toString', 'valueOf', 'hasOwnProperty', '__proto__', '__defineGetter__', 'isPrototypeOf'];
 const sheet = { version: 1, title: 'T', items: [{ question: 'exact-r' }] };
@@ -60,5 +61,21 @@ describe('panel schemas by id', () => {
   it('find a panel\'s schema, and nothing for an inherited name', () => {
     expect(Object.keys(panelSchema('schlick'))).toContain('nT');
     for (const name of INHERITED) expect(panelSchema(name), name).toBeUndefined();
+  });
+});
+
+describe('own and isObject (src/host/own.js), which every reader of outside data uses', () => {
+  it('read an own key only: an inherited name is absent, and a JSON __proto__ key is data', () => {
+    for (const name of INHERITED) expect(own({}, name), name).toBeUndefined();
+    expect(own(JSON.parse('{"__proto__":1,"constructor":2}'), '__proto__')).toBe(1);
+    expect(own(JSON.parse('{"__proto__":1,"constructor":2}'), 'constructor')).toBe(2);
+    expect(own({ kind: 'x' }, 'kind')).toBe('x');
+  });
+  it('find no keys in what is no object: null, a list, a text, a number', () => {
+    for (const value of [null, undefined, [1], 'abc', 3, true]) {
+      expect(isObject(value), String(value)).toBe(false);
+      expect(own(value, value === 'abc' ? 'length' : '0'), String(value)).toBeUndefined();
+    }
+    expect(isObject({}) && isObject(Object.create(null))).toBe(true);
   });
 });

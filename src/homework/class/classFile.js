@@ -8,6 +8,7 @@
 import { classCaps, megabytes } from './classCaps.js';
 import { readSheet } from '../readSheet.js';
 import { rawText } from '../../host/params.js';
+import { isObject, own } from '../../host/own.js';
 import english from 'virtual:messages/en/class';
 import { messages } from '../../i18n/messages.js';
 
@@ -22,9 +23,6 @@ const MAX_SOURCE = 1000;
  * @typedef {{ source: string, data: unknown }} HandIn
  * @typedef {{ source: string, reason: string }} Refusal
  */
-
-const plainObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
-const own = (object, key) => (Object.hasOwn(object, key) ? object[key] : undefined);
 
 /**
  * The file's text (JSON): { kind, version, saved, sheet, handIns: [{ source, data }] }.
@@ -57,7 +55,7 @@ export function readClassFile(input, capsGiven = {}) {
   } catch {
     return { ok: false, problems: [t('classFile.notJson')] };
   }
-  if (!plainObject(doc) || own(doc, 'kind') !== CLASS_FILE_KIND) {
+  if (!isObject(doc) || own(doc, 'kind') !== CLASS_FILE_KIND) {
     return { ok: false, problems: [t('classFile.otherKind', { kind: CLASS_FILE_KIND })] };
   }
   const problems = [];
@@ -68,7 +66,9 @@ export function readClassFile(input, capsGiven = {}) {
   if (!sheet.ok) problems.push(...sheet.problems.map((problem) => t('classFile.sheet', { problem })));
   const handIns = own(doc, 'handIns');
   if (!Array.isArray(handIns)) problems.push(t('classFile.handIns'));
-  if (problems.length) return { ok: false, problems: problems.map((problem) => t('classFile.cannotOpen', { problem })) };
+  if (problems.length || !Array.isArray(handIns)) {
+    return { ok: false, problems: problems.map((problem) => t('classFile.cannotOpen', { problem })) };
+  }
 
   /** @type {Refusal[]} */
   const refused = Object.keys(doc).filter((key) => !FIELDS.includes(key))
@@ -86,7 +86,7 @@ export function readClassFile(input, capsGiven = {}) {
       }
       return;
     }
-    if (!plainObject(entry)) {
+    if (!isObject(entry)) {
       refused.push({ source: label, reason: t('classFile.notEntry') });
       return;
     }

@@ -13,6 +13,7 @@
 // last group of four characters decodes to "}", so a wrapped code is decoded about once.
 import { HAND_IN_KIND, HAND_IN_PREFIX, handInFromText } from '../sheetCodes.js';
 import { fixed } from '../../ui/format.js';
+import { isObject } from '../../host/own.js';
 import english from 'virtual:messages/en/class';
 import { messages } from '../../i18n/messages.js';
 
@@ -100,7 +101,7 @@ function readCode(text, start, limit, explain) {
     const piece = code.slice(0, length);
     if (!endsInBrace(piece)) continue;
     const read = handInFromText(HAND_IN_PREFIX + piece);
-    if (read.ok && read.data !== null && typeof read.data === 'object' && !Array.isArray(read.data)) return { data: read.data, end };
+    if (read.ok && isObject(read.data)) return { data: read.data, end };
   }
   if (!ends.length) return { reason: t('find.noCode', { prefix: HAND_IN_PREFIX }) };
   if (!explain) return { reason: t('find.codeUnreadable') };
@@ -215,7 +216,7 @@ export function findHandIns(text, source, { maxHandIns = Infinity } = {}) {
       data = JSON.parse(trimmed);
     } catch { /* JSON with other text around it, or cut: searched below */ }
     const list = Array.isArray(data) ? data.map((item, i) => ({ source: `${source} [${i + 1}]`, data: item })) : [];
-    if (data !== null && typeof data === 'object' && !Array.isArray(data)) list.push({ source, data });
+    if (isObject(data)) list.push({ source, data });
     handIns.push(...list.slice(0, maxHandIns));
     if (list.length > maxHandIns) refused.push({ source: `${source} [${maxHandIns + 1}–${list.length}]`, reason: full() });
     if (data !== undefined && (handIns.length || refused.length)) return { handIns, refused };

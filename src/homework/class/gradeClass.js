@@ -12,6 +12,7 @@ import { questionById } from '../questions.js';
 import { readSheet } from '../readSheet.js';
 import { HAND_IN_KIND } from '../sheetCodes.js';
 import { rawText } from '../../host/params.js';
+import { isObject, own } from '../../host/own.js';
 import { CLASS_FILE_KIND } from './classFile.js';
 import english from 'virtual:messages/en/class';
 import { messages } from '../../i18n/messages.js';
@@ -27,12 +28,10 @@ import { messages } from '../../i18n/messages.js';
 
 const t = messages('class', english);
 const SLICE_MS = 40;
-const plainObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
-const own = (object, key) => (Object.hasOwn(object, key) ? object[key] : undefined);
 
 /** Why `data` is not a hand-in at all, before grading (a sheet or a saved class view dropped among them), or null. */
 function notAHandIn(data) {
-  if (!plainObject(data)) return t('grade.notObject');
+  if (!isObject(data)) return t('grade.notObject');
   const kind = own(data, 'kind');
   if (kind === CLASS_FILE_KIND) return t('grade.classView');
   if (kind !== undefined && kind !== HAND_IN_KIND) return t('grade.otherKind', { kind: rawText(kind) });
@@ -53,8 +52,8 @@ function* primeQuestions(sheet, list) {
   const questions = sheet.items.map((item) => /** @type {any} */ (questionById(item.question)));
   const seen = new Set();
   for (const item of list) {
-    const data = plainObject(item) ? own(item, 'data') : undefined;
-    const seed = plainObject(data) ? own(data, 'seed') : undefined;
+    const data = isObject(item) ? own(item, 'data') : undefined;
+    const seed = isObject(data) ? own(data, 'seed') : undefined;
     if (typeof seed !== 'string' || seed.length === 0 || seed.length > 64) continue;
     for (const question of questions) {
       const params = questionParams(question, seed);
@@ -98,8 +97,8 @@ export function* gradeClassSteps(sheet, handIns, { sliceMs = SLICE_MS, now = () 
   }
   for (let i = 0; i < list.length; i += 1) {
     const item = list[i];
-    const source = plainObject(item) && typeof own(item, 'source') === 'string' ? item.source : t('source.handIn', { number: i + 1 });
-    const data = plainObject(item) ? own(item, 'data') : undefined;
+    const source = isObject(item) && typeof own(item, 'source') === 'string' ? item.source : t('source.handIn', { number: i + 1 });
+    const data = isObject(item) ? own(item, 'data') : undefined;
     const reason = notAHandIn(data);
     if (reason) refused.push({ source, reason });
     else {

@@ -4,10 +4,9 @@
 // the recommendations) is computed again, so a stored claim never reaches the panel.
 import { benchResults, RESULTS_VERSION } from '../../methods/benchResults.js';
 import { METHODS } from '../../methods/methods.js';
+import { own } from '../../host/own.js';
 
 const MAX_SAMPLES = 1000;
-const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
-const own = (o, key) => (isObject(o) && Object.hasOwn(o, key) ? o[key] : undefined);
 const text = (v) => (typeof v === 'string' ? v.slice(0, 300) : null);
 const finite = (v) => typeof v === 'number' && Number.isFinite(v);
 
