@@ -112,10 +112,19 @@ function readCode(text, start, limit, explain) {
   return { reason: first.damaged ? reason : t('find.cutShort', { reason }) };
 }
 
+// The loops read the text by code (charCodeAt), one way for all of them, which classReading.test.js
+// counts to hold them to a bounded number of reads per character: " \ { } [ ]
+const QUOTE = 34;
+const BACKSLASH = 92;
+const OPEN = 123;
+const CLOSE = 125;
+const OPEN_LIST = 91;
+const CLOSE_LIST = 93;
+
 /** Whether the character at i is escaped by an odd run of backslashes (counted up to 1,000). */
 function escaped(text, i) {
   let n = 0;
-  for (let j = i - 1; j >= 0 && text.charCodeAt(j) === 92 && n < 1000; j -= 1) n += 1;
+  for (let j = i - 1; j >= 0 && text.charCodeAt(j) === BACKSLASH && n < 1000; j -= 1) n += 1;
   return n % 2 === 1;
 }
 
@@ -124,13 +133,13 @@ function objectStart(text, at, floor) {
   let depth = 0;
   let inString = false;
   for (let i = at - 1; i >= floor; i -= 1) {
-    const c = text[i];
-    if (c === '"') {
+    const c = text.charCodeAt(i);
+    if (c === QUOTE) {
       if (!escaped(text, i)) inString = !inString;
     } else if (inString) continue;
-    else if (c === '}' || c === ']') depth += 1;
-    else if (c === '{' || c === '[') {
-      if (depth === 0) return c === '{' ? i : -1;
+    else if (c === CLOSE || c === CLOSE_LIST) depth += 1;
+    else if (c === OPEN || c === OPEN_LIST) {
+      if (depth === 0) return c === OPEN ? i : -1;
       depth -= 1;
     }
   }
@@ -142,13 +151,13 @@ function objectEnd(text, start, ceiling) {
   let depth = 0;
   let inString = false;
   for (let i = start; i < ceiling; i += 1) {
-    const c = text[i];
+    const c = text.charCodeAt(i);
     if (inString) {
-      if (c === '\\') i += 1;
-      else if (c === '"') inString = false;
-    } else if (c === '"') inString = true;
-    else if (c === '{' || c === '[') depth += 1;
-    else if (c === '}' || c === ']') {
+      if (c === BACKSLASH) i += 1;
+      else if (c === QUOTE) inString = false;
+    } else if (c === QUOTE) inString = true;
+    else if (c === OPEN || c === OPEN_LIST) depth += 1;
+    else if (c === CLOSE || c === CLOSE_LIST) {
       depth -= 1;
       if (depth === 0) return i;
     }
