@@ -20,7 +20,10 @@ export function storedLanguage() {
   }
 }
 
-/** Keeps the reader's choice for every page of the lab in this browser. */
+/**
+ * Keeps the reader's choice for every page of the lab in this browser.
+ * @param {string} id
+ */
 export function rememberLanguage(id) {
   try {
     globalThis.localStorage?.setItem(STORAGE_KEY, id);
@@ -52,9 +55,12 @@ export async function startLanguage({ carried = null, stored = true } = {}) {
   }
 }
 
-/** Loads `id`'s catalogue and makes it the page's (lang, dir, numbers). */
+/**
+ * Loads `id`'s catalogue and makes it the page's (lang, dir, numbers).
+ * @param {string} id
+ */
 export async function useLanguage(id) {
-  const language = languageById(id) ?? languageById(SOURCE_LANGUAGE);
+  const language = languageById(id) ?? LANGUAGES[0]; // the first listed is the source language, English
   // A single-file page carries the listed languages only, not the tests' pseudo-locales.
   const load = language.id === SOURCE_LANGUAGE ? null : loaders[language.id];
   if (load === undefined) throw new Error(`This page does not carry the language ${language.id}.`);

@@ -21,7 +21,10 @@ export const PSEUDO_LANGUAGES = Object.freeze([
 
 export const SOURCE_LANGUAGE = 'en';
 
-/** The language with this exact id (a listed or a pseudo one), or undefined. */
+/**
+ * The language with this exact id (a listed or a pseudo one), or undefined.
+ * @param {unknown} id
+ */
 export function languageById(id) {
   return [...LANGUAGES, ...PSEUDO_LANGUAGES].find((l) => l.id === id);
 }

@@ -8,7 +8,10 @@
 // for any key that language lacks. Numbers go in already formatted (src/ui/format.js), so every
 // digit shown keeps the lab's rounding.
 
-/** @type {Record<string, Record<string, (args?: Record<string, unknown>) => string>> | null} */
+/** @typedef {(args?: Record<string, unknown>) => string} Message  one compiled message */
+/** @typedef {Record<string, Record<string, Message>>} Catalogue  namespace → key → message */
+
+/** @type {Catalogue | null} */
 let catalogue = null;
 let current = 'en';
 
@@ -18,6 +21,8 @@ export const currentLanguage = () => current;
 /**
  * The compiled catalogue of `lang` (null for the source language): every t() made before or after
  * speaks it from now on.
+ * @param {string} lang
+ * @param {Catalogue | null} compiled
  */
 export function setCatalogue(lang, compiled) {
   current = lang;
@@ -29,7 +34,7 @@ export function setCatalogue(lang, compiled) {
  * a mistake of the code, shown as the key itself in brackets so that it stands out (and fails the
  * pseudo-locale test) rather than breaking the page.
  * @param {string} namespace
- * @param {Record<string, (args?: Record<string, unknown>) => string>} english
+ * @param {Record<string, Message>} english
  * @returns {(key: string, args?: Record<string, unknown>) => string}
  */
 export function messages(namespace, english) {

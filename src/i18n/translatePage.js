@@ -6,7 +6,7 @@
 import { translated } from './messages.js';
 import { setRichText } from './richText.js';
 
-const at = (path) => {
+const at = (/** @type {string} */ path) => {
   const dot = path.indexOf('.');
   return translated(path.slice(0, dot), path.slice(dot + 1));
 };
@@ -14,13 +14,13 @@ const at = (path) => {
 /** @param {ParentNode} root */
 export function translatePage(root) {
   for (const element of root.querySelectorAll('[data-i18n]')) {
-    const message = at(element.getAttribute('data-i18n'));
+    const message = at(element.getAttribute('data-i18n') ?? '');
     if (message === undefined) continue;
     if (element.hasAttribute('data-i18n-rich')) setRichText(/** @type {HTMLElement} */ (element), message);
     else element.textContent = message;
   }
   for (const element of root.querySelectorAll('[data-i18n-attr]')) {
-    for (const pair of element.getAttribute('data-i18n-attr').trim().split(/\s+/)) {
+    for (const pair of (element.getAttribute('data-i18n-attr') ?? '').trim().split(/\s+/)) {
       const [attribute, path] = pair.split(':');
       const message = at(path);
       if (message !== undefined) element.setAttribute(attribute, message);
@@ -29,6 +29,7 @@ export function translatePage(root) {
   // The panel sections the build wrote (manifest.js, sectionHtml): heading, lede and citation.
   for (const section of root.querySelectorAll('section[data-panel]')) {
     const id = section.getAttribute('data-panel');
+    /** @type {[string, string | undefined][]} */
     const parts = [
       ['h2', translated('panels', `${id}.titleHtml`) ?? translated('panels', `${id}.title`)],
       ['.lede-text', translated('panels', `${id}.lede`)],

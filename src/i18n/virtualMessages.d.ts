@@ -5,6 +5,12 @@ declare module 'virtual:messages/en/*' {
   export default messages;
 }
 
+// Every other language's whole catalogue, loaded when chosen: { lang: () => import(…) }.
+declare module 'virtual:messages/languages' {
+  const loaders: Record<string, () => Promise<{ default: Record<string, Record<string, (args?: Record<string, unknown>) => string>> }>>;
+  export default loaders;
+}
+
 // Some namespaces of every other language, in one module: { lang: { namespace: messages } }.
 declare module 'virtual:messages/every/*' {
   const catalogues: Record<string, Record<string, Record<string, (args?: Record<string, unknown>) => string>>>;

@@ -8,10 +8,11 @@ import { panelTitle, panelTitleHtml } from './panelText.js';
 const t = messages('panels', english);
 
 /** The lede (markup) under the heading. */
-export const panelLede = (id) => t(`${id}.lede`);
+export const panelLede = (/** @type {string} */ id) => t(`${id}.lede`);
 
 /** Where in the lecture, or beyond it, the concept comes from (markup). */
-export const panelCite = (id) => t(`${id}.cite`);
+export const panelCite = (/** @type {string} */ id) => t(`${id}.cite`);
 
 /** All four, as sectionHtml takes them. */
+/** @param {string} id */
 export const panelText = (id) => ({ title: panelTitle(id), titleHtml: panelTitleHtml(id), lede: panelLede(id), cite: panelCite(id) });

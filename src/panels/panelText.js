@@ -11,20 +11,23 @@ import { plainText } from '../i18n/richText.js';
 
 const t = messages('panels', english);
 const controls = messages('controls', controlWords);
-const has = (key) => Object.hasOwn(english, key);
+const has = (/** @type {string} */ key) => Object.hasOwn(english, key);
 
 /** Plain text: the embed heading, window titles, the controls' title. */
-export const panelTitle = (id) => plainText(t(`${id}.title`));
+export const panelTitle = (/** @type {string} */ id) => plainText(t(`${id}.title`));
 
 /** The heading with its markup (n<sub>t</sub>), where the catalogue has one; else the title. */
-export const panelTitleHtml = (id) => (has(`${id}.titleHtml`) ? t(`${id}.titleHtml`) : t(`${id}.title`));
+export const panelTitleHtml = (/** @type {string} */ id) => (has(`${id}.titleHtml`) ? t(`${id}.titleHtml`) : t(`${id}.title`));
 
 /** The name of a panel's control (a schema key), in the page's language. */
-export const controlLabel = (id, key) => controls(`${id}.${key}`);
+export const controlLabel = (/** @type {string} */ id, /** @type {string} */ key) => controls(`${id}.${key}`);
 
 /**
  * The name an enum control shows for one of its values: its own words where the catalogue has
  * them, else the value itself (a size, a number of taps).
+ * @param {string} id
+ * @param {string} key
+ * @param {unknown} value
  */
 export function optionLabel(id, key, value) {
   const path = `${id}.${key}.${value}`;

@@ -3,7 +3,7 @@
 /**
  * @template {keyof HTMLElementTagNameMap} K
  * @param {K} tag
- * @param {string} [className]
+ * @param {string | null} [className]
  * @param {string} [text]
  * @returns {HTMLElementTagNameMap[K]}
  */
@@ -17,7 +17,7 @@ export function el(tag, className, text) {
 /**
  * A plain button (type="button", so it never submits a form) with its visible text.
  * @param {string} text
- * @param {string} [className]
+ * @param {string | null} [className]
  */
 export function button(text, className) {
   const b = el('button', className, text);

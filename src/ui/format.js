@@ -13,7 +13,10 @@ export const MINUS = '\u2212';
 
 let decimal = '.';
 
-/** The decimal separator of `locale` as Intl writes it ('.' where it cannot tell). */
+/**
+ * The decimal separator of `locale` as Intl writes it ('.' where it cannot tell).
+ * @param {unknown} locale
+ */
 export function decimalSeparator(locale) {
   try {
     return new Intl.NumberFormat(safeLocale(locale)).formatToParts(0.5).find((p) => p.type === 'decimal')?.value ?? '.';
@@ -22,7 +25,10 @@ export function decimalSeparator(locale) {
   }
 }
 
-/** Shown numbers follow `locale`'s decimal separator from now on. */
+/**
+ * Shown numbers follow `locale`'s decimal separator from now on.
+ * @param {unknown} locale
+ */
 export function setNumberLocale(locale) {
   decimal = decimalSeparator(locale);
 }
@@ -30,21 +36,30 @@ export function setNumberLocale(locale) {
 /** The separator shown numbers use now (a typed number may use it too: src/host/params.js readNumber). */
 export const shownDecimal = () => decimal;
 
-const local = (text) => (decimal === '.' ? text : text.replace('.', decimal));
+const local = (/** @type {string} */ text) => (decimal === '.' ? text : text.replace('.', decimal));
 
-/** Fixed decimals with a real minus sign; NaN (an undefined quantity) as a dash. */
+/**
+ * Fixed decimals with a real minus sign; NaN (an undefined quantity) as a dash.
+ * @param {number} value
+ */
 export function fixed(value, digits = 4) {
   if (Number.isNaN(value)) return '—';
   return local(value.toFixed(digits)).replace('-', MINUS);
 }
 
-/** Scientific notation with a real minus sign, 1.234567e−8 (e+ written as e). */
+/**
+ * Scientific notation with a real minus sign, 1.234567e−8 (e+ written as e).
+ * @param {number} value
+ */
 export function sci(value, digits = 6) {
   if (Number.isNaN(value)) return '—';
   return local(value.toExponential(digits)).replaceAll('-', MINUS).replace('e+', 'e');
 }
 
-/** `digits` significant digits, as toPrecision writes them (3.14, 2.9e−7), with a real minus sign. */
+/**
+ * `digits` significant digits, as toPrecision writes them (3.14, 2.9e−7), with a real minus sign.
+ * @param {number} value
+ */
 export function precise(value, digits = 6) {
   if (!Number.isFinite(value)) return Number.isNaN(value) ? '—' : String(value).replace('-', MINUS);
   return local(value.toPrecision(digits)).replaceAll('-', MINUS).replace('e+', 'e');
@@ -54,18 +69,25 @@ export function precise(value, digits = 6) {
  * An integer with its thousands apart, SI style (224850.3 → "224 850", a narrow no-break space): the
  * same in every browser language, where a comma or a point would read as a decimal to half the
  * readers (SI Brochure, 9th edition, 5.4.4).
+ * @param {number} value
  */
 export function grouped(value) {
   if (!Number.isFinite(value)) return Number.isNaN(value) ? '—' : String(value);
   return String(Math.round(value)).replace(/\B(?=(\d{3})+(?!\d))/g, '\u202f').replace('-', MINUS);
 }
 
-/** A number as short as JavaScript writes it (a control's bound: 1, 0.0001, 1e-7), with a real minus sign. */
+/**
+ * A number as short as JavaScript writes it (a control's bound: 1, 0.0001, 1e-7), with a real minus sign.
+ * @param {number} value
+ */
 export function shortNumber(value) {
   return local(String(value)).replaceAll('-', MINUS);
 }
 
-/** An angle in degrees, 56.31°. */
+/**
+ * An angle in degrees, 56.31°.
+ * @param {number} deg
+ */
 export function angle(deg, digits = 2) {
   return `${fixed(deg, digits)}°`;
 }
@@ -73,6 +95,7 @@ export function angle(deg, digits = 2) {
 /**
  * A time taken, in seconds, as it is shown: one decimal (2.4 s), and "under 0.1 s" below a tenth
  * of a second (so a time that took something is never shown as 0.0 s).
+ * @param {number} value
  */
 export function seconds(value) {
   if (!Number.isFinite(value) || value < 0) return '—';
@@ -80,12 +103,13 @@ export function seconds(value) {
 }
 
 /** A piece of a file name: lower-case letters, digits and dashes (accents dropped). */
-export const fileSlug = (text) => String(text).toLowerCase().normalize('NFKD')
+export const fileSlug = (/** @type {unknown} */ text) => String(text).toLowerCase().normalize('NFKD')
   .replace(/[^a-z0-9]+/g, '-').replace(/^-|-$/g, '').slice(0, 40) || 'sheet';
 
 /**
  * Decimals that tell ticks `incr` apart: as many as the step itself has (0.25 → 2, 2e-4 → 4).
  * uPlot's default formatter keeps three, so a range of 0 to 0.001 read 0, 0, 0, 0.001, 0.001.
+ * @param {number} incr
  */
 export function tickDecimals(incr) {
   if (!(incr > 0)) return 0;
@@ -94,12 +118,20 @@ export function tickDecimals(incr) {
   return k;
 }
 
-/** A tick label on an axis of step `incr`: the decimals the step needs, trailing zeros dropped (0.5, 1, 1.5), real minus sign. */
+/**
+ * A tick label on an axis of step `incr`: the decimals the step needs, trailing zeros dropped (0.5, 1, 1.5), real minus sign.
+ * @param {number} value
+ * @param {number} incr
+ */
 export function tickLabel(value, incr) {
   return local(String(+value.toFixed(tickDecimals(incr)))).replaceAll('-', MINUS);
 }
 
-/** `value` rounded to `digits` decimals as a number (a control's step), as toFixed rounds: 0.0400 → 0.04. */
+/**
+ * `value` rounded to `digits` decimals as a number (a control's step), as toFixed rounds: 0.0400 → 0.04.
+ * @param {number} value
+ * @param {number} digits
+ */
 export function rounded(value, digits) {
   return Number(value.toFixed(digits));
 }
@@ -107,6 +139,8 @@ export function rounded(value, digits) {
 /**
  * A number that a parser reads, not a person (SVG path data and coordinates, CSS lengths,
  * aria-valuenow): fixed decimals with the ASCII hyphen-minus those grammars require.
+ * @param {number} value
+ * @param {number} digits
  */
 export function markupNumber(value, digits) {
   return value.toFixed(digits);

@@ -3,6 +3,10 @@
 const SUBSCRIPT = /([A-Za-zθλv])_([A-Za-z0-9]+)/g;
 const SVG = 'http://www.w3.org/2000/svg';
 
+/**
+ * @param {Element} owner
+ * @param {string} text
+ */
 function subscriptNode(owner, text) {
   if (owner.namespaceURI === SVG) {
     const span = document.createElementNS(SVG, 'tspan');
@@ -16,8 +20,15 @@ function subscriptNode(owner, text) {
   return sub;
 }
 
-/** Sets an element's content to `text` with every x_y written as x with subscript y. */
+/**
+ * Sets an element's content to `text` with every x_y written as x with subscript y.
+ * @template {Element} E
+ * @param {E} element
+ * @param {string} text
+ * @returns {E}
+ */
 export function setSubscripted(element, text) {
+  /** @type {(string | Element)[]} */
   const nodes = [];
   let last = 0;
   for (const match of text.matchAll(SUBSCRIPT)) {

@@ -9,7 +9,7 @@ import { shownDecimal } from './format.js';
 let typeset = null;
 /** @type {Promise<void> | null} */
 let loading = null;
-/** Elements waiting for KaTeX, with the latest TeX asked for each. */
+/** @type {Map<HTMLElement, { tex: string, display: boolean }>} Elements waiting for KaTeX, with the latest TeX asked for each. */
 const waiting = new Map();
 
 /** Resolves once KaTeX is here (a test or an export can wait for typeset formulas). */
@@ -19,17 +19,25 @@ export function texReady() {
     if (typeof requestIdleCallback === 'function') requestIdleCallback(start, { timeout: 300 });
     else setTimeout(start, 0);
   }).then((module) => {
-    typeset = module.typesetTex;
+    const { typesetTex } = /** @type {typeof import('./typesetTex.js')} */ (module);
+    typeset = typesetTex;
     for (const [element, { tex, display }] of waiting) {
       element.removeAttribute('aria-busy');
-      typeset(element, tex, display);
+      typesetTex(element, tex, display);
     }
     waiting.clear();
   });
   return loading;
 }
 
-/** Typesets TeX into an element (display style by default); never throws. */
+/**
+ * Typesets TeX into an element (display style by default); never throws.
+ * @template {HTMLElement} E
+ * @param {E} element
+ * @param {string} tex
+ * @param {{ display?: boolean }} [options]
+ * @returns {E}
+ */
 export function renderTex(element, tex, { display = true } = {}) {
   if (typeset) {
     typeset(element, tex, display);
@@ -42,7 +50,11 @@ export function renderTex(element, tex, { display = true } = {}) {
   return element;
 }
 
-/** A new element holding typeset TeX. */
+/**
+ * A new element holding typeset TeX.
+ * @param {string} tex
+ * @param {{ display?: boolean, tag?: string, className?: string }} [options]
+ */
 export function texElement(tex, { display = true, tag = 'div', className = 'tex' } = {}) {
   const element = document.createElement(tag);
   element.className = className;
@@ -52,6 +64,7 @@ export function texElement(tex, { display = true, tag = 'div', className = 'tex'
 /**
  * A number for TeX with fixed decimals (in TeX's math mode a hyphen is typeset as the minus sign),
  * its decimal separator the page's: a comma as {,}, which TeX sets with no space after it.
+ * @param {number} value
  */
 export function texNumber(value, digits = 4) {
   if (!Number.isFinite(value)) return '\\text{—}';

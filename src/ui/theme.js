@@ -2,6 +2,7 @@
 // Remembered in localStorage; a change fires `fresnel-lab:theme` so plots can redraw.
 const KEY = 'fresnel-lab:theme';
 
+/** @returns {Theme} */
 export function loadTheme() {
   try {
     const saved = JSON.parse(localStorage.getItem(KEY) ?? '{}');
@@ -11,7 +12,13 @@ export function loadTheme() {
   }
 }
 
-/** remember: false for a theme an embed was told to use, which is not the reader's choice. */
+/** @typedef {{ scheme: string, projector: boolean }} Theme  scheme: 'dark' or 'light' */
+
+/**
+ * remember: false for a theme an embed was told to use, which is not the reader's choice.
+ * @param {Theme} theme
+ * @param {{ remember?: boolean }} [options]
+ */
 export function applyTheme(theme, { remember = true } = {}) {
   const root = document.documentElement;
   root.dataset.theme = theme.scheme;
@@ -24,7 +31,10 @@ export function applyTheme(theme, { remember = true } = {}) {
   window.dispatchEvent(new CustomEvent('fresnel-lab:theme', { detail: theme }));
 }
 
-/** A CSS custom property of the page, read at draw time so canvases follow the theme. */
+/**
+ * A CSS custom property of the page, read at draw time so canvases follow the theme.
+ * @param {string} name
+ */
 export function cssVar(name, fallback = '#888') {
   return getComputedStyle(document.documentElement).getPropertyValue(name).trim() || fallback;
 }

@@ -7,8 +7,12 @@ import { patchTree } from './patchTree.js';
  * Typesets TeX into an element. Errors show as red source text, never throw. A formula whose
  * numbers changed but whose shape did not (the live formulas of the panels, with fixed decimals)
  * is built aside and patched into the nodes already shown.
+ * @param {HTMLElement} element
+ * @param {string} tex
+ * @param {boolean} display
  */
 export function typesetTex(element, tex, display) {
+  /** @type {import('katex').KatexOptions} */
   const options = { displayMode: display, throwOnError: false, output: 'htmlAndMathml' };
   if (element.firstElementChild?.classList.contains('katex') || element.firstElementChild?.classList.contains('katex-display')) {
     const fresh = document.createElement(element.tagName);

@@ -21,6 +21,7 @@ export function watchPanelFrame(frame, onMissing, { grace = FRAME_GRACE_MS } = {
     window.removeEventListener('message', onMessage);
     frame.removeEventListener('load', onLoad);
   };
+  /** @param {MessageEvent} event */
   function onMessage(event) {
     if (event.source !== frame.contentWindow || typeof event.data?.type !== 'string' || !event.data.type.startsWith('fresnel-lab:')) return;
     heard = true;
