@@ -28,32 +28,64 @@ import { angle, fixed, precise, tickLabel } from '../ui/format.js';
 
 const t = messages('methods', english);
 
+/** @typedef {import('./scenes.js').Scene} Scene */
+/**
+ * A row of recommend()'s table: a method's error and cost, whether it passes the budget, and
+ * whether it may be recommended at all.
+ * @typedef {MethodError & { methodId: string, label: string, cost: number, costSource: 'measured' | 'static', passes: boolean,
+ *   recommendable: boolean }} Row
+ */
+/** @typedef {import('./methods.js').Method} Method */
+/**
+ * A method's error over a scene: sweepDomain's statistics in linear R, the case holding the
+ * largest, and the display error in 8-bit codes (largest and mean).
+ * @typedef {Readonly<import('./errorMetrics.js').ErrorStats & { caseAtMax: readonly number[] | null, maxCodes: number,
+ *   meanCodes: number }>} MethodError
+ */
+
 export { HALF_STEP_CODES, invisibleThreshold, srgbDecode, srgbEncode };
 
-/** |enc(value) − enc(reference)| in 8-bit codes, the value clamped as a framebuffer does; NaN → ∞. */
+/**
+ * |enc(value) − enc(reference)| in 8-bit codes, the value clamped as a framebuffer does; NaN → ∞.
+ * @param {number} value
+ * @param {number} reference
+ */
 export function displayCodes(value, reference) {
   if (!Number.isFinite(value)) return Infinity;
-  const clamp = (x) => Math.min(1, Math.max(0, x));
+  const clamp = (/** @type {number} */ x) => Math.min(1, Math.max(0, x));
   return 255 * Math.abs(srgbEncode(clamp(value)) - srgbEncode(clamp(reference)));
 }
 
-const errorCache = new WeakMap(); // scene → Map('method|precision' → result); scenes are frozen
+/** @type {WeakMap<Scene, Map<string, MethodError>>} scene → Map('method|precision' → result); scenes are frozen */
+const errorCache = new WeakMap();
 
 /**
  * Error of one method over a scene's domain in a precision (the scene's by default): errorStats
  * in linear R plus maxCodes and meanCodes, the largest and the mean display error in 8-bit codes
  * (one sweep gives both), and caseAtMax. Cached per
  * scene object, method and precision (the methods are deterministic).
+ * @param {Scene} scene
+ * @param {Method} method
+ * @param {unknown} [precision]
+ * @returns {MethodError}
  */
 export function methodError(scene, method, precision = scene.precision) {
   const P = contextFor(precision);
-  if (!errorCache.has(scene)) errorCache.set(scene, new Map());
-  const cache = errorCache.get(scene);
+  const cache = errorCache.get(scene) ?? new Map();
+  errorCache.set(scene, cache);
   const key = `${method.id}|${P.name}`;
-  if (!cache.has(key)) cache.set(key, measure(scene, method, P));
-  return cache.get(key);
+  const known = cache.get(key);
+  if (known) return known;
+  const measured = measure(scene, method, P);
+  cache.set(key, measured);
+  return measured;
 }
 
+/**
+ * @param {Scene} scene
+ * @param {Method} method
+ * @param {import('./rounding.js').Context} P
+ */
 function measure(scene, method, P) {
   return sceneErrors(scene, (cos, ...args) => method.evaluate(P, cos, ...args));
 }
@@ -63,6 +95,9 @@ function measure(scene, method, P) {
  * float64 reference: sweepDomain's statistics in linear R plus maxCodes and meanCodes, the display
  * error in 8-bit codes. A method's errors in an arithmetic and values read back from a GPU
  * (gpuErrors.js) are measured by this one sweep.
+ * @param {Scene} scene
+ * @param {(cos: number, ...args: number[]) => number} evaluate
+ * @returns {MethodError}
  */
 export function sceneErrors(scene, evaluate) {
   const { also, ...linear } = sweepDomain({
@@ -76,7 +111,10 @@ export function sceneErrors(scene, evaluate) {
   return Object.freeze({ ...linear, maxCodes: also.codes.max, meanCodes: also.codes.mean });
 }
 
-/** A row of the table in words: its method, largest |ΔR| and where, and its display error. */
+/**
+ * A row of the table in words: its method, largest |ΔR| and where, and its display error.
+ * @param {Row} row
+ */
 function describe(row) {
   if (row.nanCount > 0) return t('rowNotFinite', { method: row.label, count: row.nanCount, shown: String(row.nanCount) });
   // The largest display error need not lie where |ΔR| is largest (sRGB is steeper for dark values): said apart.
@@ -84,7 +122,10 @@ function describe(row) {
   return row.thetaAtMax === null ? t('rowErrorNoAngle', args) : t('rowError', { ...args, angle: angle(toDegrees(row.thetaAtMax), 1) });
 }
 
-/** A budget in words: the display's own rounding, or a number of codes (as few decimals as it has). */
+/**
+ * A budget in words: the display's own rounding, or a number of codes (as few decimals as it has).
+ * @param {number} codes
+ */
 function budgetText(codes) {
   return codes === HALF_STEP_CODES ? t('budgetHalfStep') : t('budgetCodes', { count: codes, codes: tickLabel(codes, 1e-6) });
 }
@@ -100,29 +141,35 @@ function budgetText(codes) {
  * per candidate, cheapest first: { methodId, label, cost, costSource, max, mean, rms,
  * thetaAtMax (radians), maxCodes, nanCount, outOfRange, passes, recommendable } (a method kept
  * only to show a failure, such as the lecture's literal order, is charted but never recommended).
+ * @param {Scene} scene
+ * @param {Record<string, number> | null} [costs]
+ * @param {{ budgetCodes?: number, precision?: string, errors?: Record<string, MethodError> | null, where?: string | null }} [options]
  */
 export function recommend(scene, costs = {}, {
   budgetCodes = HALF_STEP_CODES, precision = scene.precision, errors = null, where: place = null,
 } = {}) {
+  /** @type {Row[]} */
   const table = methodsOfKind(scene.kind).map((method) => {
-    const measured = Number.isFinite(costs?.[method.id]);
+    const given = costs?.[method.id];
+    const measured = typeof given === 'number' && Number.isFinite(given);
     const error = errors ? errors[method.id] : methodError(scene, method, precision);
     if (!error) throw new RangeError(`no error given for ${method.id}`);
     return {
       methodId: method.id,
       label: method.label,
-      cost: measured ? costs[method.id] : method.cost.static,
+      cost: measured ? given : method.cost.static,
       costSource: measured ? 'measured' : 'static',
       ...error,
       passes: error.nanCount === 0 && error.maxCodes < budgetCodes,
       recommendable: !method.demonstratesFailure,
     };
   });
-  const byAccuracy = (a, b) => a.maxCodes - b.maxCodes || a.max - b.max;
+  const byAccuracy = (/** @type {Row} */ a, /** @type {Row} */ b) => a.maxCodes - b.maxCodes || a.max - b.max;
   table.sort((a, b) => a.cost - b.cost || byAccuracy(a, b));
   const passing = table.filter((row) => row.passes && row.recommendable);
   const budget = budgetText(budgetCodes);
   const where = place ?? t('sceneIn', { scene: scene.label, precision: contextFor(precision).label });
+  /** @type {Row} */
   let choice;
   let reason;
   if (passing.length > 0) {

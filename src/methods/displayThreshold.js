@@ -5,12 +5,18 @@
 /** 8-bit codes of half a step: the display's own rounding, the strictest budget. */
 export const HALF_STEP_CODES = 0.5;
 
-/** sRGB transfer function, linear → encoded (IEC 61966-2-1:1999). */
+/**
+ * sRGB transfer function, linear → encoded (IEC 61966-2-1:1999).
+ * @param {number} x
+ */
 export function srgbEncode(x) {
   return x <= 0.0031308 ? 12.92 * x : 1.055 * x ** (1 / 2.4) - 0.055;
 }
 
-/** Its inverse, encoded → linear. */
+/**
+ * Its inverse, encoded → linear.
+ * @param {number} v
+ */
 export function srgbDecode(v) {
   return v <= 0.04045 ? v / 12.92 : ((v + 0.055) / 1.055) ** 2.4;
 }

@@ -5,12 +5,25 @@
 
 const HALF_PI = Math.PI / 2;
 
-/** |value − reference|: the default metric. */
+/** @typedef {(value: number, reference: number) => number} Metric */
+/**
+ * @typedef {{ count: number, max: number, mean: number, rms: number, thetaAtMax: number | null,
+ *   nanCount: number, outOfRange: number }} ErrorStats
+ */
+
+/**
+ * |value − reference|: the default metric.
+ * @param {number} value
+ * @param {number} reference
+ */
 export function absoluteError(value, reference) {
   return Math.abs(value - reference);
 }
 
-/** cos θ with cos 90° = 0 exactly (Math.cos(π/2) is 6e-17, which would hide the grazing point). */
+/**
+ * cos θ with cos 90° = 0 exactly (Math.cos(π/2) is 6e-17, which would hide the grazing point).
+ * @param {number} theta
+ */
 export function cosTheta(theta) {
   return theta === HALF_PI ? 0 : Math.cos(theta);
 }
@@ -19,10 +32,12 @@ export function cosTheta(theta) {
  * A running accumulator: add(value, reference, theta, weight) per sample, result() at the end.
  * A non-finite value or error counts in nanCount and makes max Infinity (a NaN pixel is as wrong
  * as a pixel can be); mean and RMS are over the finite samples, weighted by weight.
+
  */
 export function createAccumulator(metric = absoluteError) {
   let count = 0;
   let max = 0;
+  /** @type {number | null} */
   let thetaAtMax = null;
   let sum = 0;
   let sumSq = 0;
@@ -30,6 +45,11 @@ export function createAccumulator(metric = absoluteError) {
   let nanCount = 0;
   let outOfRange = 0;
   return {
+    /**
+     * @param {number} value
+     * @param {number} reference
+     * @param {number} theta
+     */
     add(value, reference, theta, weight = 1) {
       count += 1;
       const error = metric(value, reference);
@@ -51,6 +71,7 @@ export function createAccumulator(metric = absoluteError) {
       weightSum += weight;
       return error;
     },
+    /** @returns {ErrorStats} */
     result() {
       return {
         count,
@@ -68,6 +89,8 @@ export function createAccumulator(metric = absoluteError) {
 /**
  * Statistics of samples { value, reference, theta, weight = 1 } (theta in radians).
  * Returns { count, max, mean, rms, thetaAtMax, nanCount, outOfRange }.
+ * @param {Iterable<{ value: number, reference: number, theta: number, weight?: number }>} samples
+ * @param {{ metric?: Metric }} [options]
  */
 export function errorStats(samples, { metric = absoluteError } = {}) {
   const acc = createAccumulator(metric);
@@ -100,7 +123,12 @@ export function thetaSamples(count = 1801, weighting = 'uniform') {
   return { theta, cos, weight };
 }
 
-/** count evenly spaced values from min to max inclusive. */
+/**
+ * count evenly spaced values from min to max inclusive.
+ * @param {number} min
+ * @param {number} max
+ * @param {number} count
+ */
 export function linspace(min, max, count) {
   if (count === 1) return [min];
   return Array.from({ length: count }, (_, i) => (i === count - 1 ? max : min + ((max - min) * i) / (count - 1)));
@@ -110,12 +138,17 @@ export function linspace(min, max, count) {
  * Error over a domain: every case (an argument list after cos, e.g. [nI, nT] or [n, k, f0])
  * at every angle of thetaSamples(thetaCount, weighting), evaluate(cos, ...case) against
  * reference(cos, ...case), each evaluated once. Returns errorStats for `metric` plus caseAtMax
- * (the case holding the max) and, for each extra metric in `also` ({ name: fn }), its stats.
+ * (the case holding the max) and `also`: for each extra metric in `also` ({ name: fn }), its stats.
+ * @param {{ evaluate: (cos: number, ...args: number[]) => number, reference: (cos: number, ...args: number[]) => number,
+ *   cases: readonly (readonly number[])[], thetaCount?: number, weighting?: string, metric?: Metric,
+ *   also?: Record<string, Metric> }} domain
+ * @returns {ErrorStats & { caseAtMax: readonly number[] | null, also: Record<string, ErrorStats> }}
  */
 export function sweepDomain({ evaluate, reference, cases, thetaCount = 1801, weighting = 'uniform', metric, also = {} }) {
   const { theta, cos, weight } = thetaSamples(thetaCount, weighting);
   const acc = createAccumulator(metric);
-  const extras = Object.entries(also).map(([name, fn]) => [name, createAccumulator(fn)]);
+  const extras = Object.entries(also).map(([name, fn]) => /** @type {const} */ ([name, createAccumulator(fn)]));
+  /** @type {readonly number[] | null} */
   let caseAtMax = null;
   let best = -1;
   for (const args of cases) {
@@ -132,7 +165,5 @@ export function sweepDomain({ evaluate, reference, cases, thetaCount = 1801, wei
       }
     }
   }
-  const result = { ...acc.result(), caseAtMax };
-  if (extras.length) result.also = Object.fromEntries(extras.map(([name, extra]) => [name, extra.result()]));
-  return result;
+  return { ...acc.result(), caseAtMax, also: Object.fromEntries(extras.map(([name, extra]) => [name, extra.result()])) };
 }

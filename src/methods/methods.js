@@ -16,26 +16,66 @@ import { contextFor } from './rounding.js';
 
 const t = messages('methods', english);
 
-/** g² = cos²θt in fresnel.glsl's safe order: ((nT − nI)/nT)((nT + nI)/nT) + c², c = nI·ci/nT. */
+/** @typedef {import('./rounding.js').Context} Context */
+/** @typedef {{ static: number, alu: number, sfu: number }} Cost  static: SPIR-V count; alu, sfu: a rough estimate */
+/** @typedef {{ tirAware?: boolean, demonstratesFailure?: boolean, note: string }} MethodProps */
+/** @typedef {(P: Context, ci: number, nI: number, nT: number) => number} DielectricBody */
+/**
+ * cpu: the float64 n, k and F0, for what the GPU gets as a uniform computed on the CPU.
+ * @typedef {(P: Context, c: number, n: number, k: number, f0: number, cpu: { n: number, k: number, f0: number }) => number} ConductorBody
+ */
+/**
+ * A Fresnel method. evaluate(precision, cos, ...case): a dielectric's case is nI, nT; a
+ * conductor's n, k and optionally F0 (from n, k where it is left out).
+ * @typedef {Readonly<MethodProps & {
+ *   id: string, label: string, short: string, kind: 'dielectric' | 'conductor', cost: Cost,
+ *   evaluate: (precision: unknown, cos: number, ...args: number[]) => number,
+ * }>} Method
+ */
+
+/**
+ * g² = cos²θt in fresnel.glsl's safe order: ((nT − nI)/nT)((nT + nI)/nT) + c², c = nI·ci/nT.
+ * @param {Context} P
+ * @param {number} ci
+ * @param {number} nI
+ * @param {number} nT
+ */
 function cosTransmittedSq(P, ci, nI, nT) {
   const c = P.div(P.mul(nI, ci), nT);
   return P.add(P.mul(P.div(P.sub(nT, nI), nT), P.div(P.add(nT, nI), nT)), P.mul(c, c));
 }
 
-/** R0 = ((nT − nI)/(nT + nI))², computed in the shader from the two indices (fresnel.glsl). */
+/**
+ * R0 = ((nT − nI)/(nT + nI))², computed in the shader from the two indices (fresnel.glsl).
+ * @param {Context} P
+ * @param {number} nI
+ * @param {number} nT
+ */
 function normalIncidence(P, nI, nT) {
   const r = P.div(P.sub(nT, nI), P.add(nT, nI));
   return P.mul(r, r);
 }
 
-/** R0 + (1 − R0)·x2·x2·x with x = 1 − c: Schlick by multiplications (Filament pow5). */
+/**
+ * R0 + (1 − R0)·x2·x2·x with x = 1 − c: Schlick by multiplications (Filament pow5).
+ * @param {Context} P
+ * @param {number} c
+ * @param {number} r0
+ */
 function schlickMul(P, c, r0) {
   const x = P.sub(1, c);
   const x2 = P.mul(x, x);
   return P.add(r0, P.mul(P.sub(1, r0), P.mul(P.mul(x2, x2), x)));
 }
 
-/** label: the method's name; short: a shorter one for crowded charts (both in the page's language). */
+/**
+ * label: the method's name; short: a shorter one for crowded charts (both in the page's language).
+ * @param {string} id
+ * @param {Cost} cost
+ * @param {MethodProps} props
+ * @param {DielectricBody} body
+ * @returns {Method}
+ */
 function dielectric(id, cost, props, body) {
   return {
     id,
@@ -52,7 +92,10 @@ function dielectric(id, cost, props, body) {
   };
 }
 
-/** Exact c/g in fresnel.js's structure (safe g², c² − m² = −m²sin²θ), without its double-double. */
+/**
+ * Exact c/g in fresnel.js's structure (safe g², c² − m² = −m²sin²θ), without its double-double.
+ * @type {DielectricBody}
+ */
 function exactCg(P, ci, nI, nT) {
   if (nI === nT) return 0; // matched media: no interface (fresnel.js convention)
   const g2 = cosTransmittedSq(P, ci, nI, nT);
@@ -73,6 +116,7 @@ function exactCg(P, ci, nI, nT) {
  * g² = 0 and R = 1 instead of 0 (computed with this model: for c < 1.05e-8 in float64 and
  * c < 2.44e-4 in float32). Same TIR branch as exact-cg; no
  * matched-media guard (the slide has none).
+ * @type {DielectricBody}
  */
 function exactCgLiteral(P, ci, nI, nT) {
   const m = P.div(nI, nT);
@@ -91,6 +135,7 @@ function exactCgLiteral(P, ci, nI, nT) {
  * rp = (ci − m·ct)/(ci + m·ct). 1 − sin²θt cancels near the critical angle (computed with this model:
  * float16 is up to 0.16 off float64 for glass to air, at the critical angle, θ every 0.001°). Matched media return 0 as in
  * fresnel.js (pbrt-v4 returns 1 at grazing there: sin²θt = 1 takes its TIR branch).
+ * @type {DielectricBody}
  */
 function exactSp(P, ci, nI, nT) {
   if (nI === nT) return 0;
@@ -105,18 +150,27 @@ function exactSp(P, ci, nI, nT) {
   return P.mul(0.5, P.add(P.mul(rs, rs), P.mul(rp, rp)));
 }
 
-/** Schlick 1994 with pow(1 − c, 5): NaN for c > 1 (pow of a negative base, undefined in GLSL ES 3.00 §8.2). No clamp. */
+/**
+ * Schlick 1994 with pow(1 − c, 5): NaN for c > 1 (pow of a negative base, undefined in GLSL ES 3.00 §8.2). No clamp.
+ * @type {DielectricBody}
+ */
 function schlickPow(P, ci, nI, nT) {
   const r0 = normalIncidence(P, nI, nT);
   return P.add(r0, P.mul(P.sub(1, r0), P.pow(P.sub(1, ci), 5)));
 }
 
-/** Schlick by multiplications only (Filament F_Schlick + pow5). No clamp; no TIR. */
+/**
+ * Schlick by multiplications only (Filament F_Schlick + pow5). No clamp; no TIR.
+ * @type {DielectricBody}
+ */
 function schlickMulOnly(P, ci, nI, nT) {
   return schlickMul(P, ci, normalIncidence(P, nI, nT));
 }
 
-/** Schlick on cos θt when nI > nT, 1 past the critical angle (fresnelSchlickTIR; Cycles). */
+/**
+ * Schlick on cos θt when nI > nT, 1 past the critical angle (fresnelSchlickTIR; Cycles).
+ * @type {DielectricBody}
+ */
 function schlickTir(P, ci, nI, nT) {
   const r0 = normalIncidence(P, nI, nT);
   if (nI <= nT) return schlickMul(P, ci, r0);
@@ -127,6 +181,7 @@ function schlickTir(P, ci, nI, nT) {
 /**
  * three.js F_Schlick (common.glsl.js, after Karis 2013): f = exp2((−5.55473c − 6.98316)c),
  * f0·(1 − f) + f90·f with f90 = 1. three.js saturates dotVH before the call, so c is clamped here.
+ * @type {DielectricBody}
  */
 function schlickExp2(P, ci, nI, nT) {
   const c = P.clamp(ci, 0, 1);
@@ -135,6 +190,13 @@ function schlickExp2(P, ci, nI, nT) {
   return P.add(P.mul(r0, P.sub(1, f)), f);
 }
 
+/**
+ * @param {string} id
+ * @param {Cost} cost
+ * @param {MethodProps} props
+ * @param {ConductorBody} body
+ * @returns {Method}
+ */
 function conductor(id, cost, props, body) {
   return {
     id,
@@ -151,7 +213,10 @@ function conductor(id, cost, props, body) {
   };
 }
 
-/** Exact conductor in fresnel.glsl's order (Lagarde 2013 real form, stable a², b²), without its clamps. */
+/**
+ * Exact conductor in fresnel.glsl's order (Lagarde 2013 real form, stable a², b²), without its clamps.
+ * @type {ConductorBody}
+ */
 function conductorExact(P, c, n, k) {
   const sin2 = P.mul(P.sub(1, c), P.add(1, c));
   const t0 = P.sub(P.sub(P.mul(n, n), P.mul(k, k)), sin2);
@@ -189,6 +254,8 @@ const MU_BAR = 1 / 7; // cos 81.8°, where F82 is specified (Hoffman 2019)
  * equations considered harmful" (2019): F(c) = Schlick(c) − b·c(1 − c)^6,
  * b = (Schlick(1/7) − F82)/((1/7)(6/7)^6), F82 = tint·Schlick(1/7). The tint is chosen so F82 is
  * the exact conductor reflectance at cos = 1/7: the fit is then exact at 0°, ~82° and 90°.
+ * @param {number} n
+ * @param {number} k
  */
 export function f82Coefficients(n, k, f0 = conductorNormalIncidence(n, k)) {
   const schlickBar = f0 + (1 - f0) * (1 - MU_BAR) ** 5;
@@ -198,8 +265,14 @@ export function f82Coefficients(n, k, f0 = conductorNormalIncidence(n, k)) {
 
 // b is a per-material constant (a uniform on the GPU), so it is computed once per (n, k, F0) and
 // looked up by number keys: a string key would cost more than the method itself in the CPU timing.
-const f82Cache = new Map(); // n → k → F0 → b
+/** @type {Map<number, Map<number, Map<number, number>>>} n → k → F0 → b */
+const f82Cache = new Map();
 
+/**
+ * @param {number} n
+ * @param {number} k
+ * @param {number} f0
+ */
 function f82B(n, k, f0) {
   let byK = f82Cache.get(n);
   if (!byK) f82Cache.set(n, (byK = new Map()));
@@ -210,7 +283,10 @@ function f82B(n, k, f0) {
   return b;
 }
 
-/** F82-tint per channel: s = clamp(1 − c), clamp(F0 + (1 − F0)s⁵ − b·(c·s⁵·s)) (Cycles clamps, bsdf_util.h). */
+/**
+ * F82-tint per channel: s = clamp(1 − c), clamp(F0 + (1 − F0)s⁵ − b·(c·s⁵·s)) (Cycles clamps, bsdf_util.h).
+ * @type {ConductorBody}
+ */
 function conductorF82(P, c, _n, _k, f0, cpu) {
   const b = P.round(f82B(cpu.n, cpu.k, cpu.f0));
   const s = P.clamp(P.sub(1, c), 0, 1);
@@ -254,14 +330,20 @@ const BY_ID = new Map(METHODS.map((m) => [m.id, m]));
 
 export const METHOD_IDS = Object.freeze(METHODS.map((m) => m.id));
 
-/** The method with this id; throws on an unknown id. */
+/**
+ * The method with this id; throws on an unknown id.
+ * @param {string} id
+ */
 export function methodById(id) {
   const method = BY_ID.get(id);
   if (!method) throw new RangeError(`unknown Fresnel method ${String(id)}`);
   return method;
 }
 
-/** Methods of one kind, 'dielectric' or 'conductor', in table order. */
+/**
+ * Methods of one kind, 'dielectric' or 'conductor', in table order.
+ * @param {string} kind
+ */
 export function methodsOfKind(kind) {
   return METHODS.filter((m) => m.kind === kind);
 }

@@ -12,12 +12,25 @@ import { messages } from '../i18n/messages.js';
 
 const t = messages('methods', english);
 
-const identity = (x) => x;
+/**
+ * An arithmetic context: each operation done in float64 and rounded once to the context's format.
+ * @typedef {Readonly<{
+ *   name: string, label: string, bits: number, round: (x: number) => number,
+ *   add: (a: number, b: number) => number, sub: (a: number, b: number) => number,
+ *   mul: (a: number, b: number) => number, div: (a: number, b: number) => number,
+ *   sqrt: (a: number) => number, pow: (x: number, y: number) => number, exp2: (a: number) => number,
+ *   clamp: (x: number, lo: number, hi: number) => number,
+ * }>} Context
+ */
+
+const identity = (/** @type {number} */ x) => x;
 
 /**
  * GLSL ES 3.00 §8.2: pow(x, y) is undefined for x < 0 and "inherits its precision from
  * exp2(y·log2 x)", which is how GPUs evaluate it: a negative base gives NaN there (log2 of a
  * negative number; Mesa does so, gl-transitions PR #252), unlike Math.pow(−0.1, 5). The log2, the product and the exp2 are each rounded.
+ * @param {(x: number) => number} round
+ * @returns {(x: number, y: number) => number}
  */
 function makePow(round) {
   return (x, y) => {
@@ -26,6 +39,12 @@ function makePow(round) {
   };
 }
 
+/**
+ * @param {string} name
+ * @param {(x: number) => number} round
+ * @param {number} bits
+ * @returns {Context}
+ */
 function makeContext(name, round, bits) {
   return Object.freeze({
     name,
@@ -58,14 +77,18 @@ export const fp16 = makeContext('fp16', f16round, 11);
 export const PRECISIONS = Object.freeze({ fp64, fp32, fp16 });
 export const PRECISION_IDS = Object.freeze(Object.keys(PRECISIONS));
 
-/** The context for 'fp64' | 'fp32' | 'fp16', or the context itself; throws on anything else. */
+/**
+ * The context for 'fp64' | 'fp32' | 'fp16', or the context itself; throws on anything else.
+ * @param {unknown} precision
+ * @returns {Context}
+ */
 export function contextFor(precision) {
-  if (typeof precision === 'object' && precision !== null && PRECISIONS[precision.name] === precision) {
-    return precision;
+  switch (precision) {
+    case fp64: case 'fp64': return fp64;
+    case fp32: case 'fp32': return fp32;
+    case fp16: case 'fp16': return fp16;
+    default: throw new RangeError(`precision must be one of ${PRECISION_IDS.join(', ')}, got ${String(precision)}`);
   }
-  const context = PRECISIONS[precision];
-  if (!context) throw new RangeError(`precision must be one of ${PRECISION_IDS.join(', ')}, got ${String(precision)}`);
-  return context;
 }
 
 export { f16round };

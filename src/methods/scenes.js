@@ -18,9 +18,13 @@ const THETA_COUNT = 1801; // every 0.05°
 
 const PLASTIC = linspace(1.3, 1.7, 9).map((n) => [1, n]); // air → plastic, paint, skin
 
+/**
+ * @param {string[]} ids
+ */
 function metalCases(ids) {
   return ids.flatMap((id) => {
     const metal = metalById(id);
+    if (!metal) throw new RangeError(`no metal ${id} in materials.json`);
     const f0 = metalF0(metal);
     return metal.n.map((n, i) => [n, metal.k[i], f0[i]]); // 650, 550, 450 nm
   });
@@ -28,14 +32,27 @@ function metalCases(ids) {
 
 const t = messages('methods', english);
 
+/**
+ * A scene the advisor judges. cases: the argument lists after cos θ (nI, nT; or n, k, F0).
+ * @typedef {{ id: string, kind: 'dielectric' | 'conductor', precision: 'fp32' | 'fp16', weighting: 'cosine' | 'uniform',
+ *   cases: readonly (readonly number[])[] }} SceneProps
+ */
+/** @typedef {Readonly<SceneProps & { thetaCount: number, label: string, inText: string, note: string }>} Scene */
+
+/**
+ * @param {SceneProps} props
+ * @returns {Scene}
+ */
 function scene(props) {
   const { id } = props;
-  const made = { thetaCount: THETA_COUNT, ...props, cases: Object.freeze(props.cases.map(Object.freeze)) };
-  return Object.freeze(Object.defineProperties(made, {
-    label: { get: () => t(`scene.${id}`), enumerable: true },
-    inText: { get: () => t(`sceneInText.${id}`), enumerable: true },
-    note: { get: () => t(`sceneNote.${id}`), enumerable: true },
-  }));
+  return Object.freeze({
+    thetaCount: THETA_COUNT,
+    ...props,
+    cases: Object.freeze(props.cases.map((c) => Object.freeze(c))),
+    get label() { return t(`scene.${id}`); },
+    get inText() { return t(`sceneInText.${id}`); },
+    get note() { return t(`sceneNote.${id}`); },
+  });
 }
 
 export const SCENES = Object.freeze([
@@ -76,14 +93,21 @@ export const SCENES = Object.freeze([
   }),
 ]);
 
-/** The scene with this id; throws on an unknown id. */
+/**
+ * The scene with this id; throws on an unknown id.
+ * @param {unknown} id
+ */
 export function sceneById(id) {
   const found = SCENES.find((s) => s.id === id);
   if (!found) throw new RangeError(`unknown scene ${String(id)}`);
   return found;
 }
 
-/** The float64 reference for a kind: fresnelExact(cos, nI, nT) or fresnelConductor(cos, n, k). */
+/**
+ * The float64 reference for a kind: fresnelExact(cos, nI, nT) or fresnelConductor(cos, n, k).
+ * @param {string} kind
+ * @returns {(cos: number, ...args: number[]) => number}
+ */
 export function referenceFor(kind) {
   if (kind === 'dielectric') return fresnelExact;
   if (kind === 'conductor') return (cos, n, k) => fresnelConductor(cos, n, k);

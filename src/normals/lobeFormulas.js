@@ -11,12 +11,17 @@
 // same sum is a heuristic fit.
 
 /** s = 2/α² − 2 (the Phong–Beckmann correspondence of Walter et al., "Microfacet Models for
- * Refraction through Rough Surfaces", EGSR 2007). */
+ * Refraction through Rough Surfaces", EGSR 2007).
+ * @param {number} alpha
+ */
 export function exponentFromAlpha(alpha) {
   return 2 / (alpha * alpha) - 2;
 }
 
-/** α = √(2/(s + 2)), the inverse of exponentFromAlpha. */
+/**
+ * α = √(2/(s + 2)), the inverse of exponentFromAlpha.
+ * @param {number} s
+ */
 export function alphaFromExponent(s) {
   return Math.sqrt(2 / (s + 2));
 }
@@ -25,6 +30,7 @@ export function alphaFromExponent(s) {
  * Toksvig's variance from the stored length L = |N_a|: σ² = (1 − L)/L, i.e. L = 1/(1 + σ²)
  * (Toksvig, "Mipmapping Normal Maps", NVIDIA 2004). L ≥ 1 (8-bit noise, 2-channel
  * reconstruction) gives 0; L = 0 gives Infinity.
+ * @param {number} L
  */
 export function toksvigVariance(L) {
   if (L >= 1) return 0;
@@ -32,12 +38,20 @@ export function toksvigVariance(L) {
   return (1 - L) / L;
 }
 
-/** f_t = 1/(1 + sσ²) = L/(L + s(1 − L)) (Hill, "Specular Showdown in the Wild West", 2011). */
+/**
+ * f_t = 1/(1 + sσ²) = L/(L + s(1 − L)) (Hill, "Specular Showdown in the Wild West", 2011).
+ * @param {number} L
+ * @param {number} s
+ */
 export function toksvigFactor(L, s) {
   return 1 / (1 + s * toksvigVariance(L));
 }
 
-/** Blinn-Phong: s' = f_t·s = s/(1 + sσ²) (Toksvig 2004, as quoted by Hill 2011). */
+/**
+ * Blinn-Phong: s' = f_t·s = s/(1 + sσ²) (Toksvig 2004, as quoted by Hill 2011).
+ * @param {number} L
+ * @param {number} s
+ */
 export function toksvigExponent(L, s) {
   return s * toksvigFactor(L, s);
 }
@@ -47,6 +61,8 @@ export function toksvigExponent(L, s) {
  * equal to MJP's s = 2/α² − 2, α' = √(2/(f_t s + 2)) in TheRealMJP/SpecularAA's Mesh.hlsl and to
  * Unreal's ApplyCompositeTexture in TextureCompressorModule.cpp; both checked on a grid in
  * tests/unit/normals-lobes.test.js). It saturates at α' = 1 as σ² → ∞.
+ * @param {number} L
+ * @param {number} alpha
  */
 export function toksvigAlpha(L, alpha) {
   const v = toksvigVariance(L);
@@ -61,6 +77,7 @@ export function toksvigAlpha(L, alpha) {
  * r(p − r²)/(1 − r²) with p = 3 of Banerjee, Dhillon, Ghosh, Sra, "Clustering on the Unit
  * Hypersphere using von Mises-Fisher Distributions", JMLR 6, 2005, as MJP's SpecularAA and
  * Filament's roughness-prefilter use it, with κ = 10000 for r ≥ 1.
+ * @param {number} r
  */
 export function vmfKappa(r) {
   if (r >= 1) return 10000;
@@ -68,7 +85,10 @@ export function vmfKappa(r) {
   return (3 * r - r * r * r) / (1 - r * r);
 }
 
-/** The exact mean length of a vMF lobe, r(κ) = coth κ − 1/κ (Banerjee et al. 2005's A_p(κ) for p = 3). */
+/**
+ * The exact mean length of a vMF lobe, r(κ) = coth κ − 1/κ (Banerjee et al. 2005's A_p(κ) for p = 3).
+ * @param {number} kappa
+ */
 export function vmfMeanLength(kappa) {
   if (kappa === 0) return 0;
   return 1 / Math.tanh(kappa) - 1 / kappa;
@@ -77,6 +97,8 @@ export function vmfMeanLength(kappa) {
 /**
  * α' = √(α² + 2/κ) (MJP SpecularAA commit 0eee4b5, 2018, "2/κ" replacing "1/(2κ)"; Filament
  * roughness-prefilter). κ = 0 (r = 0) gives Infinity: no lobe at all.
+ * @param {number} r
+ * @param {number} alpha
  */
 export function vmfAlpha(r, alpha) {
   const kappa = vmfKappa(r);
@@ -89,6 +111,12 @@ export function vmfAlpha(r, alpha) {
  * 2007; and 1/s ≈ α²/2 for s = 2/α² − 2). Olano & Baker, "LEAN Mapping", I3D 2010, use v₀ = 1/s
  * for Blinn-Phong. Quantized moments can give a negative variance: each is clamped at 0 and |Σxy|
  * at √(ΣxxΣyy) (det Σ ≥ 0, as TheRealMJP/SpecularAA clamps it). Returns { sxx, syy, sxy, major, minor } with the eigenvalues major ≥ minor.
+ * @param {number} bx
+ * @param {number} by
+ * @param {number} mxx
+ * @param {number} myy
+ * @param {number} mxy
+ * @param {number} alpha
  */
 export function leanCovariance(bx, by, mxx, myy, mxy, alpha) {
   const v0 = (alpha * alpha) / 2;
@@ -106,23 +134,44 @@ export function leanCovariance(bx, by, mxx, myy, mxy, alpha) {
 /**
  * LEAN's lobe as roughness: per principal axis α_i = √(2λ_i) (inverting v = α²/2), and the
  * isotropic summary α' = √(λ_major + λ_minor) = √(α² + tr C), equal to CLEAN's (derived).
+ * @param {number} bx
+ * @param {number} by
+ * @param {number} mxx
+ * @param {number} myy
+ * @param {number} mxy
+ * @param {number} alpha
  */
 export function leanAlpha(bx, by, mxx, myy, mxy, alpha) {
   const { major, minor } = leanCovariance(bx, by, mxx, myy, mxy, alpha);
   return { alpha: Math.sqrt(major + minor), alphaMajor: Math.sqrt(2 * major), alphaMinor: Math.sqrt(2 * minor) };
 }
 
-/** CLEAN's variance σ² = M − (Bx² + By²), summed over both axes, clamped at 0 (Baker, GDC 2011). */
+/**
+ * CLEAN's variance σ² = M − (Bx² + By²), summed over both axes, clamped at 0 (Baker, GDC 2011).
+ * @param {number} bx
+ * @param {number} by
+ * @param {number} m
+ */
 export function cleanVariance(bx, by, m) {
   return Math.max(0, m - bx * bx - by * by);
 }
 
-/** CLEAN as roughness: per-axis v = σ²/2, so α'² = α² + 2v = α² + σ². */
+/**
+ * CLEAN as roughness: per-axis v = σ²/2, so α'² = α² + 2v = α² + σ².
+ * @param {number} bx
+ * @param {number} by
+ * @param {number} m
+ * @param {number} alpha
+ */
 export function cleanAlpha(bx, by, m, alpha) {
   return Math.sqrt(alpha * alpha + cleanVariance(bx, by, m));
 }
 
-/** z of a 2-channel normal: √(max(0, 1 − x² − y²)) (BC5/"XY" normals). */
+/**
+ * z of a 2-channel normal: √(max(0, 1 − x² − y²)) (BC5/"XY" normals).
+ * @param {number} x
+ * @param {number} y
+ */
 export function reconstructZ(x, y) {
   return Math.sqrt(Math.max(0, 1 - x * x - y * y));
 }

@@ -5,7 +5,12 @@
 
 const SPLITTER = 134217729; // 2^27 + 1
 
-/** Exact sum: returns [s, e] with s = fl(a + b) and a + b = s + e. */
+/**
+ * Exact sum: returns [s, e] with s = fl(a + b) and a + b = s + e.
+ * @param {number} a
+ * @param {number} b
+ * @returns {[number, number]}
+ */
 export function twoSum(a, b) {
   const s = a + b;
   const bb = s - a;
@@ -13,13 +18,21 @@ export function twoSum(a, b) {
   return [s, e];
 }
 
+/**
+ * @param {number} a
+ */
 function split(a) {
   const t = SPLITTER * a;
   const hi = t - (t - a);
   return [hi, a - hi];
 }
 
-/** Exact product: returns [p, e] with p = fl(a * b) and a * b = p + e. */
+/**
+ * Exact product: returns [p, e] with p = fl(a * b) and a * b = p + e.
+ * @param {number} a
+ * @param {number} b
+ * @returns {[number, number]}
+ */
 export function twoProduct(a, b) {
   const p = a * b;
   const [ah, al] = split(a);
@@ -31,6 +44,7 @@ export function twoProduct(a, b) {
 /**
  * Sum of exact terms given as [hi, lo] pairs, accumulated in double-double and rounded once.
  * Cancellation between the terms costs no digits beyond about 2^-100 of the largest term.
+ * @param {readonly (readonly [number, number])[]} pairs
  */
 export function sumPairs(pairs) {
   let hi = 0;

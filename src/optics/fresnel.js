@@ -16,6 +16,9 @@ import { checkCos, checkIndex, checkExtinction, unit } from './validate.js';
  * kept however small it is (the lecture's 1 + c² − m² loses it near grazing), and the numerator keeps full relative
  * precision even when it nearly cancels (just inside the critical angle).
  * Negative means total internal reflection. ci must already be checked and clamped.
+ * @param {number} ci
+ * @param {number} nI
+ * @param {number} nT
  */
 export function cosTransmittedSq(ci, nI, nT) {
   const [p, pe] = twoProduct(nI, ci); // nI·ci = p + pe exactly
@@ -31,6 +34,9 @@ export function cosTransmittedSq(ci, nI, nT) {
 /**
  * Snell's law: cos θt for light going from nI into nT, or null under total internal reflection.
  * Source: Hecht, Optics (5th ed.), §4.4; g in the lecture's formula is this value.
+ * @param {number} cosThetaI
+ * @param {number} nI
+ * @param {number} nT
  */
 export function snellCosT(cosThetaI, nI, nT) {
   const ci = checkCos(cosThetaI);
@@ -49,6 +55,9 @@ export function snellCosT(cosThetaI, nI, nT) {
  * index part nT² − nI², which is tiny and accurate for nearly matched indices, so c² is not lost
  * and that failure is gone. Matched indices return 0 before g² is needed.
  * g² ≤ 0 is total internal reflection: R = 1.
+ * @param {number} cosThetaI
+ * @param {number} nI
+ * @param {number} nT
  */
 export function fresnelExact(cosThetaI, nI, nT) {
   const ci = checkCos(cosThetaI);
@@ -73,6 +82,9 @@ export function fresnelExact(cosThetaI, nI, nT) {
  * s- and p-polarized power reflectances (Fresnel equations; Hecht, Optics §4.6.2):
  * rs = (nI cosθi − nT cosθt)/(nI cosθi + nT cosθt), rp = (nT cosθi − nI cosθt)/(nT cosθi + nI cosθt).
  * Their mean is fresnelExact. Total internal reflection: both 1.
+ * @param {number} cosThetaI
+ * @param {number} nI
+ * @param {number} nT
  */
 export function fresnelPolarized(cosThetaI, nI, nT) {
   const ci = checkCos(cosThetaI);
@@ -91,6 +103,9 @@ export function fresnelPolarized(cosThetaI, nI, nT) {
  * Power transmittances per polarization, T = (nT cosθt)/(nI cosθi)·|t|², written without the
  * division by cosθi so grazing incidence gives 0 rather than 0/0 (Hecht, Optics §4.6.3).
  * Rs + Ts = 1 and Rp + Tp = 1; `unpolarized` is their mean.
+ * @param {number} cosThetaI
+ * @param {number} nI
+ * @param {number} nT
  */
 export function fresnelTransmittance(cosThetaI, nI, nT) {
   const ci = checkCos(cosThetaI);
@@ -108,7 +123,11 @@ export function fresnelTransmittance(cosThetaI, nI, nT) {
   return { s, p, unpolarized: 0.5 * (s + p) };
 }
 
-/** R0 = R(0°) = ((nT − nI)/(nT + nI))², the same for both directions (lecture, R(0°) derivation). */
+/**
+ * R0 = R(0°) = ((nT − nI)/(nT + nI))², the same for both directions (lecture, R(0°) derivation).
+ * @param {number} nI
+ * @param {number} nT
+ */
 export function normalIncidence(nI, nT) {
   checkIndex(nI, 'nI');
   checkIndex(nT, 'nT');
@@ -116,7 +135,11 @@ export function normalIncidence(nI, nT) {
   return r * r;
 }
 
-/** Schlick's polynomial on a given cosine; (1 − c)^5 by multiplications, as GLSL does it. */
+/**
+ * Schlick's polynomial on a given cosine; (1 − c)^5 by multiplications, as GLSL does it.
+ * @param {number} c
+ * @param {number} r0
+ */
 function schlickOn(c, r0) {
   const x = 1 - c;
   const x2 = x * x;
@@ -127,6 +150,9 @@ function schlickOn(c, r0) {
  * Schlick's approximation as on the slide: R0 + (1 − R0)(1 − cosθi)^5
  * (Schlick, "An Inexpensive BRDF Model for Physically-based Rendering", CGF 13(3), 1994).
  * It has no total internal reflection: from glass to air it is wrong by up to 0.96.
+ * @param {number} cosThetaI
+ * @param {number} nI
+ * @param {number} nT
  */
 export function fresnelSchlick(cosThetaI, nI, nT) {
   const ci = checkCos(cosThetaI);
@@ -137,6 +163,9 @@ export function fresnelSchlick(cosThetaI, nI, nT) {
  * Schlick on the larger angle: cos θt when nI > nT, and 1 past the critical angle
  * (R(θi, inside) = R(θt, outside); Shirley, "Bug in my Schlick code", 2016; Cycles
  * generalized_schlick_fresnel). The same as fresnelSchlick when nI ≤ nT.
+ * @param {number} cosThetaI
+ * @param {number} nI
+ * @param {number} nT
  */
 export function fresnelSchlickTIR(cosThetaI, nI, nT) {
   const ci = checkCos(cosThetaI);
@@ -149,6 +178,9 @@ export function fresnelSchlickTIR(cosThetaI, nI, nT) {
 /**
  * The spherical-Gaussian Schlick form three.js uses in F_Schlick (bsdfs.glsl.js):
  * R0 + (1 − R0)·2^((−5.55473c − 6.98316)c) (Karis, "Real Shading in Unreal Engine 4", 2013).
+ * @param {number} cosThetaI
+ * @param {number} nI
+ * @param {number} nT
  */
 export function fresnelSchlickExp2(cosThetaI, nI, nT) {
   const c = checkCos(cosThetaI);
@@ -156,14 +188,22 @@ export function fresnelSchlickExp2(cosThetaI, nI, nT) {
   return unit(r0 + (1 - r0) * Math.pow(2, (-5.55473 * c - 6.98316) * c));
 }
 
-/** Critical angle asin(nT/nI) in radians when nI > nT; null when there is none. */
+/**
+ * Critical angle asin(nT/nI) in radians when nI > nT; null when there is none.
+ * @param {number} nI
+ * @param {number} nT
+ */
 export function criticalAngle(nI, nT) {
   checkIndex(nI, 'nI');
   checkIndex(nT, 'nT');
   return nI > nT ? Math.asin(nT / nI) : null;
 }
 
-/** Brewster angle atan(nT/nI) in radians, where Rp = 0 (Hecht, Optics §8.6.1). */
+/**
+ * Brewster angle atan(nT/nI) in radians, where Rp = 0 (Hecht, Optics §8.6.1).
+ * @param {number} nI
+ * @param {number} nT
+ */
 export function brewsterAngle(nI, nT) {
   checkIndex(nI, 'nI');
   checkIndex(nT, 'nT');
@@ -175,6 +215,9 @@ export function brewsterAngle(nI, nT) {
  * Real-arithmetic form (Lagarde, "Memo on Fresnel equations", 2013; pbrt-v3 FrConductor), with
  * a² + b² = |η² − sin²θ| and ab = nk, and each of a², b² taken from whichever formula does not
  * cancel. Rs = ((a − c)² + b²)/((a + c)² + b²), Rp = Rs((ac − s²)² + (bc)²)/((ac + s²)² + (bc)²).
+ * @param {number} cosThetaI
+ * @param {number} n
+ * @param {number} k
  */
 export function fresnelConductorPolarized(cosThetaI, n, k) {
   const c = checkCos(cosThetaI);
@@ -207,13 +250,22 @@ export function fresnelConductorPolarized(cosThetaI, n, k) {
   return { s: unit(rs), p: unit(Number.isFinite(rp) ? rp : rs) };
 }
 
-/** Exact unpolarized reflectance from air into a conductor with complex index n + ik. */
+/**
+ * Exact unpolarized reflectance from air into a conductor with complex index n + ik.
+ * @param {number} cosThetaI
+ * @param {number} n
+ * @param {number} k
+ */
 export function fresnelConductor(cosThetaI, n, k) {
   const { s, p } = fresnelConductorPolarized(cosThetaI, n, k);
   return unit(0.5 * (s + p));
 }
 
-/** Conductor R0 = ((n − 1)² + k²)/((n + 1)² + k²). */
+/**
+ * Conductor R0 = ((n − 1)² + k²)/((n + 1)² + k²).
+ * @param {number} n
+ * @param {number} k
+ */
 export function conductorNormalIncidence(n, k) {
   checkIndex(n, 'n');
   checkExtinction(k, 'k');

@@ -5,7 +5,12 @@
 
 const INVERSE_PHI = (Math.sqrt(5) - 1) / 2;
 
-/** θ in [a, b] where f is largest, f taken to be unimodal there, to within `tolerance`. */
+/**
+ * θ in [a, b] where f is largest, f taken to be unimodal there, to within `tolerance`.
+ * @param {(theta: number) => number} f
+ * @param {number} a
+ * @param {number} b
+ */
 export function goldenMax(f, a, b, tolerance = 1e-10) {
   let lo = a;
   let hi = b;
@@ -34,6 +39,9 @@ export function goldenMax(f, a, b, tolerance = 1e-10) {
 /**
  * The largest of `values` (sampled at `theta`, ascending) refined with f, the function they
  * sample: { value, theta }. The grid's own sample stands where refining finds nothing larger.
+ * @param {readonly number[]} theta
+ * @param {ArrayLike<number>} values
+ * @param {(theta: number) => number} f
  */
 export function refinedMax(theta, values, f) {
   let at = 0;

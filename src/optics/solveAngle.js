@@ -3,7 +3,11 @@
 // off by up to half its step).
 import { refinedMax } from './refinedMax.js';
 
-/** θ in degrees in [lo, hi] where f(θ) = level, by bisection; f must cross the level once there. */
+/**
+ * θ in degrees in [lo, hi] where f(θ) = level, by bisection; f must cross the level once there.
+ * @param {(thetaDeg: number) => number} f
+ * @param {number} level
+ */
 export function angleWhere(f, level, lo = 0, hi = 90) {
   let a = lo;
   let b = hi;
@@ -17,7 +21,10 @@ export function angleWhere(f, level, lo = 0, hi = 90) {
   return (a + b) / 2;
 }
 
-/** θ in degrees in [lo, hi] where f is largest: the best of a 0.1° grid, refined (refinedMax.js). */
+/**
+ * θ in degrees in [lo, hi] where f is largest: the best of a 0.1° grid, refined (refinedMax.js).
+ * @param {(thetaDeg: number) => number} f
+ */
 export function angleOfMax(f, lo = 0, hi = 90) {
   const steps = Math.round((hi - lo) * 10);
   const theta = Array.from({ length: steps + 1 }, (_, i) => lo + ((hi - lo) * i) / steps);

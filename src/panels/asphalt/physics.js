@@ -21,13 +21,23 @@ export const SCENE = {
 const SUN_Y = luminance(SCENE.sun);
 const AMBIENT_Y = luminance(SCENE.ambient);
 
-const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-const normalize = (v) => {
+/** @typedef {readonly number[]} Vec3  x, y (up), z (towards the sun) */
+/** @typedef {{ sunEl: number, roughness: number, nT: number, fresnel: boolean }} RoadValues  the panel's values shadeRoad reads */
+/**
+ * @typedef {{ thetaD: number, F: number, lobe: number, specular: number, diffuse: number, distance: number,
+ *   below: number }} Shade  what shadeRoad returns
+ */
+
+const dot = (/** @type {Vec3} */ a, /** @type {Vec3} */ b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+const normalize = (/** @type {Vec3} */ v) => {
   const l = Math.hypot(v[0], v[1], v[2]);
   return [v[0] / l, v[1] / l, v[2] / l];
 };
 
-/** The camera looks towards +z, pitched down by its elevation; the sun is ahead of it. */
+/**
+ * The camera looks towards +z, pitched down by its elevation; the sun is ahead of it.
+ * @param {number} camElDeg
+ */
 export function cameraBasis(camElDeg) {
   const e = camElDeg * DEG;
   const forward = [0, -Math.sin(e), Math.cos(e)];
@@ -35,13 +45,22 @@ export function cameraBasis(camElDeg) {
   return { forward, up, right: [-1, 0, 0] }; // right = forward × up
 }
 
-/** Unit vector towards the sun at this elevation, straight ahead of the camera. */
+/**
+ * Unit vector towards the sun at this elevation, straight ahead of the camera.
+ * @param {number} sunElDeg
+ */
 export function sunDirection(sunElDeg) {
   const e = sunElDeg * DEG;
   return [0, Math.sin(e), Math.cos(e)];
 }
 
-/** The view ray through normalized device coordinates (−1..1 both ways, y up). */
+/**
+ * The view ray through normalized device coordinates (−1..1 both ways, y up).
+ * @param {number} camElDeg
+ * @param {number} ndcX
+ * @param {number} ndcY
+ * @param {number} aspect
+ */
 export function pixelRay(camElDeg, ndcX, ndcY, aspect) {
   const { forward, up, right } = cameraBasis(camElDeg);
   const t = Math.tan((SCENE.fovY / 2) * DEG);
@@ -59,6 +78,9 @@ export function pixelRay(camElDeg, ndcX, ndcY, aspect) {
  * `below` is how far below the horizon the spot is seen, in degrees: on a flat road under a far sun
  * and sky, what a spot sends towards the eye depends on that direction alone, not on the camera.
  * Returns null when the ray does not meet the road.
+ * @param {Vec3} dir
+ * @param {RoadValues} values
+ * @returns {Shade | null}
  */
 export function shadeRoad(dir, { sunEl, roughness, nT, fresnel }) {
   if (!(dir[1] < 0)) return null;
@@ -76,7 +98,10 @@ export function shadeRoad(dir, { sunEl, roughness, nT, fresnel }) {
   return { thetaD: Math.acos(cosD) / DEG, F, lobe, specular, diffuse, distance, below };
 }
 
-/** The tone curve of the shader, 1 − exp(−exposure·x), on a luminance. */
+/**
+ * The tone curve of the shader, 1 − exp(−exposure·x), on a luminance.
+ * @param {number} x
+ */
 export function displayed(x) {
   return 1 - Math.exp(-SCENE.exposure * x);
 }
@@ -85,12 +110,14 @@ export function displayed(x) {
  * The brightest highlight in view: a scan of the central column (the sun is straight ahead, so by
  * symmetry the peak lies on it), its brightest row refined between its grid neighbours
  * (refinedMax.js) so the numbers shown of it hold, and the view centre's shading.
+ * @param {RoadValues & { camEl: number }} values
+ * @param {number} aspect
  */
 export function highlightInView(values, aspect, rows = 241) {
   const column = [];
   const ys = [];
   const speculars = [];
-  const at = (ndcY) => shadeRoad(pixelRay(values.camEl, 0, ndcY, aspect), values);
+  const at = (/** @type {number} */ ndcY) => shadeRoad(pixelRay(values.camEl, 0, ndcY, aspect), values);
   for (let i = 0; i < rows; i += 1) {
     const ndcY = -1 + (2 * i) / (rows - 1);
     const hit = at(ndcY);
@@ -99,24 +126,43 @@ export function highlightInView(values, aspect, rows = 241) {
     if (hit) column.push({ ...hit, ndcY });
   }
   const best = refinedMax(ys, speculars, (y) => at(y)?.specular ?? 0);
-  const peak = { ...at(best.theta), ndcY: best.theta };
+  const peak = at(best.theta);
+  // Every camera elevation of the schema (2° to 90° down) sees the road in the lower half of the view.
+  if (!peak) throw new RangeError(`no road in view from ${values.camEl}° down`);
   const centre = at(0);
-  return { peak, centre, column };
+  return { peak: { ...peak, ndcY: best.theta }, centre, column };
 }
 
 /**
  * The radiance of a matte (Lambertian) road that reflected the same share `albedo` of the sunlight,
  * albedo·E·cosθl/π, the same from every direction: what the specular layer's brightest spot is set
  * against to say whether its light is concentrated.
+ * @param {number} albedo
+ * @param {number} sunEl
  */
 export function lambertianEquivalent(albedo, sunEl) {
   return (albedo * SUN_Y * Math.max(0, Math.sin(sunEl * DEG))) / Math.PI;
 }
 
-/** The line of sight `belowDeg` below the horizon, straight towards the sun (the camera's +z). */
+/**
+ * The line of sight `belowDeg` below the horizon, straight towards the sun (the camera's +z).
+ * @param {number} belowDeg
+ */
 export function sightBelow(belowDeg) {
   const b = belowDeg * DEG;
   return [0, -Math.sin(b), Math.cos(b)];
+}
+
+/**
+ * The shading of the road seen `belowDeg` (in (0°, 180°)) below the horizon, which a sight line
+ * that points down always meets.
+ * @param {number} belowDeg
+ * @param {RoadValues} values
+ */
+function shadeBelow(belowDeg, values) {
+  const hit = shadeRoad(sightBelow(belowDeg), values);
+  if (!hit) throw new RangeError(`a sight line ${belowDeg}° below the horizon misses the road`);
+  return hit;
 }
 
 /** How far below the horizon sheenGrowth's reference spot is seen: the road straight below. */
@@ -128,10 +174,12 @@ export const STRAIGHT_DOWN = 90;
  * the same everywhere): the lobe D·G2/(4 cosθl cosθv) and F(θd). total = lobe × fresnel; overall
  * is the ratio of the whole luminance, the diffuse road counted too. Both spots are named by the
  * direction they are seen in, so the factors do not depend on the field of view.
+ * @param {RoadValues & { camEl: number }} values
+ * @param {number} aspect
  */
 export function sheenGrowth(values, aspect) {
   const now = highlightInView(values, aspect).peak;
-  const below = shadeRoad(sightBelow(STRAIGHT_DOWN), values);
+  const below = shadeBelow(STRAIGHT_DOWN, values);
   const lobe = now.lobe / below.lobe;
   const fresnel = now.F / below.F;
   const overall = (now.specular + now.diffuse) / (below.specular + below.diffuse);
@@ -142,16 +190,22 @@ export function sheenGrowth(values, aspect) {
  * The share of a sun-ward spot's light towards the eye that is specular, for the spot seen
  * `belowDeg` below the horizon: specular / (specular + diffuse) of its luminance; 1/2 where the
  * two are equal. A function of the direction alone (shadeRoad).
+ * @param {RoadValues} values
+ * @returns {(belowDeg: number) => number}
  */
 export function specularShareBelow(values) {
   return (belowDeg) => {
     // At the horizon itself the sight line misses the road; a hair below it gives the limit.
-    const hit = shadeRoad(sightBelow(Math.max(belowDeg, 1e-6)), values);
+    const hit = shadeBelow(Math.max(belowDeg, 1e-6), values);
     return hit.specular / (hit.specular + hit.diffuse);
   };
 }
 
-/** u in [0, 1) where the increasing g(u) crosses `level`, by bisection. */
+/**
+ * u in [0, 1) where the increasing g(u) crosses `level`, by bisection.
+ * @param {(u: number) => number} g
+ * @param {number} level
+ */
 function crossing(g, level) {
   let lo = 0;
   let hi = 1;
@@ -174,19 +228,20 @@ function crossing(g, level) {
  * The φ integral runs over its range alone, and the part-range stretch of u, where φmax has square-
  * root ends, is sampled through u = a + (b − a)(1 − cos πt)/2, which smooths them: midpoint sums then
  * converge fast (a unit test holds the result against a far finer grid).
+ * @param {RoadValues} values
  */
 export function specularAlbedo({ sunEl, roughness, nT, fresnel }, n = 64) {
   const l = sunDirection(sunEl);
   const alpha = roughness * roughness;
   const a2 = alpha * alpha;
   const r0 = normalIncidence(1, nT);
-  const cosHAt = (u) => 1 / Math.sqrt(1 + (a2 * u) / (1 - u));
-  const edgeAt = (u) => {
+  const cosHAt = (/** @type {number} */ u) => 1 / Math.sqrt(1 + (a2 * u) / (1 - u));
+  const edgeAt = (/** @type {number} */ u) => {
     const c = cosHAt(u);
     return (l[1] * (1 - 2 * c * c)) / (2 * l[2] * Math.sqrt((1 - c) * (1 + c)) * c);
   };
   // ∫ over |φ| < φmax of the integrand at u, divided by 2π.
-  const ring = (u) => {
+  const ring = (/** @type {number} */ u) => {
     const cosH = cosHAt(u);
     const sinH = Math.sqrt((1 - cosH) * (1 + cosH));
     const edge = edgeAt(u);
