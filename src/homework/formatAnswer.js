@@ -4,17 +4,27 @@
 import { fixed } from '../ui/format.js';
 import { number } from './questionParts.js';
 
-/** Decimals for a value checked at this tolerance (angles: at least two). */
+/** @typedef {{ tolerance: number, unit: string | null }} Checked  a question with a value, as it is checked */
+
+/**
+ * Decimals for a value checked at this tolerance (angles: at least two).
+ * @param {Checked} question
+ */
 export function decimalsFor(question) {
   const digits = Math.max(1, Math.ceil(-Math.log10(2 * question.tolerance) - 1e-9) + 1);
   return question.unit === 'deg' ? Math.max(2, digits) : digits;
 }
 
+/**
+ * @param {Checked} question
+ * @param {number} value
+ */
 export function formatValue(question, value) {
   const text = fixed(value, decimalsFor(question));
   return question.unit === 'deg' ? `${text}°` : text;
 }
 
+/** @param {Checked} question */
 export function formatTolerance(question) {
   return question.unit === 'deg' ? `${number(question.tolerance)}°` : number(question.tolerance);
 }

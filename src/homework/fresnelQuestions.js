@@ -13,7 +13,7 @@ import { dielectricById, metalById, metals } from '../optics/materials.js';
 import { methodError } from '../methods/advisor.js';
 import { methodById } from '../methods/methods.js';
 import { sceneById } from '../methods/scenes.js';
-import { ANGLES, INDICES, fixed, number, numberList } from './questionParts.js';
+import { ANGLES, INDICES, degreesOf, fixed, number, numberList, question } from './questionParts.js';
 import english from 'virtual:messages/en/questions';
 import { messages } from '../i18n/messages.js';
 
@@ -21,17 +21,29 @@ import { messages } from '../i18n/messages.js';
 // question's id, then prompt, option.<id>, why.<id>, curve); `graded` is for engineers.
 const t = messages('questions', english);
 
+/**
+ * The dielectric or metal of materials.json with this id: the questions name only materials it has.
+ * @param {string} id
+ */
+const dielectric = (id) => dielectricById(id) ?? unknownMaterial(id);
+/** @param {string} id */
+const metal = (id) => metalById(id) ?? unknownMaterial(id);
+/** @param {string} id @returns {never} */
+const unknownMaterial = (id) => { throw new RangeError(`No material ${id} in materials.json.`); };
+
 /** A hair above 1, as interpolated normals give; it survives rounding to float32 (1 + 2⁻²³). */
 const COS_ABOVE_ONE = 1.0000001;
 /**
  * Schlick's (pow form) largest display error over the plastic scene, in 8-bit codes: the best of a
  * 0.05° grid over each of the scene's indices, refined around it (refinedMax.js). Computed once.
  */
+/** @type {{ codes: number, theta: number, nI: number, nT: number } | null} */
 let worstCodes = null;
 function schlickWorstCodes() {
   if (worstCodes) return worstCodes;
   const scene = sceneById('plastic');
   const method = methodById('schlick-pow');
+  /** @type {(t: number, nI: number, nT: number) => number} */
   const codesAt = (t, nI, nT) => displayCodes(method.evaluate(scene.precision, cosDeg(t), nI, nT), fresnelExact(cosDeg(t), nI, nT));
   let best = { codes: -1, theta: 0, nI: 1, nT: 1 };
   for (const [nI, nT] of scene.cases) {
@@ -56,36 +68,36 @@ function worstShown() {
 const RIM_INDICES = [1.33, 1.5, 2];
 
 export const FRESNEL_QUESTIONS = [
-  {
+  question({
     id: 'r0-materials', panel: 'refractive-index', kind: 'choice',
     graded: 'R(0°) = ((n_t − n_i)/(n_t + n_i))² for water, glass and diamond from air: it grows with the index and is not 0.04 '
       + 'for all. The panel\'s material table lists R0 per material.',
     params: () => ({}),
     prompt: () => t('r0-materials.prompt'),
     options: () => {
-      const r0 = (id) => fixed(normalIncidence(1, dielectricById(id).n), 3);
+      const r0 = (/** @type {string} */ id) => fixed(normalIncidence(1, dielectric(id).n), 3);
       return [
         {
           id: 'all-004', text: () => t('r0-materials.option.all-004'),
-          holds: () => ['water', 'glass', 'diamond'].every((id) => Math.abs(normalIncidence(1, dielectricById(id).n) - 0.04) < 0.005),
+          holds: () => ['water', 'glass', 'diamond'].every((id) => Math.abs(normalIncidence(1, dielectric(id).n) - 0.04) < 0.005),
           why: () => t('r0-materials.why.all-004', { r0: fixed(normalIncidence(1, 1.5), 3), water: r0('water'), diamond: r0('diamond') }),
         },
         {
           id: 'depends-on-n', text: () => t('r0-materials.option.depends-on-n'),
-          holds: () => normalIncidence(1, dielectricById('water').n) < normalIncidence(1, dielectricById('glass').n)
-            && normalIncidence(1, dielectricById('glass').n) < normalIncidence(1, dielectricById('diamond').n),
+          holds: () => normalIncidence(1, dielectric('water').n) < normalIncidence(1, dielectric('glass').n)
+            && normalIncidence(1, dielectric('glass').n) < normalIncidence(1, dielectric('diamond').n),
           why: () => t('r0-materials.why.depends-on-n', { water: r0('water'), glass: r0('glass'), diamond: r0('diamond') }),
         },
         {
           id: 'none-head-on', text: () => t('r0-materials.option.none-head-on'),
-          holds: () => normalIncidence(1, dielectricById('glass').n) === 0,
+          holds: () => normalIncidence(1, dielectric('glass').n) === 0,
           why: () => t('r0-materials.why.none-head-on', { glass: r0('glass') }),
         },
       ];
     },
     state: () => ({}),
-  },
-  {
+  }),
+  question({
     id: 'exact-rp-rs', panel: 'polarization', kind: 'numeric', unit: 'fraction', tolerance: 0.0005,
     graded: 'Rs − Rp of the s and p Fresnel equations from air into the given index at the given angle; the panel plots and '
       + 'reads out both.',
@@ -96,8 +108,8 @@ export const FRESNEL_QUESTIONS = [
       return s - rp;
     },
     state: (p) => ({ nI: 1, nT: p.nT }),
-  },
-  {
+  }),
+  question({
     id: 'brewster-predict', panel: 'polarization', kind: 'predict', unit: 'deg', tolerance: 2,
     graded: 'Brewster\'s angle atan(n_t/n_i), where Rp = 0; the panel\'s plot marks Rp.',
     params: (rng) => ({ nT: rng.pick(INDICES) }),
@@ -105,16 +117,16 @@ export const FRESNEL_QUESTIONS = [
     expected: (p) => deg(brewsterAngle(1, p.nT)),
     curve: (p) => ({ label: t('brewster-predict.curve'), f: (t) => fresnelPolarized(cosDeg(t), 1, p.nT).p }),
     state: (p) => ({ nI: 1, nT: p.nT }),
-  },
-  {
+  }),
+  question({
     id: 'brewster-exact', panel: 'polarization', kind: 'numeric', unit: 'deg', tolerance: 0.05,
     graded: 'Brewster\'s angle atan(n_t/n_i) for the given pair; the panel marks and states it.',
     params: (rng) => ({ nI: rng.pick([1, 1.33]), nT: rng.pick([1.5, 1.6, 1.75, 2.42]) }),
     prompt: (p) => t('brewster-exact.prompt', { nI: number(p.nI), nT: number(p.nT) }),
     expected: (p) => deg(brewsterAngle(p.nI, p.nT)),
     state: (p) => ({ nI: p.nI, nT: p.nT }),
-  },
-  {
+  }),
+  question({
     id: 'exact-r', panel: 'exact-fresnel', kind: 'numeric', unit: 'fraction', tolerance: 0.0005,
     graded: 'The exact unpolarized reflectance (Rs + Rp)/2 at the given angle and index; the panel evaluates the lecture\'s '
       + 'formula term by term.',
@@ -122,15 +134,16 @@ export const FRESNEL_QUESTIONS = [
     prompt: (p) => t('exact-r.prompt', { theta: number(p.theta), nT: number(p.nT) }),
     expected: (p) => fresnelExact(cosDeg(p.theta), 1, p.nT),
     state: (p) => ({ nI: 1, nT: p.nT }),
-  },
-  {
+  }),
+  question({
     id: 'matched-grazing', panel: 'exact-fresnel', kind: 'choice',
     graded: 'R for equal indices on both sides, at 89.9°: 0, since no interface reflects; the panel\'s exact formula gives it at '
       + 'any angle.',
     params: (rng) => ({ n: rng.pick([1.33, 1.5, 2.42]) }),
     prompt: (p) => t('matched-grazing.prompt', { n: number(p.n) }),
     options: () => {
-      const r = (p) => fresnelExact(cosDeg(89.9), p.n, p.n);
+      const r = (/** @type {{ n: number }} */ p) => fresnelExact(cosDeg(89.9), p.n, p.n);
+      /** @param {{ n: number }} p */
       const shown = (p) => ({ r: fixed(r(p), 3), n: number(p.n), fromAir: fixed(fresnelExact(cosDeg(89.9), 1, p.n), 3) });
       return [
         {
@@ -151,16 +164,16 @@ export const FRESNEL_QUESTIONS = [
       ];
     },
     state: (p) => ({ nI: p.n, nT: p.n }),
-  },
-  {
+  }),
+  question({
     id: 'schlick-error', panel: 'schlick', kind: 'numeric', unit: 'fraction', tolerance: 0.0005,
     graded: '|exact R − Schlick| at the given angle and index; the panel plots both curves and their difference.',
     params: (rng) => ({ theta: rng.pick([60, 70, 75, 80, 85]), nT: rng.pick([1.33, 1.5, 2.0]) }),
     prompt: (p) => t('schlick-error.prompt', { nT: number(p.nT), theta: number(p.theta) }),
     expected: (p) => schlickErrorAt(p.theta, 1, p.nT),
     state: (p) => ({ nI: 1, nT: p.nT }),
-  },
-  {
+  }),
+  question({
     id: 'schlick-inside', panel: 'schlick', kind: 'choice',
     graded: 'From inside glass past the critical angle (41.8°) the exact R is 1 while Schlick on cos θ_i stays far below; the '
       + 'panel plots both from the denser side.',
@@ -171,7 +184,7 @@ export const FRESNEL_QUESTIONS = [
         id: 'good', text: () => t('schlick-inside.option.good'),
         holds: (p) => Math.abs(fresnelExact(cosDeg(p.theta), 1.5, 1) - fresnelSchlick(cosDeg(p.theta), 1.5, 1)) < 0.05,
         why: (p) => t('schlick-inside.why.good', {
-          critical: fixed(deg(criticalAngle(1.5, 1)), 1), exact: fixed(fresnelExact(cosDeg(p.theta), 1.5, 1), 3),
+          critical: fixed(degreesOf(criticalAngle(1.5, 1)), 1), exact: fixed(fresnelExact(cosDeg(p.theta), 1.5, 1), 3),
           schlick: fixed(fresnelSchlick(cosDeg(p.theta), 1.5, 1), 3),
         }),
       },
@@ -182,16 +195,16 @@ export const FRESNEL_QUESTIONS = [
       },
     ],
     state: () => ({ nI: 1.5, nT: 1 }),
-  },
-  {
+  }),
+  question({
     id: 'r0-value', panel: 'r0-derivation', kind: 'numeric', unit: 'fraction', tolerance: 0.00005,
     graded: 'R(0°) = ((n_t − n_i)/(n_t + n_i))² for the given index; the panel evaluates each step of the derivation.',
     params: (rng) => ({ nT: rng.pick(INDICES) }),
     prompt: (p) => t('r0-value.prompt', { nT: number(p.nT) }),
     expected: (p) => normalIncidence(1, p.nT),
     state: (p) => ({ nI: 1, nT: p.nT }),
-  },
-  {
+  }),
+  question({
     id: 'rim-scaling', panel: 'fresnel-lighting', kind: 'choice',
     graded: 'Twice F(85°) for the given coat index exceeds 1, more light than arrives; the panel\'s plot gives F at every angle '
       + '(at its marked 80° twice F is still under 1: it passes 1 beyond about 83°, which is why the prompt names 85°).',
@@ -216,17 +229,18 @@ export const FRESNEL_QUESTIONS = [
       },
     ],
     state: (p) => ({ nT: p.nT }),
-  },
-  {
+  }),
+  question({
     id: 'metal-grazing', panel: 'metals', kind: 'choice',
     graded: 'The conductor reflectance per channel at 0° and 89° from the metal\'s n + ik: every channel approaches 1 and their '
       + 'spread shrinks; the panel\'s table, plot and spheres show it.',
     params: (rng) => ({ metal: rng.pick(['gold', 'copper']) }),
     prompt: (p) => t('metal-grazing.prompt', { metal: p.metal }),
     options: () => {
-      const channels = (p, theta) => metalById(p.metal).n.map((n, i) => fresnelConductor(cosDeg(theta), n, metalById(p.metal).k[i]));
-      const spread = (rgb) => Math.max(...rgb) - Math.min(...rgb);
-      const shown = (rgb) => numberList(rgb.map((x) => fixed(x, 2)));
+      /** @type {(p: { metal: string }, theta: number) => number[]} */
+      const channels = (p, theta) => metal(p.metal).n.map((n, i) => fresnelConductor(cosDeg(theta), n, metal(p.metal).k[i]));
+      const spread = (/** @type {number[]} */ rgb) => Math.max(...rgb) - Math.min(...rgb);
+      const shown = (/** @type {number[]} */ rgb) => numberList(rgb.map((x) => fixed(x, 2)));
       return [
         {
           id: 'keeps-colour', text: () => t('metal-grazing.option.keeps-colour'),
@@ -250,17 +264,17 @@ export const FRESNEL_QUESTIONS = [
       ];
     },
     state: (p) => ({ metal: p.metal }),
-  },
-  {
+  }),
+  question({
     id: 'metal-r0', panel: 'metals', kind: 'numeric', unit: 'fraction', tolerance: 0.005,
     graded: 'A conductor\'s R(0°) = ((n − 1)² + k²)/((n + 1)² + k²) in the green channel; the panel\'s swatches and table give '
       + 'F0 per channel.',
     params: (rng) => ({ metal: rng.pick(metals.map((m) => m.id)) }),
-    prompt: (p) => t('metal-r0.prompt', { nm: number(metalById(p.metal).rgbNm[1]), metal: p.metal }),
-    expected: (p) => fresnelConductor(1, metalById(p.metal).n[1], metalById(p.metal).k[1]),
+    prompt: (p) => t('metal-r0.prompt', { nm: number(metal(p.metal).rgbNm[1]), metal: p.metal }),
+    expected: (p) => fresnelConductor(1, metal(p.metal).n[1], metal(p.metal).k[1]),
     state: (p) => ({ metal: p.metal }),
-  },
-  {
+  }),
+  question({
     id: 'schlick-visible', panel: 'speed-accuracy', kind: 'choice',
     graded: 'The largest difference between Schlick and the exact R over the plastic scene (air into n from 1.3 to 1.7, every '
       + 'angle), in 8-bit sRGB codes at display white: a display choice, named in the prompt. The panel\'s table gives it '
@@ -284,8 +298,8 @@ export const FRESNEL_QUESTIONS = [
       },
     ],
     state: () => ({ scene: 'plastic' }),
-  },
-  {
+  }),
+  question({
     id: 'lecture-order', panel: 'shader-lab', kind: 'choice',
     graded: 'What the lecture\'s g = sqrt(1.0 + c*c − m*m) returns in float32 for matched indices near grazing: 1.0 + c*c rounds '
       + 'to 1.0 when c² is below 2⁻²⁴, so g = 0 and R = 1. The shader lab compiles the student\'s own version and grades '
@@ -293,6 +307,7 @@ export const FRESNEL_QUESTIONS = [
     params: (rng) => ({ n: rng.pick([1.33, 1.5]), theta: rng.pick([89.99, 89.999]) }),
     prompt: (p) => t('lecture-order.prompt', { n: number(p.n), theta: number(p.theta) }),
     options: () => {
+      /** @param {{ n: number, theta: number }} p */
       const literal = (p) => methodById('exact-cg-literal').evaluate('fp32', cosDeg(p.theta), p.n, p.n);
       return [
         {
@@ -313,8 +328,8 @@ export const FRESNEL_QUESTIONS = [
       ];
     },
     state: () => ({ exercise: 'exact', homework: true }), // no reference answer: it would tell
-  },
-  {
+  }),
+  question({
     id: 'pow-above-one', panel: 'stability', kind: 'choice',
     graded: 'What pow(1 − cos θ, 5) is for cos θ a hair above 1 in a highp shader: 1 − cos θ is negative in float32, and GLSL ES '
       + '3.00 (§8.2) leaves pow undefined there. The stability map cannot show it (its θ = 0° column is cos θ = 1 exactly, '
@@ -322,8 +337,8 @@ export const FRESNEL_QUESTIONS = [
     params: (rng) => ({ nT: rng.pick([1.33, 1.5]) }),
     prompt: (p) => t('pow-above-one.prompt', { cos: number(COS_ABOVE_ONE), nT: number(p.nT) }),
     options: () => {
-      const value = (p) => methodById('schlick-pow').evaluate('fp32', COS_ABOVE_ONE, 1, p.nT);
-      const r0 = (p) => normalIncidence(1, p.nT);
+      const value = (/** @type {{ nT: number }} */ p) => methodById('schlick-pow').evaluate('fp32', COS_ABOVE_ONE, 1, p.nT);
+      const r0 = (/** @type {{ nT: number }} */ p) => normalIncidence(1, p.nT);
       return [
         {
           id: 'undefined', text: () => t('pow-above-one.option.undefined'),
@@ -343,5 +358,5 @@ export const FRESNEL_QUESTIONS = [
       ];
     },
     state: () => ({ method: 'schlick-pow', precision: 'fp32' }),
-  },
+  }),
 ];

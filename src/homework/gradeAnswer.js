@@ -11,7 +11,22 @@ const t = messages('homework', english);
 
 const MAX_TYPED = 80;
 
-/** The parameters of `question` for a seed (the same seed, the same numbers). */
+/** @typedef {import('./questions.js').Question} Question */
+/** @typedef {import('./questions.js').ChoiceQuestion} ChoiceQuestion */
+/** @typedef {import('./questions.js').ValueQuestion} ValueQuestion */
+/**
+ * An answer graded: expected is the true option's id or the expected value; a value's grade also
+ * has the value read, the tolerance and the unit.
+ * @typedef {{ answered: boolean, correct: boolean, expected: number | string, explanation: string, value?: number,
+ *   tolerance?: number, unit?: string | null }} Grade
+ */
+
+/**
+ * The parameters of `question` for a seed (the same seed, the same numbers).
+ * @param {Question} question
+ * @param {unknown} seed
+ * @returns {unknown}
+ */
 export function questionParams(question, seed) {
   return question.params(seededRandom(`${seed}:${question.id}`));
 }
@@ -21,37 +36,64 @@ export function questionParams(question, seed) {
 // dozen combinations, and some cost tens of milliseconds (the asphalt question bisects over the
 // panel's scene: about 45 ms a hand-in, 45 s for a class of 500 without this).
 const MAX_REMEMBERED = 512; // per question; far above any question's combinations today
-const remembered = new WeakMap(); // question → Map(kind + parameters as JSON → value)
 
-function remember(question, kind, params, compute) {
-  let known = remembered.get(question);
-  if (!known) remembered.set(question, (known = new Map()));
-  const key = `${kind}:${JSON.stringify(params)}`;
-  if (known.has(key)) return known.get(key);
-  const value = compute();
-  if (known.size >= MAX_REMEMBERED) known.clear(); // a question with continuous parameters stays bounded
-  known.set(key, value);
-  return value;
+/**
+ * A memory of one thing per question and parameters (its expected value, or its true option).
+ * @template T
+ * @returns {(question: object, params: unknown, compute: () => T) => T}
+ */
+function memory() {
+  /** @type {WeakMap<object, Map<string, T>>} question → Map(parameters as JSON → value) */
+  const remembered = new WeakMap();
+  return (question, params, compute) => {
+    let known = remembered.get(question);
+    if (!known) remembered.set(question, (known = new Map()));
+    const key = JSON.stringify(params);
+    const found = known.get(key);
+    if (found !== undefined) return found;
+    const value = compute();
+    if (known.size >= MAX_REMEMBERED) known.clear(); // a question with continuous parameters stays bounded
+    known.set(key, value);
+    return value;
+  };
 }
+/** @type {(question: object, params: unknown, compute: () => number) => number} */
+const rememberExpected = memory();
+/** @type {(question: object, params: unknown, compute: () => string) => string} */
+const rememberTrue = memory();
 
-/** The expected value of a numeric or predict question for these parameters (computed once). */
-export const expectedValue = (question, params) => remember(question, 'expected', params, () => question.expected(params));
+/**
+ * The expected value of a numeric or predict question for these parameters (computed once).
+ * @param {ValueQuestion} question
+ * @param {unknown} params
+ */
+export const expectedValue = (question, params) => rememberExpected(question, params, () => question.expected(params));
 
-/** The option of a choice question that holds for these parameters (exactly one must). */
+/**
+ * The option of a choice question that holds for these parameters (exactly one must).
+ * @param {ChoiceQuestion} question
+ * @param {unknown} params
+ */
 export function trueOption(question, params) {
   const options = question.options(params);
-  const id = remember(question, 'true', params, () => {
+  const id = rememberTrue(question, params, () => {
     const holding = options.filter((option) => option.holds(params));
     if (holding.length !== 1) throw new Error(`${question.id}: ${holding.length} options hold for ${JSON.stringify(params)}`);
     return holding[0].id;
   });
-  return options.find((option) => option.id === id);
+  const option = options.find((o) => o.id === id);
+  if (!option) throw new Error(`${question.id}: no option ${id}`); // options() gives the same ids every time
+  return option;
 }
 
 /**
  * An answer read back from storage, an LMS or a handed-in file, as the kind of question takes it,
  * or null: a prediction is an angle from 0° to 90°, a choice one of its options, a typed answer a
  * short text. Anything else (a number for a choice, text for a prediction) is no answer.
+ * @param {Question} question
+ * @param {unknown} params
+ * @param {unknown} raw
+ * @returns {number | string | null}
  */
 export function readAnswer(question, params, raw) {
   if (question.kind === 'predict') return typeof raw === 'number' && raw >= 0 && raw <= 90 ? raw : null;
@@ -65,6 +107,10 @@ export { MAX_TYPED };
  * Grades `answer` (typed text, a number, or an option id) to `question` with `params`. Returns
  * { answered, correct, expected, value?, tolerance?, unit?, explanation }; an answer that cannot
  * be read is answered: false with the reason as its explanation.
+ * @param {Question} question
+ * @param {unknown} params
+ * @param {unknown} answer
+ * @returns {Grade}
  */
 export function gradeAnswer(question, params, answer) {
   if (question.kind === 'choice') {
@@ -74,8 +120,9 @@ export function gradeAnswer(question, params, answer) {
     return { answered: true, correct: chosen.id === right.id, expected: right.id, explanation: chosen.why(params) };
   }
   const expected = expectedValue(question, params);
-  const read = typeof answer === 'number' ? { ok: Number.isFinite(answer), value: answer, reason: t('grade.notANumber') }
-    : parseAnswer(answer, question.unit);
+  /** @type {import('./parseAnswer.js').ParsedAnswer} */
+  const read = typeof answer !== 'number' ? parseAnswer(answer, question.unit)
+    : Number.isFinite(answer) ? { ok: true, value: answer } : { ok: false, reason: t('grade.notANumber') };
   const base = { expected, tolerance: question.tolerance, unit: question.unit };
   if (!read.ok) return { ...base, answered: false, correct: false, explanation: read.reason };
   const off = Math.abs(read.value - expected);

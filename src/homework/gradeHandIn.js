@@ -13,43 +13,78 @@ import { messages } from '../i18n/messages.js';
 
 const t = messages('homework', english);
 
+/** @type {(v: unknown, max: number) => v is string} */
 const text = (v, max) => typeof v === 'string' && v.length > 0 && v.length <= max;
+/** @type {(v: unknown) => v is Record<string, unknown>} */
+const plainObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
+/** @type {(object: object, key: string) => unknown} */
+const own = (object, key) => (Object.hasOwn(object, key) ? Reflect.get(object, key) : undefined);
 
-/** A short fingerprint of a sheet as read by readSheet (its questions, order, states, seed, title). */
+/** @typedef {import('./readSheet.js').Sheet} Sheet */
+/**
+ * One answer of a hand-in, graded again: the question's id, its parameters from the seed, the
+ * answer as it reads for the question (readAnswer), the tries it took (null where the file says
+ * none that can be used), and the grade.
+ * @typedef {import('./gradeAnswer.js').Grade & { question: string, params: unknown, answer: number | string | null,
+ *   attempts: number | null }} HandInResult
+ */
+/**
+ * @typedef {{ ok: true, title: string, sheet: Sheet, fingerprint: string, seed: string, name: string, time: string | null,
+ *   score: number, total: number, results: HandInResult[], problems?: undefined }} GradedHandIn
+ */
+
+/**
+ * A short fingerprint of a sheet as read by readSheet (its questions, order, states, seed, title).
+ * @param {Sheet} sheet
+ */
 export const sheetFingerprint = (sheet) => hashSeed(JSON.stringify(sheet)).toString(36).padStart(7, '0');
 
 /**
  * Grades { version, sheet, seed, name, answers: [answer per item], attempts?, time }.
  * expected: the sheet the lecturer set, when given. Returns { ok: true, title, sheet, fingerprint,
  * seed, name, time, score, total, results } or { ok: false, problems }.
+ * @param {unknown} data
+ * @param {{ expected?: Sheet | null }} [options]
+ * @returns {GradedHandIn | { ok: false, problems: string[] }}
  */
 export function gradeHandIn(data, { expected = null } = {}) {
-  if (!data || typeof data !== 'object' || Array.isArray(data)) return { ok: false, problems: [t('handIn.notObject')] };
-  const read = readSheet(data.sheet);
+  if (!plainObject(data)) return { ok: false, problems: [t('handIn.notObject')] };
+  const field = (/** @type {string} */ key) => own(data, key);
+  const read = readSheet(field('sheet'));
   const problems = read.ok ? [] : read.problems.map((problem) => t('handIn.sheet', { problem }));
-  if (data.version !== SHEET_VERSION) problems.push(t('sheet.version', { version: SHEET_VERSION }));
-  if (!text(data.seed, 64)) problems.push(t('handIn.seed'));
-  if (!Array.isArray(data.answers) || (read.ok && data.answers.length !== read.sheet.items.length)) problems.push(t('handIn.answers'));
-  if (read.ok && read.sheet.seed !== undefined && data.seed !== read.sheet.seed) {
-    problems.push(t('handIn.classSeed', { classSeed: read.sheet.seed, seed: rawText(data.seed, 64) }));
+  if (field('version') !== SHEET_VERSION) problems.push(t('sheet.version', { version: SHEET_VERSION }));
+  const seed = field('seed');
+  if (!text(seed, 64)) problems.push(t('handIn.seed'));
+  const answers = field('answers');
+  if (!Array.isArray(answers) || (read.ok && answers.length !== read.sheet.items.length)) problems.push(t('handIn.answers'));
+  if (read.ok && read.sheet.seed !== undefined && seed !== read.sheet.seed) {
+    problems.push(t('handIn.classSeed', { classSeed: read.sheet.seed, seed: rawText(seed, 64) }));
   }
   if (read.ok && expected && sheetFingerprint(read.sheet) !== sheetFingerprint(expected)) {
     problems.push(t('handIn.otherSheet', { fingerprint: sheetFingerprint(read.sheet), expected: sheetFingerprint(expected) }));
   }
-  if (problems.length) return { ok: false, problems };
-  const attempts = Array.isArray(data.attempts) ? data.attempts : [];
+  if (problems.length || !read.ok || !text(seed, 64) || !Array.isArray(answers)) return { ok: false, problems };
+  const rawAttempts = field('attempts');
+  /** @type {unknown[]} */
+  const attempts = Array.isArray(rawAttempts) ? rawAttempts : [];
   const results = read.sheet.items.map((item, i) => {
     const question = questionById(item.question);
-    const params = questionParams(question, data.seed);
-    const raw = data.answers[i];
-    const answer = readAnswer(question, params, typeof raw === 'string' || typeof raw === 'number' ? raw : raw?.value);
-    const tries = Number.isInteger(attempts[i]) && attempts[i] >= 0 ? attempts[i] : null;
+    if (!question) throw new Error(`readSheet kept a question it does not know: ${item.question}`);
+    const params = questionParams(question, seed);
+    /** @type {unknown} */
+    const raw = answers[i];
+    const answer = readAnswer(question, params, typeof raw === 'string' || typeof raw === 'number' ? raw
+      : plainObject(raw) ? own(raw, 'value') : undefined);
+    const tried = attempts[i];
+    const tries = typeof tried === 'number' && Number.isInteger(tried) && tried >= 0 ? tried : null;
     return { question: question.id, params, answer, attempts: tries, ...gradeAnswer(question, params, answer) };
   });
-  const name = text(data.name, 100) ? data.name : '';
-  const time = text(data.time, 40) && !Number.isNaN(Date.parse(data.time)) ? data.time : null;
+  const rawName = field('name');
+  const name = text(rawName, 100) ? rawName : '';
+  const rawTime = field('time');
+  const time = text(rawTime, 40) && !Number.isNaN(Date.parse(rawTime)) ? rawTime : null;
   return {
-    ok: true, title: read.sheet.title, sheet: read.sheet, fingerprint: sheetFingerprint(read.sheet), seed: data.seed, name, time,
+    ok: true, title: read.sheet.title, sheet: read.sheet, fingerprint: sheetFingerprint(read.sheet), seed, name, time,
     score: results.filter((r) => r.correct).length, total: results.length, results,
   };
 }

@@ -2,13 +2,13 @@
 // Phong against Fresnel, reflection against refraction, waves at an interface, the angle ratio and
 // the hero's exact-against-Schlick view. Every expected answer comes from the optics core; see
 // questions.js for the kinds.
-import { DEG, cosDeg, toDegrees as deg } from '../optics/angles.js';
+import { DEG, cosDeg } from '../optics/angles.js';
 import { criticalAngle, fresnelExact } from '../optics/fresnel.js';
 import { schlickErrorAt } from '../optics/curves.js';
 import { phongHighlights } from '../optics/phong.js';
 import { transmittedAngle } from '../optics/waves.js';
 import { toksvigExponent, toksvigFactor } from '../normals/lobeFormulas.js';
-import { INDICES, fixed, number } from './questionParts.js';
+import { INDICES, degreesOf, fixed, number, question } from './questionParts.js';
 import { angleOfMax, angleWhere } from '../optics/solveAngle.js';
 import { specularShareBelow } from '../panels/asphalt/physics.js';
 import english from 'virtual:messages/en/questions';
@@ -18,16 +18,19 @@ import { messages } from '../i18n/messages.js';
 // question's id, then prompt, option.<id>, why.<id>, axis, curve); `graded` is for engineers.
 const t = messages('questions', english);
 
+/** @type {(nI: number, nT: number) => (thetaDeg: number) => number} */
 const reflectance = (nI, nT) => (t) => fresnelExact(cosDeg(t), nI, nT);
+/** @type {(nT: number) => (thetaDeg: number) => number} */
 const schlickGap = (nT) => (t) => schlickErrorAt(t, 1, nT);
 const ASPHALT_ROUGHNESS = 0.8;
 // A sun-ward spot of the asphalt panel's road, seen belowDeg below the horizon: the specular part's
 // share of the light it sends towards the eye (0.5 where specular equals diffuse). On a flat road
 // under a far sun and sky it depends on the direction alone, not on the camera or its framing.
+/** @param {{ nT: number, sunEl: number }} p */
 const specularShare = (p) => specularShareBelow({ sunEl: p.sunEl, roughness: ASPHALT_ROUGHNESS, nT: p.nT, fresnel: true });
 
 export const LIGHT_QUESTIONS = [
-  {
+  question({
     id: 'mip-renormalize', panel: 'normal-mips', kind: 'choice',
     graded: 'The length of the average of two unit normals tilted ±t, cos t < 1, and what renormalising it loses: the spread '
       + 'Toksvig reads from that shortfall. The panel\'s texel inspector shows the averaged normal\'s length and each '
@@ -36,8 +39,8 @@ export const LIGHT_QUESTIONS = [
     prompt: (p) => t('mip-renormalize.prompt', { tilt: number(p.tiltDeg) }),
     options: () => {
       // The average of two unit normals tilted ±t has length cos t; Toksvig reads the lost spread from it.
-      const length = (p) => Math.cos(p.tiltDeg * DEG);
-      const shown = (p) => ({
+      const length = (/** @type {{ tiltDeg: number }} */ p) => Math.cos(p.tiltDeg * DEG);
+      const shown = (/** @type {{ tiltDeg: number, s: number }} */ p) => ({
         length: fixed(length(p), 3), lowered: fixed(p.s * toksvigFactor(length(p), p.s), 1), s: number(p.s),
       });
       return [
@@ -54,8 +57,8 @@ export const LIGHT_QUESTIONS = [
       ];
     },
     state: () => ({}),
-  },
-  {
+  }),
+  question({
     id: 'toksvig-exponent', panel: 'normal-mips', kind: 'numeric', unit: null, tolerance: 0.5,
     graded: 'Toksvig\'s exponent s\' = s/(1 + s·σ²) with σ² = (1 − |N_a|)/|N_a|, from the two numbers given; the panel\'s '
       + 'Toksvig technique shows the same lowered lobe.',
@@ -63,8 +66,8 @@ export const LIGHT_QUESTIONS = [
     prompt: (p) => t('toksvig-exponent.prompt', { length: number(p.L), s: number(p.s) }),
     expected: (p) => toksvigExponent(p.L, p.s),
     state: () => ({ technique: 'toksvig' }),
-  },
-  {
+  }),
+  question({
     id: 'asphalt-outshine', panel: 'asphalt', kind: 'predict', unit: 'deg', tolerance: 2,
     graded: 'How far below the horizon a sun-ward spot of road is seen when the sun\'s highlight there is as bright as the diffuse '
       + 'road (lit by sun and sky; the panel, and the question, leave out the sky\'s own mirror image). On a flat road under a far '
@@ -77,16 +80,17 @@ export const LIGHT_QUESTIONS = [
     expected: (p) => angleWhere(specularShare(p), 0.5, 0.5, 90),
     curve: (p) => ({ label: t('asphalt-outshine.curve'), f: specularShare(p), level: 0.5 }),
     state: (p) => ({ nT: p.nT, sunEl: p.sunEl, roughness: ASPHALT_ROUGHNESS, camEl: 90, fresnel: true }),
-  },
-  {
+  }),
+  question({
     id: 'phong-grazing', panel: 'changing-specular', kind: 'choice',
     graded: 'The peak of the lecture\'s Phong highlight (v·r = 1, no n·l) with k_s = R0 against Phong × F, as the light drops '
       + 'from 90° to 5°: R0 stays, F(85°) grows many times. The panel\'s peak plot draws both against the elevation.',
     params: (rng) => ({ nT: rng.pick([1.33, 1.5]), s: rng.pick([20, 60, 200]) }),
     prompt: (p) => t('phong-grazing.prompt', { nT: number(p.nT) }),
     options: () => {
+      /** @type {(p: { s: number, nT: number }, model: 'phong' | 'phongF', elevation: number) => number} */
       const peak = (p, model, elevation) => phongHighlights(elevation, elevation, p.s, 1, p.nT)[model];
-      const both = (p) => ({
+      const both = (/** @type {{ s: number, nT: number }} */ p) => ({
         phong90: fixed(peak(p, 'phong', 90), 3), phong5: fixed(peak(p, 'phong', 5), 3),
         fresnel90: fixed(peak(p, 'phongF', 90), 3), fresnel5: fixed(peak(p, 'phongF', 5), 3),
       });
@@ -111,8 +115,8 @@ export const LIGHT_QUESTIONS = [
       ];
     },
     state: (p) => ({ nT: p.nT, s: p.s, lightEl: 90, linked: true }),
-  },
-  {
+  }),
+  question({
     id: 'split-half', panel: 'reflect-refract', kind: 'numeric', unit: 'deg', tolerance: 0.5,
     graded: 'The angle of incidence from air where the exact unpolarized R is 0.5 for the given index; the panel\'s R and T bar '
       + 'and numbers follow the view angle.',
@@ -120,35 +124,35 @@ export const LIGHT_QUESTIONS = [
     prompt: (p) => t('split-half.prompt', { nT: number(p.nT) }),
     expected: (p) => angleWhere(reflectance(1, p.nT), 0.5),
     state: (p) => ({ nT: p.nT }),
-  },
-  {
+  }),
+  question({
     id: 'snell-angle', panel: 'refraction-waves', kind: 'numeric', unit: 'deg', tolerance: 0.05,
     graded: 'The transmitted angle from Snell\'s law, asin(sin θ_i / n_t); the panel draws the refracted wavefronts and gives '
       + 'θ_t.',
     params: (rng) => ({ theta: rng.pick([20, 30, 40, 50, 60, 70]), nT: rng.pick(INDICES) }),
     prompt: (p) => t('snell-angle.prompt', { nT: number(p.nT), theta: number(p.theta) }),
-    expected: (p) => deg(transmittedAngle(p.theta * DEG, 1, p.nT)),
+    expected: (p) => degreesOf(transmittedAngle(p.theta * DEG, 1, p.nT)),
     state: (p) => ({ nI: 1, nT: p.nT }),
-  },
-  {
+  }),
+  question({
     id: 'critical-predict', panel: 'refraction-waves', kind: 'predict', unit: 'deg', tolerance: 2,
     graded: 'The critical angle asin(n_t/n_i) from inside the denser medium; the panel shows where the transmitted wave stops '
       + 'propagating.',
     params: (rng) => ({ nI: rng.pick([1.33, 1.5, 1.6, 2.42]) }),
     prompt: (p) => t('critical-predict.prompt', { nI: number(p.nI) }),
-    expected: (p) => deg(criticalAngle(p.nI, 1)),
+    expected: (p) => degreesOf(criticalAngle(p.nI, 1)),
     curve: (p) => ({ label: t('critical-predict.curve'), f: reflectance(p.nI, 1) }),
     state: (p) => ({ nI: p.nI, nT: 1 }),
-  },
-  {
+  }),
+  question({
     id: 'critical-angle', panel: 'angle-ratio', kind: 'numeric', unit: 'deg', tolerance: 0.05,
     graded: 'The critical angle asin(n_t/n_i); the panel\'s rays show T going to 0 there.',
     params: (rng) => ({ nI: rng.pick([1.33, 1.5, 1.6, 2.42]) }),
     prompt: (p) => t('critical-angle.prompt', { nI: number(p.nI) }),
-    expected: (p) => deg(criticalAngle(p.nI, 1)),
+    expected: (p) => degreesOf(criticalAngle(p.nI, 1)),
     state: (p) => ({ nI: p.nI, nT: 1 }),
-  },
-  {
+  }),
+  question({
     id: 'schlick-worst', panel: 'spheres', kind: 'predict', unit: 'deg', tolerance: 3,
     graded: 'The angle of incidence where |exact R − Schlick| is largest from air into the given index; the hero\'s error sphere '
       + 'and plot show it.',
@@ -157,5 +161,5 @@ export const LIGHT_QUESTIONS = [
     expected: (p) => angleOfMax(schlickGap(p.nT)),
     curve: (p) => ({ label: t('schlick-worst.curve'), f: schlickGap(p.nT) }),
     state: (p) => ({ nI: 1, nT: p.nT }),
-  },
+  }),
 ];

@@ -7,6 +7,8 @@ import { messages } from '../i18n/messages.js';
 
 const t = messages('homework', english);
 
+/** @typedef {{ ok: true, value: number } | { ok: false, reason: string }} ParsedAnswer */
+
 const UNITS = {
   deg: ['°', 'deg', 'degree', 'degrees'],
   percent: ['%', 'percent'],
@@ -15,6 +17,9 @@ const UNITS = {
 /**
  * unit: what the question asks for ('deg', 'fraction' or null for a plain number). Returns
  * { ok: true, value } (a fraction written in % is divided by 100) or { ok: false, reason }.
+ * @param {unknown} text
+ * @param {string | null} [unit]
+ * @returns {ParsedAnswer}
  */
 export function parseAnswer(text, unit = null) {
   // Only text is typed: an object from a stored or handed-in answer is no answer (String() of one

@@ -20,12 +20,19 @@ import { messages } from '../i18n/messages.js';
 
 const t = messages('questions', english);
 
-export const QUESTIONS = Object.freeze([...LIGHT_QUESTIONS, ...FRESNEL_QUESTIONS].map(Object.freeze));
+/** @typedef {import('./questionParts.js').Question} Question */
+/** @typedef {import('./questionParts.js').ChoiceQuestion<unknown>} ChoiceQuestion */
+/**
+ * A question whose answer is a value (typed or predicted), checked at its tolerance.
+ * @typedef {import('./questionParts.js').NumericQuestion<unknown> | import('./questionParts.js').PredictQuestion<unknown>} ValueQuestion
+ */
+
+export const QUESTIONS = Object.freeze([...LIGHT_QUESTIONS, ...FRESNEL_QUESTIONS].map((q) => Object.freeze(q)));
 
 const byId = new Map(QUESTIONS.map((q) => [q.id, q]));
 
 /** What a kind of question is called on the page, in the page's language. */
-export const kindName = (kind) => t(`kind.${kind}`);
+export const kindName = (/** @type {string} */ kind) => t(`kind.${kind}`);
 
 /**
  * What each kind is called on the page: each name is read when it is written (a getter), so it is
@@ -37,5 +44,9 @@ export const KIND_NAMES = Object.freeze({
   get choice() { return kindName('choice'); },
 });
 
-/** The question with this id, or undefined. */
-export const questionById = (id) => byId.get(id);
+/**
+ * The question with this id, or undefined.
+ * @param {unknown} id
+ * @returns {Readonly<Question> | undefined}
+ */
+export const questionById = (id) => (typeof id === 'string' ? byId.get(id) : undefined);

@@ -18,12 +18,18 @@ const t = messages('homework', english);
  * classSeed: the sheet's own seed, or null; questions and params: the sheet's, in order.
  * Returns { answers, notice }: answers null (nothing usable) or one per question, each valid for
  * it (readAnswer) or null; notice null or a sentence for the learner.
+ * @param {unknown} text
+ * @param {{ seed: string, classSeed?: string | null, questions: readonly import('./questions.js').Question[],
+ *   params: readonly unknown[] }} sheet
+ * @returns {{ answers: (number | string | null)[] | null, notice: string | null }}
  */
 export function readResume(text, { seed, classSeed = null, questions, params }) {
   // why: the notice's key (resume.<why>), each a whole sentence ending in what the sheet does instead.
+  /** @type {(why: string | null, args?: Record<string, unknown>) => { answers: null, notice: string | null }} */
   const none = (why, args) => ({ answers: null, notice: why ? t(`resume.${why}`, args) : null });
   if (typeof text !== 'string' || text.trim() === '') return none(null); // the first visit
   if (text.length > SUSPEND_LIMIT) return none('tooLong', { length: text.length });
+  /** @type {unknown} */
   let data;
   try {
     data = JSON.parse(text);

@@ -16,9 +16,14 @@ import { messages } from '../i18n/messages.js';
 
 const t = messages('homework', english);
 
-const titleOf = (panelId) => (panelEntry(panelId) ? panelTitle(panelId) : rawText(panelId));
+const titleOf = (/** @type {string} */ panelId) => (panelEntry(panelId) ? panelTitle(panelId) : rawText(panelId));
 
-/** { ok: true, state } (possibly empty) or { ok: false, problem }. */
+/**
+ * { ok: true, state } (possibly empty) or { ok: false, problem }.
+ * @param {unknown} text
+ * @param {string} panelId
+ * @returns {{ ok: true, state: import('./questionParts.js').PanelState } | { ok: false, problem: string }}
+ */
 export function readStartState(text, panelId) {
   // Only text is read: String() of an object whose toString is not a function throws.
   const raw = typeof text === 'string' ? text.trim() : '';
@@ -33,16 +38,20 @@ export function readStartState(text, panelId) {
   const prefix = lecturePrefix(panelId);
   const fromLecture = !search.has('panel') && prefix && [...search.keys()].some((k) => k.startsWith(prefix));
   if (search.has('panel') && search.get('panel') !== panelId) {
-    const other = search.get('panel');
+    const other = search.get('panel') ?? '';
     return {
       ok: false,
       problem: panelEntry(other) ? t('startState.otherPanel', { other: panelTitle(other), panel: titleOf(panelId) })
         : t('startState.otherPage', { panel: titleOf(panelId) }),
     };
   }
+  /** @type {import('../host/panelContract.js').Schema} */
   const schema = panelSchema(panelId) ?? {};
+  /** @type {import('./questionParts.js').PanelState} */
   const state = {};
+  /** @type {string[]} */
   const unknown = [];
+  /** @type {string[]} */
   const refused = [];
   for (const [key, value] of search) {
     let name = null;

@@ -21,7 +21,11 @@ const LETTERS = 'abcdefghijklmnopqrstuvwxyz0123456789';
 // as run-times take (scorm-again's limit), far beyond any answer to these questions.
 const DECIMAL_DIGITS = 10;
 
-/** x as a CMIDecimal ("-12.5", "0.0000001"), rounded to `decimals` where given; null where none spells it. */
+/**
+ * x as a CMIDecimal ("-12.5", "0.0000001"), rounded to `decimals` where given; null where none spells it.
+ * @param {unknown} x
+ * @param {number | null} [decimals]
+ */
 export function cmiDecimal(x, decimals = null) {
   if (typeof x !== 'number' || !Number.isFinite(x)) return null;
   // Unrounded, 15 significant digits: 1.1 % read as a fraction is 0.011, not 0.011000000000000001.
@@ -35,6 +39,7 @@ export function cmiDecimal(x, decimals = null) {
 /**
  * A CMIString255 (RTE §3.4.2): at most 255 characters, on one line (run-times match responses
  * with `.`, which no line end matches), no control characters, no half of a surrogate pair.
+ * @param {unknown} text
  */
 export function cmiString255(text) {
   // eslint-disable-next-line no-control-regex
@@ -49,12 +54,17 @@ export function cmiString255(text) {
  * The interaction's id, a CMIIdentifier (RTE §3.4.2: no spaces, at most 255 characters): the
  * question's place on the sheet and its id, q07-exact-r. A question asked twice on a sheet is
  * two interactions; checked again, it keeps its id, so the report groups the tries.
+ * @param {number} position
+ * @param {unknown} questionId
  */
 export function interactionId(position, questionId) {
   return `q${String(position).padStart(2, '0')}-${String(questionId)}`.replace(/[^A-Za-z0-9_-]/g, '-').slice(0, 255);
 }
 
-/** at as CMITime (RTE §3.4.2: HH:MM:SS, the learner's clock, as the LMS has no time zone for it), or null. */
+/**
+ * at as CMITime (RTE §3.4.2: HH:MM:SS, the learner's clock, as the LMS has no time zone for it), or null.
+ * @param {unknown} at
+ */
 export function cmiTime(at) {
   if (!(at instanceof Date) || !Number.isFinite(at.getTime())) return null;
   return [at.getHours(), at.getMinutes(), at.getSeconds()].map((n) => String(n).padStart(2, '0')).join(':');
@@ -65,14 +75,17 @@ export function cmiTime(at) {
  * `position` (1-based) on the sheet, checked at `at`: the elements under cmi.interactions.n, in
  * the order they are written (id first: the others belong to it), each a text; an element with
  * nothing to say is left out.
+ * @param {{ position: number, question: import('./questions.js').Question, params: unknown, answer: unknown, at: unknown }} checked
+ * @returns {Record<string, string>}
  */
 export function scormInteraction({ position, question, params, answer, at }) {
   const graded = gradeAnswer(question, params, answer);
   const head = { id: interactionId(position, question.id) };
+  /** @type {{ type: string, student_response: string | null, pattern: string | null }} */
   let body;
   if (question.kind === 'choice') {
     const options = question.options(params);
-    const letter = (optionId) => {
+    const letter = (/** @type {unknown} */ optionId) => {
       const i = options.findIndex((o) => o.id === optionId);
       return i >= 0 && i < LETTERS.length ? LETTERS[i] : null;
     };
@@ -95,5 +108,8 @@ export function scormInteraction({ position, question, params, answer, at }) {
     time: cmiTime(at),
     'correct_responses.0.pattern': body.pattern,
   };
-  return Object.fromEntries(Object.entries(fields).filter(([, value]) => value !== null && value !== undefined));
+  /** @type {Record<string, string>} */
+  const written = {};
+  for (const [key, value] of Object.entries(fields)) if (value !== null && value !== undefined) written[key] = value;
+  return written;
 }

@@ -5,10 +5,13 @@
 
 // XML 1.0 has no place for most control characters (§2.2), so they go before escaping.
 // eslint-disable-next-line no-control-regex
-const escapeXml = (text) => String(text).replace(/[\x00-\x08\x0B\x0C\x0E-\x1F]/g, '')
+const escapeXml = (/** @type {unknown} */ text) => String(text).replace(/[\x00-\x08\x0B\x0C\x0E-\x1F]/g, '')
   .replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
 
-/** title: the sheet's; identifier: letters, digits and dashes; files: the package's paths, the SCO first. */
+/**
+ * title: the sheet's; identifier: letters, digits and dashes; files: the package's paths, the SCO first.
+ * @param {{ title: string, identifier: string, files: string[] }} what
+ */
 export function scormManifest({ title, identifier, files }) {
   const id = String(identifier).replace(/[^A-Za-z0-9-]/g, '-');
   const name = escapeXml(title);

@@ -3,17 +3,23 @@
 // it is hashed to 32 bits (FNV-1a) and drives mulberry32, a small generator with a full 2^32
 // period (Tommy Ettinger's public-domain design) that is plenty for picking parameters.
 
-/** 32-bit FNV-1a hash of a string (Fowler, Noll and Vo). */
+/**
+ * 32-bit FNV-1a hash of a string (Fowler, Noll and Vo).
+ * @param {unknown} text
+ */
 export function hashSeed(text) {
   let h = 0x811c9dc5;
   for (const char of String(text)) {
-    h ^= char.codePointAt(0);
+    h ^= char.codePointAt(0) ?? 0; // a string's characters all have a code point
     h = Math.imul(h, 0x01000193) >>> 0;
   }
   return h >>> 0;
 }
 
-/** A generator of numbers in [0, 1) from a seed (text or number); pick(list) takes one element. */
+/**
+ * A generator of numbers in [0, 1) from a seed (text or number); pick(list) takes one element.
+ * @param {unknown} seed
+ */
 export function seededRandom(seed) {
   let a = typeof seed === 'number' ? seed >>> 0 : hashSeed(seed);
   const next = () => {
@@ -23,7 +29,13 @@ export function seededRandom(seed) {
     t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
     return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
   };
-  return { next, pick: (list) => list[Math.floor(next() * list.length)] };
+  /**
+   * @template T
+   * @param {readonly T[]} list
+   * @returns {T}
+   */
+  const pick = (list) => list[Math.floor(next() * list.length)];
+  return { next, pick };
 }
 
 /** A fresh seed for a student: 8 characters from the crypto generator where there is one. */
