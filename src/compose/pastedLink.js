@@ -21,10 +21,19 @@ const t = messages('compose', english);
 export const MAX_PASTED = 120_000; // characters: a shader lab link with its code is a few kilobytes
 const MAX_PAIRS = 200;
 
-const titleOf = (id) => (panelEntry(id) ? panelTitle(id) : rawText(id));
+/**
+ * What a pasted link gives a panel item, or why it gives it nothing. (The other member's fields
+ * are there, undefined, so that the loose project, which cannot narrow on `ok`, reads both.)
+ * @typedef {{ ok: true, state: Record<string, import('../host/panelContract.js').Value>, lock: string[], hide: string[],
+ *   problems: string[], source: 'embed' | 'lecture' | 'composed' | 'pairs' }
+ *   | { ok: false, problems: string[], state?: undefined, lock?: undefined, hide?: undefined, source?: undefined }} PastedLink
+ */
+
+const titleOf = (/** @type {string} */ id) => (panelEntry(id) ? panelTitle(id) : rawText(id));
 
 /**
  * The query of a pasted text: a whole link, a relative one, an <iframe> snippet, or bare pairs.
+ * @param {string} text
  * @returns {URLSearchParams | null}
  */
 function searchOf(text) {
@@ -48,6 +57,7 @@ function searchOf(text) {
  * source says what kind of link it was: 'embed', 'lecture', 'composed' or 'pairs'.
  * @param {unknown} text
  * @param {string} panelId
+ * @returns {PastedLink}
  */
 export function readPastedLink(text, panelId) {
   const schema = panelSchema(panelId);
@@ -62,6 +72,7 @@ export function readPastedLink(text, panelId) {
   const all = [];
   search.forEach((value, key) => { all.push([key, value]); });
   const pairs = all.slice(0, MAX_PAIRS);
+  /** @type {string[]} */
   const problems = [];
   if (all.length > MAX_PAIRS) problems.push(t('pasteTooMany', { max: fixed(MAX_PAIRS, 0) }));
 
@@ -75,6 +86,7 @@ export function readPastedLink(text, panelId) {
   const prefix = lecturePrefix(panelId);
   // A link without panel= is the lecture page's (its #hash names the panel it was copied from).
   const isLink = /^[a-z][a-z0-9+.-]*:|\?|<iframe/i.test(text.trim());
+  /** @type {'embed' | 'lecture' | 'pairs'} */
   const source = embedPanel !== null ? 'embed' : isLink ? 'lecture' : 'pairs';
   if (source === 'lecture' && hash && hash !== panelId && panelEntry(hash)) {
     return { ok: false, problems: [t('pasteOtherPanel', { other: titleOf(hash), title: titleOf(panelId) })] };
@@ -90,11 +102,14 @@ export function readPastedLink(text, panelId) {
   const { applied, rejected } = applyParams(schema, defaults(schema), update);
   for (const r of rejected) problems.push(describeProblem({ ...r, fallback: undefined }));
 
+  /** @type {string[]} */
   let lock = [];
+  /** @type {string[]} */
   let hide = [];
   if (source === 'embed') {
     const { options, problems: optionProblems } = readEmbedOptions(search);
     for (const p of optionProblems) if (p.key !== 'parentOrigin') problems.push(describeProblem({ ...p, fallback: undefined }));
+    /** @type {(names: string[], what: string) => string[]} */
     const keys = (names, what) => names.filter((name) => {
       if (Object.hasOwn(schema, name)) return true;
       problems.push(t('pasteNoControl', { option: what, name: rawText(name) }));
@@ -110,21 +125,27 @@ export function readPastedLink(text, panelId) {
  * A panel of a composed lecture's link: the item its #hash names (else the lecture's first of this
  * panel), started where the lecture starts it, with the values the link carries under that item's
  * prefix (the lecture page's keys, openLecture.js's itemKeys) on top.
+ * @param {string} code
+ * @param {string} panelId
+ * @param {string | undefined} hash
+ * @param {[string, string][]} pairs
+ * @param {string[]} problems
+ * @returns {PastedLink}
  */
 function fromComposed(code, panelId, hash, pairs, problems) {
   const read = lectureFromCode(code);
-  if (!read.ok) return { ok: false, problems: read.problems };
+  if (!read.ok || !read.lecture) return { ok: false, problems: read.problems };
   const items = read.lecture.items;
   const keys = itemKeys(items, lecturePrefix);
-  let at = hash ? keys.findIndex((k) => k.key === hash) : -1;
-  if (at >= 0 && (items[at].type !== 'panel' || items[at].panel !== panelId)) {
-    const { type } = items[at];
-    const other = type === 'panel' ? titleOf(items[at].panel) : '';
-    return { ok: false, problems: [t('pasteOtherItem', { type, other, title: titleOf(panelId) })] };
+  const named = hash ? keys.findIndex((k) => k.key === hash) : -1;
+  const chosen = named >= 0 ? items[named] : undefined;
+  if (chosen && (chosen.type !== 'panel' || chosen.panel !== panelId)) {
+    const other = chosen.type === 'panel' ? titleOf(chosen.panel) : '';
+    return { ok: false, problems: [t('pasteOtherItem', { type: chosen.type, other, title: titleOf(panelId) })] };
   }
-  if (at < 0) at = items.findIndex((i) => i.type === 'panel' && i.panel === panelId);
-  if (at < 0) return { ok: false, problems: [t('pasteNoSuchPanel', { title: titleOf(panelId) })] };
-  const item = items[at];
+  const at = named >= 0 ? named : items.findIndex((i) => i.type === 'panel' && i.panel === panelId);
+  const item = at >= 0 ? items[at] : undefined;
+  if (!item || item.type !== 'panel') return { ok: false, problems: [t('pasteNoSuchPanel', { title: titleOf(panelId) })] };
   const schema = panelSchema(panelId) ?? {};
   const { prefix } = keys[at];
   const own = pairs.filter(([key]) => key !== 'lecture' && (prefix ? key.startsWith(prefix) : !key.includes('.')));

@@ -9,27 +9,17 @@ import { goldenMax } from '../optics/refinedMax.js';
 import {
   brewsterAngle, criticalAngle, fresnelConductor, fresnelExact, fresnelPolarized, fresnelSchlick, normalIncidence,
 } from '../optics/fresnel.js';
-import { dielectricById, metalById, metals } from '../optics/materials.js';
+import { metals } from '../optics/materials.js';
 import { methodError } from '../methods/advisor.js';
 import { methodById } from '../methods/methods.js';
 import { sceneById } from '../methods/scenes.js';
-import { ANGLES, INDICES, degreesOf, fixed, number, numberList, question } from './questionParts.js';
+import { ANGLES, INDICES, degreesOf, dielectric, fixed, metal, number, numberList, question } from './questionParts.js';
 import english from 'virtual:messages/en/questions';
 import { messages } from '../i18n/messages.js';
 
 // Every word a student reads is the catalogue's (locales/*.json, namespace questions: the
 // question's id, then prompt, option.<id>, why.<id>, curve); `graded` is for engineers.
 const t = messages('questions', english);
-
-/**
- * The dielectric or metal of materials.json with this id: the questions name only materials it has.
- * @param {string} id
- */
-const dielectric = (id) => dielectricById(id) ?? unknownMaterial(id);
-/** @param {string} id */
-const metal = (id) => metalById(id) ?? unknownMaterial(id);
-/** @param {string} id @returns {never} */
-const unknownMaterial = (id) => { throw new RangeError(`No material ${id} in materials.json.`); };
 
 /** A hair above 1, as interpolated normals give; it survives rounding to float32 (1 + 2⁻²³). */
 const COS_ABOVE_ONE = 1.0000001;

@@ -3,7 +3,7 @@
 // which sheet it answers, and a student could edit that; so the lecturer can give the sheet they
 // set, and a file made for any other sheet (a copy with items dropped, another class seed) is
 // refused. Each report shows the sheet's fingerprint either way.
-import { questionById } from './questions.js';
+import { knownQuestion } from './questions.js';
 import { gradeAnswer, questionParams, readAnswer } from './gradeAnswer.js';
 import { SHEET_VERSION, readSheet } from './readSheet.js';
 import { hashSeed } from './seededRandom.js';
@@ -68,8 +68,7 @@ export function gradeHandIn(data, { expected = null } = {}) {
   /** @type {unknown[]} */
   const attempts = Array.isArray(rawAttempts) ? rawAttempts : [];
   const results = read.sheet.items.map((item, i) => {
-    const question = questionById(item.question);
-    if (!question) throw new Error(`readSheet kept a question it does not know: ${item.question}`);
+    const question = knownQuestion(item.question);
     const params = questionParams(question, seed);
     /** @type {unknown} */
     const raw = answers[i];

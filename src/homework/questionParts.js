@@ -5,6 +5,7 @@ import english from 'virtual:messages/en/questions';
 import { messages } from '../i18n/messages.js';
 import { MINUS, fixed as shownFixed, shownDecimal } from '../ui/format.js';
 import { toDegrees } from '../optics/angles.js';
+import { dielectricById, metalById } from '../optics/materials.js';
 
 const t = messages('questions', english);
 
@@ -73,3 +74,13 @@ export function degreesOf(radians) {
   if (radians === null) throw new RangeError('No such angle for these parameters.');
   return toDegrees(radians);
 }
+
+/**
+ * The dielectric or metal of materials.json with this id: the questions name only materials it has.
+ * @param {string} id
+ */
+export const dielectric = (id) => dielectricById(id) ?? unknownMaterial(id);
+/** @param {string} id */
+export const metal = (id) => metalById(id) ?? unknownMaterial(id);
+/** @param {string} id @returns {never} */
+const unknownMaterial = (id) => { throw new RangeError(`No material ${id} in materials.json.`); };

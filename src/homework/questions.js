@@ -50,3 +50,15 @@ export const KIND_NAMES = Object.freeze({
  * @returns {Readonly<Question> | undefined}
  */
 export const questionById = (id) => (typeof id === 'string' ? byId.get(id) : undefined);
+
+/**
+ * The question a checked sheet or lecture names (readSheet and readLecture keep no other id);
+ * throws on an id the bank does not have.
+ * @param {string} id
+ * @returns {Readonly<Question>}
+ */
+export function knownQuestion(id) {
+  const question = byId.get(id);
+  if (!question) throw new RangeError(`No question ${id} in the bank.`);
+  return question;
+}

@@ -24,7 +24,7 @@ import { lectureSlidesHtml } from './deckSlides.js';
 import { katexDeckCss } from './katexDeckCss.js';
 import english from 'virtual:messages/en/lecture';
 import { currentLanguage, messages } from '../i18n/messages.js';
-import { languageById } from '../i18n/languages.js';
+import { LANGUAGES, languageById } from '../i18n/languages.js';
 
 const t = messages('lecture', english);
 
@@ -90,9 +90,9 @@ const DECK_SCRIPT = `
 `;
 
 /** Inline script text that cannot end its element early (</script) or open a comment state (<!--). */
-const scriptText = (text) => String(text).replace(/<\/(script)/gi, '<\\/$1').replace(/<!--/g, '<\\!--');
+const scriptText = (/** @type {string} */ text) => String(text).replace(/<\/(script)/gi, '<\\/$1').replace(/<!--/g, '<\\!--');
 /** Inline style text that cannot end its element early (in CSS \/ is /). */
-const styleText = (text) => String(text).replace(/<\/(style)/gi, '<\\/$1');
+const styleText = (/** @type {string} */ text) => String(text).replace(/<\/(style)/gi, '<\\/$1');
 
 /**
  * The HTML text of a reveal.js deck of `lecture` (read by readLecture first; a lecture with
@@ -122,7 +122,7 @@ export function lectureDeckHtml(lecture, {
   // The lecture's language (the composer writes the page's) is the deck's and its panels'; a lecture
   // without one is shown in the words the deck is written in, its panels in their reader's language.
   const { lang = null } = read.lecture;
-  const language = languageById(lang ?? currentLanguage()) ?? languageById('en');
+  const language = languageById(lang ?? currentLanguage()) ?? LANGUAGES[0]; // the first listed is English
   const slides = lectureSlidesHtml(read.lecture, { embedUrl, theme, projector: Boolean(projector), lang });
   return `<!doctype html>
 <html lang="${escapeHtml(language.id)}" dir="${language.dir}">

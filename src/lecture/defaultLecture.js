@@ -8,6 +8,7 @@ import { messages } from '../i18n/messages.js';
 
 const t = messages('lecture', english);
 
+/** @returns {import('./readLecture.js').Lecture} */
 export function defaultLecture() {
   return {
     kind: LECTURE_KIND, version: LECTURE_VERSION, title: t('defaultTitle'), // the lecture page's title

@@ -15,18 +15,25 @@ export const LECTURE_CODE_PREFIX = 'L1.';
 const MAX_CODE = 100_000; // characters; a full lecture with text on every item is a few kilobytes
 const MAX_JSON = 400_000; // bytes inflated
 
-const toBase64Url = (bytes) => {
+const toBase64Url = (/** @type {Uint8Array} */ bytes) => {
   let binary = '';
   for (let i = 0; i < bytes.length; i += 0x8000) binary += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
   return btoa(binary).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
 };
 
-/** The code of a lecture (as readLecture gives it), for ?lecture=. */
+/**
+ * The code of a lecture (as readLecture gives it), for ?lecture=.
+ * @param {import('./readLecture.js').Lecture} lecture
+ */
 export function lectureToCode(lecture) {
   return LECTURE_CODE_PREFIX + toBase64Url(deflateSync(new TextEncoder().encode(JSON.stringify(lecture)), { level: 9 }));
 }
 
-/** { ok: true, lecture, problems } or { ok: false, problems }, from a code or a link holding one. Never throws. */
+/**
+ * { ok: true, lecture, problems } or { ok: false, problems }, from a code or a link holding one. Never throws.
+ * @param {unknown} text
+ * @returns {import('./readLecture.js').ReadLecture}
+ */
 export function lectureFromCode(text) {
   if (typeof text !== 'string') return { ok: false, problems: [t('codeNotText')] };
   let code = text.trim();
@@ -49,6 +56,7 @@ export function lectureFromCode(text) {
   if (!/^[A-Za-z0-9_-]*$/.test(body)) {
     return { ok: false, problems: [t('codeBadCharacters')] };
   }
+  /** @type {unknown} */
   let json;
   try {
     const bytes = Uint8Array.from(atob(body.replace(/-/g, '+').replace(/_/g, '/')), (c) => c.charCodeAt(0));

@@ -11,28 +11,42 @@ const LINK = /^(https?:|mailto:)/i;
 
 const md = new MarkdownIt('zero', { html: false, linkify: false, typographer: false, breaks: false })
   .enable(['emphasis', 'list', 'link', 'backticks', 'newline', 'escape', 'entity']);
-// The plugin's own renderer is not used (the tree below is), so KaTeX is not needed to read.
-(markdownItKatex.default ?? markdownItKatex)(md, { katex: {} });
-md.validateLink = (url) => LINK.test(url.trim());
+// The plugin is CommonJS with exports.default: Node's import gives that exports object, the
+// bundler the function itself, which its types describe.
+const katexPlugin = /** @type {typeof markdownItKatex & { default?: typeof markdownItKatex }} */ (markdownItKatex);
+// The plugin's own renderer is not used (the tree below is), so KaTeX is not needed to read: an
+// empty object stands in for it.
+const noKatex = /** @type {NonNullable<import('@vscode/markdown-it-katex').MarkdownKatexOptions['katex']>} */ ({});
+(katexPlugin.default ?? katexPlugin)(md, { katex: noKatex });
+md.validateLink = (/** @type {string} */ url) => LINK.test(url.trim());
 
 /**
  * @typedef {{ text: string } | { math: string, display: boolean }
  *   | { tag: 'p' | 'ul' | 'ol' | 'li' | 'em' | 'strong' | 'code' | 'br' | 'a', href?: string, start?: number,
  *       children: TextNode[] }} TextNode
  */
+/** @typedef {Extract<TextNode, { tag: string }>} ElementNode */
 
+/** @type {Readonly<Record<string, 'p' | 'ul' | 'ol' | 'li'>>} */
 const BLOCK = { paragraph_open: 'p', bullet_list_open: 'ul', ordered_list_open: 'ol', list_item_open: 'li' };
+/** @type {Readonly<Record<string, 'em' | 'strong' | 'a'>>} */
 const INLINE = { em_open: 'em', strong_open: 'strong', link_open: 'a' };
 
-/** Inline tokens → nodes. */
+/**
+ * Inline tokens → nodes.
+ * @param {import('markdown-it').Token[]} tokens
+ * @returns {TextNode[]}
+ */
 function inline(tokens) {
+  /** @type {{ children: TextNode[] }} */
   const root = { children: [] };
   const stack = [root];
   const top = () => stack[stack.length - 1];
   for (const token of tokens) {
     if (Object.hasOwn(INLINE, token.type)) {
+      /** @type {ElementNode} */
       const node = { tag: INLINE[token.type], children: [] };
-      if (node.tag === 'a') node.href = token.attrGet('href');
+      if (node.tag === 'a') node.href = String(token.attrGet('href') ?? ''); // a link token always has its href
       top().children.push(node);
       stack.push(node);
     } else if (token.type.endsWith('_close')) {
@@ -47,9 +61,14 @@ function inline(tokens) {
   return root.children;
 }
 
-/** The text as a tree of nodes (see TextNode). Never throws on any string. */
+/**
+ * The text as a tree of nodes (see TextNode). Never throws on any string.
+ * @param {unknown} source
+ * @returns {TextNode[]}
+ */
 export function lectureTextTree(source) {
   const tokens = md.parse(String(source ?? ''), {});
+  /** @type {{ children: TextNode[] }} */
   const root = { children: [] };
   const stack = [root];
   const top = () => stack[stack.length - 1];
@@ -57,6 +76,7 @@ export function lectureTextTree(source) {
     // A tight list's paragraphs are hidden: its items hold their text directly.
     if (token.hidden && token.type.startsWith('paragraph_')) continue;
     if (Object.hasOwn(BLOCK, token.type)) {
+      /** @type {ElementNode} */
       const node = { tag: BLOCK[token.type], children: [] };
       const start = Number(token.attrGet('start'));
       if (node.tag === 'ol' && Number.isInteger(start) && start > 1) node.start = start;

@@ -4,6 +4,10 @@
 import { renderTex } from '../ui/tex.js';
 import { lectureTextTree } from './lectureText.js';
 
+/**
+ * @param {import('./lectureText.js').TextNode} node
+ * @returns {Node}
+ */
 function build(node) {
   if ('text' in node) return document.createTextNode(node.text);
   if ('math' in node) {
@@ -12,8 +16,8 @@ function build(node) {
     return renderTex(holder, node.math, { display: node.display });
   }
   const element = document.createElement(node.tag);
-  if (node.tag === 'a') {
-    element.setAttribute('href', node.href);
+  if (element instanceof HTMLAnchorElement) {
+    element.setAttribute('href', node.href ?? '');
     element.target = '_blank';
     element.rel = 'noopener noreferrer';
   }
@@ -22,7 +26,10 @@ function build(node) {
   return element;
 }
 
-/** The text's elements, in a fragment to append where the text belongs. */
+/**
+ * The text's elements, in a fragment to append where the text belongs.
+ * @param {unknown} source
+ */
 export function lectureTextFragment(source) {
   const fragment = document.createDocumentFragment();
   fragment.append(...lectureTextTree(source).map(build));

@@ -13,7 +13,10 @@ import { escapeHtml } from '../ui/escapeHtml.js';
 // The lecture's notation, as ui/subscripts.js writes it on the page: n_t is n with a subscript t.
 const SUBSCRIPT = /([A-Za-zθλv])_([A-Za-z0-9]+)/g;
 
-/** Plain text (a question's prompt, a panel's title) as HTML, escaped, with x_y written as x<sub>y</sub>. */
+/**
+ * Plain text (a question's prompt, a panel's title) as HTML, escaped, with x_y written as x<sub>y</sub>.
+ * @param {string} text
+ */
 export function subscriptedHtml(text) {
   let html = '';
   let last = 0;
@@ -27,6 +30,9 @@ export function subscriptedHtml(text) {
 /**
  * TeX as KaTeX's HTML and MathML (math 'html') or MathML alone ('mathml'), or (TeX KaTeX cannot
  * read) its source as code; never throws.
+ * @param {string} tex
+ * @param {boolean} display
+ * @param {'html' | 'mathml'} [math]
  */
 export function mathHtml(tex, display, math = 'mathml') {
   const output = math === 'html' ? 'htmlAndMathml' : 'mathml';
@@ -37,7 +43,12 @@ export function mathHtml(tex, display, math = 'mathml') {
   }
 }
 
-/** One node of the tree (lectureText.js's TextNode) as HTML, its math as `math` says (mathHtml). */
+/**
+ * One node of the tree (lectureText.js's TextNode) as HTML, its math as `math` says (mathHtml).
+ * @param {import('./lectureText.js').TextNode} node
+ * @param {'html' | 'mathml'} math
+ * @returns {string}
+ */
 function nodeHtml(node, math) {
   if ('text' in node) return escapeHtml(node.text);
   if ('math' in node) {

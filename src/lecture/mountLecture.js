@@ -3,7 +3,7 @@
 // section is the one the build writes (sectionHtml: heading, lede, citation, its place) with the
 // lecturer's heading and text above it; a text item is its heading and text; a question item is a
 // homework question asked of the room (questionItem.js, loaded only for a lecture that has one).
-import { PLACE_LAYOUTS, panelEntry, sectionHtml } from '../panels/manifest.js';
+import { panelEntry, placeLayouts, sectionHtml } from '../panels/manifest.js';
 import { panelText } from '../panels/panelLede.js';
 import english from 'virtual:messages/en/lecture';
 import { messages } from '../i18n/messages.js';
@@ -14,7 +14,18 @@ import { lectureTextFragment } from './lectureTextDom.js';
 
 const t = messages('lecture', english);
 
-/** The lecturer's own heading and text for an item (nothing when it has neither). */
+/** @typedef {import('./readLecture.js').LectureItem} LectureItem */
+/** @typedef {import('./readLecture.js').PanelItem} PanelItem */
+/** @typedef {import('./readLecture.js').QuestionItem} QuestionItem */
+/** @typedef {{ section: HTMLElement, item: PanelItem, key: string, prefix: string | null }} MountedPanel */
+/** @typedef {{ section: HTMLElement, item: QuestionItem, number: number }} AskedQuestion */
+
+/**
+ * The lecturer's own heading and text for an item (nothing when it has neither).
+ * @param {LectureItem} item
+ * @param {string} key
+ * @param {string} className
+ */
 function ownText(item, key, className) {
   const parts = [];
   if (item.heading) {
@@ -33,17 +44,23 @@ function ownText(item, key, className) {
   return box;
 }
 
-/** The manifest's section for a panel (trusted markup from this repository), keyed for this item. */
+/**
+ * The manifest's section for a panel (trusted markup from this repository), keyed for this item.
+ * @param {PanelItem} item  its panel one of the manifest's (readLecture keeps no other)
+ * @param {string} key
+ */
 function panelSection(item, key) {
   const entry = panelEntry(item.panel);
+  if (!entry) throw new RangeError(`No panel ${item.panel} in the manifest.`);
   const template = document.createElement('template');
   template.innerHTML = sectionHtml(entry, panelText(item.panel));
-  const section = /** @type {HTMLElement} */ (template.content.firstElementChild);
+  const section = /** @type {HTMLElement} */ (template.content.firstElementChild); // sectionHtml writes one <section>
   section.id = key;
   section.dataset.item = key;
-  section.querySelector('h2').id = `${key}-title`;
+  const heading = section.querySelector('h2');
+  if (heading) heading.id = `${key}-title`;
   // The place the build keeps for #<panel id> (panelPlaces.css), for every item of this panel: styles.css reads these.
-  for (const layout of Object.keys(PLACE_LAYOUTS)) section.style.setProperty(`--place-${layout}`, `${entry.place[layout]}px`);
+  for (const [layout] of placeLayouts()) section.style.setProperty(`--place-${layout}`, `${entry.place[layout]}px`);
   const own = ownText(item, key, 'lecture-own');
   if (own) {
     section.prepend(own);
@@ -52,7 +69,13 @@ function panelSection(item, key) {
   return section;
 }
 
-/** A section of the lecturer's text, or of a question (filled when its module arrives). */
+/**
+ * A section of the lecturer's text, or of a question (filled when its module arrives).
+ * @param {LectureItem} item
+ * @param {string} key
+ * @param {string} className
+ * @param {string} label
+ */
 function plainSection(item, key, className, label) {
   const section = el('section', `panel ${className}`);
   section.id = key;
@@ -70,8 +93,9 @@ function plainSection(item, key, className, label) {
  * itemKeys. Returns { sections: every item's section in order, panels: [{ section, item, key,
  * prefix }], ready: resolves once the questions are on the page (their cards, or null where they could not load) }.
  * @param {HTMLElement} main
- * @param {{ title: string, items: any[] }} lecture
+ * @param {{ title: string, items: readonly LectureItem[] }} lecture
  * @param {{ key: string, prefix: string | null }[]} keys
+ * @returns {{ sections: HTMLElement[], panels: MountedPanel[], ready: Promise<unknown> }}
  */
 export function mountLecture(main, lecture, keys) {
   for (const section of main.querySelectorAll('section[data-panel]')) section.remove();
@@ -81,8 +105,11 @@ export function mountLecture(main, lecture, keys) {
   const intro = document.querySelector('.site-title p');
   if (intro) intro.textContent = t('pageIntro');
 
+  /** @type {HTMLElement[]} */
   const sections = [];
+  /** @type {MountedPanel[]} */
   const panels = [];
+  /** @type {AskedQuestion[]} */
   const questions = [];
   lecture.items.forEach((item, i) => {
     const { key, prefix } = keys[i];

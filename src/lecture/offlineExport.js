@@ -20,7 +20,10 @@ const t = messages('lecture', english);
 
 export { LECTURE_ELEMENT_ID };
 
-/** The lecture's JSON as the text of a data element: every < as \u003c. */
+/**
+ * The lecture's JSON as the text of a data element: every < as \u003c.
+ * @param {import('./readLecture.js').Lecture} lecture
+ */
 export function lectureDataJson(lecture) {
   return JSON.stringify(lecture).replace(/</g, '\\u003c');
 }
@@ -28,8 +31,10 @@ export function lectureDataJson(lecture) {
 /**
  * The page's script elements in order, as [start, end, openTag]: under the HTML rules a script's
  * text ends at the first </script, which the built page's inlined bundles keep to.
+ * @param {string} html
  */
 function scriptElements(html) {
+  /** @type {[number, number, string][]} */
   const found = [];
   const open = /<script\b[^>]*>/gi;
   let match;
@@ -43,6 +48,7 @@ function scriptElements(html) {
   return found;
 }
 
+/** @param {string} openTag */
 const isLectureElement = (openTag) => new RegExp(`\\sid\\s*=\\s*["']?${LECTURE_ELEMENT_ID}["'\\s>]`, 'i').test(openTag);
 
 /**
@@ -69,7 +75,7 @@ export function offlineLectureHtml(offlineIndexHtml, lecture) {
   const head = html.search(/<\/head\s*>/i);
   const at = first && (head < 0 || first[0] < head) ? first[0] : head;
   if (at < 0) throw new TypeError('The offline lecture page has no <head> to hold the lecture.');
-  const indent = /[ \t]*$/.exec(html.slice(0, at))[0];
+  const indent = /[ \t]*$/.exec(html.slice(0, at))?.[0] ?? ''; // the pattern matches every text, at its end
   html = `${html.slice(0, at)}${element}\n${indent}${html.slice(at)}`;
   // The first <title> is the page's own (it comes before any script); the lecture's title, escaped.
   const title = /<title\b[^>]*>[^<]*<\/title>/i.exec(html);

@@ -14,7 +14,7 @@ const MAX_ELEMENT = 400_000; // characters, as much as a code may unpack to (lec
 /**
  * @typedef {object} OpenedLecture
  * @property {'default' | 'link' | 'data'} source where the lecture came from ('default': none was given, or none could be read)
- * @property {object | null} lecture the lecture as readLecture gives it, or null for the lab's own
+ * @property {import('./readLecture.js').Lecture | null} lecture the lecture as readLecture gives it, or null for the lab's own
  * @property {string[]} problems what was refused, in words (parts of a lecture that opens, or the whole)
  * @property {boolean} refused a lecture was given but could not be read at all
  * @property {'link' | 'data' | null} given where a lecture was given (also when it was refused)
@@ -30,6 +30,7 @@ const MAX_ELEMENT = 400_000; // characters, as much as a code may unpack to (lec
 export function openLecture(search, elementText) {
   /** @type {'link' | 'data'} */
   let source;
+  /** @type {import('./readLecture.js').ReadLecture} */
   let read;
   if (search.has('lecture')) {
     source = 'link';
@@ -49,11 +50,16 @@ export function openLecture(search, elementText) {
   return { source, lecture: read.lecture, problems: read.problems, refused: false, given: source };
 }
 
-/** The data element's JSON, read as readLecture reads any lecture. */
+/**
+ * The data element's JSON, read as readLecture reads any lecture.
+ * @param {string} text
+ * @returns {import('./readLecture.js').ReadLecture}
+ */
 function readElement(text) {
   if (text.length > MAX_ELEMENT) {
     return { ok: false, problems: [t('elementTooLong', { length: fixed(text.length, 0), max: fixed(MAX_ELEMENT, 0) })] };
   }
+  /** @type {unknown} */
   let data;
   try {
     data = JSON.parse(text);
@@ -70,11 +76,12 @@ function readElement(text) {
  * there opens the same view here; a later item of the same panel is `id--2`, `id--3`… (its values
  * `id--2.key`), and a text or question item is `text--N` or `question--N` (N its place in the lecture).
  * A panel id never holds `--` (manifest.js), so no key is another's.
- * @param {{ type: string, panel?: string }[]} items
+ * @param {readonly import('./readLecture.js').LectureItem[]} items
  * @param {(id: string) => string} lecturePrefix the prefix a panel's values have on the lab's own lecture
  * @returns {{ key: string, prefix: string | null }[]}
  */
 export function itemKeys(items, lecturePrefix) {
+  /** @type {Map<string, number>} */
   const seen = new Map();
   return items.map((item, i) => {
     if (item.type !== 'panel') return { key: `${item.type}--${i + 1}`, prefix: null };

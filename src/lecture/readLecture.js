@@ -23,16 +23,40 @@ export const LECTURE_VERSION = 1;
 export const ROOM_SEED = 'lecture';
 
 export const LECTURE_CAPS = Object.freeze({ items: 80, title: 200, heading: 200, text: 4000, keys: 64, seed: 64 });
+/** @typedef {import('../host/panelContract.js').Value} ParamValue */
+/** @typedef {{ heading?: string, text?: string }} OwnText  the lecturer's own heading and text (Markdown) */
+/**
+ * A panel where it starts (the values that differ from its defaults) and the controls a deck's
+ * link would lock or hide.
+ * @typedef {OwnText & { type: 'panel', panel: string, state?: Record<string, ParamValue>, lock?: string[], hide?: string[] }} PanelItem
+ */
+/** @typedef {OwnText & { type: 'text' }} TextItem */
+/** @typedef {OwnText & { type: 'question', question: string, seed?: string }} QuestionItem  seed: ROOM_SEED where absent */
+/** @typedef {PanelItem | TextItem | QuestionItem} LectureItem */
+/** @typedef {{ kind: string, version: number, title: string, lang?: string, items: LectureItem[] }} Lecture */
+/**
+ * A lecture read, or refused whole. (The other member's field is there, undefined, so that the
+ * loose project, which cannot narrow on `ok`, reads both.)
+ * @typedef {{ ok: true, lecture: Lecture, problems: string[] } | { ok: false, problems: string[], lecture?: undefined }} ReadLecture
+ */
+
+/** @type {Readonly<Record<string, readonly string[]>>} the fields each type of item may have */
 const ITEM_FIELDS = {
   panel: ['type', 'panel', 'state', 'lock', 'hide', 'heading', 'text'],
   text: ['type', 'heading', 'text'],
   question: ['type', 'question', 'seed', 'heading', 'text'],
 };
 
+/** @typedef {{ field: string, where?: string }} What  which text, as the messages name it */
+
 /**
  * An optional text: undefined when absent, else the text or a problem (not text, too long). what:
  * which text, as the messages name it ({ field, where }: 'title', 'heading', 'text' or 'seed', and
  * the item's place).
+ * @param {unknown} value
+ * @param {number} max
+ * @param {What} what
+ * @param {string[]} problems
  */
 function optionalText(value, max, what, problems) {
   if (value === undefined) return undefined;
@@ -44,13 +68,20 @@ function optionalText(value, max, what, problems) {
   return value;
 }
 
-/** A list of the panel's control keys (locked or hidden), each resolved to its schema key. what: { where, field }. */
+/**
+ * A list of the panel's control keys (locked or hidden), each resolved to its schema key. what: { where, field }.
+ * @param {unknown} value
+ * @param {import('../host/panelContract.js').Schema} schema
+ * @param {What} what
+ * @param {string[]} problems
+ */
 function keyList(value, schema, what, problems) {
   if (value === undefined) return undefined;
   if (!Array.isArray(value) || value.length > LECTURE_CAPS.keys) {
     problems.push(t('keysNotList', { ...what, max: fixed(LECTURE_CAPS.keys, 0) }));
     return undefined;
   }
+  /** @type {string[]} */
   const keys = [];
   for (const name of value) {
     const key = typeof name === 'string' ? resolveKey(schema, name) : undefined;
@@ -60,12 +91,20 @@ function keyList(value, schema, what, problems) {
   return keys;
 }
 
+/**
+ * @param {Record<string, unknown>} item
+ * @param {string} where
+ * @param {string[]} problems
+ * @returns {PanelItem | null}
+ */
 function readPanelItem(item, where, problems) {
   const id = own(item, 'panel');
   const schema = typeof id === 'string' ? panelSchema(id) : undefined;
-  if (!schema || !panelEntry(id)) {
-    return problems.push(t('noPanel', { where, id: rawText(id, 40) })) && null;
+  if (typeof id !== 'string' || !schema || !panelEntry(id)) {
+    problems.push(t('noPanel', { where, id: rawText(id, 40) }));
+    return null;
   }
+  /** @type {PanelItem} */
   const out = { type: 'panel', panel: id };
   const state = own(item, 'state');
   if (state !== undefined) {
@@ -79,36 +118,55 @@ function readPanelItem(item, where, problems) {
       if (Object.keys(kept).length) out.state = kept;
     }
   }
-  for (const field of ['lock', 'hide']) {
+  for (const field of /** @type {const} */ (['lock', 'hide'])) {
     const keys = keyList(own(item, field), schema, { where, field }, problems);
     if (keys?.length) out[field] = keys;
   }
   return out;
 }
 
+/**
+ * @param {Record<string, unknown>} item
+ * @param {string} where
+ * @param {string[]} problems
+ * @returns {QuestionItem | null}
+ */
 function readQuestionItem(item, where, problems) {
   const id = own(item, 'question');
   if (typeof id !== 'string' || !questionById(id)) {
-    return problems.push(t('noQuestion', { where, id: rawText(id, 40) })) && null;
+    problems.push(t('noQuestion', { where, id: rawText(id, 40) }));
+    return null;
   }
+  /** @type {QuestionItem} */
   const out = { type: 'question', question: id };
   const seed = optionalText(own(item, 'seed'), LECTURE_CAPS.seed, { field: 'seed', where }, problems);
   if (seed !== undefined && seed.trim()) out.seed = seed.trim();
   return out;
 }
 
-/** One item, or null (named in problems) when it cannot be used. */
+/**
+ * One item, or null (named in problems) when it cannot be used.
+ * @param {unknown} item
+ * @param {number} i
+ * @param {string[]} problems
+ * @returns {LectureItem | null}
+ */
 function readItem(item, i, problems) {
   const where = t('itemPlace', { n: fixed(i + 1, 0) });
-  if (!isObject(item)) return problems.push(t('notItem', { where })) && null;
+  if (!isObject(item)) {
+    problems.push(t('notItem', { where }));
+    return null;
+  }
   const type = own(item, 'type');
   const fields = typeof type === 'string' && Object.hasOwn(ITEM_FIELDS, type) ? ITEM_FIELDS[type] : null;
   if (!fields) {
-    return problems.push(t('noKind', { where, type: rawText(type, 40) })) && null;
+    problems.push(t('noKind', { where, type: rawText(type, 40) }));
+    return null;
   }
   for (const key of Object.keys(item)) {
     if (!fields.includes(key)) problems.push(t('noItemField', { where, key: rawText(key, 40), type }));
   }
+  /** @type {LectureItem | null} */
   const out = type === 'panel' ? readPanelItem(item, where, problems)
     : type === 'question' ? readQuestionItem(item, where, problems)
     : { type: 'text' };
@@ -118,12 +176,17 @@ function readItem(item, i, problems) {
   if (heading?.trim()) out.heading = heading.trim();
   if (text?.trim()) out.text = text.trim();
   if (type === 'text' && !out.text && !out.heading) {
-    return problems.push(t('emptyText', { where })) && null;
+    problems.push(t('emptyText', { where }));
+    return null;
   }
   return out;
 }
 
-/** The lecture's language: an id of src/i18n/languages.js, else undefined (and what was refused, named). */
+/**
+ * The lecture's language: an id of src/i18n/languages.js, else undefined (and what was refused, named).
+ * @param {unknown} value
+ * @param {string[]} problems
+ */
 function readLanguage(value, problems) {
   if (value === undefined) return undefined;
   if (typeof value === 'string' && languageById(value)) return value;
@@ -135,6 +198,8 @@ function readLanguage(value, problems) {
  * { ok: true, lecture: { kind, version, title, lang?, items }, problems } — the lecture as far as it can
  * be used, each part left out named in problems — or { ok: false, problems } when the data is no
  * lecture at all. Never throws.
+ * @param {unknown} data
+ * @returns {ReadLecture}
  */
 export function readLecture(data) {
   if (!isObject(data)) return { ok: false, problems: [t('notObject')] };
@@ -144,6 +209,7 @@ export function readLecture(data) {
   if (own(data, 'version') !== LECTURE_VERSION) {
     return { ok: false, problems: [t('otherVersion', { version: rawText(own(data, 'version'), 20), reads: `${LECTURE_VERSION}` })] };
   }
+  /** @type {string[]} */
   const problems = [];
   for (const key of Object.keys(data)) {
     if (!['kind', 'version', 'title', 'lang', 'items'].includes(key)) problems.push(t('noLectureField', { key: rawText(key, 40) }));
@@ -155,7 +221,12 @@ export function readLecture(data) {
   if (raw.length > LECTURE_CAPS.items) {
     problems.push(t('tooManyItems', { count: fixed(raw.length, 0), max: fixed(LECTURE_CAPS.items, 0) }));
   }
-  const items = raw.slice(0, LECTURE_CAPS.items).map((item, i) => readItem(item, i, problems)).filter(Boolean);
+  /** @type {LectureItem[]} */
+  const items = [];
+  raw.slice(0, LECTURE_CAPS.items).forEach((/** @type {unknown} */ item, i) => {
+    const read = readItem(item, i, problems);
+    if (read) items.push(read);
+  });
   const lecture = { kind: LECTURE_KIND, version: LECTURE_VERSION, title, ...(lang ? { lang } : {}), items };
   return { ok: true, lecture, problems };
 }

@@ -214,8 +214,8 @@ export const SECTIONS_MARKER = '<!-- panel sections: written at build time from 
  */
 export const PLACE_LAYOUTS = Object.freeze({ narrow: '', wide: '(min-width: 1001px)', widest: '(min-width: 1450px)' });
 
-/** The layouts with their media queries, as [layout, query] pairs (Object.entries types a key as any string). */
-const placeLayouts = () => /** @type {[keyof PanelPlace, string][]} */ (Object.entries(PLACE_LAYOUTS));
+/** PLACE_LAYOUTS as [layout, media] pairs, narrowest first (Object.entries would forget the keys' type). */
+export const placeLayouts = () => /** @type {[keyof PanelPlace, string][]} */ (Object.entries(PLACE_LAYOUTS));
 
 /** Where the rules that keep each panel's place go in src/panelPlaces.css. */
 export const PLACES_MARKER = '/* panel places: written at build time from src/panels/manifest.js */';

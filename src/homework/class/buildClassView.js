@@ -20,16 +20,18 @@ const t = messages('class', english);
  * @typedef {import('./readClassHandIns.js').Refusal} Refusal
  * @typedef {import('./readClassHandIns.js').PickedFile} PickedFile
  * @typedef {{ phase: 'reading' | 'grading' | 'summarising', done?: number, total?: number }} ViewProgress
- * @typedef {{ ok: true, sheet: any, fingerprint: string, handIns: HandIn[], graded: import('./gradeClass.js').Graded[],
- *   refused: Refusal[], gradebook: import('./buildGradebook.js').Gradebook,
- *   summary: import('./summarizeQuestions.js').QuestionSummary[] } | { ok: false, problems: string[] }} ClassView
+ * @typedef {{ ok: true, sheet: import('../readSheet.js').Sheet, fingerprint: string, handIns: HandIn[],
+ *   graded: import('./gradeClass.js').Graded[], refused: Refusal[], gradebook: import('./buildGradebook.js').Gradebook,
+ *   summary: import('./summarizeQuestions.js').QuestionSummary[], problems?: undefined }
+ *   | { ok: false, problems: string[] }} ClassView
  */
 
 /**
  * request: { sheet (the sheet set, its JSON), files?, text?, classFile? (a saved view's text or
  * bytes: its sheet is used, and its hand-ins come first) }.
- * @param {{ sheet?: unknown, files?: PickedFile[], text?: string, classFile?: string | Uint8Array }} request
- * @param {{ caps?: object, onProgress?: (progress: ViewProgress) => void, signal?: AbortSignal,
+ * @param {{ sheet?: unknown, files?: PickedFile[] | unknown, text?: unknown, classFile?: unknown } | null | undefined} request
+ *   (a worker passes on what it was sent: each part is checked where it is read)
+ * @param {{ caps?: Partial<import('./classCaps.js').ClassCaps>, onProgress?: (progress: ViewProgress) => void, signal?: AbortSignal,
  *   pause?: () => Promise<unknown>, sliceMs?: number }} [options]
  * @returns {Promise<ClassView>}
  */
@@ -50,8 +52,9 @@ export async function buildClassView(request, { caps, onProgress, signal, pause,
   if (sheet === undefined || sheet === null) return { ok: false, problems: [t('grade.giveSheet')] };
   // A saved view's hand-ins count against the cap on hand-ins read in all.
   const left = classCaps(caps).maxHandIns - handIns.length;
-  const read = left > 0 ? readClassHandIns({ files: request?.files, text: request?.text }, { ...caps, maxHandIns: left })
-    : { handIns: [], refused: request?.files?.length || (typeof request?.text === 'string' && request.text.trim())
+  const files = request?.files;
+  const read = left > 0 ? readClassHandIns({ files, text: request?.text }, { ...caps, maxHandIns: left })
+    : { handIns: [], refused: (Array.isArray(files) && files.length) || (typeof request?.text === 'string' && request.text.trim())
       ? [{ source: t('source.filesAndText'), reason: t('grade.savedViewFull') }] : [] };
   handIns.push(...read.handIns);
   refused.push(...read.refused);

@@ -13,7 +13,7 @@
 // A student is their name as the file gives it (spaces and case aside); when the file gives none,
 // their id in the LMS (the participant number in a Moodle folder's name, the user id in a Canvas
 // file's name), or the LMS's folder name; hand-ins with none of them are never taken for one another.
-import { questionById } from '../questions.js';
+import { knownQuestion } from '../questions.js';
 import { lmsUser } from './lmsName.js';
 import english from 'virtual:messages/en/class';
 import { messages } from '../../i18n/messages.js';
@@ -30,23 +30,31 @@ import { messages } from '../../i18n/messages.js';
  *   rows: Row[], students: number, superseded: number, copiedRule: { atLeast: number, common: number } }} Gradebook
  *   copiedRule: the copied flag's rule: how many questions with the same wrong answer flag a pair, and how many
  *   students giving one wrong answer make it a common slip, left out
+ * @typedef {(row: Row) => string | null} Identity  who a row's student is, or null where nothing says
+ * @typedef {import('./gradeClass.js').Graded} Graded
  */
 
 const t = messages('class', english);
 const COPIED_AT_LEAST = 3;
-const normalName = (text) => text.normalize('NFC').trim().replace(/\s+/g, ' ').toLocaleLowerCase();
-const shown = (row) => row.name || row.lmsName || row.source;
-const listed = (rows) => rows.map(shown).join(', ');
-const timeOf = (row) => (row.time === null ? -Infinity : Date.parse(row.time));
+const normalName = (/** @type {string} */ text) => text.normalize('NFC').trim().replace(/\s+/g, ' ').toLocaleLowerCase();
+const shown = (/** @type {Row} */ row) => row.name || row.lmsName || row.source;
+const listed = (/** @type {Row[]} */ rows) => rows.map(shown).join(', ');
+const timeOf = (/** @type {Row} */ row) => (row.time === null ? -Infinity : Date.parse(row.time));
 
-/** The same student more than once: the latest counts (the later one in the list when the times agree). */
+/**
+ * The same student more than once: the latest counts (the later one in the list when the times agree).
+ * @param {Row[]} rows
+ * @param {Identity} identity
+ */
 function supersede(rows, identity) {
+  /** @type {Map<string, Row[]>} */
   const byStudent = new Map();
   for (const row of rows) {
     const who = identity(row);
     if (who === null) continue;
-    if (!byStudent.has(who)) byStudent.set(who, []);
-    byStudent.get(who).push(row);
+    const group = byStudent.get(who) ?? [];
+    byStudent.set(who, group);
+    group.push(row);
   }
   for (const group of byStudent.values()) {
     if (group.length < 2) continue;
@@ -66,12 +74,18 @@ function supersede(rows, identity) {
   }
 }
 
-/** One seed under more than one student (only where the sheet gives no class seed). */
+/**
+ * One seed under more than one student (only where the sheet gives no class seed).
+ * @param {Row[]} rows
+ * @param {Identity} identity
+ */
 function sharedSeeds(rows, identity) {
+  /** @type {Map<string, Row[]>} */
   const bySeed = new Map();
   for (const row of rows) {
-    if (!bySeed.has(row.seed)) bySeed.set(row.seed, []);
-    bySeed.get(row.seed).push(row);
+    const group = bySeed.get(row.seed) ?? [];
+    bySeed.set(row.seed, group);
+    group.push(row);
   }
   for (const group of bySeed.values()) {
     const students = new Set(group.map((row) => identity(row) ?? `#${row.key}`));
@@ -89,19 +103,27 @@ function sharedSeeds(rows, identity) {
  * A wrong answer that many share (a common slip, such as R(0°) for R) says nothing about copying, so
  * one shared by more than 5 % of the class (at least 4 students) is left out; this also keeps the
  * pairs counted small.
+ * @param {Row[]} rows
+ * @param {readonly Graded[]} graded
+ * @param {{ question: string, kind: string }[]} items
+ * @param {Identity} identity
+ * @param {number} atLeast
  */
 function copiedAnswers(rows, graded, items, identity, atLeast) {
+  /** @type {Map<string, { item: number, rows: Row[] }>} */
   const buckets = new Map();
   for (const row of rows) {
     graded[row.key].result.results.forEach((r, i) => {
       if (!r.answered || r.correct || items[i].kind === 'choice') return;
       const value = items[i].kind === 'numeric' ? r.value : r.answer;
       const key = `${row.seed}\u0000${i}\u0000${value}`;
-      if (!buckets.has(key)) buckets.set(key, { item: i, rows: [] });
-      buckets.get(key).rows.push(row);
+      const bucket = buckets.get(key) ?? { item: i, rows: [] };
+      buckets.set(key, bucket);
+      bucket.rows.push(row);
     });
   }
   const common = commonSlip(rows.length);
+  /** @type {Map<string, { x: Row, y: Row, items: number[] }>} */
   const pairs = new Map();
   for (const { item, rows: same } of buckets.values()) {
     if (same.length < 2 || same.length >= common) continue;
@@ -110,15 +132,16 @@ function copiedAnswers(rows, graded, items, identity, atLeast) {
         const [x, y] = [same[a], same[b]];
         if (identity(x) !== null && identity(x) === identity(y)) continue;
         const key = `${Math.min(x.key, y.key)}:${Math.max(x.key, y.key)}`;
-        if (!pairs.has(key)) pairs.set(key, { x, y, items: [] });
-        pairs.get(key).items.push(item);
+        const pair = pairs.get(key) ?? { x, y, items: [] };
+        pairs.set(key, pair);
+        pair.items.push(item);
       }
     }
   }
   for (const { x, y, items: shared } of pairs.values()) {
     if (shared.length < atLeast) continue;
     const questions = shared.sort((a, b) => a - b).map((i) => i + 1).join(', ');
-    for (const [row, other] of [[x, y], [y, x]]) {
+    for (const [row, other] of /** @type {[Row, Row][]} */ ([[x, y], [y, x]])) {
       const text = t('flag.copied.text', { name: shown(other), seed: row.seed, questions, atLeast, common });
       row.flags.push({ kind: 'copied', text, others: [other.key] });
     }
@@ -126,18 +149,18 @@ function copiedAnswers(rows, graded, items, identity, atLeast) {
 }
 
 /** How many students giving one wrong answer make it a common slip: 5 % of the class, at least 4. */
-const commonSlip = (students) => Math.max(4, Math.ceil(0.05 * students));
+const commonSlip = (/** @type {number} */ students) => Math.max(4, Math.ceil(0.05 * students));
 
 /**
  * The gradebook of a class graded by gradeClass (its { ok: true, … } result). copiedAtLeast: how
  * many identical wrong answers flag a pair (3).
- * @param {{ sheet: any, fingerprint: string, graded: { source: string, result: any }[] }} grades
+ * @param {{ sheet: import('../readSheet.js').Sheet, fingerprint: string, graded: readonly Graded[] }} grades
  * @param {{ copiedAtLeast?: number }} [options]
  * @returns {Gradebook}
  */
 export function buildGradebook(grades, { copiedAtLeast = COPIED_AT_LEAST } = {}) {
   const { sheet, graded } = grades;
-  const items = sheet.items.map((item) => ({ question: item.question, kind: /** @type {any} */ (questionById(item.question)).kind }));
+  const items = sheet.items.map((item) => ({ question: item.question, kind: knownQuestion(item.question).kind }));
   /** @type {Row[]} */
   const rows = graded.map(({ source, result }, key) => {
     const tries = result.results.map((r) => r.attempts);
@@ -151,6 +174,7 @@ export function buildGradebook(grades, { copiedAtLeast = COPIED_AT_LEAST } = {})
       time: result.time, source, counted: true, flags: [],
     };
   });
+  /** @type {Identity} */
   const identity = (row) => (row.name ? normalName(row.name) : row.lmsId ? `${row.lms}\u0000${row.lmsId}`
     : row.lmsName ? normalName(row.lmsName) : null);
   supersede(rows, identity);

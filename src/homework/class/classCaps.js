@@ -12,7 +12,7 @@ const t = messages('class', english);
 const MB = 1024 * 1024;
 
 /** A size in words for a refusal: megabytes, two decimals below one. */
-export const megabytes = (bytes) => t('megabytes', { size: fixed(bytes / MB, bytes < MB ? 2 : 1) });
+export const megabytes = (/** @type {number} */ bytes) => t('megabytes', { size: fixed(bytes / MB, bytes < MB ? 2 : 1) });
 
 export const CLASS_CAPS = Object.freeze({
   /** A .json or .txt file, picked or unpacked: a hand-in is a few kilobytes (40 questions: about 3 KB);
@@ -38,11 +38,18 @@ export const CLASS_CAPS = Object.freeze({
   maxClassFileBytes: 50 * MB,
 });
 
-/** The caps, with any of them replaced (tests use small ones); a replacement that is not a positive number is ignored. */
+/** @typedef {{ -readonly [K in keyof typeof CLASS_CAPS]: number }} ClassCaps */
+
+/**
+ * The caps, with any of them replaced (tests use small ones); a replacement that is not a positive number is ignored.
+ * @param {Partial<ClassCaps> | null} [overrides]
+ * @returns {ClassCaps}
+ */
 export function classCaps(overrides = {}) {
+  /** @type {ClassCaps} */
   const caps = { ...CLASS_CAPS };
-  for (const key of Object.keys(CLASS_CAPS)) {
-    const value = Object.hasOwn(overrides ?? {}, key) ? overrides[key] : undefined;
+  for (const key of /** @type {(keyof ClassCaps)[]} */ (Object.keys(CLASS_CAPS))) {
+    const value = overrides && Object.hasOwn(overrides, key) ? overrides[key] : undefined;
     if (typeof value === 'number' && value > 0) caps[key] = value;
   }
   return caps;

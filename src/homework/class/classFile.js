@@ -38,17 +38,19 @@ export function writeClassFile({ sheet, handIns, saved = new Date().toISOString(
  * Reads a saved class view (its text or bytes): { ok: true, sheet, saved, handIns, refused } to be
  * graded again by gradeClass, or { ok: false, problems } when it is no class view or its sheet
  * cannot be read. Never throws on any input.
- * @param {string | Uint8Array} input
- * @param {Partial<typeof import('./classCaps.js').CLASS_CAPS>} [capsGiven]
- * @returns {{ ok: true, sheet: any, saved: string | null, handIns: HandIn[], refused: Refusal[] } | { ok: false, problems: string[] }}
+ * @param {unknown} input  its text or bytes (anything else is refused)
+ * @param {Partial<import('./classCaps.js').ClassCaps>} [capsGiven]
+ * @returns {{ ok: true, sheet: import('../readSheet.js').Sheet, saved: string | null, handIns: HandIn[], refused: Refusal[],
+ *   problems?: undefined } | { ok: false, problems: string[] }}
  */
 export function readClassFile(input, capsGiven = {}) {
   const caps = classCaps(capsGiven);
-  const size = typeof input === 'string' ? input.length : input instanceof Uint8Array ? input.length : -1;
-  if (size < 0) return { ok: false, problems: [t('classFile.notText')] };
+  if (typeof input !== 'string' && !(input instanceof Uint8Array)) return { ok: false, problems: [t('classFile.notText')] };
+  const size = input.length;
   if (size > caps.maxClassFileBytes) {
     return { ok: false, problems: [t('classFile.tooLarge', { size: megabytes(size), max: megabytes(caps.maxClassFileBytes) })] };
   }
+  /** @type {unknown} */
   let doc;
   try {
     doc = JSON.parse(typeof input === 'string' ? input : new TextDecoder().decode(input));
@@ -58,6 +60,7 @@ export function readClassFile(input, capsGiven = {}) {
   if (!isObject(doc) || own(doc, 'kind') !== CLASS_FILE_KIND) {
     return { ok: false, problems: [t('classFile.otherKind', { kind: CLASS_FILE_KIND })] };
   }
+  /** @type {string[]} */
   const problems = [];
   if (own(doc, 'version') !== CLASS_FILE_VERSION) {
     problems.push(t('classFile.version', { version: CLASS_FILE_VERSION, found: rawText(own(doc, 'version')) }));
@@ -66,7 +69,7 @@ export function readClassFile(input, capsGiven = {}) {
   if (!sheet.ok) problems.push(...sheet.problems.map((problem) => t('classFile.sheet', { problem })));
   const handIns = own(doc, 'handIns');
   if (!Array.isArray(handIns)) problems.push(t('classFile.handIns'));
-  if (problems.length || !Array.isArray(handIns)) {
+  if (problems.length || !sheet.ok || !Array.isArray(handIns)) {
     return { ok: false, problems: problems.map((problem) => t('classFile.cannotOpen', { problem })) };
   }
 
@@ -77,7 +80,7 @@ export function readClassFile(input, capsGiven = {}) {
     }));
   /** @type {HandIn[]} */
   const kept = [];
-  handIns.forEach((entry, i) => {
+  handIns.forEach((/** @type {unknown} */ entry, i) => {
     const label = t('source.classViewHandIn', { number: i + 1 });
     if (i >= caps.maxHandIns) {
       if (i === caps.maxHandIns) {
@@ -95,7 +98,7 @@ export function readClassFile(input, capsGiven = {}) {
     else if (typeof source !== 'string' || !source || source.length > MAX_SOURCE) {
       refused.push({ source: label, reason: t('classFile.source', { max: MAX_SOURCE }) });
     }
-    else kept.push({ source, data: entry.data });
+    else kept.push({ source, data: own(entry, 'data') });
   });
   const saved = own(doc, 'saved');
   const when = typeof saved === 'string' && !Number.isNaN(Date.parse(saved)) ? saved.slice(0, 40) : null;

@@ -12,24 +12,32 @@ import { useWorkerLanguage } from './classWorkerLanguage.js';
 /**
  * Answers class-view requests on a worker's global scope (or anything with addEventListener and
  * postMessage, as tests give it).
- * @param {{ addEventListener: (type: 'message', listener: (event: { data: any }) => void) => void,
- *   postMessage: (message: any) => void }} scope
+ * @param {{ addEventListener(type: 'message', listener: (event: { data: unknown }) => void): void,
+ *   postMessage(message: unknown): void }} scope
  */
 export function serveClassView(scope) {
   scope.addEventListener('message', async (event) => {
-    const { id, request, lang } = event.data ?? {};
+    const message = event.data;
+    /** @type {(key: string) => unknown} the message's field (the page posts { id, request, lang }) */
+    const field = (key) => (typeof message === 'object' && message !== null ? Reflect.get(message, key) : undefined);
+    const id = field('id');
+    const request = field('request');
+    const lang = field('lang');
     try {
       if (lang !== undefined) useWorkerLanguage(lang);
       // Nothing else runs on a worker's thread, so grading does not pause between slices.
-      const view = await buildClassView(request, {
+      const view = await buildClassView(typeof request === 'object' ? request : null, {
         pause: () => Promise.resolve(), sliceMs: 250, onProgress: (progress) => scope.postMessage({ id, progress }),
       });
       scope.postMessage({ id, view });
     } catch (error) {
-      scope.postMessage({ id, error: error?.message ?? String(error) });
+      scope.postMessage({ id, error: error instanceof Error ? error.message : String(error) });
     }
   });
 }
 
-const global = /** @type {any} */ (globalThis);
-if (typeof global.WorkerGlobalScope === 'function' && global instanceof global.WorkerGlobalScope) serveClassView(global);
+// WorkerGlobalScope is not in the DOM library's types (the page's); in a worker, globalThis is one.
+const { WorkerGlobalScope } = /** @type {typeof globalThis & { WorkerGlobalScope?: unknown }} */ (globalThis);
+if (typeof WorkerGlobalScope === 'function' && globalThis instanceof WorkerGlobalScope) {
+  serveClassView(globalThis);
+}

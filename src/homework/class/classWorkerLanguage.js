@@ -11,20 +11,34 @@ import every from 'virtual:messages/every/class+homework+questions';
 import classWords from 'virtual:messages/en/class';
 import homeworkWords from 'virtual:messages/en/homework';
 import questionWords from 'virtual:messages/en/questions';
-import { PSEUDO_LANGUAGES, SOURCE_LANGUAGE, languageById } from '../../i18n/languages.js';
+import { LANGUAGES, PSEUDO_LANGUAGES, SOURCE_LANGUAGE, languageById } from '../../i18n/languages.js';
 import { currentLanguage, setCatalogue } from '../../i18n/messages.js';
 import { setNumberLocale } from '../../ui/format.js';
 
 const ENGLISH = { class: classWords, homework: homeworkWords, questions: questionWords };
 const GROWTH = 0.35; // as scripts/pseudoLocale.js
 
-/** English's messages of one namespace, each bracketed and about 35 % longer. */
-const pseudo = (english) => Object.fromEntries(Object.entries(english).map(([key, message]) => [key, (args) => {
-  const text = message(args);
-  return `⟦${text} ${'·'.repeat(Math.ceil(GROWTH * text.length))}⟧`;
-}]));
+/** @typedef {import('../../i18n/messages.js').Message} Message */
 
-/** The compiled catalogue of `id` for this worker's namespaces, or null where it has none. */
+/**
+ * English's messages of one namespace, each bracketed and about 35 % longer.
+ * @param {Record<string, Message>} english
+ * @returns {Record<string, Message>}
+ */
+const pseudo = (english) => Object.fromEntries(Object.entries(english).map(([key, message]) => {
+  /** @type {Message} */
+  const padded = (args) => {
+    const text = message(args);
+    return `⟦${text} ${'·'.repeat(Math.ceil(GROWTH * text.length))}⟧`;
+  };
+  return [key, padded];
+}));
+
+/**
+ * The compiled catalogue of `id` for this worker's namespaces, or null where it has none.
+ * @param {string} id
+ * @returns {import('../../i18n/messages.js').Catalogue | null}
+ */
 function catalogueOf(id) {
   if (PSEUDO_LANGUAGES.some((l) => l.id === id)) {
     return Object.fromEntries(Object.entries(ENGLISH).map(([namespace, messages]) => [namespace, pseudo(messages)]));
@@ -38,9 +52,10 @@ function catalogueOf(id) {
  * @returns {string} the language now spoken
  */
 export function useWorkerLanguage(id) {
-  const asked = languageById(id) ?? languageById(SOURCE_LANGUAGE);
+  const english = LANGUAGES[0]; // the first listed is the source language
+  const asked = languageById(id) ?? english;
   const compiled = asked.id === SOURCE_LANGUAGE ? null : catalogueOf(asked.id);
-  const language = compiled || asked.id === SOURCE_LANGUAGE ? asked : languageById(SOURCE_LANGUAGE);
+  const language = compiled || asked.id === SOURCE_LANGUAGE ? asked : english;
   if (language.id !== currentLanguage()) {
     setCatalogue(language.id, compiled);
     setNumberLocale(language.numbers);

@@ -14,8 +14,9 @@ import { messages } from '../../i18n/messages.js';
 const t = messages('class', english);
 
 /** The last part of a path (a file in a zip or a dropped folder). */
-export const baseName = (path) => path.slice(path.lastIndexOf('/') + 1);
+export const baseName = (/** @type {string} */ path) => path.slice(path.lastIndexOf('/') + 1);
 
+/** @type {Readonly<Record<string, FileKind>>} */
 const EXTENSIONS = { json: 'json', txt: 'text', html: 'html', htm: 'html', zip: 'zip' };
 
 /**
@@ -34,7 +35,7 @@ export function fileKind(path) {
   return { reason: t('file.otherKind', { extension: extension.slice(0, 12) }) };
 }
 
-const startsWith = (bytes, ...values) => values.every((v, i) => bytes[i] === v);
+const startsWith = (/** @type {Uint8Array} */ bytes, /** @type {number[]} */ ...values) => values.every((v, i) => bytes[i] === v);
 
 /**
  * What a file without an extension holds, from its bytes: { kind: 'zip' | 'text' } (text covers a

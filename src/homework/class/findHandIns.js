@@ -27,12 +27,22 @@ const MAX_REFUSALS = 1000; // listed one by one, per text
 /**
  * @typedef {{ source: string, data: unknown }} HandIn
  * @typedef {{ source: string, reason: string }} Refusal
+ * @typedef {{ data: object, end: number, reason?: undefined } | { reason: string, data?: undefined, end?: undefined }} Code
+ *   A code read: its data and where it ends, or why it cannot be read.
+ * @typedef {{ start: number, end?: number, data?: unknown, reason?: string }} Found A hand-in found in the text (its data,
+ *   and where its JSON ends), or one that is there and cannot be read (the reason).
  */
 
+/** @type {(c: number) => boolean} */
 const isCodeChar = (c) => (c >= 48 && c <= 57) || (c >= 65 && c <= 90) || (c >= 97 && c <= 122) || c === 45 || c === 95;
+/** @type {(c: number) => boolean} */
 const isSpace = (c) => c === 32 || c === 9 || c === 10 || c === 13 || c === 12 || c === 0xa0;
 
-/** The line (from 1) each position is on, by binary search over the line starts. */
+/**
+ * The line (from 1) each position is on, by binary search over the line starts.
+ * @param {string} text
+ * @returns {(position: number) => number}
+ */
 function lineFinder(text) {
   const starts = [0];
   for (let i = text.indexOf('\n'); i !== -1; i = text.indexOf('\n', i + 1)) starts.push(i + 1);
@@ -48,7 +58,10 @@ function lineFinder(text) {
   };
 }
 
-/** Whether a base64url text's last byte is "}" (the end of a JSON object), from its last group alone. */
+/**
+ * Whether a base64url text's last byte is "}" (the end of a JSON object), from its last group alone.
+ * @param {string} code
+ */
 function endsInBrace(code) {
   const rest = code.length % 4;
   if (rest === 1) return false;
@@ -65,13 +78,19 @@ function endsInBrace(code) {
  * at which it decodes to a JSON object, or { reason } why none does (worked out only when `explain`:
  * decoding a damaged code throws inside sheetCodes.js, and a text of a million broken codes would
  * spend half a minute on reasons that are counted, not listed).
+ * @param {string} text
+ * @param {number} start
+ * @param {number} limit
+ * @param {boolean} explain
+ * @returns {Code}
  */
 function readCode(text, start, limit, explain) {
   let code = '';
-  const ends = []; // [length of code, position in text after it]
+  /** @type {[number, number][]} [length of code, position in text after it] */
+  const ends = [];
   let run = start;
   let lineStart = false;
-  const close = (i) => {
+  const close = (/** @type {number} */ i) => {
     if (i > run) code += text.slice(run, i);
     run = i;
     if (code.length && (!ends.length || ends[ends.length - 1][0] !== code.length)) ends.push([code.length, i]);
@@ -128,7 +147,12 @@ function escaped(text, i) {
   return n % 2 === 1;
 }
 
-/** The "{" that opens the object holding position `at`, searched back no further than `floor`; -1 if none. */
+/**
+ * The "{" that opens the object holding position `at`, searched back no further than `floor`; -1 if none.
+ * @param {string} text
+ * @param {number} at
+ * @param {number} floor
+ */
 function objectStart(text, at, floor) {
   let depth = 0;
   let inString = false;
@@ -146,7 +170,12 @@ function objectStart(text, at, floor) {
   return -1;
 }
 
-/** The "}" that closes the object opened at `start`, searched no further than `ceiling`; -1 if none. */
+/**
+ * The "}" that closes the object opened at `start`, searched no further than `ceiling`; -1 if none.
+ * @param {string} text
+ * @param {number} start
+ * @param {number} ceiling
+ */
 function objectEnd(text, start, ceiling) {
   let depth = 0;
   let inString = false;
@@ -168,13 +197,17 @@ function objectEnd(text, start, ceiling) {
 /**
  * Hand-ins as JSON inside a text, found by their kind: [{ start, end, data } | { start, reason }].
  * Each search stops at the next one's kind, so every character is looked at a bounded number of times.
+ * @param {string} text
+ * @returns {Found[]}
  */
 function findJson(text) {
   // Each reason written once: a text can hold a million broken hand-ins.
   const noStart = t('find.jsonNoStart');
   const cut = t('find.jsonCut');
   const unreadable = t('find.jsonUnreadable');
+  /** @type {Found[]} */
   const found = [];
+  /** @type {number[]} */
   const marks = [];
   for (let m = text.indexOf(MARK); m !== -1; m = text.indexOf(MARK, m + 1)) if (!escaped(text, m)) marks.push(m);
   let floor = 0;
@@ -194,7 +227,7 @@ function findJson(text) {
       return;
     }
     try {
-      found.push({ start, end: end + 1, data: JSON.parse(text.slice(start, end + 1)) });
+      found.push({ start, end: end + 1, data: /** @type {unknown} */ (JSON.parse(text.slice(start, end + 1))) });
       floor = end + 1;
     } catch {
       found.push({ start, reason: unreadable });
@@ -220,6 +253,7 @@ export function findHandIns(text, source, { maxHandIns = Infinity } = {}) {
   if (!trimmed) return { handIns, refused };
   // A whole handed-in file, or a list of them.
   if (trimmed.startsWith('{') || trimmed.startsWith('[')) {
+    /** @type {unknown} */
     let data;
     try {
       data = JSON.parse(trimmed);
@@ -234,8 +268,8 @@ export function findHandIns(text, source, { maxHandIns = Infinity } = {}) {
   const scanned = text.includes(`"${MARK}"`) ? text.replaceAll('""', '"') : text;
   const lineOf = lineFinder(scanned);
   const found = findJson(scanned);
-  const taken = found.filter((f) => f.end !== undefined);
-  const inside = (i) => taken.some((f) => f.start <= i && i < f.end);
+  const taken = found.flatMap((f) => (f.end === undefined ? [] : [{ start: f.start, end: f.end }]));
+  const inside = (/** @type {number} */ i) => taken.some((f) => f.start <= i && i < f.end);
   let failed = 0;
   for (let p = scanned.indexOf(HAND_IN_PREFIX); p !== -1;) {
     const next = scanned.indexOf(HAND_IN_PREFIX, p + HAND_IN_PREFIX.length);
@@ -249,7 +283,7 @@ export function findHandIns(text, source, { maxHandIns = Infinity } = {}) {
   }
   found.sort((a, b) => a.start - b.start);
   let unlisted = 0;
-  const where = (f) => t('source.line', { source, line: lineOf(f.start) });
+  const where = (/** @type {Found} */ f) => t('source.line', { source, line: lineOf(f.start) });
   for (const f of found) {
     const reason = f.reason ?? (handIns.length >= maxHandIns ? full() : null);
     if (!reason) handIns.push({ source: where(f), data: f.data });

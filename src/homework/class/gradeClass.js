@@ -8,7 +8,7 @@
 // through (classWorker.js); gradeClassSync runs it to its end (tests, Node).
 import { gradeHandIn, sheetFingerprint } from '../gradeHandIn.js';
 import { expectedValue, questionParams, trueOption } from '../gradeAnswer.js';
-import { questionById } from '../questions.js';
+import { knownQuestion } from '../questions.js';
 import { readSheet } from '../readSheet.js';
 import { HAND_IN_KIND } from '../sheetCodes.js';
 import { rawText } from '../../host/params.js';
@@ -20,16 +20,19 @@ import { messages } from '../../i18n/messages.js';
 /**
  * @typedef {{ source: string, data: unknown }} HandIn
  * @typedef {{ source: string, reason: string }} Refusal
- * @typedef {{ source: string, result: any }} Graded  result: gradeHandIn's { ok: true, … } (its sheet is the class's)
- * @typedef {{ ok: true, sheet: any, fingerprint: string, graded: Graded[], refused: Refusal[] }
- *   | { ok: false, problems: string[] }} ClassGrades
+ * @typedef {{ source: string, result: import('../gradeHandIn.js').GradedHandIn }} Graded  result: its sheet is the class's
+ * @typedef {{ ok: true, sheet: import('../readSheet.js').Sheet, fingerprint: string, graded: Graded[], refused: Refusal[],
+ *   problems?: undefined } | { ok: false, problems: string[] }} ClassGrades
  * @typedef {{ done: number, total: number }} Progress
  */
 
 const t = messages('class', english);
 const SLICE_MS = 40;
 
-/** Why `data` is not a hand-in at all, before grading (a sheet or a saved class view dropped among them), or null. */
+/**
+ * Why `data` is not a hand-in at all, before grading (a sheet or a saved class view dropped among them), or null.
+ * @param {unknown} data
+ */
 function notAHandIn(data) {
   if (!isObject(data)) return t('grade.notObject');
   const kind = own(data, 'kind');
@@ -47,9 +50,11 @@ function notAHandIn(data) {
  * parameters, with a step after each, a slice can end between them; grading then finds them
  * remembered (gradeAnswer.js). Yields after each computation; hand-ins without a usable seed are
  * left to gradeHandIn to refuse.
+ * @param {import('../readSheet.js').Sheet} sheet
+ * @param {readonly unknown[]} list
  */
 function* primeQuestions(sheet, list) {
-  const questions = sheet.items.map((item) => /** @type {any} */ (questionById(item.question)));
+  const questions = sheet.items.map((item) => knownQuestion(item.question));
   const seen = new Set();
   for (const item of list) {
     const data = isObject(item) ? own(item, 'data') : undefined;
@@ -97,16 +102,18 @@ export function* gradeClassSteps(sheet, handIns, { sliceMs = SLICE_MS, now = () 
   }
   for (let i = 0; i < list.length; i += 1) {
     const item = list[i];
-    const source = isObject(item) && typeof own(item, 'source') === 'string' ? item.source : t('source.handIn', { number: i + 1 });
-    const data = isObject(item) ? own(item, 'data') : undefined;
+    const given = own(item, 'source');
+    const source = typeof given === 'string' ? given : t('source.handIn', { number: i + 1 });
+    const data = own(item, 'data');
     const reason = notAHandIn(data);
     if (reason) refused.push({ source, reason });
     else {
+      /** @type {ReturnType<typeof gradeHandIn>} */
       let result;
       try {
         result = gradeHandIn(data, { expected });
       } catch (error) {
-        result = { ok: false, problems: [t('grade.notGraded', { error: error?.message ?? t('anError') })] };
+        result = { ok: false, problems: [t('grade.notGraded', { error: error instanceof Error ? error.message : t('anError') })] };
       }
       // The hand-in's sheet is the class's (the fingerprints agree): one shared object, not 500 copies.
       if (result.ok) graded.push({ source, result: { ...result, sheet: expected } });
@@ -122,7 +129,8 @@ export function* gradeClassSteps(sheet, handIns, { sliceMs = SLICE_MS, now = () 
 
 /** The next task: the page's other work (input, painting) runs before grading goes on. */
 function nextTask() {
-  const scheduler = /** @type {any} */ (globalThis).scheduler;
+  // scheduler.yield (Chromium 129 and later) is not in TypeScript's DOM types yet.
+  const { scheduler } = /** @type {typeof globalThis & { scheduler?: { yield?: () => Promise<void> } }} */ (globalThis);
   if (typeof scheduler?.yield === 'function') return scheduler.yield();
   return new Promise((resolve) => setTimeout(resolve, 0));
 }

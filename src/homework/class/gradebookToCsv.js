@@ -34,13 +34,17 @@ const FORMULA_START = /^[=+\-@\t\r\uff1d\uff0b\uff0d\uff20]/;
 const BOM = '\ufeff';
 
 /** Text from outside as a cell: a leading apostrophe where it would start a formula. */
-export const textCell = (text) => (FORMULA_START.test(text) ? `'${text}` : text);
+export const textCell = (/** @type {string} */ text) => (FORMULA_START.test(text) ? `'${text}` : text);
 
+/** @type {Record<import('./buildGradebook.js').Mark, string>} */
 const mark = { right: '1', wrong: '0', unanswered: '' };
 
-const pad = (n) => String(n).padStart(2, '0');
+const pad = (/** @type {number} */ n) => String(n).padStart(2, '0');
 
-/** A hand-in's time as a spreadsheet in any language reads a date: 2026-01-15 10:00, local time; other text as it is. */
+/**
+ * A hand-in's time as a spreadsheet in any language reads a date: 2026-01-15 10:00, local time; other text as it is.
+ * @param {string} time
+ */
 export function localTime(time) {
   const date = new Date(time);
   if (!/^\d{4}-\d\d-\d\dT/.test(time) || Number.isNaN(date.getTime())) return textCell(time);
@@ -73,6 +77,7 @@ export function gradebookCells(gradebook, { rows = gradebook.rows, includeSupers
 }
 
 /** A field as RFC 4180 writes it; in the comma form a semicolon is quoted too, in the semicolon form a comma is not (87,5 is a number). */
+/** @type {(text: string, separator: string) => string} */
 const field = (text, separator) => ((separator === ';' ? /[";\r\n]/ : /[",;\r\n]/).test(text) ? `"${text.replaceAll('"', '""')}"` : text);
 
 /**

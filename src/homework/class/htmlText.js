@@ -20,6 +20,7 @@ const HIDDEN = new Set(['script', 'style', 'template', 'noscript']);
  * @returns {string}
  */
 export function htmlToText(html) {
+  /** @type {string[]} */
   const parts = [];
   let hidden = 0;
   const parser = new Parser({
@@ -44,5 +45,6 @@ export function htmlToText(html) {
 }
 
 /** Whether a text that starts with "<" reads as an HTML page or fragment (not "<3" or "<-- mine"). */
+/** @param {string} text */
 export const looksLikeHtml = (text) => /^\s*<(!doctype\s+html|html|head|body|meta|p|div|span|br|!--|h[1-6]|ul|ol|table|pre)[\s>/]/i
   .test(text.slice(0, 200));

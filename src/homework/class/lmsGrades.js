@@ -46,9 +46,11 @@ const t = messages('class', english);
 const DEFAULT_OUT_OF = 100;
 
 /** A grade as an LMS reads it: out of `outOf`, at most two decimals, a point for the decimal sign. */
+/** @type {(row: Row, outOf: number) => string} */
 const grade = (row, outOf) => String(Math.round((row.total ? (row.score / row.total) * outOf : 0) * 100) / 100);
+/** @param {unknown} outOf */
 const usable = (outOf) => (typeof outOf === 'number' && Number.isFinite(outOf) && outOf > 0 && outOf <= 1e6 ? outOf : DEFAULT_OUT_OF);
-const nameOf = (row) => row.name || row.lmsName;
+const nameOf = (/** @type {Row} */ row) => row.name || row.lmsName;
 
 /**
  * The counted students with their one id in `lms`, and those left out with why.
@@ -60,14 +62,16 @@ export function lmsStudents(gradebook, lms) {
   const byKey = new Map(gradebook.rows.map((row) => [row.key, row]));
   /** @type {LeftOut[]} */
   const left = [];
+  /** @type {{ id: string, row: Row }[]} */
   const found = [];
   for (const row of gradebook.rows.filter((r) => r.counted)) {
-    const earlier = row.flags.filter((f) => f.kind === 'resubmitted').flatMap((f) => f.others).map((key) => byKey.get(key));
-    const ids = [...new Set([row, ...earlier].filter((r) => r?.lms === lms && r.lmsId).map((r) => r.lmsId))];
+    const earlier = row.flags.filter((f) => f.kind === 'resubmitted').flatMap((f) => f.others).flatMap((key) => byKey.get(key) ?? []);
+    const ids = [...new Set([row, ...earlier].filter((r) => r.lms === lms && r.lmsId).map((r) => r.lmsId))];
     if (!ids.length) left.push({ row, why: 'no-id' });
     else if (ids.length > 1) left.push({ row, why: 'two-ids', ids });
     else found.push({ id: ids[0], row });
   }
+  /** @type {{ id: string, row: Row }[]} */
   const students = [];
   for (const entry of found) {
     const others = found.filter((f) => f.id === entry.id && f !== entry).map((f) => f.row);
@@ -99,6 +103,7 @@ export function moodleWorksheet(gradebook, { outOf, now = new Date() } = {}) {
  * The heading of the assignment's column: the sheet's title, unless Canvas would read it as
  * something else ("Name (123)" is the assignment with id 123; "… Final Score" and the like are its
  * own read-only columns, dropped on import).
+ * @param {unknown} title
  */
 export function canvasColumn(title) {
   const text = String(title).trim().replace(/\((\d+)\)$/, '[$1]') || t('lms.canvasColumn');

@@ -21,7 +21,10 @@ import { messages } from '../../i18n/messages.js';
 
 const t = messages('class', english);
 
-/** Text from a file's bytes: UTF-8 (a byte-order mark dropped), or UTF-16 where its mark says so (Windows' "Unicode"). */
+/**
+ * Text from a file's bytes: UTF-8 (a byte-order mark dropped), or UTF-16 where its mark says so (Windows' "Unicode").
+ * @param {Uint8Array} bytes
+ */
 export function decodeText(bytes) {
   if (bytes[0] === 0xff && bytes[1] === 0xfe) return new TextDecoder('utf-16le').decode(bytes.subarray(2));
   if (bytes[0] === 0xfe && bytes[1] === 0xff) return new TextDecoder('utf-16be').decode(bytes.subarray(2));
@@ -31,9 +34,9 @@ export function decodeText(bytes) {
 
 /**
  * Reads files and text into hand-ins. files: [{ name (its path), bytes }]; text: pasted text;
- * caps: any of CLASS_CAPS replaced. Never throws on any input.
- * @param {{ files?: PickedFile[], text?: string }} [input]
- * @param {Partial<typeof import('./classCaps.js').CLASS_CAPS>} [capsGiven]
+ * caps: any of CLASS_CAPS replaced. Never throws on any input (a worker passes on what it was sent).
+ * @param {{ files?: unknown, text?: unknown }} [input]
+ * @param {Partial<import('./classCaps.js').ClassCaps>} [capsGiven]
  * @returns {{ handIns: HandIn[], refused: Refusal[] }}
  */
 export function readClassHandIns({ files = [], text = '' } = {}, capsGiven = {}) {
@@ -45,15 +48,20 @@ export function readClassHandIns({ files = [], text = '' } = {}, capsGiven = {})
   const budget = { entries: caps.maxEntries, bytes: caps.maxUnpackedBytes };
   const left = () => caps.maxHandIns - handIns.length;
 
+  /** @type {(content: string, source: string) => void} */
   const readText = (content, source) => {
     const found = findHandIns(content, source, { maxHandIns: Math.max(0, left()) });
     handIns.push(...found.handIns);
     refused.push(...found.refused);
   };
 
+  /** @type {(kind: string, size: number, max: number) => string} */
   const tooLarge = (kind, size, max) => t('file.tooLarge', { kind, size: megabytes(size), max: megabytes(max) });
 
-  /** A zip entry's size is decided from its directory, before it is unpacked. */
+  /**
+   * A zip entry's size is decided from its directory, before it is unpacked.
+   * @type {(path: string, claimed: number) => string | null}
+   */
   const admit = (path, claimed) => {
     const kind = fileKind(path);
     if (kind.reason) return kind.reason;
@@ -63,7 +71,10 @@ export function readClassHandIns({ files = [], text = '' } = {}, capsGiven = {})
     return t('file.unpacksTooLarge', { kind: kind.kind === 'zip' ? 'zip' : 'file', size: megabytes(claimed), max: megabytes(max) });
   };
 
-  /** A text file's content: an HTML page's text (tags dropped, entities decoded), any other as it is. */
+  /**
+   * A text file's content: an HTML page's text (tags dropped, entities decoded), any other as it is.
+   * @type {(name: string, bytes: Uint8Array, html: boolean) => void}
+   */
   const readTextFile = (name, bytes, html) => {
     if (bytes.length > caps.maxFileBytes) {
       refused.push({ source: name, reason: tooLarge('file', bytes.length, caps.maxFileBytes) });
@@ -75,6 +86,7 @@ export function readClassHandIns({ files = [], text = '' } = {}, capsGiven = {})
     else refused.push({ source: name, reason: html && decoded.trim() ? t('file.emptyHtml') : t('file.empty') });
   };
 
+  /** @type {(name: string, bytes: Uint8Array, depth: number) => void} */
   const readFile = (name, bytes, depth) => {
     const named = fileKind(name);
     const kind = named.kind === 'by-content' ? contentKind(bytes) : named;
@@ -93,16 +105,22 @@ export function readClassHandIns({ files = [], text = '' } = {}, capsGiven = {})
     } else readTextFile(name, bytes, kind.kind === 'html'); // a text that starts as an HTML page is read as one too
   };
 
+  /** @type {unknown[]} */
   const list = Array.isArray(files) ? files : [];
+  // A file's name and bytes, read as properties of whatever was given (a PickedFile, or nothing of the kind).
+  const member = (/** @type {unknown} */ file, /** @type {string} */ key) => (
+    typeof file === 'object' && file !== null ? Reflect.get(file, key) : undefined);
   list.forEach((file, i) => {
-    const name = typeof file?.name === 'string' && file.name ? file.name : t('source.file', { number: i + 1 });
-    const bytes = file?.bytes instanceof Uint8Array ? file.bytes : file?.bytes instanceof ArrayBuffer ? new Uint8Array(file.bytes) : null;
+    const given = member(file, 'name');
+    const name = typeof given === 'string' && given ? given : t('source.file', { number: i + 1 });
+    const content = member(file, 'bytes');
+    const bytes = content instanceof Uint8Array ? content : content instanceof ArrayBuffer ? new Uint8Array(content) : null;
     try {
       if (!bytes) refused.push({ source: name, reason: t('file.noContent') });
       else readFile(name, bytes, 0);
     } catch (error) {
       // Not expected (every reader refuses by name); if it happens, the file is still named.
-      refused.push({ source: name, reason: t('file.error', { error: error?.message ?? t('anError') }) });
+      refused.push({ source: name, reason: t('file.error', { error: error instanceof Error ? error.message : t('anError') }) });
     }
   });
 

@@ -12,12 +12,16 @@ import { pageLocale, safeLocale } from '../../ui/safeLocale.js';
  *   | `item:${number}`} Column
  */
 
-const TEXT_COLUMNS = ['name', 'lmsName', 'seed', 'source'];
 const MARK_ORDER = { wrong: 0, right: 1 }; // ascending: who got it wrong first; unanswered last
 
-/** A row's value in a column: a number, a text, or null for missing. */
+/**
+ * A row's value in a column: a number, a text, or null for missing.
+ * @param {Row} row
+ * @param {Column} column
+ * @returns {number | string | null}
+ */
 function valueOf(row, column) {
-  if (TEXT_COLUMNS.includes(column)) return row[column] || null;
+  if (column === 'name' || column === 'lmsName' || column === 'seed' || column === 'source') return row[column] || null;
   if (column === 'score' || column === 'total' || column === 'percent') return row[column];
   if (column === 'tries') return row.triesTotal;
   if (column === 'time') return row.time === null ? null : Date.parse(row.time);
@@ -45,7 +49,8 @@ export function sortRows(rows, column, { descending = false, locale } = {}) {
   const decorated = rows.map((row, index) => ({ row, index, value: valueOf(row, column) }));
   decorated.sort((a, b) => {
     if (a.value === null || b.value === null) return Number(a.value === null) - Number(b.value === null) || a.index - b.index;
-    const order = typeof a.value === 'string' ? collator.compare(a.value, String(b.value)) : a.value - b.value;
+    // One column's values are all texts or all numbers.
+    const order = typeof a.value === 'string' ? collator.compare(a.value, String(b.value)) : a.value - Number(b.value);
     return sign * order || a.index - b.index;
   });
   return decorated.map((d) => d.row);

@@ -15,7 +15,7 @@
 // wrong answer a few per cent off is not hidden in the right answers' column) or outside it; and
 // a wrong answer under at most one slip, the first that fits: a named slip (the closest), a factor,
 // 0, the opposite sign, more than 1000× off.
-import { questionById } from '../questions.js';
+import { knownQuestion } from '../questions.js';
 import { trueOption } from '../gradeAnswer.js';
 import { questionSlips } from './questionSlips.js';
 import english from 'virtual:messages/en/class';
@@ -29,6 +29,7 @@ const t = messages('class', english);
 // fraction, not for an angle; ×57.3 is degrees converted twice only where the answer is an angle.
 // Each factor's label is the catalogue's factor.<name> (the short form a histogram's tick shows),
 // and factor.<name>.<unit> (or .any) where it means a slip for answers in that unit.
+/** @type {{ factor: number, name: string, meaning?: string[] }[]} */
 const FACTORS = [
   { factor: 2, name: 'double' }, { factor: 0.5, name: 'half' },
   { factor: 10, name: 'times10', meaning: ['any'] }, { factor: 0.1, name: 'by10', meaning: ['any'] },
@@ -37,10 +38,14 @@ const FACTORS = [
   { factor: Math.PI / 180, name: 'toRadians', meaning: ['deg'] },
 ];
 
-/** A factor's label for answers in `unit`: with what the slip means where it means one for them. */
+/**
+ * A factor's label for answers in `unit`: with what the slip means where it means one for them.
+ * @param {{ name: string, meaning?: string[] }} factor
+ * @param {string | null} unit
+ */
 function factorText({ name, meaning = [] }, unit) {
   if (meaning.includes('any')) return t(`factor.${name}.any`);
-  return meaning.includes(unit) ? t(`factor.${name}.${unit}`) : t(`factor.${name}`);
+  return unit !== null && meaning.includes(unit) ? t(`factor.${name}.${unit}`) : t(`factor.${name}`);
 }
 
 /**
@@ -50,7 +55,7 @@ function factorText({ name, meaning = [] }, unit) {
  *   the option holds for them)
  * @typedef {{ item: number, question: string, kind: string, unit: string | null, tolerance: number | null, students: number,
  *   right: number, wrong: number, unanswered: number, shareRight: number | null,
- *   shown: { params: any, sameForAll: boolean } | null,
+ *   shown: { params: unknown, sameForAll: boolean } | null,
  *   options?: OptionCount[],
  *   ratio?: { step: number, bins: Bin[], labels: { at: number, factor: number, short: string, text: string, count: number }[],
  *     below: number, above: number, opposite: number, flipped: number, zero: number, noRatio: number },
@@ -59,16 +64,33 @@ function factorText({ name, meaning = [] }, unit) {
  *   offset?: { step: number, bins: Bin[] } }} QuestionSummary
  *   ratio's below, above, opposite, zero, noRatio: answers (right or wrong) outside the histogram's bins;
  *   labels[].count, slips[].count, elsewhere: wrong answers, each under one of them at most
+ * @typedef {{ at: number, factor: number, short: string, text: string, count: number }} FactorLabel
+ * @typedef {import('../gradeHandIn.js').HandInResult} Result
+ * @typedef {{ source: string, result: Result }} Entry  one student's answer to the question
+ * @typedef {import('../questions.js').Question} Question
+ * @typedef {import('../questions.js').ChoiceQuestion} ChoiceQuestion
+ * @typedef {import('../questions.js').ValueQuestion} ValueQuestion
  */
 
-/** Bins of width `step` centred on multiples of it, from −half·step… to …+half·step. */
+/**
+ * Bins of width `step` centred on multiples of it, from −half·step… to …+half·step.
+ * @param {number} half
+ * @param {number} step
+ * @returns {Bin[]}
+ */
 function centredBins(half, step) {
   return Array.from({ length: 2 * half + 1 }, (_, i) => ({
     lo: (i - half - 0.5) * step, hi: (i - half + 0.5) * step, count: 0, right: 0, wrong: 0,
   }));
 }
 
-/** Counts an answer in its bin, as right or wrong: 0, or −1 / 1 where it falls below / above every bin. */
+/**
+ * Counts an answer in its bin, as right or wrong: 0, or −1 / 1 where it falls below / above every bin.
+ * @param {Bin[]} bins
+ * @param {number} x
+ * @param {number} step
+ * @param {boolean} correct
+ */
 function addTo(bins, x, step, correct) {
   const half = (bins.length - 1) / 2;
   const i = Math.round(x / step) + half;
@@ -80,6 +102,12 @@ function addTo(bins, x, step, correct) {
   return 0;
 }
 
+/**
+ * @param {ChoiceQuestion} question
+ * @param {Entry[]} entries
+ * @param {unknown} params  the shown instance's (undefined where nobody is counted)
+ * @returns {OptionCount[]}
+ */
 function choiceSummary(question, entries, params) {
   if (!params) return [];
   const holds = trueOption(question, params).id;
@@ -100,8 +128,13 @@ function choiceSummary(question, entries, params) {
   });
 }
 
-/** The named slip a wrong answer fits (the closest of those that fit), or null. */
+/**
+ * The named slip a wrong answer fits (the closest of those that fit), or null.
+ * @param {ValueQuestion} question
+ * @param {Result & { value: number, expected: number }} r
+ */
 function namedSlip(question, r) {
+  /** @type {{ label: string, off: number } | null} */
   let best = null;
   for (const slip of questionSlips(question, r.params)) {
     // A slip that lands within the tolerance of the true value is no slip for this student.
@@ -112,8 +145,14 @@ function namedSlip(question, r) {
   return best?.label ?? null;
 }
 
+/**
+ * @param {ValueQuestion} question
+ * @param {Entry[]} entries
+ * @param {unknown} params  the shown instance's (undefined where nobody is counted)
+ */
 function numericSummary(question, entries, params) {
   const half = RATIO_DECADES / RATIO_STEP;
+  /** @type {NonNullable<QuestionSummary['ratio']>} */
   const ratio = {
     step: RATIO_STEP, bins: centredBins(half, RATIO_STEP), labels: [], below: 0, above: 0, opposite: 0, flipped: 0, zero: 0, noRatio: 0,
   };
@@ -121,9 +160,13 @@ function numericSummary(question, entries, params) {
     at: Math.log10(entry.factor), factor: entry.factor, short: t(`factor.${entry.name}`), text: factorText(entry, question.unit), count: 0,
   }));
   const elsewhere = { zero: 0, opposite: 0, far: 0 };
+  /** @type {Map<string, number>} */
   const slipCounts = new Map();
-  for (const { result: r } of entries) {
-    if (!r.answered) continue;
+  for (const { result } of entries) {
+    // An answered value question's grade has the value read (gradeAnswer.js); expected is its number.
+    const { value } = result;
+    if (!result.answered || value === undefined || typeof result.expected !== 'number') continue;
+    const r = { ...result, value, expected: result.expected };
     // The histogram: each answer in one bin, or outside them.
     const q = r.expected === 0 ? NaN : r.value / r.expected;
     const log = q > 0 ? Math.log10(q) : NaN;
@@ -155,23 +198,29 @@ function numericSummary(question, entries, params) {
   return { ratio, slips, elsewhere };
 }
 
+/** @param {Entry[]} entries */
 function predictSummary(entries) {
   const bins = centredBins(90 / OFFSET_STEP, OFFSET_STEP);
-  for (const { result: r } of entries) if (r.answered) addTo(bins, r.answer - r.expected, OFFSET_STEP, r.correct);
+  for (const { result: r } of entries) {
+    // A prediction's answer and expected value are angles (readAnswer, gradeAnswer).
+    if (r.answered && typeof r.answer === 'number' && typeof r.expected === 'number') {
+      addTo(bins, r.answer - r.expected, OFFSET_STEP, r.correct);
+    }
+  }
   return { step: OFFSET_STEP, bins };
 }
 
 /**
  * A summary per item of the sheet. grades: gradeClass's { ok: true, … }; gradebook: its
  * buildGradebook, whose counted rows are the students summarised (without it, every hand-in graded).
- * @param {{ sheet: any, graded: { source: string, result: any }[] }} grades
+ * @param {{ sheet: import('../readSheet.js').Sheet, graded: readonly import('./gradeClass.js').Graded[] }} grades
  * @param {{ rows: { key: number, counted: boolean }[] }} [gradebook]
  * @returns {QuestionSummary[]}
  */
 export function summarizeQuestions(grades, gradebook) {
   const students = gradebook ? gradebook.rows.filter((row) => row.counted).map((row) => grades.graded[row.key]) : grades.graded;
   return grades.sheet.items.map((item, i) => {
-    const question = /** @type {any} */ (questionById(item.question));
+    const question = knownQuestion(item.question);
     const entries = students.map(({ source, result }) => ({ source, result: result.results[i] }));
     const right = entries.filter((e) => e.result.correct).length;
     const unanswered = entries.filter((e) => !e.result.answered).length;
@@ -180,7 +229,8 @@ export function summarizeQuestions(grades, gradebook) {
     const same = JSON.stringify(params);
     /** @type {QuestionSummary} */
     const summary = {
-      item: i, question: question.id, kind: question.kind, unit: question.unit ?? null, tolerance: question.tolerance ?? null,
+      item: i, question: question.id, kind: question.kind,
+      unit: question.kind === 'choice' ? null : question.unit, tolerance: question.kind === 'choice' ? null : question.tolerance,
       students: entries.length, right, wrong: entries.length - right - unanswered, unanswered,
       shareRight: entries.length ? right / entries.length : null,
       shown: params ? { params, sameForAll: entries.every((e) => JSON.stringify(e.result.params) === same) } : null,

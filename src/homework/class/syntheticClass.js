@@ -5,7 +5,7 @@
 // Wrong numbers are the true value times a factor a slip gives (×2, ×½, radians for degrees, a
 // percentage for a fraction) or a little off, so the class summary has peaks to find.
 import { strToU8, zipSync } from 'fflate';
-import { QUESTIONS, questionById } from '../questions.js';
+import { QUESTIONS, knownQuestion } from '../questions.js';
 import { expectedValue, questionParams, trueOption } from '../gradeAnswer.js';
 import { formatValue } from '../formatAnswer.js';
 import { seededRandom } from '../seededRandom.js';
@@ -22,10 +22,17 @@ const LAST = [
 const WRONG_FACTORS = [2, 0.5, Math.PI / 180, 100, 1.3, 0.8];
 const START = Date.UTC(2026, 0, 15, 9);
 
+/** @type {(x: number, step: number) => number} */
 const round = (x, step) => Math.round(x / step) * step;
-const clamp = (x) => Math.min(90, Math.max(0, x));
+const clamp = (/** @type {number} */ x) => Math.min(90, Math.max(0, x));
 
-/** The answer a student gives: 'right', 'wrong' or 'none', as each kind of question takes it. */
+/**
+ * The answer a student gives: 'right', 'wrong' or 'none', as each kind of question takes it.
+ * @param {import('../questions.js').Question} question
+ * @param {unknown} params
+ * @param {'right' | 'wrong' | 'none'} how
+ * @param {ReturnType<typeof seededRandom>} rng
+ */
 function answerFor(question, params, how, rng) {
   if (how === 'none') return null;
   if (question.kind === 'choice') {
@@ -47,21 +54,24 @@ function answerFor(question, params, how, rng) {
 /**
  * @param {{ students?: number, questions?: number, seed?: string, classSeed?: string, right?: number, unanswered?: number }} [options]
  *   right: the share of answers right; unanswered: the share left out; classSeed: one seed for all.
- * @returns {{ sheet: any, handIns: { source: string, data: any }[], files: { name: string, bytes: Uint8Array }[],
- *   zip: Uint8Array, codes: string }}
+ * @returns {{ sheet: import('../readSheet.js').Sheet, handIns: { source: string, data: ReturnType<typeof makeHandIn> }[],
+ *   files: { name: string, bytes: Uint8Array }[], zip: Uint8Array, codes: string }}
  */
 export function syntheticClass({ students = 500, questions = 40, seed = 'synthetic', classSeed, right = 0.6, unanswered = 0.05 } = {}) {
   const rng = seededRandom(`class:${seed}`);
-  const order = /** @type {any[]} */ ([...QUESTIONS]);
+  const order = [...QUESTIONS];
   for (let i = order.length - 1; i > 0; i -= 1) { // Fisher–Yates
     const j = Math.floor(rng.next() * (i + 1));
     [order[i], order[j]] = [order[j], order[i]];
   }
   const items = Array.from({ length: questions }, (_, i) => ({ question: order[i % order.length].id }));
+  /** @type {import('../readSheet.js').Sheet} */
   const sheet = {
     version: SHEET_VERSION, title: `Synthetic class (${seed})`, reveal: 'after-answer', ...(classSeed ? { seed: classSeed } : {}), items,
   };
+  /** @type {{ source: string, data: ReturnType<typeof makeHandIn> }[]} */
   const handIns = [];
+  /** @type {{ name: string, bytes: Uint8Array }[]} */
   const files = [];
   /** @type {import('fflate').Zippable} */
   const tree = {};
@@ -71,7 +81,7 @@ export function syntheticClass({ students = 500, questions = 40, seed = 'synthet
       + `${k >= pairs ? ` ${Math.floor(k / pairs) + 1}` : ''}`;
     const studentSeed = classSeed ?? `${seed}-${k}-${Math.floor(rng.next() * 1e9).toString(36)}`;
     const answers = items.map((item) => {
-      const question = /** @type {any} */ (questionById(item.question));
+      const question = knownQuestion(item.question);
       const roll = rng.next();
       const how = roll < unanswered ? 'none' : roll < unanswered + right * (1 - unanswered) ? 'right' : 'wrong';
       return answerFor(question, questionParams(question, studentSeed), how, rng);

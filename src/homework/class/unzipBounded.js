@@ -23,8 +23,12 @@ const CENTRAL = 0x02014b50;
 const LOCAL = 0x04034b50;
 const STEP = 4096; // compressed bytes per push: at most about 4 MB of output (deflate's limit is 1032:1)
 
+// Little-endian integers at offset o; past the end a byte reads as undefined, which | and << take as 0.
+/** @type {(b: Uint8Array, o: number) => number} */
 const u16 = (b, o) => b[o] | (b[o + 1] << 8);
+/** @type {(b: Uint8Array, o: number) => number} */
 const u32 = (b, o) => (b[o] | (b[o + 1] << 8) | (b[o + 2] << 16) | (b[o + 3] << 24)) >>> 0;
+/** @type {(b: Uint8Array, o: number) => number} */
 const u64 = (b, o) => u32(b, o) + u32(b, o + 4) * 2 ** 32;
 
 /**
@@ -32,10 +36,16 @@ const u64 = (b, o) => u32(b, o) + u32(b, o + 4) * 2 ** 32;
  *   and unpacked bytes), shared by a zip and the zips inside it; unzipBounded spends it.
  * @typedef {{ name: string, bytes: Uint8Array }} ZipFile A file unpacked, named by its path in the zip.
  * @typedef {{ source: string, reason: string }} Refusal
+ * @typedef {{ bytes: Uint8Array, reason?: undefined } | { reason: string, bytes?: undefined }} Unpacked An entry's data, or
+ *   why it was refused.
  */
 
+/** @type {Int32Array | null} */
 let crcTable = null;
-/** CRC-32 (ISO 3309, as zip uses): a damaged entry, or one whose stream ended early, fails it. */
+/**
+ * CRC-32 (ISO 3309, as zip uses): a damaged entry, or one whose stream ended early, fails it.
+ * @param {Uint8Array} bytes
+ */
 function crc32(bytes) {
   if (!crcTable) {
     crcTable = new Int32Array(256);
@@ -45,12 +55,16 @@ function crc32(bytes) {
       crcTable[n] = c;
     }
   }
+  const table = crcTable;
   let c = -1;
-  for (let i = 0; i < bytes.length; i += 1) c = crcTable[(c ^ bytes[i]) & 255] ^ (c >>> 8);
+  for (let i = 0; i < bytes.length; i += 1) c = table[(c ^ bytes[i]) & 255] ^ (c >>> 8);
   return (c ^ -1) >>> 0;
 }
 
-/** The end-of-directory record (zip64 where the plain one overflows): { count, offset } or null. */
+/**
+ * The end-of-directory record (zip64 where the plain one overflows): { count, offset } or null.
+ * @param {Uint8Array} b
+ */
 function findDirectory(b) {
   for (let e = b.length - 22; e >= Math.max(0, b.length - 22 - 0xffff); e -= 1) {
     if (u32(b, e) !== END) continue;
@@ -68,7 +82,11 @@ function findDirectory(b) {
   return null;
 }
 
-/** An entry's name: UTF-8 where flagged or where it reads as UTF-8 (many tools never flag it), else Latin-1. */
+/**
+ * An entry's name: UTF-8 where flagged or where it reads as UTF-8 (many tools never flag it), else Latin-1.
+ * @param {Uint8Array} bytes
+ * @param {boolean} utf8Flag
+ */
 function entryName(bytes, utf8Flag) {
   let name;
   try {
@@ -79,7 +97,13 @@ function entryName(bytes, utf8Flag) {
   return name.replace(/\\/g, '/').replace(/^(\.?\/)+/, '');
 }
 
-/** The sizes and local offset of a central entry, zip64 extra field read where a field overflows. */
+/**
+ * The sizes and local offset of a central entry, zip64 extra field read where a field overflows.
+ * @param {Uint8Array} b
+ * @param {number} p
+ * @param {number} nameLength
+ * @param {number} extraLength
+ */
 function entrySizes(b, p, nameLength, extraLength) {
   let size = u32(b, p + 20);
   let claimed = u32(b, p + 24);
@@ -103,13 +127,18 @@ function entrySizes(b, p, nameLength, extraLength) {
 }
 
 const t = messages('class', english);
+/** @type {(claimed: number) => Unpacked} */
 const BOMB = (claimed) => ({ reason: t('zip.bomb', { claimed }) });
+/** @type {() => Unpacked} */
 const DAMAGED = () => ({ reason: t('zip.damagedData') });
+/** @type {(length: number, claimed: number) => Unpacked} */
 const WRONG_LENGTH = (length, claimed) => ({ reason: t('zip.wrongLength', { length, claimed }) });
 
 /**
  * Inflates `input` to exactly `claimed` bytes, stopping as soon as it would pass them.
- * @returns {{ bytes?: Uint8Array, reason?: string }}
+ * @param {Uint8Array} input
+ * @param {number} claimed
+ * @returns {Unpacked}
  */
 function inflateBounded(input, claimed) {
   if (input.length <= STEP) {
@@ -162,7 +191,8 @@ export function unzipBounded(bytes, { name, admit, budget, maxEntries }) {
   const files = [];
   /** @type {Refusal[]} */
   const refused = [];
-  const refuse = (source, reason) => refused.push({ source, reason });
+  /** @type {(source: string, reason: string) => void} */
+  const refuse = (source, reason) => { refused.push({ source, reason }); };
   const b = bytes;
   const directory = findDirectory(b);
   if (!directory) {
@@ -203,7 +233,7 @@ export function unzipBounded(bytes, { name, admit, budget, maxEntries }) {
     else if (claimed > budget.bytes) refuse(source, t('zip.bytesFull', { size: megabytes(claimed), left: megabytes(budget.bytes) }));
     else {
       const read = readEntry(b, { local, size, claimed, method, crc });
-      if (read.reason) refuse(source, read.reason);
+      if (!read.bytes) refuse(source, read.reason);
       else {
         budget.bytes -= claimed;
         files.push({ name: source, bytes: read.bytes });
@@ -215,14 +245,16 @@ export function unzipBounded(bytes, { name, admit, budget, maxEntries }) {
 
 /**
  * One entry's data, from its local header.
- * @returns {{ bytes?: Uint8Array, reason?: string }}
+ * @param {Uint8Array} b
+ * @param {{ local: number, size: number, claimed: number, method: number, crc: number }} entry
+ * @returns {Unpacked}
  */
 function readEntry(b, { local, size, claimed, method, crc }) {
   if (local + 30 > b.length || u32(b, local) !== LOCAL) return { reason: t('zip.dataMissing') };
   const start = local + 30 + u16(b, local + 26) + u16(b, local + 28);
   if (start + size > b.length) return { reason: t('zip.dataCut') };
   const data = b.subarray(start, start + size);
-  /** @type {{ bytes?: Uint8Array, reason?: string }} */
+  /** @type {Unpacked} */
   let read;
   if (method === 0) read = size === claimed ? { bytes: data.slice() } : { reason: t('zip.storedLength', { size, claimed }) };
   else read = inflateBounded(data, claimed);
