@@ -11,7 +11,10 @@ import { questionSelect } from './buildItemEditor.js';
 
 const t = messages('compose', english);
 
-/** onAdd: { panel(id), question(id), text() }. */
+/**
+ * onAdd: { panel(id), question(id), text() }.
+ * @param {{ panel: (id: string) => void, question: (id: string) => void, text: () => void }} onAdd
+ */
 export function buildCatalogue(onAdd) {
   const { section, heading } = titledSection('cp-catalogue', 'cp-catalogue-title', t('catalogueHeading'));
 

@@ -16,6 +16,14 @@ import { panelTitle } from '../panels/panelText.js';
 
 const t = messages('compose', english);
 
+/** @typedef {import('./composerModel.js').ItemDraft} ItemDraft */
+/** @typedef {(fields: import('./composerModel.js').ItemPatch) => void} Patch */
+
+/**
+ * @param {string} value
+ * @param {number} max
+ * @param {string} [placeholder]
+ */
 function textInput(value, max, placeholder) {
   const input = /** @type {HTMLInputElement} */ (el('input'));
   input.type = 'text';
@@ -25,7 +33,12 @@ function textInput(value, max, placeholder) {
   return input;
 }
 
-/** A Markdown field and its preview, kept in step as the lecturer types. */
+/**
+ * A Markdown field and its preview, kept in step as the lecturer types.
+ * @param {ItemDraft} item
+ * @param {Patch} patch
+ * @param {string} placeholder
+ */
 function markdownField(item, patch, placeholder) {
   const area = /** @type {HTMLTextAreaElement} */ (el('textarea', 'cp-markdown'));
   area.value = item.text;
@@ -53,6 +66,11 @@ function markdownField(item, patch, placeholder) {
   return box;
 }
 
+/**
+ * @param {ItemDraft} item
+ * @param {Patch} patch
+ * @param {string} placeholder
+ */
 function headingField(item, patch, placeholder) {
   const heading = textInput(item.heading, LECTURE_CAPS.heading, placeholder);
   heading.addEventListener('input', () => patch({ heading: heading.value }));
@@ -74,6 +92,10 @@ export function questionSelect() {
   return select;
 }
 
+/**
+ * @param {import('./composerModel.js').QuestionDraft} item
+ * @param {Patch} patch
+ */
 function questionFields(item, patch) {
   const select = questionSelect();
   select.value = item.question;
@@ -94,7 +116,11 @@ function questionFields(item, patch) {
   return [field(t('questionSelect'), select), field(t('seedField'), seed), prompt, where];
 }
 
-/** The editor of one item. patch(fields): the item's fields changed. */
+/**
+ * The editor of one item. patch(fields): the item's fields changed.
+ * @param {ItemDraft} item
+ * @param {{ patch: Patch }} options
+ */
 export function buildItemEditor(item, { patch }) {
   const box = el('div', 'cp-item-body');
   if (item.type === 'panel') {

@@ -15,6 +15,9 @@ const t = messages('compose', english);
  * actions: { move(key, delta), moveTo(key, index), duplicate(key), remove(key) }; editor(item):
  * the element that edits an item (built once per key). Returns { element, status, sync(draft),
  * reset(draft), focusItem(key), announce(text) }.
+ * @param {{ actions: { move: (key: string, delta: number) => void, moveTo: (key: string, index: number) => void,
+ *   duplicate: (key: string) => void, remove: (key: string) => void },
+ *   editor: (item: import('./composerModel.js').ItemDraft) => Node }} options
  */
 export function buildLectureList({ actions, editor }) {
   const list = el('ol', 'cp-list');
@@ -32,11 +35,16 @@ export function buildLectureList({ actions, editor }) {
    * }>}
    */
   const cards = new Map();
+  /** @type {string[]} the items' keys in the list's order */
   let order = [];
+  /** @type {(key: string) => HTMLLIElement | undefined} */
+  const cardOf = (key) => cards.get(key)?.card;
 
-  const announce = (text) => { status.textContent = text; };
+  const announce = (/** @type {string} */ text) => { status.textContent = text; };
+  /** @type {(control: HTMLButtonElement, run: () => void) => void} */
   const press = (control, run) => control.addEventListener('click', () => { if (control.getAttribute('aria-disabled') !== 'true') run(); });
 
+  /** @param {import('./composerModel.js').ItemDraft} item */
   function makeCard(item) {
     const card = /** @type {HTMLLIElement} */ (el('li', `cp-item cp-item-${item.type}`));
     card.tabIndex = 0;
@@ -72,7 +80,7 @@ export function buildLectureList({ actions, editor }) {
       } else if (event.target === card && !event.altKey && (event.key === 'ArrowUp' || event.key === 'ArrowDown')) {
         event.preventDefault();
         const next = order[order.indexOf(item.key) + (event.key === 'ArrowUp' ? -1 : 1)];
-        if (next) cards.get(next).card.focus();
+        if (next) cardOf(next)?.focus();
       }
     });
     dragByHandle(handle, card, item.key);
@@ -81,10 +89,15 @@ export function buildLectureList({ actions, editor }) {
 
   // Dragging by the handle (pointer events, so mouse, pen and touch alike): the card under the
   // pointer is marked, and on release the item takes that card's place.
+  /**
+   * @param {HTMLElement} handle
+   * @param {HTMLElement} card
+   * @param {string} key
+   */
   function dragByHandle(handle, card, key) {
     let target = -1;
-    const mark = (index) => {
-      order.forEach((k, i) => cards.get(k).card.classList.toggle('cp-drop-target', i === index && k !== key));
+    const mark = (/** @type {number} */ index) => {
+      order.forEach((k, i) => cardOf(k)?.classList.toggle('cp-drop-target', i === index && k !== key));
       target = index;
     };
     handle.addEventListener('pointerdown', (event) => {
@@ -97,11 +110,12 @@ export function buildLectureList({ actions, editor }) {
     handle.addEventListener('pointermove', (event) => {
       if (!handle.hasPointerCapture(event.pointerId)) return;
       const index = order.findIndex((k) => {
-        const box = cards.get(k).card.getBoundingClientRect();
-        return event.clientY < box.bottom;
+        const box = cardOf(k)?.getBoundingClientRect();
+        return box !== undefined && event.clientY < box.bottom;
       });
       mark(index < 0 ? order.length - 1 : index);
     });
+    /** @type {(event: PointerEvent, drop: boolean) => void} */
     const end = (event, drop) => {
       if (!handle.hasPointerCapture(event.pointerId)) return;
       handle.releasePointerCapture(event.pointerId);
@@ -117,7 +131,10 @@ export function buildLectureList({ actions, editor }) {
     handle.addEventListener('pointercancel', (event) => end(event, false));
   }
 
-  /** The list as the draft has it: cards made for new items, dropped for removed ones, moved in place. */
+  /**
+   * The list as the draft has it: cards made for new items, dropped for removed ones, moved in place.
+   * @param {import('./composerModel.js').Draft} draft
+   */
   function sync(draft) {
     const active = document.activeElement;
     const keys = draft.items.map((item) => item.key);
@@ -128,8 +145,8 @@ export function buildLectureList({ actions, editor }) {
       }
     }
     draft.items.forEach((item, i) => {
-      if (!cards.has(item.key)) cards.set(item.key, makeCard(item));
-      const entry = cards.get(item.key);
+      const entry = cards.get(item.key) ?? makeCard(item);
+      cards.set(item.key, entry);
       if (list.children[i] !== entry.card) list.insertBefore(entry.card, list.children[i] ?? null);
       entry.number.textContent = t('itemNumber', { n: fixed(i + 1, 0) });
       entry.name.textContent = itemName(item);
@@ -143,12 +160,13 @@ export function buildLectureList({ actions, editor }) {
     if (active instanceof HTMLElement && active !== document.activeElement && active.isConnected) active.focus();
   }
 
+  /** @param {import('./composerModel.js').Draft} draft */
   function reset(draft) {
     for (const { card } of cards.values()) card.remove();
     cards.clear();
     sync(draft);
   }
 
-  const focusItem = (key) => cards.get(key)?.card.focus();
+  const focusItem = (/** @type {string} */ key) => cardOf(key)?.focus();
   return { element, status, sync, reset, focusItem, announce };
 }

@@ -21,27 +21,49 @@ import { controlLabel, optionLabel, panelTitle } from '../panels/panelText.js';
 const t = messages('compose', english);
 const ANSWER_MS = 5000;
 
-/** A value of panel `id`'s `key` as its controls would show it (numbers through ui/format.js, to the link's decimals). */
+/** @typedef {import('./composerModel.js').PanelDraft} PanelDraft */
+/** @typedef {import('./composerModel.js').ItemPatch} ItemPatch */
+/** @typedef {import('../host/panelContract.js').Schema} Schema */
+
+/**
+ * A value of panel `id`'s `key` as its controls would show it (numbers through ui/format.js, to the link's decimals).
+ * @param {string} id
+ * @param {string} key
+ * @param {import('../host/panelContract.js').ParamSpec} spec
+ * @param {unknown} value  a value its schema accepted
+ */
 export function shownValue(id, key, spec, value) {
-  if (spec.type === 'number') return fixed(value, formatValue(spec, value).split('.')[1]?.length ?? 0);
+  if (spec.type === 'number' && typeof value === 'number') return fixed(value, formatValue(spec, value).split('.')[1]?.length ?? 0);
   if (spec.type === 'enum') return optionLabel(id, key, value);
   if (spec.type === 'boolean') return t('valueOnOff', { on: String(Boolean(value)) });
   if (spec.type === 'text') return t('valueText', { count: String(value).length, n: fixed(String(value).length, 0) });
   return String(value);
 }
 
-/** Only the values that differ from the panel's defaults (the lecture stores no others). */
+/**
+ * Only the values that differ from the panel's defaults (the lecture stores no others).
+ * @param {Schema} schema
+ * @param {Record<string, unknown>} values
+ */
 function changedValues(schema, values) {
   const start = defaults(schema);
   return Object.fromEntries(Object.entries(values).filter(([key, value]) => !Object.is(value, start[key])));
 }
 
-/** The embed page's address for an item: its state, locks and hidden controls, this page's theme. */
+/**
+ * The embed page's address for an item: its state, locks and hidden controls, this page's theme.
+ * @param {Pick<PanelDraft, 'panel' | 'state' | 'lock' | 'hide'>} item
+ */
 function embedAddress(item) {
   return embedLink(new URL('./embed.html', window.location.href).href, { id: item.panel, schema: panelSchema(item.panel) },
     item.state, { lock: item.lock, hide: item.hide, theme: loadTheme().scheme });
 }
 
+/**
+ * Where panel item `initial` starts, and its controls' locks; patch(fields): the item's fields changed.
+ * @param {PanelDraft} initial
+ * @param {{ patch: (fields: ItemPatch) => void }} options
+ */
 export function buildPanelStart(initial, { patch }) {
   const item = { ...initial, state: { ...initial.state }, lock: [...initial.lock], hide: [...initial.hide] };
   const schema = panelSchema(item.panel) ?? {};
@@ -51,6 +73,7 @@ export function buildPanelStart(initial, { patch }) {
   const result = el('div', 'cp-start-result');
   result.setAttribute('role', 'status');
 
+  /** @type {(lines: string[], kind?: 'ok' | 'problem') => void} */
   const say = (lines, kind = 'ok') => result.replaceChildren(...lines.map((line) => el('p', kind === 'ok' ? 'cp-ok' : 'cp-problem', line)));
   const showSummary = () => {
     const keys = Object.keys(item.state);
@@ -71,6 +94,7 @@ export function buildPanelStart(initial, { patch }) {
       summary.append(after);
     }
   };
+  /** @type {(state: Record<string, unknown>, extra?: { lock?: string[], hide?: string[] }) => void} */
   const setStart = (state, extra = {}) => {
     item.state = changedValues(schema, state);
     Object.assign(item, extra);
@@ -87,7 +111,7 @@ export function buildPanelStart(initial, { patch }) {
   const use = button(t('useLink'));
   const useLink = () => {
     const read = readPastedLink(paste.value, item.panel);
-    if (!read.ok) return say(read.problems, 'problem');
+    if (!read.ok) { say(read.problems, 'problem'); return; }
     const locks = read.source === 'embed' || read.source === 'composed' ? { lock: read.lock, hide: read.hide } : {};
     setStart(read.state, locks);
     const taken = Object.keys(item.state).length;
@@ -102,27 +126,32 @@ export function buildPanelStart(initial, { patch }) {
   pasteRow.append(field(t('pasteField', { title }), paste), use, reset);
 
   // The preview, and its current view.
+  /** @type {HTMLIFrameElement | null} */
   let frame = null;
-  let pending = null;
+  /** @type {number | undefined} the wait for the frame's answer to fresnel-lab:get */
+  let pending;
   const preview = el('div', 'cp-preview-frame');
   const toggle = button(t('showPanel'));
   toggle.setAttribute('aria-expanded', 'false');
   const take = button(t('takeView'));
   take.disabled = true;
+  /** @param {MessageEvent} event */
   const onMessage = (event) => {
     if (frame && !frame.isConnected) { // the item was removed with its preview open
       window.removeEventListener('message', onMessage);
       return;
     }
-    if (!frame || event.source !== frame.contentWindow || event.origin !== window.location.origin || !isObject(event.data)) return;
-    const { type } = event.data;
+    /** @type {unknown} the frame's message, data until it is checked */
+    const data = event.data;
+    if (!frame || event.source !== frame.contentWindow || event.origin !== window.location.origin || !isObject(data)) return;
+    const { type, height } = data;
     if (type === 'fresnel-lab:ready') take.disabled = false;
-    else if (type === 'fresnel-lab:size' && Number.isFinite(event.data.height)) {
-      frame.style.height = `${Math.min(2400, Math.max(200, Math.ceil(event.data.height) + 2))}px`;
-    } else if (type === 'fresnel-lab:state' && pending && event.data.panel === item.panel) {
+    else if (type === 'fresnel-lab:size' && typeof height === 'number' && Number.isFinite(height)) {
+      frame.style.height = `${Math.min(2400, Math.max(200, Math.ceil(height) + 2))}px`;
+    } else if (type === 'fresnel-lab:state' && pending && data.panel === item.panel) {
       clearTimeout(pending);
-      pending = null;
-      const params = isObject(event.data.params) ? event.data.params : {};
+      pending = undefined;
+      const params = isObject(data.params) ? data.params : {};
       const { applied, rejected } = applyParams(schema, defaults(schema), params);
       setStart(applied);
       say([t('takenFromPanel', { changed: String(Object.keys(item.state).length > 0) }),
@@ -151,7 +180,7 @@ export function buildPanelStart(initial, { patch }) {
   take.addEventListener('click', () => {
     if (!frame?.contentWindow) return;
     clearTimeout(pending);
-    pending = setTimeout(() => { pending = null; say([t('noAnswer')], 'problem'); }, ANSWER_MS);
+    pending = setTimeout(() => { pending = undefined; say([t('noAnswer')], 'problem'); }, ANSWER_MS);
     frame.contentWindow.postMessage({ type: 'fresnel-lab:get' }, window.location.origin);
   });
   const previewRow = el('div', 'cp-row');
@@ -162,6 +191,7 @@ export function buildPanelStart(initial, { patch }) {
   const legend = el('summary', null, t('controlsHeading'));
   const grid = el('div', 'cp-control-grid');
   controls.append(legend, grid);
+  /** @type {Map<string, HTMLSelectElement>} */
   const selects = new Map();
   for (const key of Object.keys(schema)) {
     const select = /** @type {HTMLSelectElement} */ (el('select'));

@@ -18,6 +18,7 @@ const t = messages('compose', english);
 /**
  * The lecture page's address for a lecture, with the lecture's language (lang=), which the page
  * needs before it reads the lecture: every word it writes is in that language.
+ * @param {import('../lecture/readLecture.js').Lecture} lecture
  */
 export function lectureAddress(lecture) {
   const url = new URL('./index.html', window.location.href);
@@ -28,7 +29,12 @@ export function lectureAddress(lecture) {
   return url.toString();
 }
 
-/** onOpen(lecture, problems, fileName): a lecture file was read. Returns { element, update({ lecture, problems }) }. */
+/** @typedef {import('../lecture/readLecture.js').Lecture} Lecture */
+
+/**
+ * onOpen(lecture, problems, fileName): a lecture file was read. Returns { element, update({ lecture, problems }) }.
+ * @param {{ onOpen: (lecture: Lecture, problems: string[], fileName: string) => void }} options
+ */
 export function buildShare({ onOpen }) {
   const { section, heading } = titledSection('cp-share', 'cp-share-title', t('shareHeading'));
   const problems = el('div', 'cp-problems');
@@ -36,6 +42,7 @@ export function buildShare({ onOpen }) {
   const message = el('div', 'cp-message');
   message.setAttribute('role', 'status');
   message.setAttribute('aria-live', 'polite');
+  /** @type {(text: string, kind?: 'ok' | 'problem') => void} */
   const say = (text, kind = 'ok') => message.replaceChildren(el('p', kind === 'ok' ? 'cp-ok' : 'cp-problem', text));
 
   const link = /** @type {HTMLInputElement} */ (el('input'));
@@ -66,7 +73,9 @@ export function buildShare({ onOpen }) {
   exportRow.append(offline, deck, field(t('deckPanels'), deckPanels));
   section.append(heading, problems, linkRow, size, fileRow, exportRow, message);
 
+  /** @type {Lecture | null} */
   let current = null;
+  /** @param {{ lecture: Lecture | null, problems: string[] }} read */
   function update({ lecture, problems: found }) {
     current = lecture && lecture.items.length ? lecture : null;
     const lines = lecture && !lecture.items.length ? [t('addOne')] : found;
@@ -92,7 +101,8 @@ export function buildShare({ onOpen }) {
     const chosen = file.files?.[0];
     if (!chosen) return;
     const picked = await readTextFile(chosen);
-    let read = picked;
+    /** @type {import('../lecture/readLecture.js').ReadLecture} */
+    let read = { ok: false, problems: picked.problems ?? [] };
     if (picked.ok) {
       try {
         read = readLecture(JSON.parse(picked.text));
@@ -112,7 +122,7 @@ export function buildShare({ onOpen }) {
     if (!current) return;
     const lecture = current;
     say(t('offlineMaking'));
-    /** The text of a file of the built offline folder beside this page, or null. */
+    /** @type {(name: string) => Promise<string | null>} The text of a file of the built offline folder beside this page, or null. */
     const read = async (name) => {
       try {
         const response = await fetch(`offline/${name}`);
@@ -123,12 +133,14 @@ export function buildShare({ onOpen }) {
     };
     const [index, embed, favicon] = await Promise.all(['index.html', 'embed.html', 'favicon.svg'].map(read));
     if (index === null || embed === null) {
-      return say(window.location.protocol === 'file:' ? t('offlineFromDisk') : t('offlineMissing'), 'problem');
+      say(window.location.protocol === 'file:' ? t('offlineFromDisk') : t('offlineMissing'), 'problem');
+      return;
     }
     // The single-file pages carry their scripts inline; a page that loads script files is not one
     // (the development server answers any address with the lecture page's sources).
     if ([index, embed].some((page) => /<script[^>]+\bsrc=/i.test(page))) {
-      return say(t('offlineNotSingle'), 'problem');
+      say(t('offlineNotSingle'), 'problem');
+      return;
     }
     try {
       const { offlineLectureZip } = await import('../lecture/offlineExport.js');

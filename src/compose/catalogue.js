@@ -5,19 +5,21 @@
 import { PANELS, panelEntry } from '../panels/manifest.js';
 import { panelTitle } from '../panels/panelText.js';
 import { panelLede } from '../panels/panelLede.js';
-import { KIND_NAMES, QUESTIONS as BANK } from '../homework/questions.js';
+import { KIND_NAMES, QUESTIONS } from '../homework/questions.js';
 import { questionParams } from '../homework/gradeAnswer.js';
 import { ROOM_SEED } from '../lecture/readLecture.js';
 
-/** The bank's questions (plain objects the homework modules describe). */
-const QUESTIONS = /** @type {any[]} */ (BANK);
+/** @type {Readonly<Record<string, string>>} */
 const ENTITIES = { amp: '&', lt: '<', gt: '>', quot: '"', apos: "'", nbsp: '\u00a0' };
 
-/** The text of an HTML fragment: tags dropped (a <sub> kept as _ so the page can subscript it), entities read, spaces collapsed. */
+/**
+ * The text of an HTML fragment: tags dropped (a <sub> kept as _ so the page can subscript it), entities read, spaces collapsed.
+ * @param {unknown} html
+ */
 export function plainText(html) {
   return String(html)
     .replace(/<sub>/gi, '_').replace(/<[^>]*>/g, '')
-    .replace(/&(#x[0-9a-f]+|#\d+|[a-z]+);/gi, (whole, name) => {
+    .replace(/&(#x[0-9a-f]+|#\d+|[a-z]+);/gi, (whole, /** @type {string} */ name) => {
       if (name[0] === '#') {
         const code = name[1].toLowerCase() === 'x' ? parseInt(name.slice(2), 16) : parseInt(name.slice(1), 10);
         return code > 0 && code <= 0x10ffff ? String.fromCodePoint(code) : whole;
@@ -27,7 +29,10 @@ export function plainText(html) {
     .replace(/\s+/g, ' ').trim();
 }
 
-/** The first sentences of a text, up to about `max` characters, cut at a sentence's end where one is near. */
+/**
+ * The first sentences of a text, up to about `max` characters, cut at a sentence's end where one is near.
+ * @param {string} text
+ */
 export function shortText(text, max = 220) {
   if (text.length <= max) return text;
   const cut = text.slice(0, max);
@@ -50,14 +55,17 @@ export function questionCatalogue() {
   })).filter((group) => group.questions.length);
 }
 
-/** A question's prompt with the numbers a seed gives (with none, the room's: ROOM_SEED, as the page and the deck). */
+/**
+ * A question's prompt with the numbers a seed gives (with none, the room's: ROOM_SEED, as the page and the deck).
+ * @param {string} id
+ */
 export function questionPrompt(id, seed = '') {
   const q = QUESTIONS.find((question) => question.id === id);
   return q ? q.prompt(questionParams(q, seed.trim() || ROOM_SEED)) : '';
 }
 
 /** The title of a question's panel. */
-export const questionPanelTitle = (id) => {
+export const questionPanelTitle = (/** @type {string} */ id) => {
   const panel = QUESTIONS.find((q) => q.id === id)?.panel ?? '';
   return panelEntry(panel) ? panelTitle(panel) : '';
 };

@@ -28,10 +28,20 @@ import { messages } from '../i18n/messages.js';
 
 const t = messages('compose', english);
 
+/**
+ * An element of compose.html's own markup.
+ * @param {string} selector
+ */
+function pageElement(selector) {
+  const found = document.querySelector(selector);
+  if (!(found instanceof HTMLElement)) throw new Error(`compose.html has no ${selector}.`);
+  return found;
+}
+
 // The language first, so every word below is in it.
 const language = await startPageLanguage();
-setupPageControls(document.querySelector('.page-controls'), {});
-const root = document.getElementById('composer');
+setupPageControls(pageElement('.page-controls'), {});
+const root = pageElement('#composer');
 const notices = el('div', 'cp-notices');
 installPageFaults((title, lines) => showNotice(notices, title, lines, { kind: 'error' }));
 if (language.problem) showNotice(notices, t('languageProblem'), [language.problem]);
@@ -49,7 +59,8 @@ root.append(intro); // first, so that a fault while the rest is built is said on
 const search = new URLSearchParams(window.location.search);
 let draft = emptyDraft();
 let kept = true;
-let before = null; // what this browser kept, when a link's lecture is shown instead
+/** @type {import('../lecture/readLecture.js').Lecture | null} what this browser kept, when a link's lecture is shown instead */
+let before = null;
 if (search.has('lecture')) {
   const read = lectureFromCode(search.get('lecture') ?? '');
   if (read.ok) {
@@ -82,7 +93,10 @@ const list = buildLectureList({
     moveTo: (key, index) => moved(key, moveItemTo(draft, key, index)),
     duplicate(key) {
       const copy = duplicateItem(draft, key);
-      if (!copy.key) return list.announce(t('full', { max: fixed(LECTURE_CAPS.items, 0) }));
+      if (!copy.key) {
+        list.announce(t('full', { max: fixed(LECTURE_CAPS.items, 0) }));
+        return;
+      }
       commit(copy.draft);
       list.focusItem(copy.key);
       const at = itemIndex(draft, copy.key);
@@ -101,6 +115,10 @@ const list = buildLectureList({
   editor: (item) => buildItemEditor(item, { patch: (fields) => commit(updateItem(draft, item.key, fields)) }),
 });
 
+/**
+ * @param {string} key
+ * @param {import('./composerModel.js').Draft} next
+ */
 function moved(key, next) {
   const from = itemIndex(draft, key);
   commit(next);
@@ -120,6 +138,7 @@ const share = buildShare({
   },
 });
 
+/** @param {import('./composerModel.js').Draft} next */
 function commit(next) {
   draft = next;
   list.sync(draft);
@@ -130,6 +149,7 @@ function commit(next) {
   }
 }
 
+/** @param {import('./composerModel.js').Draft} next */
 function replace(next) {
   draft = next;
   title.value = draft.title;
@@ -137,9 +157,13 @@ function replace(next) {
   commit(draft);
 }
 
+/** @param {import('./composerModel.js').NewItem} item */
 function add(item) {
   const added = addItem(draft, item);
-  if (!added.key) return list.announce(t('full', { max: fixed(LECTURE_CAPS.items, 0) }));
+  if (!added.key) {
+    list.announce(t('full', { max: fixed(LECTURE_CAPS.items, 0) }));
+    return;
+  }
   commit(added.draft);
   const at = itemIndex(draft, added.key);
   list.announce(t('added', { name: itemName(draft.items[at]), n: fixed(at + 1, 0), of: fixed(draft.items.length, 0) }));
@@ -176,10 +200,11 @@ if (before?.items.length) {
   const note = showNotice(notices, t('linkShown'), [
     t('linkShownKept', { title: before.title, count: before.items.length, n: fixed(before.items.length, 0) })]);
   const back = button(t('editKept'));
+  const keptLecture = before;
   back.addEventListener('click', () => {
-    replace(draftFromLecture(before));
+    replace(draftFromLecture(keptLecture));
     note?.remove();
-    list.announce(t('keptBack', { title: before.title }));
+    list.announce(t('keptBack', { title: keptLecture.title }));
   });
   note?.append(back);
 }

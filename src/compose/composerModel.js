@@ -7,6 +7,8 @@
 import { LECTURE_CAPS, LECTURE_KIND, LECTURE_VERSION, readLecture } from '../lecture/readLecture.js';
 import { panelEntry } from '../panels/manifest.js';
 import { questionById } from '../homework/questions.js';
+
+/** @typedef {import('../lecture/readLecture.js').Lecture} Lecture */
 import { panelTitle } from '../panels/panelText.js';
 import english from 'virtual:messages/en/compose';
 import { currentLanguage, messages } from '../i18n/messages.js';
@@ -20,6 +22,8 @@ const t = messages('compose', english);
  * @typedef {{ key: string, type: 'question', question: string, seed: string, heading: string, text: string }} QuestionDraft
  * @typedef {PanelDraft | TextDraft | QuestionDraft} ItemDraft
  * @typedef {{ title: string, items: ItemDraft[], nextKey: number }} Draft
+ * @typedef {Omit<PanelDraft, 'key'> | Omit<TextDraft, 'key'> | Omit<QuestionDraft, 'key'>} NewItem  an item before addItem keys it
+ * @typedef {Partial<Omit<PanelDraft, 'key' | 'type'> & Omit<QuestionDraft, 'key' | 'type'>>} ItemPatch  fields an editor changes
  */
 
 /** The title of a new lecture ("My lecture"), in the page's language. */
@@ -30,22 +34,38 @@ export function emptyDraft(title = defaultTitle()) {
   return { title, items: [], nextKey: 1 };
 }
 
-/** A new panel item (no key yet: addItem gives it one). */
+/**
+ * A new panel item (no key yet: addItem gives it one).
+ * @param {string} panel
+ * @returns {Omit<PanelDraft, 'key'>}
+ */
 export const panelItem = (panel) => ({ type: 'panel', panel, state: {}, lock: [], hide: [], heading: '', text: '' });
+/** @returns {Omit<TextDraft, 'key'>} */
 export const textItem = (heading = '', text = '') => ({ type: 'text', heading, text });
+/**
+ * @param {string} question
+ * @returns {Omit<QuestionDraft, 'key'>}
+ */
 export const questionItem = (question, seed = '') => ({ type: 'question', question, seed, heading: '', text: '' });
 
-/** The same item with its own copies of the state and key lists. */
+/**
+ * The same item with its own copies of the state and key lists.
+ * @param {NewItem} item
+ * @returns {NewItem}
+ */
 function copyItem(item) {
   return item.type === 'panel' ? { ...item, state: { ...item.state }, lock: [...item.lock], hide: [...item.hide] } : { ...item };
 }
 
+/** @type {(draft: Draft, key: string) => number} */
 const at = (draft, key) => draft.items.findIndex((item) => item.key === key);
 
 /**
  * The draft with `item` added at `index` (the end by default). Returns { draft, key }. Beyond the
  * lecture's cap of items nothing is added (key null): the lecture page would read only the first.
  * @param {Draft} draft
+ * @param {NewItem} item
+ * @returns {{ draft: Draft, key: string | null }}
  */
 export function addItem(draft, item, index = draft.items.length) {
   if (draft.items.length >= LECTURE_CAPS.items) return { draft, key: null };
@@ -55,7 +75,12 @@ export function addItem(draft, item, index = draft.items.length) {
   return { draft: { ...draft, items, nextKey: draft.nextKey + 1 }, key };
 }
 
-/** The draft with item `key` moved to position `index` (clamped to the list). @param {Draft} draft */
+/**
+ * The draft with item `key` moved to position `index` (clamped to the list).
+ * @param {Draft} draft
+ * @param {string} key
+ * @param {number} index
+ */
 export function moveItemTo(draft, key, index) {
   const from = at(draft, key);
   if (from < 0) return draft;
@@ -67,21 +92,33 @@ export function moveItemTo(draft, key, index) {
   return { ...draft, items };
 }
 
-/** The draft with item `key` moved `delta` places (−1: up one). @param {Draft} draft */
+/** @type {(draft: Draft, key: string, delta: number) => Draft} The draft with item `key` moved `delta` places (−1: up one). */
 export const moveItem = (draft, key, delta) => moveItemTo(draft, key, at(draft, key) + delta);
 
-/** The draft with a copy of item `key` right after it: { draft, key } (key: the copy's, or null). @param {Draft} draft */
+/**
+ * The draft with a copy of item `key` right after it: { draft, key } (key: the copy's, or null).
+ * @param {Draft} draft
+ * @param {string} key
+ */
 export function duplicateItem(draft, key) {
   const i = at(draft, key);
   return i < 0 ? { draft, key: null } : addItem(draft, draft.items[i], i + 1);
 }
 
-/** @param {Draft} draft */
+/**
+ * @param {Draft} draft
+ * @param {string} key
+ */
 export function removeItem(draft, key) {
   return { ...draft, items: draft.items.filter((item) => item.key !== key) };
 }
 
-/** The draft with fields of item `key` replaced (its key and type stay). @param {Draft} draft */
+/**
+ * The draft with fields of item `key` replaced (its key and type stay).
+ * @param {Draft} draft
+ * @param {string} key
+ * @param {ItemPatch} patch  fields of the item's own type
+ */
 export function updateItem(draft, key, patch) {
   return {
     ...draft,
@@ -89,10 +126,10 @@ export function updateItem(draft, key, patch) {
   };
 }
 
-/** @param {Draft} draft */
+/** @type {(draft: Draft, title: string) => Draft} */
 export const setTitle = (draft, title) => ({ ...draft, title });
 
-/** The position (0-based) of item `key`, or −1. @param {Draft} draft */
+/** @type {(draft: Draft, key: string) => number} The position (0-based) of item `key`, or −1. */
 export const itemIndex = (draft, key) => at(draft, key);
 
 /**
@@ -102,6 +139,7 @@ export const itemIndex = (draft, key) => at(draft, key);
  */
 export function draftData(draft) {
   const items = draft.items.map((item) => {
+    /** @type {Record<string, unknown>} */
     const out = {};
     for (const [name, value] of Object.entries(item)) {
       if (name === 'key') continue;
@@ -118,7 +156,7 @@ export function draftData(draft) {
  * The lecture the draft gives, as readLecture reads it, and what readLecture would leave out
  * (named "Item N" by the item's place in the list).
  * @param {Draft} draft
- * @returns {{ lecture: any, problems: string[] }}
+ * @returns {{ lecture: Lecture | null, problems: string[] }}
  */
 export function draftToLecture(draft) {
   const read = readLecture(draftData(draft));
@@ -126,26 +164,35 @@ export function draftToLecture(draft) {
   return read.ok ? { lecture: read.lecture, problems: read.problems } : { lecture: null, problems: read.problems };
 }
 
-/** A draft to edit a lecture (as readLecture gives it). @returns {Draft} */
+/**
+ * A draft to edit a lecture (as readLecture gives it).
+ * @param {{ title: string, items: readonly import('../lecture/readLecture.js').LectureItem[] }} lecture
+ * @returns {Draft}
+ */
 export function draftFromLecture(lecture) {
   let draft = emptyDraft(lecture.title);
   for (const item of lecture.items) {
-    const fresh = item.type === 'panel' ? panelItem(item.panel) : item.type === 'question' ? questionItem(item.question) : textItem();
-    draft = addItem(draft, { ...fresh, ...item }).draft;
+    const full = item.type === 'panel' ? { ...panelItem(item.panel), ...item }
+      : item.type === 'question' ? { ...questionItem(item.question), ...item } : { ...textItem(), ...item };
+    draft = addItem(draft, full).draft;
   }
   return draft;
 }
 
-/** The title of a question's panel, or '?' for a question the lab does not have. */
+/**
+ * The title of a question's panel, or '?' for a question the lab does not have.
+ * @param {string} id
+ */
 const questionPanelName = (id) => {
-  const panel = /** @type {any} */ (questionById(id))?.panel;
-  return panelEntry(panel) ? panelTitle(panel) : '?';
+  const panel = questionById(id)?.panel;
+  return panel !== undefined && panelEntry(panel) ? panelTitle(panel) : '?';
 };
 
 /** A short plain-text name of an item, for the list and what a screen reader is told. @param {ItemDraft} item */
 export function itemName(item) {
   // A heading of the lecturer's own names the item, and the panel stays named beside it: two cards
   // of one panel must not differ by their headings alone.
+  /** @param {string} name */
   const withHeading = (name) => (item.heading.trim() ? t('itemNameHeading', { heading: item.heading.trim(), name }) : name);
   if (item.type === 'panel') return withHeading(panelEntry(item.panel) ? panelTitle(item.panel) : item.panel);
   if (item.type === 'question') {

@@ -13,6 +13,7 @@ const MAX_STORED = 500_000; // characters; a lecture with text on every item is 
 
 /**
  * Saves the lecture data (draftData's, unread: an item still being written is kept too).
+ * @param {unknown} data
  * @returns {boolean} false where storage is refused (private mode, full, blocked)
  */
 export function saveDraft(data, storage = globalThis.localStorage) {
@@ -27,6 +28,7 @@ export function saveDraft(data, storage = globalThis.localStorage) {
 /**
  * { lecture, problems } from storage: lecture null when nothing is kept or it cannot be read
  * (problems then say why, where there was something).
+ * @returns {{ lecture: import('../lecture/readLecture.js').Lecture | null, problems: string[] }}
  */
 export function loadDraft(storage = globalThis.localStorage) {
   let text;
@@ -39,6 +41,7 @@ export function loadDraft(storage = globalThis.localStorage) {
   if (typeof text !== 'string' || text.length > MAX_STORED) {
     return { lecture: null, problems: [t('storedTooLarge')] };
   }
+  /** @type {unknown} */
   let data;
   try {
     data = JSON.parse(text);

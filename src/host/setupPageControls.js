@@ -65,7 +65,7 @@ export function setupPageControls(bar, { onMaterial = null } = {}) {
   for (const [value, text] of [['dark', t('themeDark')], ['light', t('themeLight')]]) {
     scheme.add(new Option(text, value, false, theme.scheme === value));
   }
-  scheme.addEventListener('change', () => { theme.scheme = scheme.value; applyTheme(theme); });
+  scheme.addEventListener('change', () => { theme.scheme = scheme.value === 'light' ? 'light' : 'dark'; applyTheme(theme); });
 
   const projector = document.createElement('input');
   projector.type = 'checkbox';

@@ -1,7 +1,7 @@
 // A question of a composed lecture, asked of the room as the homework page's lecture mode asks it:
 // homework's question card (buildQuestionCard, with its styles) judges nothing until the lecturer
 // reveals it; a prediction's panel appears with the truth. Loaded only by a lecture that has a question.
-import { questionById } from '../homework/questions.js';
+import { knownQuestion } from '../homework/questions.js';
 import { questionParams } from '../homework/gradeAnswer.js';
 import { buildQuestionCard } from '../homework/card/buildQuestionCard.js';
 import { button } from '../ui/el.js';
@@ -11,13 +11,18 @@ import { messages } from '../i18n/messages.js';
 
 const t = messages('lecture', english);
 
-/** Each { section, item, number } gets its card and a "Reveal the answer" button. Returns the cards. */
+/**
+ * Each { section, item, number } gets its card and a "Reveal the answer" button. Returns the cards.
+ * @param {import('./mountLecture.js').AskedQuestion[]} questions
+ */
 export function askQuestions(questions) {
-  const frames = new Set(); // the panels' frames, each fitted to the height it reports
+  /** @type {Set<HTMLIFrameElement>} the panels' frames, each fitted to the height it reports */
+  const frames = new Set();
   const cards = questions.map(({ section, item, number }) => {
-    const question = questionById(item.question);
+    const question = knownQuestion(item.question);
+    /** @type {import('../homework/card/buildQuestionCard.js').QuestionCard | null} */
     let card = null;
-    card = buildQuestionCard({
+    const made = buildQuestionCard({
       number,
       item: {},
       question,
@@ -29,17 +34,21 @@ export function askQuestions(questions) {
       onAnswer: () => {},
       onFrame: (frame) => frames.add(frame),
     });
+    card = made;
     const reveal = button(t('reveal'), 'lecture-reveal');
-    reveal.addEventListener('click', () => { card.reveal(); reveal.disabled = true; });
-    card.element.append(reveal);
-    section.append(card.element);
-    return card;
+    reveal.addEventListener('click', () => { made.reveal(); reveal.disabled = true; });
+    made.element.append(reveal);
+    section.append(made.element);
+    return made;
   });
   window.addEventListener('message', (event) => {
     // Looked up when the message comes: a card makes its frame before it is on the page, without a window yet.
     const frame = [...frames].find((f) => f.contentWindow === event.source);
-    if (!frame || event.data?.type !== 'fresnel-lab:size') return;
-    const height = Number(event.data.height);
+    /** @type {unknown} a frame's message, data until it is checked */
+    const data = event.data;
+    const field = (/** @type {string} */ key) => (typeof data === 'object' && data !== null ? Reflect.get(data, key) : undefined);
+    if (!frame || field('type') !== 'fresnel-lab:size') return;
+    const height = Number(field('height'));
     if (Number.isFinite(height)) frame.style.height = `${Math.min(3000, Math.max(160, Math.ceil(height) + 2))}px`;
   });
   // The page's theme and projector mode reach the panels in their frames.

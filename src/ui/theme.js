@@ -12,7 +12,7 @@ export function loadTheme() {
   }
 }
 
-/** @typedef {{ scheme: string, projector: boolean }} Theme  scheme: 'dark' or 'light' */
+/** @typedef {{ scheme: 'dark' | 'light', projector: boolean }} Theme */
 
 /**
  * remember: false for a theme an embed was told to use, which is not the reader's choice.

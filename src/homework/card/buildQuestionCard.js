@@ -24,7 +24,17 @@ import { messages } from '../../i18n/messages.js';
 const t = messages('homework', english);
 const tq = messages('questions', questionWords);
 
-/** The panel in a frame of the embed page, started from `state` (values the panel checks itself). */
+/**
+ * A question's card: its answer so far, the tries it took, whether the lecturer revealed it.
+ * @typedef {{ element: HTMLElement, answer: () => number | string | null, attempts: () => number, revealed: () => boolean,
+ *   reveal: () => void, refresh: () => void }} QuestionCard
+ */
+
+/**
+ * The panel in a frame of the embed page, started from `state` (values the panel checks itself).
+ * @param {string} panelId
+ * @param {Record<string, unknown>} state
+ */
 function panelFrame(panelId, state) {
   const url = new URL('./embed.html', window.location.href);
   for (const [key, value] of Object.entries(state)) if (!EMBED_KEYS.includes(key)) url.searchParams.set(key, String(value));
@@ -44,6 +54,10 @@ function panelFrame(panelId, state) {
  * the sheet is still open (any panel could give it away); onAnswer(answer): store it;
  * onFrame(frame): a panel's frame was made. Returns { element, answer(), attempts(), revealed(),
  * reveal(), refresh() }.
+ * @param {{ number: number, item: { state?: import('../questionParts.js').PanelState }, question: import('../questions.js').Question,
+ *   params: unknown, saved: number | string | null, attempts?: number, lecture: () => boolean, panelsAllowed: () => boolean,
+ *   onAnswer: (answer: number | string | null) => void, onFrame: (frame: HTMLIFrameElement) => void }} card
+ * @returns {QuestionCard}
  */
 export function buildQuestionCard({
   number, item, question, params, saved, attempts: savedAttempts = 0, lecture, panelsAllowed, onAnswer, onFrame,
@@ -73,7 +87,7 @@ export function buildQuestionCard({
   let revealed = false; // by the lecturer, in lecture mode
   const state = { ...(item.state ?? {}), ...question.state(params) }; // the question's own values win
   const judged = () => revealed || (!lecture() && answer !== null);
-  const record = (value) => {
+  const record = (/** @type {number | string | null} */ value) => {
     answer = value;
     attempts += 1;
     onAnswer(answer);
@@ -81,20 +95,23 @@ export function buildQuestionCard({
     result.focus();
   };
 
+  /** @type {ReturnType<typeof createPredictFigure> | null} */
   let figure = null;
-  let input = null;
+  /** @type {{ option: import('../questionParts.js').ChoiceOption<unknown>, radio: HTMLInputElement, label: HTMLElement,
+   *   why: HTMLElement }[]} */
   const options = [];
   const commit = button('', 'hw-commit');
+  /** @type {(HTMLButtonElement | HTMLInputElement)[]} */
   const controls = [commit];
 
   if (question.kind === 'numeric') {
-    input = el('input');
+    const input = el('input');
     input.type = 'text';
     input.inputMode = 'decimal';
     input.autocomplete = 'off';
     input.maxLength = MAX_TYPED;
     input.setAttribute('aria-describedby', prompt.id);
-    input.value = answer ?? '';
+    input.value = String(answer ?? '');
     commit.textContent = t('card.check');
     const submit = () => record(input.value.trim() || null);
     commit.addEventListener('click', submit);
@@ -103,18 +120,19 @@ export function buildQuestionCard({
     controls.push(input);
   } else if (question.kind === 'predict') {
     // Any angle is a prediction, the marker's start included: the button names the one it commits.
-    const name = (value) => { commit.textContent = t('card.commit', { angle: angle(value, 1) }); };
+    const name = (/** @type {number} */ value) => { commit.textContent = t('card.commit', { angle: angle(value, 1) }); };
     const axis = question.axis?.() ?? null;
-    figure = createPredictFigure({
+    const made = createPredictFigure({
       label: t('card.predictionLabel', { number, axis: axis ?? 'θ' }),
       describedBy: prompt.id,
-      ...(axis ? { axisTitle: axis, axisInText: question.axisInText() } : {}),
+      ...(axis ? { axisTitle: axis, axisInText: question.axisInText?.() } : {}),
       onChange: name,
     });
-    if (answer !== null) figure.setValue(answer);
-    name(figure.value());
-    commit.addEventListener('click', () => record(figure.value()));
-    answerBox.append(figure.element, commit);
+    figure = made;
+    if (typeof answer === 'number') made.setValue(answer); // a prediction's answer is an angle (readAnswer)
+    name(made.value());
+    commit.addEventListener('click', () => record(made.value()));
+    answerBox.append(made.element, commit);
   } else {
     const group = el('fieldset', 'hw-options');
     group.setAttribute('aria-describedby', prompt.id);
@@ -143,6 +161,10 @@ export function buildQuestionCard({
     answerBox.append(group, commit);
   }
 
+  /**
+   * @param {string} kind
+   * @param {string} text
+   */
   function say(kind, text) {
     const className = `hw-result hw-${kind}`;
     if (result.className !== className) result.className = className;
@@ -166,7 +188,11 @@ export function buildQuestionCard({
     onFrame(frame);
   }
 
-  function renderChoice(graded) {
+  /**
+   * @param {import('../questions.js').ChoiceQuestion} question
+   * @param {import('../gradeAnswer.js').Grade | null} graded
+   */
+  function renderChoice(question, graded) {
     const right = trueOption(question, params);
     const all = judged() && (revealed || graded?.correct);
     for (const o of options) {
@@ -182,8 +208,12 @@ export function buildQuestionCard({
 
   function render() {
     const graded = answer === null ? null : gradeAnswer(question, params, answer);
-    if (question.kind === 'predict') {
-      if (answer !== null) { figure.setValue(answer); figure.lock(); commit.disabled = true; }
+    if (question.kind === 'predict' && figure) {
+      if (answer !== null) {
+        if (typeof answer === 'number') figure.setValue(answer); // a prediction's answer is an angle (readAnswer)
+        figure.lock();
+        commit.disabled = true;
+      }
       if (judged()) {
         if (answer === null) figure.lock({ committed: false });
         commit.disabled = true;
@@ -194,7 +224,7 @@ export function buildQuestionCard({
     }
     if (question.kind !== 'predict' || judged()) showPanel(); // a prediction's panel waits for its truth
     if (revealed) for (const control of controls) control.disabled = true; // the truth is out: no more answers
-    if (question.kind === 'choice') renderChoice(graded);
+    if (question.kind === 'choice') renderChoice(question, graded);
     if (!judged()) {
       say('waiting', answer === null ? '' : t('card.saved'));
       return;
@@ -205,7 +235,7 @@ export function buildQuestionCard({
     else if (!graded.answered) say('wrong', graded.explanation);
     else if (graded.correct) say('right', t('card.rightTruth', truth));
     else if (question.kind === 'predict' || revealed) {
-      const yours = formatValue(question, graded.value);
+      const yours = formatValue(question, graded.value ?? NaN); // an answered value's grade has it (gradeAnswer.js)
       say('wrong', t(question.kind === 'predict' ? 'card.offTruth' : 'card.notWithinTruth', { ...truth, yours }));
     } else say('wrong', t('card.tryAgain', { explanation: graded.explanation }));
   }

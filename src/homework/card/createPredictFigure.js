@@ -15,7 +15,8 @@ const NS = 'http://www.w3.org/2000/svg';
 const W = 640;
 const H = 240;
 const PAD = { left: 48, right: 24, top: 20, bottom: 52 };
-const x = (t) => PAD.left + ((W - PAD.left - PAD.right) * t) / 90;
+const x = (/** @type {number} */ t) => PAD.left + ((W - PAD.left - PAD.right) * t) / 90;
+/** @type {(tag: string, attrs?: Record<string, string | number>) => SVGElement} */
 const svg = (tag, attrs = {}) => {
   const node = document.createElementNS(NS, tag);
   for (const [k, v] of Object.entries(attrs)) node.setAttribute(k, String(v));
@@ -28,6 +29,8 @@ const svg = (tag, attrs = {}) => {
  * same as a sentence names it (θ where the axis is the angle from the normal).
  * onChange(value) while it moves. Returns { element, value(), setValue(v), lock({ committed }),
  * showTruth({ curve, truth }), hideTruth(), focus() }.
+ * @param {{ label: string, describedBy?: string | null, axisTitle?: string, axisInText?: string, initial?: number,
+ *   onChange?: (value: number) => void }} options
  */
 export function createPredictFigure({
   label, describedBy = null, axisTitle = t('predict.thetaAxis'), axisInText = 'θ', initial = 45, onChange = () => {},
@@ -65,15 +68,15 @@ export function createPredictFigure({
   let committed = false;
   const draw = () => {
     const px = x(value);
-    for (const line of [markerLine]) { line.setAttribute('x1', px); line.setAttribute('x2', px); }
-    knob.setAttribute('cx', px);
-    markerText.setAttribute('x', Math.min(Math.max(px, PAD.left + 40), W - PAD.right - 40));
+    for (const line of [markerLine]) { line.setAttribute('x1', String(px)); line.setAttribute('x2', String(px)); }
+    knob.setAttribute('cx', String(px));
+    markerText.setAttribute('x', String(Math.min(Math.max(px, PAD.left + 40), W - PAD.right - 40)));
     markerText.textContent = committed ? t('predict.yours', { angle: angle(value, 1) }) : angle(value, 1);
     marker.style.display = locked && !committed ? 'none' : ''; // revealed with nothing committed: no marker
     marker.setAttribute('aria-valuenow', value.toFixed(1));
     marker.setAttribute('aria-valuetext', t('predict.valueText', { angle: fixed(value, 1) }));
   };
-  const setValue = (v, notify = true) => {
+  const setValue = (/** @type {number} */ v, notify = true) => {
     if (locked || !Number.isFinite(v)) return;
     value = Math.round(Math.min(90, Math.max(0, v)) * 10) / 10;
     draw();
@@ -81,14 +84,15 @@ export function createPredictFigure({
   };
   marker.addEventListener('keydown', (event) => {
     const step = event.shiftKey ? 0.1 : 1;
+    /** @type {Record<string, number>} */
     const moves = { ArrowRight: step, ArrowUp: step, ArrowLeft: -step, ArrowDown: -step, PageUp: 10, PageDown: -10 };
-    if (event.key in moves) setValue(value + moves[event.key]);
+    if (Object.hasOwn(moves, event.key)) setValue(value + moves[event.key]);
     else if (event.key === 'Home') setValue(0);
     else if (event.key === 'End') setValue(90);
     else return;
     event.preventDefault();
   });
-  const fromPointer = (event) => {
+  const fromPointer = (/** @type {PointerEvent} */ event) => {
     const box = picture.getBoundingClientRect();
     const scale = W / box.width;
     setValue((((event.clientX - box.left) * scale - PAD.left) / (W - PAD.left - PAD.right)) * 90);
@@ -105,9 +109,12 @@ export function createPredictFigure({
   return {
     element,
     value: () => value,
-    setValue: (v) => setValue(v, false),
+    setValue: (/** @type {number} */ v) => setValue(v, false),
     focus: () => marker.focus(),
-    /** committed: whether the marker holds the student's prediction (else the truth came first). */
+    /**
+     * committed: whether the marker holds the student's prediction (else the truth came first).
+     * @param {{ committed?: boolean }} [options]
+     */
     lock({ committed: made = true } = {}) {
       locked = true;
       committed = made;
@@ -123,13 +130,16 @@ export function createPredictFigure({
       element.classList.remove('revealed');
       if (locked) caption.textContent = committed ? t('predict.committed') : caption.textContent;
     },
-    /** curve: { label, f(θ°), level? }; truth: the true angle in degrees. */
+    /**
+     * curve: { label, f(θ°), level? }; truth: the true angle in degrees.
+     * @param {{ curve: import('../questionParts.js').Curve, truth: number }} shown
+     */
     showTruth({ curve, truth }) {
       truthLayer.replaceChildren();
       const samples = Array.from({ length: 361 }, (_, i) => i / 4);
       const ys = samples.map(curve.f);
       const top = Math.max(curve.level ?? 0, ...ys) || 1;
-      const y = (v) => baseline - ((baseline - PAD.top - 14) * v) / top;
+      const y = (/** @type {number} */ v) => baseline - ((baseline - PAD.top - 14) * v) / top;
       const path = samples.map((t, i) => `${i ? 'L' : 'M'}${x(t).toFixed(1)},${y(ys[i]).toFixed(1)}`).join('');
       truthLayer.append(svg('path', { d: path, class: 'predict-curve' }));
       if (curve.level !== undefined) {

@@ -53,15 +53,16 @@ function factorText({ name, meaning = [] }, unit) {
  * @typedef {{ id: string, text: string, chosen: number, chosenWhenRight: number, chosenWhenWrong: number, rightFor: number,
  *   rightForShown: boolean, why: string | null }} OptionCount  text, why: for the shown instance's numbers (why: null where
  *   the option holds for them)
- * @typedef {{ item: number, question: string, kind: string, unit: string | null, tolerance: number | null, students: number,
+ * @typedef {{ item: number, question: string, unit: string | null, tolerance: number | null, students: number,
  *   right: number, wrong: number, unanswered: number, shareRight: number | null,
- *   shown: { params: unknown, sameForAll: boolean } | null,
- *   options?: OptionCount[],
- *   ratio?: { step: number, bins: Bin[], labels: { at: number, factor: number, short: string, text: string, count: number }[],
- *     below: number, above: number, opposite: number, flipped: number, zero: number, noRatio: number },
- *   slips?: { label: string, count: number }[],
- *   elsewhere?: { zero: number, opposite: number, far: number },
- *   offset?: { step: number, bins: Bin[] } }} QuestionSummary
+ *   shown: { params: unknown, sameForAll: boolean } | null }} SummaryBase
+ * @typedef {{ step: number, bins: Bin[], labels: FactorLabel[],
+ *   below: number, above: number, opposite: number, flipped: number, zero: number, noRatio: number }} Ratio
+ * @typedef {SummaryBase & { kind: 'choice', options: OptionCount[] }} ChoiceSummary
+ * @typedef {SummaryBase & { kind: 'numeric', ratio: Ratio, slips: { label: string, count: number }[],
+ *   elsewhere: { zero: number, opposite: number, far: number } }} NumericSummary
+ * @typedef {SummaryBase & { kind: 'predict', offset: { step: number, bins: Bin[] } }} PredictSummary
+ * @typedef {ChoiceSummary | NumericSummary | PredictSummary} QuestionSummary
  *   ratio's below, above, opposite, zero, noRatio: answers (right or wrong) outside the histogram's bins;
  *   labels[].count, slips[].count, elsewhere: wrong answers, each under one of them at most
  * @typedef {{ at: number, factor: number, short: string, text: string, count: number }} FactorLabel
@@ -152,7 +153,7 @@ function namedSlip(question, r) {
  */
 function numericSummary(question, entries, params) {
   const half = RATIO_DECADES / RATIO_STEP;
-  /** @type {NonNullable<QuestionSummary['ratio']>} */
+  /** @type {Ratio} */
   const ratio = {
     step: RATIO_STEP, bins: centredBins(half, RATIO_STEP), labels: [], below: 0, above: 0, opposite: 0, flipped: 0, zero: 0, noRatio: 0,
   };
@@ -227,17 +228,18 @@ export function summarizeQuestions(grades, gradebook) {
     // The one instance a card shows: the first student's parameters.
     const params = entries[0]?.result.params;
     const same = JSON.stringify(params);
-    /** @type {QuestionSummary} */
-    const summary = {
+    /** @type {SummaryBase & { kind: string }} */
+    const base = {
       item: i, question: question.id, kind: question.kind,
       unit: question.kind === 'choice' ? null : question.unit, tolerance: question.kind === 'choice' ? null : question.tolerance,
       students: entries.length, right, wrong: entries.length - right - unanswered, unanswered,
       shareRight: entries.length ? right / entries.length : null,
       shown: params ? { params, sameForAll: entries.every((e) => JSON.stringify(e.result.params) === same) } : null,
     };
-    if (question.kind === 'choice') summary.options = choiceSummary(question, entries, params);
-    else if (question.kind === 'numeric') Object.assign(summary, numericSummary(question, entries, params));
-    else summary.offset = predictSummary(entries);
+    /** @type {QuestionSummary} */
+    const summary = question.kind === 'choice' ? { ...base, kind: 'choice', options: choiceSummary(question, entries, params) }
+      : question.kind === 'numeric' ? { ...base, kind: 'numeric', ...numericSummary(question, entries, params) }
+      : { ...base, kind: 'predict', offset: predictSummary(entries) };
     return summary;
   });
 }

@@ -9,9 +9,13 @@ const PREFIX = 'fresnel-lab:homework:';
  * { work: { seed, name, answeredWith, answers, attempts }, save(), kept(), forSeed(seed) } for
  * this sheet code; `kept` false where storage is refused. forSeed(seed) drops answers made under
  * another seed (another link's ?seed=, a class seed added since): they answer other numbers.
+ * @param {string} sheetCode
+ * @param {number} count
+ * @param {() => string} makeSeed
  */
 export function openAnswerStore(sheetCode, count, makeSeed) {
   const key = `${PREFIX}${hashSeed(sheetCode).toString(36)}`;
+  /** @type {Storage | null} */
   let storage = null;
   try {
     storage = window.localStorage;
@@ -19,19 +23,31 @@ export function openAnswerStore(sheetCode, count, makeSeed) {
   } catch {
     storage = null;
   }
+  /** @type {unknown} what this browser kept, which anything on the page's origin can have written */
   let saved = null;
   try {
     saved = JSON.parse(storage?.getItem(key) ?? 'null');
   } catch {
     saved = null; // damaged by hand: start again rather than fail
   }
-  const list = (name) => Array.from({ length: count }, (_, i) => (Array.isArray(saved?.[name]) ? saved[name][i] ?? null : null));
+  /** @type {(name: string) => unknown} a field of what was kept, looked up as an own key */
+  const field = (name) => (saved !== null && typeof saved === 'object' && Object.hasOwn(saved, name)
+    ? Reflect.get(saved, name) : undefined);
+  /** @type {(name: string) => unknown[]} */
+  const list = (name) => {
+    const kept = field(name);
+    return Array.from({ length: count }, (_, i) => (Array.isArray(kept) ? kept[i] ?? null : null));
+  };
+  const seed = field('seed');
+  const name = field('name');
+  const answeredWith = field('answeredWith');
   const work = {
-    seed: typeof saved?.seed === 'string' && saved.seed ? saved.seed.slice(0, 64) : makeSeed(), // this browser's own
-    name: typeof saved?.name === 'string' ? saved.name.slice(0, 100) : '',
-    answeredWith: typeof saved?.answeredWith === 'string' ? saved.answeredWith : null, // the seed the answers are for
+    seed: typeof seed === 'string' && seed ? seed.slice(0, 64) : makeSeed(), // this browser's own
+    name: typeof name === 'string' ? name.slice(0, 100) : '',
+    /** @type {string | null} the seed the answers are for */
+    answeredWith: typeof answeredWith === 'string' ? answeredWith : null,
     answers: list('answers'), // as stored: each is read for its question's kind by the sheet (readAnswer)
-    attempts: list('attempts').map((n) => (Number.isInteger(n) && n >= 0 ? n : 0)),
+    attempts: list('attempts').map((n) => (typeof n === 'number' && Number.isInteger(n) && n >= 0 ? n : 0)),
   };
   let kept = storage !== null;
   const save = () => {
@@ -42,7 +58,7 @@ export function openAnswerStore(sheetCode, count, makeSeed) {
       kept = false; // full or refused now: the page keeps working
     }
   };
-  const forSeed = (seed) => {
+  const forSeed = (/** @type {string} */ seed) => {
     if (work.answeredWith !== seed) {
       work.answers.fill(null);
       work.attempts.fill(0);

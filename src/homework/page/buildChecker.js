@@ -14,17 +14,31 @@ import { messages } from '../../i18n/messages.js';
 
 const t = messages('homework', english);
 
-/** The graded report of one handed-in file, or its problems. */
+/**
+ * The graded report of one handed-in file, or its problems.
+ * @param {string} label
+ * @param {string} text
+ * @param {import('../readSheet.js').Sheet | null} expected
+ * @param {import('../sheetCodes.js').Decoded | { ok: false, problems: string[] }} [read]
+ */
 function report(label, text, expected, read = handInFromText(text)) {
-  let graded = read.ok ? null : read;
-  try {
-    graded ??= gradeHandIn(read.data, { expected });
-  } catch (error) {
-    graded = { ok: false, problems: [t('grade.notGraded', { error: error.message })] };
+  /** @type {Parameters<typeof gradedReport>[1]} */
+  let graded;
+  if (!read.ok) graded = { ok: false, problems: read.problems };
+  else {
+    try {
+      graded = gradeHandIn(read.data, { expected });
+    } catch (error) {
+      graded = { ok: false, problems: [t('grade.notGraded', { error: error instanceof Error ? error.message : String(error) })] };
+    }
   }
   return gradedReport(label, graded, { against: expected ? 'given' : 'named' });
 }
 
+/**
+ * The checker's section in `root`; check(text) checks pasted text as its button does.
+ * @param {Element} root
+ */
 export function buildChecker(root) {
   const { section, heading } = titledSection('hw-checker', 'checker-title', t('checker.title'));
   const sheet = el('input');
@@ -42,6 +56,7 @@ export function buildChecker(root) {
     field(t('checker.files'), files), results);
   root.append(section);
 
+  /** @param {(expected: import('../readSheet.js').Sheet | null) => Node[]} grade */
   const withExpected = (grade) => {
     const expected = readSetSheet(sheet.value);
     if (!expected.ok) results.replaceChildren(problemBox(t('checker.sheetUnusable'), expected.problems));
@@ -49,10 +64,10 @@ export function buildChecker(root) {
   };
   check.addEventListener('click', () => withExpected((expected) => [report(t('checker.pasted'), code.value, expected)]));
   files.addEventListener('change', async () => {
-    const picked = await Promise.all([...files.files].map(async (file) => ({ file, read: await readTextFile(file) })));
+    const picked = await Promise.all([...(files.files ?? [])].map(async (file) => ({ file, read: await readTextFile(file) })));
     withExpected((expected) => picked.map(({ file, read }) => (read.ok
       ? report(file.name, read.text, expected)
-      : report(file.name, '', expected, read))));
+      : report(file.name, '', expected, { ok: false, problems: read.problems }))));
   });
-  return { check: (text) => { code.value = text; check.click(); } };
+  return { check: (/** @type {string} */ text) => { code.value = text; check.click(); } };
 }

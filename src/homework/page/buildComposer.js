@@ -21,7 +21,10 @@ import { currentLanguage, messages } from '../../i18n/messages.js';
 
 const t = messages('homework', english);
 
-/** The page's address for a sheet: homework.html?sheet=CODE. */
+/**
+ * The page's address for a sheet: homework.html?sheet=CODE.
+ * @param {import('../readSheet.js').Sheet} sheet
+ */
 export function sheetUrl(sheet) {
   const url = new URL('./homework.html', window.location.href);
   url.search = '';
@@ -29,6 +32,10 @@ export function sheetUrl(sheet) {
   return url.toString();
 }
 
+/**
+ * The composer's section in `root`: pick(id) gives a question's checkbox, update() reads the form again.
+ * @param {Element} root
+ */
 export function buildComposer(root) {
   const { section, heading } = titledSection('hw-composer', 'composer-title', t('composer.title'));
   const title = el('input');
@@ -44,6 +51,7 @@ export function buildComposer(root) {
   seed.placeholder = t('composer.seedPlaceholder');
   section.append(heading, field(t('composer.sheetTitle'), title), field(t('composer.reveal'), reveal), field(t('composer.seed'), seed));
 
+  /** @type {{ question: import('../questions.js').Question, box: HTMLInputElement, state: HTMLInputElement, note: HTMLElement }[]} */
   const picks = [];
   for (const panel of PANELS) {
     const questions = QUESTIONS.filter((q) => q.panel === panel.id);
@@ -93,19 +101,22 @@ export function buildComposer(root) {
   section.append(out);
   root.append(section);
 
+  /** @type {import('../readSheet.js').Sheet | null} */
   let current = null;
   function update() {
+    /** @type {string[]} */
     const itemProblems = [];
     const items = picks.filter((p) => p.box.checked).map(({ question, state, note }, i) => {
       const read = readStartState(state.value, question.panel);
       if (!read.ok) {
         itemProblems.push(t('composer.itemProblem', { number: i + 1, panel: panelTitle(question.panel), problem: read.problem }));
       }
+      const start = read.ok ? read.state : {};
       // The question's own values win over a start state (its numbers depend on them): say which.
       const own = Object.keys(question.state(questionParams(question, 'example')));
-      const overridden = Object.keys(read.state ?? {}).filter((k) => own.includes(k));
+      const overridden = Object.keys(start).filter((k) => own.includes(k));
       note.textContent = overridden.length ? t('composer.overridden', { keys: overridden.join(', ') }) : '';
-      return Object.keys(read.state ?? {}).length ? { question: question.id, state: read.state } : { question: question.id };
+      return Object.keys(start).length ? { question: question.id, state: start } : { question: question.id };
     });
     const draft = {
       version: 1, title: title.value.trim(), reveal: reveal.value, ...(seed.value.trim() ? { seed: seed.value.trim() } : {}),
@@ -113,7 +124,7 @@ export function buildComposer(root) {
     };
     const read = readSheet(draft);
     const all = items.length ? [...itemProblems, ...(read.ok ? [] : read.problems)] : [t('composer.pickOne')];
-    current = all.length ? null : read.sheet;
+    current = !all.length && read.ok ? read.sheet : null;
     problems.replaceChildren(...all.map((p) => el('p', 'hw-problem', p)));
     link.value = current ? sheetUrl(current) : '';
     for (const control of [copy, save, scorm]) control.disabled = !current;
@@ -140,11 +151,11 @@ export function buildComposer(root) {
       downloadBlob(`fresnel-lab-${fileSlug(sheet.title)}-scorm12.zip`, blob);
       problems.replaceChildren(el('p', null, t('composer.packageSaved', { size: grouped(blob.size / 1024) })));
     } catch (error) {
-      problems.replaceChildren(el('p', 'hw-problem', error.message));
+      problems.replaceChildren(el('p', 'hw-problem', error instanceof Error ? error.message : String(error)));
     } finally {
       scorm.disabled = !current;
     }
   });
   update();
-  return { pick: (id) => picks.find((p) => p.question.id === id)?.box, update };
+  return { pick: (/** @type {string} */ id) => picks.find((p) => p.question.id === id)?.box, update };
 }

@@ -12,7 +12,10 @@ const t = messages('homework', english);
 
 const FILES = ['homework.html', 'embed.html', 'favicon.svg'];
 
-/** Resolves a Blob of the zip; rejects with a message a lecturer can act on. */
+/**
+ * Resolves a Blob of the zip; rejects with a message a lecturer can act on.
+ * @param {import('../readSheet.js').Sheet} sheet
+ */
 export async function buildScormPackage(sheet) {
   const base = new URL('./offline/', window.location.href);
   let texts;

@@ -7,11 +7,29 @@
 // homework page.
 import { SUSPEND_LIMIT } from '../readResume.js';
 
-/** The nearest `API` on a window above (or the opener's), as the run-time's discovery does. */
+/**
+ * The LMS's object, which is not the page's to trust: its functions are called by name through
+ * `invoke` (RTE §3.2: LMSInitialize, LMSGetValue, LMSSetValue, LMSCommit, LMSFinish), each call
+ * guarded by the caller.
+ * @typedef {object} ScormApi
+ */
+
+/** @type {(object: unknown, key: string) => unknown} a property of an object from outside, without trusting it to be one */
+const member = (object, key) => ((typeof object === 'object' || typeof object === 'function') && object !== null
+  ? Reflect.get(object, key) : undefined);
+
+/**
+ * The nearest `API` on a window above (or the opener's), as the run-time's discovery does.
+ * @param {Window} start
+ * @returns {ScormApi | null}
+ */
 function findApi(start) {
   for (let win = start, hops = 0; win && hops < 12; hops += 1) {
     try {
-      if (win.API && typeof win.API.LMSInitialize === 'function') return win.API;
+      const api = member(win, 'API');
+      if ((typeof api === 'object' || typeof api === 'function') && api !== null && typeof member(api, 'LMSInitialize') === 'function') {
+        return api;
+      }
     } catch {
       break; // a window of another origin: nothing above it can be reached; try the opener
     }
@@ -25,9 +43,26 @@ function findApi(start) {
   }
 }
 
-/** cmi.core.session_time: HHHH:MM:SS.SS (RTE §3.4.2, CMITimespan). */
+/**
+ * The LMS's function `name` called with `args` on its object; throws where it is no function or
+ * throws itself (the callers guard every call).
+ * @param {ScormApi} api
+ * @param {string} name
+ * @param {unknown[]} args
+ */
+function invoke(api, name, args) {
+  const fn = member(api, name);
+  if (typeof fn !== 'function') throw new TypeError(`The LMS's API has no ${name}.`);
+  return /** @type {unknown} */ (Reflect.apply(fn, api, args));
+}
+
+/**
+ * cmi.core.session_time: HHHH:MM:SS.SS (RTE §3.4.2, CMITimespan).
+ * @param {number} ms
+ */
 function timespan(ms) {
   const s = Math.max(0, ms) / 1000;
+  /** @type {(n: number, w: number) => string} */
   const pad = (n, w) => String(Math.floor(n)).padStart(w, '0');
   return `${pad(s / 3600, 4)}:${pad((s % 3600) / 60, 2)}:${(s % 60).toFixed(2).padStart(5, '0')}`;
 }
@@ -37,24 +72,28 @@ function timespan(ms) {
  * report(score, total) → bool }, or null without an LMS. suspendData: what the LMS kept, unread
  * (readResume.js reads it). Every call into the LMS is guarded: an LMS that throws or refuses
  * makes a call return false, never breaks the page.
+ * @param {Window} [win]
  */
 export function connectScorm(win = window) {
   const api = findApi(win);
   if (!api) return null;
+  /** @type {(name: string, ...args: unknown[]) => string} */
   const call = (name, ...args) => {
     try {
-      return String(api[name](...args));
+      return String(invoke(api, name, args));
     } catch {
       return 'false';
     }
   };
+  /** @type {(key: string) => string} */
   const get = (key) => {
     try {
-      return String(api.LMSGetValue(key) ?? '');
+      return String(invoke(api, 'LMSGetValue', [key]) ?? '');
     } catch {
       return '';
     }
   };
+  /** @type {(key: string, value: unknown) => boolean} */
   const set = (key, value) => call('LMSSetValue', key, String(value)) === 'true';
   const commit = () => call('LMSCommit', '') === 'true';
   let started = 0;
@@ -88,7 +127,10 @@ export function connectScorm(win = window) {
   return {
     learner: { id: get('cmi.core.student_id'), name: get('cmi.core.student_name') },
     suspendData,
-    /** Keeps work in cmi.suspend_data, and commits it with the interactions recorded since. */
+    /**
+     * Keeps work in cmi.suspend_data, and commits it with the interactions recorded since.
+     * @param {unknown} work
+     */
     save(work) {
       const data = JSON.stringify(work);
       const kept = data.length <= SUSPEND_LIMIT && set('cmi.suspend_data', data);
@@ -99,6 +141,7 @@ export function connectScorm(win = window) {
      * next save. cmi.interactions is write-only in 1.2 and the LMS journals them (RTE §3.4.2.7):
      * each check is a new one at the next index, cmi.interactions._count, never a rewrite. False
      * where the LMS keeps none; an element it does not list in _children is left out.
+     * @param {Record<string, string>} interaction
      */
     record(interaction) {
       if (!open || !interactions) return false;
@@ -117,7 +160,11 @@ export function connectScorm(win = window) {
       }
       return written;
     },
-    /** The score as a percentage (cmi.core.score.raw, 0–100) and the lesson completed. */
+    /**
+     * The score as a percentage (cmi.core.score.raw, 0–100) and the lesson completed.
+     * @param {number} score
+     * @param {number} total
+     */
     report(score, total) {
       const ok = set('cmi.core.score.min', 0) && set('cmi.core.score.max', 100)
         && set('cmi.core.score.raw', total ? Math.round((100 * score) / total) : 0)

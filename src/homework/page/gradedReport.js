@@ -4,7 +4,7 @@
 import { el } from '../../ui/el.js';
 import { setSubscripted } from '../../ui/subscripts.js';
 import { pageLocale } from '../../ui/safeLocale.js';
-import { questionById } from '../questions.js';
+import { knownQuestion } from '../questions.js';
 import { trueOption } from '../gradeAnswer.js';
 import { formatValue } from '../formatAnswer.js';
 import english from 'virtual:messages/en/homework';
@@ -12,16 +12,37 @@ import { messages } from '../../i18n/messages.js';
 
 const t = messages('homework', english);
 
+/** @typedef {import('../questions.js').Question} Question */
+
+/**
+ * @param {Question} question
+ * @param {{ answer: number | string | null }} result
+ * @param {unknown} params
+ */
 function answerText(question, result, params) {
   if (result.answer === null) return '—';
-  if (question.kind === 'choice') return question.options(params).find((o) => o.id === result.answer).text(params);
-  return question.kind === 'numeric' ? result.answer : formatValue(question, result.answer);
+  if (question.kind === 'choice') {
+    // A choice's answer is one of its options (readAnswer keeps no other).
+    const chosen = question.options(params).find((o) => o.id === result.answer);
+    return chosen ? chosen.text(params) : String(result.answer);
+  }
+  // A typed answer is shown as it was typed; a prediction is an angle.
+  return question.kind === 'numeric' || typeof result.answer !== 'number' ? String(result.answer) : formatValue(question, result.answer);
 }
 
+/**
+ * @param {Question} question
+ * @param {unknown} params
+ */
 function expectedText(question, params) {
   return question.kind === 'choice' ? trueOption(question, params).text(params) : formatValue(question, question.expected(params));
 }
 
+/**
+ * A box that says what could not be used, as an alert.
+ * @param {string} title
+ * @param {readonly string[]} problems
+ */
 export function problemBox(title, problems) {
   const alert = el('div', 'notice notice-error');
   alert.setAttribute('role', 'alert');
@@ -36,6 +57,9 @@ export function problemBox(title, problems) {
  * score, the sheet's fingerprint, and a row per question as that student saw it. against: which
  * sheet it was checked against: 'given' (the sheet the lecturer gave), 'named' (the one the file
  * names) or 'set' (the class's).
+ * @param {string} label
+ * @param {import('../gradeHandIn.js').GradedHandIn | { ok: false, problems: string[] }} graded
+ * @param {{ against: 'given' | 'named' | 'set' }} options
  */
 export function gradedReport(label, graded, { against }) {
   const box = el('section', 'hw-report');
@@ -52,14 +76,16 @@ export function gradedReport(label, graded, { against }) {
   score.setAttribute('role', 'status');
   const fingerprint = el('p', 'hw-meta', t('report.fingerprint', { fingerprint: graded.fingerprint, against }));
   const table = el('table', 'hw-report-table');
-  table.append(el('thead'), el('tbody'));
+  const thead = el('thead');
+  const tbody = el('tbody');
+  table.append(thead, tbody);
   const head = el('tr');
   for (const column of ['number', 'question', 'answer', 'expected', 'result', 'tries']) {
     head.append(el('th', null, t(`report.column.${column}`)));
   }
-  table.tHead.append(head);
+  thead.append(head);
   graded.results.forEach((result, i) => {
-    const question = questionById(result.question);
+    const question = knownQuestion(result.question);
     const row = el('tr', result.correct ? 'hw-row-right' : 'hw-row-wrong');
     const prompt = el('td');
     setSubscripted(prompt, question.prompt(result.params));
@@ -73,7 +99,7 @@ export function gradedReport(label, graded, { against }) {
       })),
       el('td', null, result.attempts === null ? '—' : String(result.attempts)),
     );
-    table.tBodies[0].append(row);
+    tbody.append(row);
   });
   box.append(score, fingerprint, table);
   return box;

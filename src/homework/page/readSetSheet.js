@@ -7,10 +7,16 @@ import { messages } from '../../i18n/messages.js';
 
 const t = messages('homework', english);
 
-/** The sheet to check against, from a link, a code or a sheet's JSON: { ok, sheet } or problems. */
+/**
+ * The sheet to check against, from a link, a code or a sheet's JSON: { ok, sheet } or problems.
+ * @param {string} text
+ * @returns {{ ok: true, sheet: import('../readSheet.js').Sheet | null, problems?: undefined }
+ *   | { ok: false, problems: string[], sheet?: undefined }}
+ */
 export function readSetSheet(text) {
   const raw = text.trim();
   if (!raw) return { ok: true, sheet: null };
+  /** @type {unknown} */
   let data;
   if (raw.startsWith('{')) {
     try {
@@ -24,7 +30,7 @@ export function readSetSheet(text) {
       code = new URL(raw, window.location.href).searchParams.get('sheet') ?? raw;
     } catch { /* not a link: a bare code */ }
     const decoded = sheetFromCode(code);
-    if (!decoded.ok) return decoded;
+    if (!decoded.ok) return { ok: false, problems: decoded.problems };
     data = decoded.data;
   }
   const read = readSheet(data);

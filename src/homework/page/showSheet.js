@@ -6,7 +6,7 @@ import { button, el } from '../../ui/el.js';
 import { fileSlug } from '../../ui/format.js';
 import { pageLocale } from '../../ui/safeLocale.js';
 import { copyText, downloadText } from '../../host/exporters.js';
-import { questionById } from '../questions.js';
+import { knownQuestion } from '../questions.js';
 import { questionParams, readAnswer } from '../gradeAnswer.js';
 import { gradeHandIn } from '../gradeHandIn.js';
 import { hashSeed, newSeed } from '../seededRandom.js';
@@ -22,7 +22,15 @@ import { messages } from '../../i18n/messages.js';
 
 const t = messages('homework', english);
 
-/** The seed in use and where it comes from: 'sheet', 'link', 'course' (the LMS account) or 'browser'. */
+/** @typedef {ReturnType<typeof import('./connectScorm.js').connectScorm>} Scorm  the LMS connection, or null */
+
+/**
+ * The seed in use and where it comes from: 'sheet', 'link', 'course' (the LMS account) or 'browser'.
+ * @param {import('../readSheet.js').Sheet} sheet
+ * @param {string | null} urlSeed
+ * @param {Scorm} scorm
+ * @param {string} ownSeed
+ */
 function chooseSeed(sheet, urlSeed, scorm, ownSeed) {
   if (sheet.seed) return { seed: sheet.seed, source: 'sheet' };
   if (urlSeed) return { seed: urlSeed, source: 'link' };
@@ -34,6 +42,8 @@ function chooseSeed(sheet, urlSeed, scorm, ownSeed) {
 /**
  * sheet: read by readSheet; code: its link code (the storage key); urlSeed: ?seed= or null;
  * scorm: the LMS connection (connectScorm.js) or null.
+ * @param {HTMLElement} root
+ * @param {{ sheet: import('../readSheet.js').Sheet, code: string, urlSeed: string | null, scorm?: Scorm }} shown
  */
 export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
   document.title = t('student.documentTitle', { title: sheet.title });
@@ -41,7 +51,7 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
   const { work } = store;
   const { seed, source } = chooseSeed(sheet, urlSeed, scorm, work.seed);
   store.forSeed(seed);
-  const questions = sheet.items.map((item) => questionById(item.question));
+  const questions = sheet.items.map((item) => knownQuestion(item.question));
   const params = questions.map((q) => questionParams(q, seed));
   let resumeNotice = null;
   if (scorm) {
@@ -83,7 +93,9 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
     }
   };
   const lecture = () => lectureBox.checked;
-  const frames = new Map(); // a panel frame's window → the frame, to fit each to the size it reports
+  /** @type {Map<MessageEventSource | null, HTMLIFrameElement>} a panel frame's window → the frame, to fit each to the size it reports */
+  const frames = new Map();
+  /** @type {{ card: import('./buildQuestionCard.js').QuestionCard, reveal: HTMLButtonElement }[]} */
   let cards = [];
   const panelsAllowed = () => cards.every(({ card }, i) => questions[i].kind !== 'predict' || card.revealed()
     || (card.answer() !== null && !lecture()));
@@ -118,8 +130,11 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
   });
   window.addEventListener('message', (event) => {
     const frame = frames.get(event.source);
-    if (!frame || event.data?.type !== 'fresnel-lab:size') return;
-    const height = Number(event.data.height);
+    /** @type {unknown} a frame's message, data until it is checked */
+    const data = event.data;
+    const field = (/** @type {string} */ key) => (typeof data === 'object' && data !== null ? Reflect.get(data, key) : undefined);
+    if (!frame || field('type') !== 'fresnel-lab:size') return;
+    const height = Number(field('height'));
     if (Number.isFinite(height)) frame.style.height = `${Math.min(3000, Math.max(160, Math.ceil(height) + 2))}px`;
   });
   // The page's theme and projector mode reach the panels already open in their frames.

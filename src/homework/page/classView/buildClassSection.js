@@ -23,6 +23,7 @@ const t = messages('class', english);
 /** What the status line says while a phase without counts runs (section.<phase>). */
 const PHASES = ['reading', 'summarising'];
 
+/** @param {{ accept?: string, multiple?: boolean, folder?: boolean }} [options] */
 function fileInput({ accept = '', multiple = true, folder = false } = {}) {
   const input = el('input');
   input.type = 'file';
@@ -37,6 +38,8 @@ function fileInput({ accept = '', multiple = true, folder = false } = {}) {
  * It opens at its top with the focus on its heading: what it shows comes first (on a projector at
  * 1280×720 a question shown to the class is taller than the screen, and focus on Close, at the end,
  * scrolled it out of view); Tab goes on to its buttons.
+ * @param {string} className
+ * @param {{ print?: boolean }} [options]
  */
 function makeDialog(className, { print = false } = {}) {
   const dialog = el('dialog', className);
@@ -54,11 +57,17 @@ function makeDialog(className, { print = false } = {}) {
   tools.append(close);
   const body = el('div', 'hw-dialog-body');
   dialog.append(heading, body, tools);
+  /** @type {HTMLElement | null} */
   let returnTo = null;
   close.addEventListener('click', () => dialog.close());
   dialog.addEventListener('close', () => { body.replaceChildren(); returnTo?.focus(); });
   return {
     dialog,
+    /**
+     * @param {Node} content
+     * @param {string} title
+     * @param {HTMLElement | null} [from]  where the focus goes back to on Close
+     */
     open(content, title, from) {
       heading.textContent = title;
       body.replaceChildren(content);
@@ -70,6 +79,12 @@ function makeDialog(className, { print = false } = {}) {
   };
 }
 
+/** @typedef {Extract<import('../../class/buildClassView.js').ClassView, { ok: true }>} ClassView */
+
+/**
+ * The class section in `root`; returns its state (for the tests: runs, busy, the view and its table).
+ * @param {Element} root
+ */
 export function buildClassSection(root) {
   const { section, heading } = titledSection('hw-class', 'class-title', t('section.title'));
   const sheet = el('input');
@@ -93,12 +108,14 @@ export function buildClassSection(root) {
   root.append(section);
 
   const runner = createClassRunner();
+  /** @type {{ file: File, path: string }[]} */
   let dropped = [];
-  let view = null;
+  /** @type {{ runs: number, busy: boolean, view: ClassView | null, table: ReturnType<typeof createGradebookTable> | null }} */
   const state = { runs: 0, busy: false, view: null, table: null };
 
   async function run() {
-    const classFile = saved.files[0] ? new Uint8Array(await saved.files[0].arrayBuffer()) : undefined;
+    const file = saved.files?.[0];
+    const classFile = file ? new Uint8Array(await file.arrayBuffer()) : undefined;
     const expected = readSetSheet(sheet.value);
     if (!expected.ok || (!expected.sheet && classFile === undefined)) {
       out.replaceChildren(problemBox(t('section.sheetUnusable'), expected.ok ? [t('section.giveSheet')] : expected.problems));
@@ -111,6 +128,7 @@ export function buildClassSection(root) {
     status.textContent = t('section.readingFiles');
     const picked = await readPicked([...fromInput(files.files), ...fromInput(folder.files), ...dropped]);
     const request = { sheet: expected.sheet ?? undefined, files: picked.files, text: codes.value, classFile };
+    /** @type {import('../../class/buildClassView.js').ClassView | null} */
     let result;
     try {
       result = await runner.run(request, (p) => {
@@ -119,23 +137,26 @@ export function buildClassSection(root) {
           : PHASES.includes(p.phase) ? t(`section.${p.phase}`) : status.textContent;
       });
     } catch (error) {
-      result = { ok: false, problems: [t('section.stopped', { error: error.message })] };
+      result = { ok: false, problems: [t('section.stopped', { error: error instanceof Error ? error.message : String(error) })] };
     }
     state.busy = false;
     grade.disabled = false;
     if (result === null) return; // a newer run took over
     state.runs += 1;
     if (!result.ok) {
-      view = null;
       out.replaceChildren(problemBox(t('section.cannotGrade'), result.problems));
       status.textContent = '';
       return;
     }
-    view = { ...result, refused: [...picked.refused, ...result.refused] };
+    const view = { ...result, refused: [...picked.refused, ...result.refused] };
     state.view = view;
     await showView(view, performance.now() - started);
   }
 
+  /**
+   * @param {ClassView} v
+   * @param {number} ms  how long reading and grading took
+   */
   async function showView(v, ms) {
     const { gradebook } = v;
     const took = seconds(ms / 1000);
@@ -189,7 +210,7 @@ export function buildClassSection(root) {
 
   grade.addEventListener('click', run);
   for (const input of [files, folder, saved]) {
-    input.addEventListener('change', () => { if (sheet.value.trim() || saved.files.length) run(); });
+    input.addEventListener('change', () => { if (sheet.value.trim() || saved.files?.length) run(); });
   }
   drop.addEventListener('dragover', (event) => { event.preventDefault(); drop.classList.add('hw-drop-over'); });
   drop.addEventListener('dragleave', () => drop.classList.remove('hw-drop-over'));

@@ -18,16 +18,21 @@ const t = messages('class', english);
 const CSV_TYPE = 'text/csv;charset=utf-8';
 // Each LMS's button and what it says are the catalogue's lms.<key>.button and lms.<key>.about; the
 // files' own column names are the LMS's (lmsGrades.js).
+/** @type {Record<'moodle' | 'canvas', { file: string, make: typeof moodleWorksheet }>} */
 const LMS = {
   moodle: { file: 'moodle-grading-worksheet', make: moodleWorksheet },
   canvas: { file: 'canvas-grades', make: canvasImport },
 };
 
-const nameOf = (row) => row.name || row.lmsName || row.source;
+const nameOf = (/** @type {import('../../class/buildGradebook.js').Row} */ row) => row.name || row.lmsName || row.source;
 /** A count for a plural message: the number that picks the form, and the number shown. */
-const many = (count) => ({ count, n: fixed(count, 0) });
+const many = (/** @type {number} */ count) => ({ count, n: fixed(count, 0) });
 
-/** Why a student is not in an LMS's file, in a sentence. */
+/**
+ * Why a student is not in an LMS's file, in a sentence.
+ * @param {string} lms
+ * @param {import('../../class/lmsGrades.js').LeftOut} left
+ */
 function leftText(lms, left) {
   const name = nameOf(left.row);
   if (left.why === 'two-ids') return t('lms.twoIds', { lms, name, ids: left.ids.join(', ') });
@@ -38,7 +43,8 @@ function leftText(lms, left) {
 /**
  * The export tools for a class view (buildClassView's result): { files (the gradebook and the view,
  * shown above the gradebook), lms (the LMS's files, below it) }.
- * @param {any} view
+ * @param {{ gradebook: import('../../class/buildGradebook.js').Gradebook, sheet: unknown,
+ *   handIns: import('../../class/readClassHandIns.js').HandIn[] }} view
  */
 export function buildExportTools(view) {
   const { gradebook } = view;

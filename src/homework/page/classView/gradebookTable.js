@@ -14,22 +14,35 @@ import english from 'virtual:messages/en/class';
 import { messages } from '../../../i18n/messages.js';
 
 const t = messages('class', english);
-/** A mark's symbol, seen; its word (mark.<mark>) is heard. */
+
+/** @typedef {import('../../class/buildGradebook.js').Row} Row */
+/** @typedef {import('../../class/buildGradebook.js').Mark} Mark */
+/** @typedef {import('../../class/sortRows.js').Column} Column */
+
+/** @type {Record<Mark, string>} A mark's symbol, seen; its word (mark.<mark>) is heard. */
 const MARKS = { right: '✓', wrong: '✗', unanswered: '–' };
 /** The flags, in the order the legend says what they mean: flag.<kind> names one, flag.<kind>.meaning says it. */
 const FLAG_KINDS = ['superseded', 'resubmitted', 'shared-seed', 'class-seed', 'copied', 'no-name'];
-const flagName = (kind) => (FLAG_KINDS.includes(kind) ? t(`flag.${kind}`) : kind);
+const flagName = (/** @type {string} */ kind) => (FLAG_KINDS.includes(kind) ? t(`flag.${kind}`) : kind);
 const ROWS_PER_SLICE = 50;
 const nextTask = () => new Promise((resolve) => { setTimeout(resolve, 0); });
 
-/** An element with an ARIA role: the table's parts are divs laid out as grids. */
+/**
+ * An element with an ARIA role: the table's parts are divs laid out as grids.
+ * @param {string} role
+ * @param {string | null} [className]
+ * @param {string} [text]
+ */
 function part(role, className, text) {
   const node = el('div', className ?? undefined, text);
   node.setAttribute('role', role);
   return node;
 }
 
-/** A cell whose symbol is seen and whose word is heard. */
+/**
+ * A cell whose symbol is seen and whose word is heard.
+ * @param {Mark} mark
+ */
 function markCell(mark) {
   const cell = part('cell', `hw-mark hw-mark-${mark}`);
   const seen = el('span', null, MARKS[mark]);
@@ -41,18 +54,20 @@ function markCell(mark) {
 // One formatter for every row (toLocaleString with options builds a formatter per call, the
 // largest cost of making a row), made in the page's language when the first row is.
 let dates = { locale: '', format: (/** @type {Date} */ _date) => '' };
-const when = (time) => {
+const when = (/** @type {string | null} */ time) => {
   if (!time) return '—';
   if (dates.locale !== pageLocale()) {
     dates = { locale: pageLocale(), format: new Intl.DateTimeFormat(pageLocale(), { dateStyle: 'short', timeStyle: 'short' }).format };
   }
   return dates.format(new Date(time));
 };
-export const shownName = (row) => row.name || row.lmsName || t('table.noName');
+export const shownName = (/** @type {Row} */ row) => row.name || row.lmsName || t('table.noName');
 
 /**
  * The table for `gradebook` (buildGradebook.js). onDetails(row): open that student's report.
  * Returns { element, ready: Promise (every row made), rowElement(key) }.
+ * @param {import('../../class/buildGradebook.js').Gradebook} gradebook
+ * @param {{ onDetails: (row: Row, from: HTMLElement) => void }} options
  */
 export function createGradebookTable(gradebook, { onDetails }) {
   const wrap = el('div', 'hw-gradebook-wrap');
@@ -73,16 +88,19 @@ export function createGradebookTable(gradebook, { onDetails }) {
   table.append(head, body);
   wrap.append(caption, table);
 
+  /** @type {{ id: Column, text: string, title?: string }[]} */
   const columns = [
-    ...['name', 'seed', 'score', 'percent'].map((id) => ({ id, text: t(`table.${id}`) })),
+    .../** @type {const} */ (['name', 'seed', 'score', 'percent']).map((id) => ({ id, text: t(`table.${id}`) })),
     ...gradebook.items.map((item, i) => ({
-      id: `item:${i}`,
+      id: /** @type {const} */ (`item:${i}`),
       text: t('table.question', { number: i + 1 }),
       title: t('table.questionTitle', { kind: kindName(item.kind), question: item.question }),
     })),
     { id: 'tries', text: t('table.tries') }, { id: 'time', text: t('table.time') }, { id: 'flags', text: t('table.flags') },
   ];
+  /** @type {Map<Column, HTMLElement>} */
   const headers = new Map();
+  /** @type {{ column: Column | null, descending: boolean }} */
   let sorted = { column: null, descending: false };
   for (const column of columns) {
     const th = part('columnheader');
@@ -97,7 +115,9 @@ export function createGradebookTable(gradebook, { onDetails }) {
   }
   headRow.append(part('columnheader', null, t('table.report')));
 
-  const made = new Map(); // row key → its row
+  /** @type {Map<number, HTMLElement>} row key → its row */
+  const made = new Map();
+  /** @param {Row} row */
   function makeRow(row) {
     const tr = part('row', `hw-row${row.counted ? '' : ' hw-superseded'}`);
     const name = part('rowheader', 'hw-name', shownName(row));
@@ -123,26 +143,29 @@ export function createGradebookTable(gradebook, { onDetails }) {
   }
 
   let order = gradebook.rows;
-  /** Sorts by `column`: again by the same column turns the order round; scores start highest first. */
+  /**
+   * Sorts by `column`: again by the same column turns the order round; scores start highest first.
+   * @param {Column} column
+   */
   function sortBy(column) {
     sorted = { column, descending: sorted.column === column ? !sorted.descending : column === 'score' || column === 'percent' };
-    applyOrder();
+    applyOrder(column);
   }
-  function applyOrder() {
-    order = sortRows(gradebook.rows, /** @type {any} */ (sorted.column),
-      { descending: sorted.descending, locale: document.documentElement.lang || undefined });
+  /** @param {Column} column */
+  function applyOrder(column) {
+    order = sortRows(gradebook.rows, column, { descending: sorted.descending, locale: document.documentElement.lang || undefined });
     for (const [id, th] of headers) {
       if (id === sorted.column) th.setAttribute('aria-sort', sorted.descending ? 'descending' : 'ascending');
       else th.removeAttribute('aria-sort');
     }
-    body.append(...order.map((row) => made.get(row.key)).filter(Boolean));
+    body.append(...order.flatMap((row) => made.get(row.key) ?? []));
   }
 
   const ready = (async () => {
     for (let i = 0; i < gradebook.rows.length; i += ROWS_PER_SLICE) {
       await nextTask(); // each slice a task of its own, the first too: the page shows what it has
       const slice = gradebook.rows.slice(i, i + ROWS_PER_SLICE).map(makeRow);
-      if (sorted.column) applyOrder(); else body.append(...slice);
+      if (sorted.column) applyOrder(sorted.column); else body.append(...slice);
     }
   })();
 
@@ -161,5 +184,5 @@ export function createGradebookTable(gradebook, { onDetails }) {
     element.append(legend);
   }
 
-  return { element, ready, rowElement: (key) => made.get(key), sortBy };
+  return { element, ready, rowElement: (/** @type {number} */ key) => made.get(key), sortBy };
 }

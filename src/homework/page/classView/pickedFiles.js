@@ -16,7 +16,9 @@ const MAX_WALKED = CLASS_CAPS.maxEntries; // files taken from dropped folders, a
  * @returns {Promise<{ files: { name: string, bytes: Uint8Array }[], refused: { source: string, reason: string }[] }>}
  */
 export async function readPicked(entries) {
+  /** @type {{ name: string, bytes: Uint8Array }[]} */
   const files = [];
+  /** @type {{ source: string, reason: string }[]} */
   const refused = [];
   for (const { file, path } of entries) {
     let kind = fileKind(path);
@@ -51,22 +53,37 @@ export async function readPicked(entries) {
   return { files, refused };
 }
 
-/** A picker's files, with the relative path a folder picker gives. */
-export const fromInput = (list) => [...list].map((file) => ({ file, path: file.webkitRelativePath || file.name }));
+/**
+ * A picker's files, with the relative path a folder picker gives.
+ * @param {FileList | null} list
+ * @returns {{ file: File, path: string }[]}
+ */
+export const fromInput = (list) => [...(list ?? [])].map((file) => ({ file, path: file.webkitRelativePath || file.name }));
 
-/** Dropped items: files, and the files inside dropped folders (walked, up to MAX_WALKED). */
+/**
+ * Dropped items: files, and the files inside dropped folders (walked, up to MAX_WALKED).
+ * @param {DataTransfer | null} dataTransfer
+ * @returns {Promise<{ file: File, path: string }[]>}
+ */
 export async function fromDrop(dataTransfer) {
-  const roots = [...dataTransfer.items].map((item) => item.webkitGetAsEntry?.()).filter(Boolean);
+  if (!dataTransfer) return [];
+  const roots = [...dataTransfer.items].flatMap((item) => item.webkitGetAsEntry?.() ?? []);
   if (!roots.length) return fromInput(dataTransfer.files);
+  /** @type {{ file: File, path: string }[]} */
   const out = [];
+  /** @type {(entry: FileSystemEntry, path: string) => Promise<void>} */
   const walk = async (entry, path) => {
     if (out.length >= MAX_WALKED) return;
+    // isFile and isDirectory say which kind of entry it is; the DOM's types do not narrow on them.
     if (entry.isFile) {
-      const file = await new Promise((resolve, reject) => { entry.file(resolve, reject); }).catch(() => null);
+      const fileEntry = /** @type {FileSystemFileEntry} */ (entry);
+      /** @type {File | null} */
+      const file = await new Promise((resolve, reject) => { fileEntry.file(resolve, reject); }).catch(() => null);
       if (file) out.push({ file, path: `${path}${entry.name}` });
     } else if (entry.isDirectory) {
-      const reader = entry.createReader();
+      const reader = /** @type {FileSystemDirectoryEntry} */ (entry).createReader();
       for (;;) {
+        /** @type {FileSystemEntry[]} */
         const batch = await new Promise((resolve) => { reader.readEntries(resolve, () => resolve([])); });
         if (!batch.length) break;
         for (const child of batch) await walk(child, `${path}${entry.name}/`);

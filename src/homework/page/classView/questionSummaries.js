@@ -8,20 +8,29 @@
 import { button, el } from '../../../ui/el.js';
 import { fixed, precise } from '../../../ui/format.js';
 import { setSubscripted } from '../../../ui/subscripts.js';
-import { kindName, questionById } from '../../questions.js';
+import { kindName, knownQuestion } from '../../questions.js';
 import { panelEntry } from '../../../panels/manifest.js';
 import { panelTitle } from '../../../panels/panelText.js';
 import english from 'virtual:messages/en/class';
 import { messages } from '../../../i18n/messages.js';
 
 const t = messages('class', english);
+
+/** @typedef {import('../../class/summarizeQuestions.js').Bin} Bin */
+/** @typedef {import('../../class/summarizeQuestions.js').QuestionSummary} QuestionSummary */
+
 const CARDS_PER_TASK = 8;
 const nextTask = () => new Promise((resolve) => { setTimeout(resolve, 0); });
-const percent = (share) => (share === null ? '—' : t('summary.percent', { percent: fixed(100 * share, 0) }));
+const percent = (/** @type {number | null} */ share) => (share === null ? '—' : t('summary.percent', { percent: fixed(100 * share, 0) }));
 /** A count for a plural message: the number that picks the form, and the number shown. */
-const many = (count) => ({ count, n: fixed(count, 0) });
+const many = (/** @type {number} */ count) => ({ count, n: fixed(count, 0) });
 
-/** A horizontal bar with its label and count: a list item, so it is read as "label: n students". */
+/**
+ * A horizontal bar with its label and count: a list item, so it is read as "label: n students".
+ * @param {string} label
+ * @param {number} count
+ * @param {number} total
+ */
 function barItem(label, count, total, className = '') {
   const item = el('li', `hw-bar ${className}`);
   const text = el('span', 'hw-bar-label');
@@ -35,7 +44,10 @@ function barItem(label, count, total, className = '') {
   return item;
 }
 
-/** A bin's answers in words: how many, and how many of them right and wrong. */
+/**
+ * A bin's answers in words: how many, and how many of them right and wrong.
+ * @param {Bin} bin
+ */
 function answersText(bin) {
   if (bin.right && bin.wrong) return t('summary.binBoth', { ...many(bin.count), right: bin.right, wrong: bin.wrong });
   return bin.right ? t('summary.binRight', many(bin.right)) : t('summary.binWrong', many(bin.wrong));
@@ -45,6 +57,8 @@ function answersText(bin) {
  * Columns over bins ({ lo, hi, count, right, wrong }), cut to the span that holds answers (and 0),
  * each with its count said; a column's right answers in green under its wrong ones in red, so every
  * answer is seen where it is. `tick(bin)` gives a label under a column or ''.
+ * @param {Bin[]} bins
+ * @param {{ caption: string, binText: (bin: Bin) => string, tick: (bin: Bin) => string }} words
  */
 function columns(bins, { caption, binText, tick }) {
   const figure = el('figure', 'hw-histogram');
@@ -55,7 +69,7 @@ function columns(bins, { caption, binText, tick }) {
   const list = el('ol', 'hw-columns');
   for (const bin of bins.slice(from, to + 1)) {
     const item = el('li', `hw-column${bin.lo <= 0 && bin.hi > 0 ? ' hw-column-zero' : ''}`);
-    for (const [part, count] of [['hw-column-wrong', bin.wrong], ['hw-column-right', bin.right]]) {
+    for (const [part, count] of /** @type {[string, number][]} */ ([['hw-column-wrong', bin.wrong], ['hw-column-right', bin.right]])) {
       const bar = el('span', `hw-column-bar ${part}`);
       bar.style.setProperty('--share', String(count / most));
       bar.setAttribute('aria-hidden', 'true');
@@ -73,19 +87,21 @@ function columns(bins, { caption, binText, tick }) {
   return figure;
 }
 
-const ratioText = (x) => {
+const ratioText = (/** @type {number} */ x) => {
   const q = 10 ** x;
-  const shown = (x) => (x < 10 ? fixed(x, 2) : precise(x, 3));
+  const shown = (/** @type {number} */ x) => (x < 10 ? fixed(x, 2) : precise(x, 3));
   return q >= 1 ? `×${shown(q)}` : `÷${shown(1 / q)}`;
 };
 
+/** @param {import('../../class/summarizeQuestions.js').NumericSummary} summary */
 function numericParts(summary) {
   const { ratio } = summary;
+  /** @type {HTMLElement[]} */
   const parts = [];
   const answered = summary.right + summary.wrong;
   if (!answered) return [el('p', null, t('summary.noneAnswered'))];
   const named = new Map(ratio.labels.map((l) => [l.at, l.short]));
-  const tick = (bin) => {
+  const tick = (/** @type {Bin} */ bin) => {
     if (bin.lo <= 0 && bin.hi > 0) return t('summary.one');
     for (const [at, text] of named) if (at >= bin.lo && at < bin.hi) return text;
     return '';
@@ -116,10 +132,11 @@ function numericParts(summary) {
   return parts;
 }
 
+/** @param {import('../../class/summarizeQuestions.js').PredictSummary} summary */
 function predictParts(summary) {
   if (!(summary.right + summary.wrong)) return [el('p', null, t('summary.nonePredicted'))];
   const { step, bins } = summary.offset;
-  const signed = (x) => `${x > 0 ? '+' : x < 0 ? '−' : ''}${fixed(Math.abs(x), Number.isInteger(x) ? 0 : 1)}°`;
+  const signed = (/** @type {number} */ x) => `${x > 0 ? '+' : x < 0 ? '−' : ''}${fixed(Math.abs(x), Number.isInteger(x) ? 0 : 1)}°`;
   return [columns(bins, {
     caption: t('summary.offsetCaption', { step }),
     binText: (bin) => t('summary.range', { from: signed(bin.lo), to: signed(bin.hi) }),
@@ -127,6 +144,7 @@ function predictParts(summary) {
   })];
 }
 
+/** @param {import('../../class/summarizeQuestions.js').ChoiceSummary} summary */
 function choiceParts(summary) {
   const list = el('ol', 'hw-bars');
   const answered = summary.right + summary.wrong;
@@ -145,7 +163,11 @@ function choiceParts(summary) {
   return [list];
 }
 
-/** The prompt of the card's one instance: the same for all (a class seed, or a question without numbers), else one student's. */
+/**
+ * The prompt of the card's one instance: the same for all (a class seed, or a question without numbers), else one student's.
+ * @param {import('../../questions.js').Question} question
+ * @param {{ params: unknown, sameForAll: boolean }} shown
+ */
 function promptText(question, { params, sameForAll }) {
   const text = question.prompt(params);
   if (sameForAll) return text;
@@ -155,12 +177,14 @@ function promptText(question, { params, sameForAll }) {
 /**
  * A card per question of the view (buildClassView's result), made a few per task. onShow(card,
  * index): show one card to the class. Resolves to the element holding the cards.
+ * @param {{ summary: QuestionSummary[] }} view
+ * @param {{ onShow: (card: HTMLElement, index: number, from: HTMLElement) => void }} options
  */
 export async function questionSummaries(view, { onShow }) {
   const holder = el('div', 'hw-class-questions');
   for (const [i, summary] of view.summary.entries()) {
     if (i % CARDS_PER_TASK === 0) await nextTask();
-    const question = questionById(summary.question);
+    const question = knownQuestion(summary.question);
     const card = el('section', 'hw-class-question');
     const heading = el('h4', 'hw-heading');
     heading.id = `class-q${i + 1}`;

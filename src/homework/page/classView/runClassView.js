@@ -12,21 +12,35 @@ import { currentLanguage, messages } from '../../../i18n/messages.js';
 
 const t = messages('class', english);
 
+/** @typedef {import('../../class/buildClassView.js').ClassView} ClassView */
+/** @typedef {import('../../class/buildClassView.js').ViewProgress} ViewProgress */
+/** @typedef {Parameters<typeof import('../../class/buildClassView.js').buildClassView>[0]} Request */
+/** @typedef {((progress: ViewProgress) => void) | undefined} OnProgress */
+/**
+ * @typedef {{ resolve: (view: ClassView | null) => void, reject: (error: Error) => void, request: Request,
+ *   onProgress: OnProgress }} Pending
+ */
+
 /**
  * { run(request, onProgress) → Promise<view>, where(): 'worker' | 'page', problem(), dispose() }.
  * A run started while another is going supersedes it: the older one resolves null.
+ * @param {{ useWorker?: boolean }} [options]
  */
 export function createClassRunner({ useWorker = true } = {}) {
+  /** @type {Worker | null} */
   let worker = null;
   let problem = '';
   let latest = 0;
-  const pending = new Map(); // id → { resolve, reject, request, onProgress }
+  /** @type {Map<number, Pending>} */
+  const pending = new Map();
 
+  /** @type {(request: Request, onProgress: OnProgress) => Promise<ClassView>} */
   const onPage = async (request, onProgress) => {
     const { buildClassView } = await import('../../class/buildClassView.js');
     return buildClassView(request, { onProgress, sliceMs: 50 });
   };
 
+  /** @param {string} reason */
   function fallBack(reason) {
     problem = t('runner.failed', { reason });
     worker?.terminate();
@@ -41,29 +55,42 @@ export function createClassRunner({ useWorker = true } = {}) {
     try {
       if (typeof Worker === 'undefined') throw new Error(t('runner.noWorkers'));
       worker = new ClassWorker();
-      worker.addEventListener('message', ({ data }) => {
-        const entry = pending.get(data?.id);
-        if (!entry) return;
-        if (data.progress) { entry.onProgress?.(data.progress); return; }
-        pending.delete(data.id);
-        if (data.error !== undefined) entry.reject(new Error(data.error));
-        else entry.resolve(data.id === latest ? data.view : null);
+      worker.addEventListener('message', (event) => {
+        // The worker's replies (classWorker.js): { id, progress }, then { id, view } or { id, error }.
+        /** @type {unknown} */
+        const data = event.data;
+        const field = (/** @type {string} */ key) => (typeof data === 'object' && data !== null ? Reflect.get(data, key) : undefined);
+        const id = field('id');
+        const entry = typeof id === 'number' ? pending.get(id) : undefined;
+        if (typeof id !== 'number' || !entry) return;
+        const progress = field('progress');
+        if (progress) { entry.onProgress?.(/** @type {ViewProgress} */ (progress)); return; } // the worker's own progress report
+        pending.delete(id);
+        const error = field('error');
+        if (error !== undefined) entry.reject(new Error(String(error)));
+        else entry.resolve(id === latest ? /** @type {ClassView} */ (field('view')) : null); // buildClassView's result, cloned
       });
       worker.addEventListener('error', (event) => { event.preventDefault?.(); fallBack(event.message || t('runner.notLoaded')); });
     } catch (error) {
       worker = null;
-      problem = t('runner.noStart', { reason: error?.message || error });
+      problem = t('runner.noStart', { reason: error instanceof Error ? error.message || error : error });
     }
   }
 
   return {
+    /**
+     * @param {Request} request
+     * @param {OnProgress} [onProgress]
+     * @returns {Promise<ClassView | null>}
+     */
     run(request, onProgress) {
       latest += 1;
       const id = latest;
-      if (!worker) return onPage(request, onProgress).then((view) => (id === latest ? view : null));
+      const running = worker;
+      if (!running) return onPage(request, onProgress).then((view) => (id === latest ? view : null));
       return new Promise((resolve, reject) => {
         pending.set(id, { resolve, reject, request, onProgress });
-        worker.postMessage({ id, request, lang: currentLanguage() });
+        running.postMessage({ id, request, lang: currentLanguage() });
       });
     },
     where: () => (worker ? 'worker' : 'page'),
