@@ -1,3 +1,4 @@
+// @ts-check
 // What can be added to the lecture: every panel by its title and what it shows (plain text), a
 // question from the homework bank, and a text item. Each "Add" keeps the focus, so a panel can be
 // added twice with two presses; the list says what was added.

@@ -1,3 +1,4 @@
+// @ts-check
 // The fields of one item: a panel's heading, text and start (buildPanelStart.js), a text item's
 // heading and text, a question's choice from the bank and its seed. The lecturer's text is the
 // lecture's small Markdown, shown beside the field as the lecture page will show it

@@ -1,3 +1,4 @@
+// @ts-check
 // The lecture's items as an ordered list (<ol>) of cards. Each card is focusable and is moved by
 // its Move up / Move down buttons, by Alt+↑ / Alt+↓ anywhere in it (but in a select), or by dragging its handle with
 // a pointer; ↑ and ↓ on a card itself go to the card above or below. A move keeps the focus where

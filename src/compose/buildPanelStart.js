@@ -1,3 +1,4 @@
+// @ts-check
 // Where a panel item starts and what the room may change in it: a start state from a pasted link
 // (pastedLink.js) or from the panel's current view in a preview beside the fields (the embed page
 // in a frame, asked for its state through the message API: fresnel-lab:get → fresnel-lab:state),
@@ -43,7 +44,7 @@ export function shownValue(id, key, spec, value) {
 /**
  * Only the values that differ from the panel's defaults (the lecture stores no others).
  * @param {Schema} schema
- * @param {Record<string, unknown>} values
+ * @param {import('../host/panelContract.js').Values} values
  */
 function changedValues(schema, values) {
   const start = defaults(schema);
@@ -55,7 +56,8 @@ function changedValues(schema, values) {
  * @param {Pick<PanelDraft, 'panel' | 'state' | 'lock' | 'hide'>} item
  */
 function embedAddress(item) {
-  return embedLink(new URL('./embed.html', window.location.href).href, { id: item.panel, schema: panelSchema(item.panel) },
+  const schema = panelSchema(item.panel) ?? {}; // a draft's panels are the manifest's (readLecture, the catalogue)
+  return embedLink(new URL('./embed.html', window.location.href).href, { id: item.panel, schema },
     item.state, { lock: item.lock, hide: item.hide, theme: loadTheme().scheme });
 }
 
@@ -94,7 +96,7 @@ export function buildPanelStart(initial, { patch }) {
       summary.append(after);
     }
   };
-  /** @type {(state: Record<string, unknown>, extra?: { lock?: string[], hide?: string[] }) => void} */
+  /** @type {(state: import('../host/panelContract.js').Values, extra?: { lock?: string[], hide?: string[] }) => void} */
   const setStart = (state, extra = {}) => {
     item.state = changedValues(schema, state);
     Object.assign(item, extra);

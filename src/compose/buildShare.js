@@ -1,3 +1,4 @@
+// @ts-check
 // Sharing and carrying the composed lecture: its link (index.html?lecture=CODE) to copy or to
 // present from, the lecture as a JSON file and back, and the two exports: the offline lecture (a
 // .zip of the single-file lecture page with the lecture written in and the embed page its frames

@@ -1,3 +1,4 @@
+// @ts-check
 // compose.html: the lecture composer. A catalogue to add from, the lecture as an ordered list of
 // items to edit, and the lecture's link, file and exports. It opens with the lecture of
 // ?lecture=CODE (to edit a shared lecture), else the work kept in this browser, else an empty

@@ -16,7 +16,7 @@ import { currentLanguage, messages } from '../i18n/messages.js';
 const t = messages('compose', english);
 
 /**
- * @typedef {{ key: string, type: 'panel', panel: string, state: Record<string, unknown>, lock: string[], hide: string[],
+ * @typedef {{ key: string, type: 'panel', panel: string, state: import('../host/panelContract.js').Values, lock: string[], hide: string[],
  *   heading: string, text: string }} PanelDraft
  * @typedef {{ key: string, type: 'text', heading: string, text: string }} TextDraft
  * @typedef {{ key: string, type: 'question', question: string, seed: string, heading: string, text: string }} QuestionDraft

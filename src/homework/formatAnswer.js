@@ -1,3 +1,4 @@
+// @ts-check
 // How answers and computed values are printed: the decimals a question asks for (its tolerance is
 // half a unit in that place: "to 3 decimals" is ±0.0005) and one more, so a shown value is never
 // rounder than the check it is held to. Shown numbers: src/ui/format.js (the page's decimal sign).

@@ -1,3 +1,4 @@
+// @ts-check
 // Questions on the Fresnel half of the lecture, in its order: materials and R(0°), polarisation
 // and the Brewster angle, the exact formula, Schlick's approximation, Fresnel in lighting, metals,
 // and where the methods fail or cost. Every expected answer comes from the optics core; see

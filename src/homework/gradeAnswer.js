@@ -1,3 +1,4 @@
+// @ts-check
 // Checking one answer, always by recomputing: the question's parameters from the seed, its expected
 // value or true option from the optics core, then the student's answer against them. Nothing a
 // handed-in file says about being right is read.

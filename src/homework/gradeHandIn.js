@@ -1,3 +1,4 @@
+// @ts-check
 // Grading a handed-in file: every answer is recomputed from the sheet, the seed and the answer
 // (gradeAnswer.js); a score or a "correct" the file carries is never read. The file also says
 // which sheet it answers, and a student could edit that; so the lecturer can give the sheet they

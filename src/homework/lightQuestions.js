@@ -1,3 +1,4 @@
+// @ts-check
 // Questions on the first half of the lecture, in its order: normal-map mips, grazing specular,
 // Phong against Fresnel, reflection against refraction, waves at an interface, the angle ratio and
 // the hero's exact-against-Schlick view. Every expected answer comes from the optics core; see

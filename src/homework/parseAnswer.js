@@ -1,3 +1,4 @@
+// @ts-check
 // A typed answer: a number, with a decimal point or comma, and optionally its unit. Degrees may be
 // written 70, 70°, 70 deg or 70 degrees; a fraction as 0.04 or as 4 %. A unit the question does
 // not take is refused with a reason rather than guessed.
@@ -7,7 +8,11 @@ import { messages } from '../i18n/messages.js';
 
 const t = messages('homework', english);
 
-/** @typedef {{ ok: true, value: number } | { ok: false, reason: string }} ParsedAnswer */
+/**
+ * A typed answer read, or why it cannot be. (The other member's field is there, undefined, so that
+ * the loose project, which cannot narrow on `ok`, reads both.)
+ * @typedef {{ ok: true, value: number, reason?: undefined } | { ok: false, reason: string, value?: undefined }} ParsedAnswer
+ */
 
 const UNITS = {
   deg: ['°', 'deg', 'degree', 'degrees'],

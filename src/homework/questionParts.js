@@ -1,3 +1,4 @@
+// @ts-check
 // What the question lists share: the indices and angles parameters are drawn from, and how their
 // words print numbers: through src/ui/format.js, so a question reads 1,5 where the page's language
 // writes a decimal comma (a parameter as it is drawn, 1.333; a computed value to fixed decimals).

@@ -1,3 +1,4 @@
+// @ts-check
 // The homework questions, each on a panel of the lecture. Every expected answer is computed by the
 // float64 optics core (src/optics), never typed in: a numeric question gives its value and its
 // tolerance; a choice question gives options whose truth the core decides (each wrong option comes

@@ -1,3 +1,4 @@
+// @ts-check
 // The answers an LMS kept for the learner (cmi.suspend_data, written by connectScorm's save), read
 // back as untrusted text: the LMS stores whatever it was given, and a learner, an administrator,
 // an import or an older version of this page may have put something else there. Only answers
@@ -42,7 +43,7 @@ export function readResume(text, { seed, classSeed = null, questions, params }) 
   // The first version of this page kept { answers } alone, made for the sheet's class seed where it
   // had one (as now) and otherwise for the learner's id unhashed: other numbers than today's.
   const saysSeed = isObject(data) && Object.hasOwn(data, 'seed');
-  const madeFor = saysSeed ? data.seed : classSeed;
+  const madeFor = saysSeed ? own(data, 'seed') : classSeed;
   if (madeFor !== seed) return none(saysSeed ? 'otherSeed' : 'earlierVersion');
   if (kept.length !== questions.length) return none('otherSheet', { kept: kept.length, count: questions.length });
   const answers = questions.map((question, i) => readAnswer(question, params[i], kept[i]));

@@ -1,3 +1,4 @@
+// @ts-check
 // A homework sheet (what a lecturer composes), read from untrusted JSON: every field is checked
 // and anything unexpected is refused with a reason. Handed-in files: gradeHandIn.js. A sheet may
 // carry the language it was made in (`lang`: one of src/i18n/languages.js), so that it opens in it.
@@ -114,27 +115,27 @@ export function readSheet(data) {
       items.push({ question: question.id, ...(read.state ? { state: read.state } : {}) });
     });
   }
-  // Each optional field: undefined where absent, null where it cannot be used (and said why).
-  const rawSeed = field('seed');
-  const seed = rawSeed === undefined || text(rawSeed, 64) ? rawSeed : null;
-  if (seed === null) problems.push(t('sheet.seed'));
+  // Each optional field may be absent; one that is there and cannot be used is said.
+  const seed = field('seed');
+  if (seed !== undefined && !text(seed, 64)) problems.push(t('sheet.seed'));
   const rawReveal = field('reveal');
-  const reveal = rawReveal === undefined || rawReveal === 'after-answer' || rawReveal === 'lecturer' ? rawReveal : null;
+  const reveal = rawReveal === undefined ? 'after-answer'
+    : rawReveal === 'after-answer' ? 'after-answer' : rawReveal === 'lecturer' ? 'lecturer' : null;
   if (reveal === null) problems.push(t('sheet.reveal'));
-  const rawLang = field('lang');
-  const lang = rawLang === undefined || (typeof rawLang === 'string' && sheetLanguage(rawLang)) ? rawLang : null;
-  if (lang === null) {
-    problems.push(t('sheet.lang', { languages: LANGUAGES.map((l) => l.id).join(', '), lang: rawText(rawLang, 32) }));
+  const lang = field('lang');
+  if (lang !== undefined && !sheetLanguage(lang)) {
+    problems.push(t('sheet.lang', { languages: LANGUAGES.map((l) => l.id).join(', '), lang: rawText(lang, 32) }));
   }
-  if (problems.length || title === null || seed === null || reveal === null || lang === null) return { ok: false, problems };
+  if (problems.length || title === null || reveal === null) return { ok: false, problems };
+  // Past the problems, a seed or a language that is there is text that passed its check.
   return {
     ok: true,
     sheet: {
       version: SHEET_VERSION,
       title,
-      reveal: reveal ?? 'after-answer',
-      ...(seed === undefined ? {} : { seed }),
-      ...(lang === undefined ? {} : { lang }),
+      reveal,
+      ...(typeof seed === 'string' ? { seed } : {}),
+      ...(typeof lang === 'string' ? { lang } : {}),
       items,
     },
   };

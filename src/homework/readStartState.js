@@ -1,3 +1,4 @@
+// @ts-check
 // A start state a lecturer gives a sheet item: "key=value&…", or a link copied from the panel
 // (an embed link, or a lecture link whose keys carry the panel's prefix). Only the panel's values
 // are kept: embed options (theme, lock, …) are the sheet page's business, not the item's. A name
@@ -22,7 +23,9 @@ const titleOf = (/** @type {string} */ panelId) => (panelEntry(panelId) ? panelT
  * { ok: true, state } (possibly empty) or { ok: false, problem }.
  * @param {unknown} text
  * @param {string} panelId
- * @returns {{ ok: true, state: import('./questionParts.js').PanelState } | { ok: false, problem: string }}
+ * (The other member's field is there, undefined, so that the loose project, which cannot narrow on `ok`, reads both.)
+ * @returns {{ ok: true, state: import('./questionParts.js').PanelState, problem?: undefined }
+ *   | { ok: false, problem: string, state?: undefined }}
  */
 export function readStartState(text, panelId) {
   // Only text is read: String() of an object whose toString is not a function throws.

@@ -1,3 +1,4 @@
+// @ts-check
 // A checked answer as a SCORM 1.2 interaction (ADL, "SCORM Version 1.2 Run-Time Environment",
 // 2001, §3.4.2.7, cmi.interactions), so that an LMS's interaction report (Moodle's, and others)
 // lists each question: what the learner answered, whether it was right, and the right answer.

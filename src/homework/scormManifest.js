@@ -1,3 +1,4 @@
+// @ts-check
 // The manifest of a SCORM 1.2 package (ADL, "SCORM Version 1.2 Content Aggregation Model",
 // 2001, §2.3: imsmanifest.xml in IMS Content Packaging 1.1.2): one organization with one item, a
 // single SCO, the homework page, with the files it needs. Moodle, Canvas, Blackboard and other

@@ -1,3 +1,4 @@
+// @ts-check
 // Seeded randomness for homework: two students with different seeds get different numbers, and
 // the same seed gives the same numbers again (when the answers are checked). A seed is any text;
 // it is hashed to 32 bits (FNV-1a) and drives mulberry32, a small generator with a full 2^32

@@ -1,3 +1,4 @@
+// @ts-check
 // Sheets and handed-in files as text: a sheet travels in a link (?sheet=CODE) and a handed-in file
 // as JSON or as a code a student can paste into a message. A code is the JSON in base64url
 // (RFC 4648 §5), so it survives links, e-mail and LMS text boxes; a handed-in code starts with

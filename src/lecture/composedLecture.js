@@ -1,3 +1,4 @@
+// @ts-check
 // A composed lecture on the lecture page, loaded only where one is given (?lecture=CODE, or the
 // data element an offline lecture carries): reading it (openLecture.js, which needs the questions'
 // code to check a question item), saying what it refused, and mounting its items in place of the

@@ -1,3 +1,4 @@
+// @ts-check
 // A composed lecture as a reveal.js 6 deck in one HTML file: a title slide, then one slide per item
 // (deckSlides.js): a panel as a frame of the lab's embed page, the lecturer's heading and text on
 // the slide, a text item as a text slide, a question with its answer on the slide below.

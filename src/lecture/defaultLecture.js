@@ -1,3 +1,4 @@
+// @ts-check
 // The lecture page as it stands, as a lecture: every panel of the manifest in its order, each from
 // its defaults, with its own heading and lede (the page writes those from the manifest, so the items
 // carry no text of their own). A composed lecture starts from it.

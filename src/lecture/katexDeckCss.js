@@ -1,3 +1,4 @@
+// @ts-check
 // KaTeX's stylesheet with its fonts inside, for a deck file that must show math as the site does
 // (KaTeX's HTML, with its own fonts) wherever it is opened, from disk and offline too. A browser's
 // own MathML rendering needs a math font the machine may lack: without one, \left( \right) do not

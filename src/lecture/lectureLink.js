@@ -1,3 +1,4 @@
+// @ts-check
 // A lecture in a link: ?lecture=L1.<base64url of the raw DEFLATE of its JSON> (RFC 1951, RFC 4648
 // §5), a fraction of the JSON's length, and "." and base64url's characters survive any link. Reading
 // it is bounded twice: the code's length before anything is done, and the inflated size (a small code

@@ -1,3 +1,4 @@
+// @ts-check
 // The lecturer's text, a small Markdown: paragraphs, *emphasis* and **strong**, lists, `code`,
 // links, and math as $inline$ and $$display$$ (typeset by KaTeX). Read by markdown-it with only
 // those rules on (its "zero" preset: no raw HTML, no images, no headings or tables) and the math

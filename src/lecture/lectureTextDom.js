@@ -1,3 +1,4 @@
+// @ts-check
 // The lecturer's text on the page: the tree of lectureText.js made into elements with text nodes
 // only (no HTML string is ever parsed), links opened in a new tab without the opener, and math
 // typeset by KaTeX (ui/tex.js, fetched when first needed; the TeX source shows until then).

@@ -1,3 +1,4 @@
+// @ts-check
 // The lecturer's text as HTML text, for files the lab writes (the reveal.js deck): the node tree
 // of lectureText.js serialised with every text and attribute escaped, so no markup from a lecture
 // reaches the file; only the tree's own tags are written, and links are those lectureText.js let

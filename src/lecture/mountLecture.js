@@ -1,3 +1,4 @@
+// @ts-check
 // A composed lecture on the lecture page: its title in the page's header, then one section per
 // item in its order, in place of the sections the build wrote for the lab's own lecture. A panel's
 // section is the one the build writes (sectionHtml: heading, lede, citation, its place) with the

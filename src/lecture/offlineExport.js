@@ -1,3 +1,4 @@
+// @ts-check
 // A composed lecture as one file that opens from disk: the single-file lecture page that the build
 // writes (dist/offline/index.html, scripts/buildOffline.js) with the lecture in it as a data element,
 //   <script type="application/json" id="fresnel-lab-lecture">…</script>,

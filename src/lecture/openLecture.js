@@ -1,3 +1,4 @@
+// @ts-check
 // Which lecture the lecture page shows: the one in the link (?lecture=CODE), else one written into
 // the page itself (a data element, as the offline export writes it), else the lab's own lecture.
 // Both are text from anyone: read by lectureFromCode / readLecture, which name what they refuse.

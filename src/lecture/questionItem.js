@@ -1,3 +1,4 @@
+// @ts-check
 // A question of a composed lecture, asked of the room as the homework page's lecture mode asks it:
 // homework's question card (buildQuestionCard, with its styles) judges nothing until the lecturer
 // reveals it; a prediction's panel appears with the truth. Loaded only by a lecture that has a question.

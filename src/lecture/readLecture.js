@@ -1,3 +1,4 @@
+// @ts-check
 // A lecture as data: a title and a list of items, each a panel (its id, where it starts, controls
 // locked or hidden as an embed link has them, a heading and text of the lecturer's own), a text
 // item (an agenda, a reference list), or a question from the homework bank asked of the room.

@@ -1,3 +1,4 @@
+// @ts-check
 // One question of a sheet, on its panel: the prompt, the way to answer it (a typed number, a
 // prediction marker, options), the result once it may be shown, and the panel itself, started
 // from the question's state. A prediction is committed before the panel appears, so the panel

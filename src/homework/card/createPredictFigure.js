@@ -1,3 +1,4 @@
+// @ts-check
 // The figure a prediction is made on: θ from 0° to 90° across, with a marker the student drags or
 // moves with the keys (a slider to assistive technology). Before the truth is shown it holds only
 // the axis, so it gives nothing away; shown, it draws the question's curve, the true angle and the

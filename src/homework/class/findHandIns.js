@@ -140,7 +140,11 @@ const CLOSE = 125;
 const OPEN_LIST = 91;
 const CLOSE_LIST = 93;
 
-/** Whether the character at i is escaped by an odd run of backslashes (counted up to 1,000). */
+/**
+ * Whether the character at i is escaped by an odd run of backslashes (counted up to 1,000).
+ * @param {string} text
+ * @param {number} i
+ */
 function escaped(text, i) {
   let n = 0;
   for (let j = i - 1; j >= 0 && text.charCodeAt(j) === BACKSLASH && n < 1000; j -= 1) n += 1;

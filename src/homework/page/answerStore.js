@@ -1,3 +1,4 @@
+// @ts-check
 // A student's work on one sheet, kept in this browser (localStorage) under the sheet's own key, so
 // closing the page loses nothing. Where storage is refused (private mode, a sandboxed frame, a
 // strict policy) the work lives for the visit only, and the page says so.

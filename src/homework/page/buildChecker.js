@@ -1,3 +1,4 @@
+// @ts-check
 // "Check a handed-in file": the lecturer pastes a code or picks files, and every answer is graded
 // again from the sheet, the seed and the answer alone (gradeHandIn.js); whatever the file says
 // about its own score is ignored. Given the sheet that was set (its link or file), a hand-in made

@@ -1,3 +1,4 @@
+// @ts-check
 // The lecturer's composer: a title, how answers are revealed, an optional seed shared by the
 // class, and the questions, grouped by panel in lecture order, each with an optional start state
 // (a link copied from the panel). The sheet is read back by readSheet as it is built, so what is

@@ -1,3 +1,4 @@
+// @ts-check
 // A sheet as a SCORM 1.2 package (a zip an LMS imports): the single-file homework page with the
 // sheet written into it, the single-file embed its panels open in, and the manifest. Built in the
 // browser from the offline pages the site ships (dist/offline), so it needs no server of its own;

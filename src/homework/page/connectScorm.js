@@ -1,3 +1,4 @@
+// @ts-check
 // Inside an LMS: the SCORM 1.2 run-time API (ADL, "SCORM Version 1.2 Run-Time Environment", 2001,
 // §3.2), the object `API` an LMS puts on a window above the page. Found, the sheet takes the
 // learner's id for its seed and their name, keeps answers in cmi.suspend_data (so they follow the

@@ -1,3 +1,4 @@
+// @ts-check
 // One graded hand-in as the lecturer reads it: a table of every question as that student saw it,
 // their answer, the computed answer, and why. Shared by "Check a handed-in file" and the class
 // view's per-student detail. Text only (textContent), never markup.

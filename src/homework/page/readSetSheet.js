@@ -1,3 +1,4 @@
+// @ts-check
 // The sheet a lecturer set, as they give it to check hand-ins against: its link (?sheet=CODE), the
 // bare code, or the sheet file's JSON. Empty text is no sheet (ok, null).
 import { readSheet } from '../readSheet.js';

@@ -1,3 +1,4 @@
+// @ts-check
 // A homework sheet as a student sees it: the title, the seed their numbers come from, one card per
 // question on its panel, and "Hand in", which saves a small file and shows the same as a code.
 // Lecture mode (the sheet's choice, or the switch) judges nothing on screen until the lecturer
@@ -95,7 +96,7 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
   const lecture = () => lectureBox.checked;
   /** @type {Map<MessageEventSource | null, HTMLIFrameElement>} a panel frame's window → the frame, to fit each to the size it reports */
   const frames = new Map();
-  /** @type {{ card: import('./buildQuestionCard.js').QuestionCard, reveal: HTMLButtonElement }[]} */
+  /** @type {{ card: import('../card/buildQuestionCard.js').QuestionCard, reveal: HTMLButtonElement }[]} */
   let cards = [];
   const panelsAllowed = () => cards.every(({ card }, i) => questions[i].kind !== 'predict' || card.revealed()
     || (card.answer() !== null && !lecture()));

@@ -1,3 +1,4 @@
+// @ts-check
 // A message with an element in it (a seed in <code>, a name in <strong>): the message is written
 // with a mark where the element goes and set as text around the element, so the element's content
 // (outside data, such as a seed from a link) is never read as markup and the translation still

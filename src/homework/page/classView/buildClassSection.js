@@ -1,3 +1,4 @@
+// @ts-check
 // "Grade a class": the lecturer gives the sheet they set, then the class's hand-ins as they arrive
 // (files, a folder, an LMS's zip, dropped or picked; codes pasted; a class view saved before). Every
 // hand-in is graded again from the sheet, the seed and the answers (in a worker: runClassView.js);

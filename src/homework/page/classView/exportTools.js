@@ -1,3 +1,4 @@
+// @ts-check
 // What a graded class can be saved as, with a line on what each file is for: the gradebook as CSV
 // (commas for a spreadsheet in English and for scripts, semicolons for one that writes 87,5),
 // the class view to open again, and the grades as the file an LMS imports (Moodle's offline grading

@@ -1,3 +1,4 @@
+// @ts-check
 // The class's gradebook as a table: a row per hand-in (one per student, with earlier hand-ins of the
 // same student kept as rows that do not count), sortable by any column from its header button
 // (aria-sort says how it is sorted), a mark per question, the flags a lecturer should look at, and

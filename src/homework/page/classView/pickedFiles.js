@@ -1,3 +1,4 @@
+// @ts-check
 // What a lecturer picked or dropped, as [{ name (its path), bytes }] for the class view: files from
 // a picker, a folder (webkitdirectory gives each file its relative path), or items dropped, folders
 // walked. A file larger than its kind may be is refused here, by name, without being read into

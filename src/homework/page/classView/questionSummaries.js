@@ -1,3 +1,4 @@
+// @ts-check
 // What the class got wrong, question by question (summarizeQuestions.js gives the numbers): the
 // share right; for a choice, how many chose each option, each wrong one with the misconception its
 // explanation states; for a number, how the answers sit against the computed value on a log scale

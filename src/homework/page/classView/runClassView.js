@@ -1,3 +1,4 @@
+// @ts-check
 // Runs a class view (buildClassView.js) in a worker, so that unpacking a zip and grading hundreds of
 // hand-ins never holds the page's thread; where a worker cannot start or fails (no Worker, a policy
 // that refuses it), the same code runs on the page's thread, grading in slices of about 50 ms with
