@@ -99,7 +99,10 @@ describe('a start state from a link', () => {
       return fc.subarray(Object.keys(schema)).chain((keys) => fc.tuple(...keys.map((k) => rawFor(schema[k]).map((raw) => [k, parseValue(schema[k], raw)]))))
         .map((entries) => Object.fromEntries(entries.filter(([, r]) => r.ok).map(([k, r]) => [k, schema[k].type === 'text' ? formatValue(schema[k], r.value) : r.value])));
     };
-    check(fc.property(fc.constantFrom(...PANEL_IDS).chain((id) => fc.tuple(fc.constant(id), stateOf(id))), ([id, state]) => {
+    // Text a link can carry: a lone surrogate (no character at all) is written by any URL as U+FFFD.
+    const carried = (state) => Object.values(state).every((v) => typeof v !== 'string' || v.isWellFormed());
+    const ids = fc.constantFrom(...PANEL_IDS);
+    check(fc.property(ids.chain((id) => fc.tuple(fc.constant(id), stateOf(id).filter(carried))), ([id, state]) => {
       const schema = panelSchema(id);
       const link = new URLSearchParams(Object.entries(state).map(([k, v]) => [k, schema[k].type === 'text' ? v : formatValue(schema[k], v)])).toString();
       const read = readStartState(link, id);
