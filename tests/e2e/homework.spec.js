@@ -221,7 +221,7 @@ test('bad sheets, links and codes are refused with their reasons, and the page s
 });
 
 test('a sheet opens in the language it was made in; the reader\'s ?lang= still wins', async ({ page }) => {
-  // Made on a page in the pseudo-locale (every catalogue message bracketed ⟦…⟧), as a Spanish sheet will be once es.json exists.
+  // Made on a page in the pseudo-locale (every catalogue message bracketed ⟦…⟧), as a sheet made in Spanish is.
   await page.goto('homework.html?lang=en-XA');
   await expect(page.locator('html')).toHaveAttribute('lang', 'en-XA');
   await page.locator('#pick-exact-r').check();
