@@ -8,13 +8,8 @@
 // any other uniform (or of the size) draws the kept pixels again.
 import { createFloatTarget } from './createFloatTarget.js';
 import { createProgram } from './createProgram.js';
+import COPY from './copyTexel.frag.glsl?raw';
 
-const COPY = `precision highp float;
-uniform sampler2D uBackdrop;
-out vec4 fragColor;
-void main() {
-  fragColor = texelFetch(uBackdrop, ivec2(gl_FragCoord.xy), 0);
-}`;
 
 /**
  * @param {WebGL2RenderingContext} gl
@@ -55,7 +50,7 @@ export function createBackdrop(gl, source, { live, regions }) {
       gl.viewport(0, 0, width, height);
       gl.activeTexture(gl.TEXTURE0);
       gl.bindTexture(gl.TEXTURE_2D, target.texture);
-      copyProgram.setUniforms({ uBackdrop: { value: 0 } });
+      copyProgram.setUniforms({ uPicture: { value: 0 } });
       copyProgram.draw();
       return regions(width, height).map(([x, y, w, h]) => {
         const x0 = Math.max(0, Math.floor(x));

@@ -8,6 +8,7 @@ import { describe, expect, it } from 'vitest';
 import { QUESTIONS, questionById } from '../../src/homework/questions.js';
 import { seededRandom } from '../../src/homework/seededRandom.js';
 import { columnCos } from '../../src/methods/classifyGrid.js';
+import { fresnelR } from './oracle/rightAnswers.js';
 import { brewsterDegrees, conductorR, cosOfDegrees, criticalDegrees, dielectricR, dielectricSP } from './oracle/fresnelOracle.js';
 import materials from '../../src/optics/materials.json';
 
@@ -43,15 +44,7 @@ function crossing(f, level, lo, hi) {
 const holding = (q, p) => q.options(p).filter((o) => o.holds(p)).map((o) => o.id);
 
 // Plain float64 textbook forms, for grid searches the 50-digit oracle would make slow (Hecht, Optics, §4.6).
-function fresnelPlain(thetaDeg, nI, nT) {
-  const ci = Math.cos(thetaDeg * DEG);
-  const st = (nI / nT) * Math.sin(thetaDeg * DEG);
-  if (st >= 1) return 1;
-  const ct = Math.sqrt(1 - st * st);
-  const rs = (nI * ci - nT * ct) / (nI * ci + nT * ct);
-  const rp = (nT * ci - nI * ct) / (nT * ci + nI * ct);
-  return (rs * rs + rp * rp) / 2;
-}
+const fresnelPlain = fresnelR;
 const schlickPlain = (thetaDeg, nI, nT) => {
   const r0 = ((nT - nI) / (nT + nI)) ** 2;
   return r0 + (1 - r0) * (1 - Math.cos(thetaDeg * DEG)) ** 5;

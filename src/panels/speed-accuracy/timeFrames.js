@@ -13,6 +13,7 @@
 import { createSphereTrio } from '../spheres/createSphereTrio.js';
 import { directionFromAngles } from '../../gl/directionFromAngles.js';
 import { createProgram } from '../../gl/createProgram.js';
+import COPY from '../../gl/copyTexel.frag.glsl?raw';
 import { TIMER_QUERY, WALL_TIMER } from '../../gl/timeMethodsGpu.js';
 import { spreadOf } from '../../methods/timeMethodsCpu.js';
 import { schema as heroSchema } from '../spheres/schema.js';
@@ -27,12 +28,6 @@ const SUN = directionFromAngles(defaults.lightAz, defaults.lightEl);
 const INDICES = [defaults.nT, defaults.nT + 0.1]; // a change of n every frame, between two values
 const nextFrame = () => new Promise((resolve) => { requestAnimationFrame(() => resolve()); });
 const sync = (gl) => gl.readPixels(1, 1, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
-const COPY = `precision highp float;
-uniform sampler2D uPicture;
-out vec4 fragColor;
-void main() {
-  fragColor = texelFetch(uPicture, ivec2(gl_FragCoord.xy), 0);
-}`;
 
 /** A canvas of this CSS size in host, laid out but not seen (ResizeObserver needs a real box). */
 function stageCanvas(host, width, height) {

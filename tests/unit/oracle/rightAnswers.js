@@ -4,7 +4,8 @@
 // Hecht, Optics (5th ed.), §4.4 (Snell), §4.6.2 (Fresnel equations, Brewster's angle).
 const DEG = Math.PI / 180;
 
-function fresnelR(thetaDeg, nI, nT) {
+/** Unpolarized R at θ (degrees) from n_i into n_t, plain float64; 1 past the critical angle. */
+export function fresnelR(thetaDeg, nI, nT) {
   const ci = Math.cos(thetaDeg * DEG);
   const st = (nI / nT) * Math.sin(thetaDeg * DEG);
   if (st >= 1) return 1;
