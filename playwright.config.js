@@ -16,8 +16,17 @@ const port = Number(process.env.FRESNEL_LAB_PORT);
 // CHROMIUM_PATH, else Debian's chromium, else Playwright's own browser if one is installed.
 const executablePath = process.env.CHROMIUM_PATH || (existsSync('/usr/bin/chromium') ? '/usr/bin/chromium' : undefined);
 
+/**
+ * For the tests alone, not the benchmark (bench/run.js leaves them out): the page compositor in
+ * software rather than through SwiftShader's Vulkan, which a quarter of the suite's time went to.
+ * WebGL still renders with SwiftShader.
+ */
+export const TEST_ONLY_ARGS = ['--disable-gpu-compositing'];
+
 export default defineConfig({
   testDir: 'tests/e2e',
+  // The smoke pass (npm run test:smoke) repeats what the full suite checks more closely: only on its own.
+  testIgnore: process.env.FRESNEL_LAB_SMOKE ? [] : ['**/smoke.spec.js'],
   timeout: 90_000,
   expect: { timeout: 20_000 },
   workers: 1, // SwiftShader renders on the CPU; parallel pages only slow each other down
@@ -36,6 +45,7 @@ export default defineConfig({
         '--disable-component-update',
         '--disable-sync',
         '--no-first-run',
+        ...TEST_ONLY_ARGS,
       ],
     },
   },

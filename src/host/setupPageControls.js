@@ -12,31 +12,50 @@ import { fixed } from '../ui/format.js';
 const t = messages('host', english);
 
 /**
- * A select of the languages the lab speaks, each by its own name. A change is kept in this browser
- * and the page starts again in it, with ?lang= in its link: the reader's choice then beats a
- * language the page carries (a sheet's, a lecture's) as well as the browser's.
+ * The languages the lab speaks, each a link by its own name, the page's own marked current. Links,
+ * not a select that reloads on change: a keyboard reader arrowing through a select would leave the
+ * page at the first press (WCAG 2.2, 3.2.2 On Input). Following one keeps the choice in this browser
+ * and starts the page again in it, as it is now, with ?lang= in its link: the reader's choice then
+ * beats a language the page carries (a sheet's, a lecture's) as well as the browser's.
+ * @param {string} name the group's name, from the catalogue
  */
-export function languageSelect() {
-  const select = document.createElement('select');
-  select.lang = ''; // each option names its language in that language (its own lang below)
-  // Those names are no words of the catalogue: the same in every language, never translated.
-  select.dataset.pseudoSkip = '';
-  // A pseudo-locale (asked for by link, for tests) is shown while it is the page's, so the select says what the page speaks.
+export function languageLinks(name) {
+  const group = document.createElement('span');
+  group.className = 'page-languages';
+  group.setAttribute('role', 'group');
+  const heading = document.createElement('span');
+  heading.id = 'page-languages-name';
+  heading.textContent = name;
+  group.setAttribute('aria-labelledby', heading.id);
+  group.append(heading);
+  // A pseudo-locale (asked for by link, for tests) is shown while it is the page's, so the group says what the page speaks.
   const current = languageById(currentLanguage());
   const choices = languageChoices();
-  for (const language of !current || choices.includes(current) ? choices : [...choices, current]) {
-    const option = new Option('', language.id, false, language.id === current?.id);
-    option.label = language.name; // shown as the option's text, and no text of the page's language around it
-    option.lang = language.id;
-    select.add(option);
-  }
-  select.addEventListener('change', () => {
-    rememberLanguage(select.value);
+  /** @param {string} id */
+  const linkTo = (id) => {
     const url = new URL(window.location.href);
-    url.searchParams.set('lang', select.value);
-    window.location.assign(url.toString());
-  });
-  return select;
+    url.searchParams.set('lang', id);
+    return url.toString();
+  };
+  for (const language of !current || choices.includes(current) ? choices : [...choices, current]) {
+    // Each names its language in that language: no word of the catalogue, never translated.
+    const here = language.id === current?.id;
+    const item = document.createElement(here ? 'strong' : 'a');
+    item.textContent = language.name;
+    item.lang = language.id;
+    if (here) item.setAttribute('aria-current', 'true');
+    else if (item instanceof HTMLAnchorElement) {
+      item.hreflang = language.id;
+      item.href = linkTo(language.id);
+      // The link as the page is now (its values follow changes in the page's own link).
+      item.addEventListener('click', () => {
+        rememberLanguage(language.id);
+        item.href = linkTo(language.id);
+      });
+    }
+    group.append(item);
+  }
+  return group;
 }
 
 /** A refractive index as the table of materials writes it (1.000293, 1.3333): every digit it has, the page's decimal separator. */
@@ -92,7 +111,7 @@ export function setupPageControls(bar, { onMaterial = null } = {}) {
 
   // A page without panels of its own (the homework page, whose panels sit in frames) has no
   // material or controls to set.
-  bar.append(label(t('language'), languageSelect()), label(t('theme'), scheme), label(t('projector'), projector),
+  bar.append(languageLinks(t('language')), label(t('theme'), scheme), label(t('projector'), projector),
     ...(onMaterial ? [label(t('material'), material), hide] : []));
   return { toggleControls, material };
 }

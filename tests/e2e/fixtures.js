@@ -1,20 +1,48 @@
 // Shared browser-test fixture: fails a test on any console error or page error (but those a fault
-// test expects: test.use({ allowedErrors })), and logs the
-// WebGL renderer string once per run so every report says what it ran on.
+// test expects: test.use({ allowedErrors })), and logs the WebGL renderer string once per run so
+// every report says what it ran on.
+//
+// Tests share one page per worker (reusablePage.js): its browser tab, script caches and compiled
+// code stay warm, which halves what a page load costs a test. It starts each test blank, as a new
+// one would: on about:blank, its storage and cookies cleared, the test's viewport, no emulated
+// media, no init script or route of the test before. A test that needs a context of its own (a
+// locale, a phone, a count of what a cold visit fetches) says so with test.use({ ownPage: true }).
 import { test as base, expect } from '@playwright/test';
+import { blankPage, guardShared, releasePage } from './reusablePage.js';
 
 let rendererLogged = false;
 
 export const test = base.extend({
-  // A test that injects a fault says which errors it expects (a regular expression); any other still fails it.
   allowedErrors: [null, { option: true }],
-  page: async ({ page, allowedErrors }, use) => {
+  ownPage: [false, { option: true }],
+  // The worker's shared tab, made when a test first asks for it.
+  shared: [async ({ browser }, use, workerInfo) => {
+    const { baseURL, viewport } = workerInfo.project.use;
+    const state = { context: await browser.newContext({ baseURL, viewport }), page: null };
+    await use(state);
+    await state.context.close();
+  }, { scope: 'worker' }],
+  page: async ({ browser, shared, ownPage, baseURL, viewport, locale, isMobile, hasTouch, allowedErrors }, use, testInfo) => {
+    const own = ownPage ? await browser.newContext({ baseURL, viewport, locale, isMobile, hasTouch }) : null;
+    if (!own && (locale !== 'en-US' || isMobile || hasTouch)) {
+      throw new Error('a test with its own locale or a phone needs test.use({ ownPage: true })');
+    }
+    const page = own ? await own.newPage() : await blankPage(shared, baseURL, viewport);
+    const restore = own ? async () => {} : guardShared(page);
     const problems = [];
-    page.on('console', (message) => {
-      if (message.type() === 'error') problems.push(`console error: ${message.text()}`);
-    });
-    page.on('pageerror', (error) => problems.push(`page error: ${error.message}`));
-    await use(page);
+    const onConsole = (message) => { if (message.type() === 'error') problems.push(`console error: ${message.text()}`); };
+    const onError = (error) => problems.push(`page error: ${error.message}`);
+    page.on('console', onConsole);
+    page.on('pageerror', onError);
+    try {
+      await use(page);
+    } finally {
+      await restore();
+      page.off('console', onConsole);
+      page.off('pageerror', onError);
+      if (own) await own.close();
+      else await releasePage(shared, testInfo.status === testInfo.expectedStatus);
+    }
     const unexpected = problems.filter((problem) => !allowedErrors?.test(problem));
     expect(unexpected, 'the page logged errors').toEqual([]);
   },

@@ -19,34 +19,38 @@ async function openLab(page, path) {
   await labReady(page);
 }
 
-/** The page's language selector and the name its label gives it. */
-const selector = (page) => page.locator('.page-controls label').filter({ has: page.locator('select[lang=""]') });
+/** The page's languages: a group named from the catalogue, a link per language, the page's own marked current. */
+const selector = (page) => page.locator('.page-controls .page-languages');
 
-test('the language selector: named from the catalogue on every page, a choice reloads the page in it and is kept', async ({ page }) => {
+test('the languages: named from the catalogue on every page, a link reloads the page in one and it is kept', async ({ page }) => {
   // A reader who chose the pseudo-locale earlier: the kept choice is the page's language.
   await page.goto('./');
   await page.evaluate((key) => localStorage.setItem(key, 'en-XA'), KEPT);
   await page.goto('./compose.html');
-  const label = selector(page);
-  await expect(label.locator('span')).toHaveText(/^⟦[^⟦⟧]+⟧ $/);
+  const group = selector(page);
+  await expect(page.getByRole('group', { name: /^⟦[^⟦⟧]+⟧$/ })).toHaveCount(1);
+  await expect(group.locator('#page-languages-name')).toHaveText(BRACKETED);
   expect(await page.evaluate(() => document.documentElement.lang)).toBe('en-XA');
-  await expect(label.locator('select')).toHaveValue('en-XA'); // it says what the page speaks
-  // Each language by its own name (its label), never translated.
-  expect(await label.locator('option').evaluateAll((options) => options.map((o) => [o.value, o.label, o.lang]))).toEqual([
-    ['en', 'English', 'en'], ['es', 'Español', 'es'], ['en-XA', '[Pseudo] Énglish', 'en-XA'],
-  ]);
+  // Each language by its own name, never translated; the page's own is current, not a link.
+  expect(await group.locator('[lang]').evaluateAll((items) => items.map((e) => [e.textContent, e.lang, e.getAttribute('href') !== null, e.getAttribute('aria-current')])))
+    .toEqual([['English', 'en', true, null], ['Español', 'es', true, null], ['[Pseudo] Énglish', 'en-XA', false, 'true']]);
 
-  await label.locator('select').selectOption('en');
+  // Arrowing and tabbing through the page's controls leaves nobody's page: only following a link does.
+  await group.getByRole('link', { name: 'English' }).focus();
+  for (const key of ['ArrowDown', 'ArrowUp', 'Tab', 'ArrowDown']) await page.keyboard.press(key);
+  expect(page.url()).not.toMatch(/[?&]lang=/);
+  await group.getByRole('link', { name: 'English' }).click();
   await page.waitForURL(/[?&]lang=en(&|$)/);
-  await expect(selector(page).locator('span')).toHaveText(`${english.host.language} `);
+  await expect(page.getByRole('group', { name: english.host.language })).toBeVisible();
+  await expect(selector(page).locator('[aria-current="true"]')).toHaveText('English');
   expect(await page.evaluate(() => document.documentElement.lang)).toBe('en');
   expect(await page.evaluate((key) => localStorage.getItem(key), KEPT)).toBe('en');
 
   // Kept: the other pages, opened with no language in their link, speak it (they spoke en-XA before).
   for (const path of ['./homework.html', './']) {
     await page.goto(path);
-    await expect(selector(page).locator('span'), path).toHaveText(`${english.host.language} `);
-    await expect(selector(page).locator('select'), path).toHaveValue('en');
+    await expect(page.getByRole('group', { name: english.host.language }), path).toBeVisible();
+    await expect(selector(page).locator('[aria-current="true"]'), path).toHaveText('English');
     expect(await page.evaluate(() => document.documentElement.lang), path).toBe('en');
   }
 });

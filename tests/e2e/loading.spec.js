@@ -7,6 +7,9 @@ import { resolve } from 'node:path';
 import { INJECTION_ERRORS, expectInjectionRefused, policyMeta, recordViolations, violations } from './policyCheck.js';
 import { PANEL_IDS } from '../../src/panels/manifest.js';
 
+// What a first visit fetches: a cold page of its own per test, no warm cache.
+test.use({ ownPage: true });
+
 /** Every script the page fetches; `all()` resolves to them once each one's text has been read. */
 function watchScripts(page) {
   const seen = [];

@@ -1,17 +1,21 @@
 // Browser languages the lab does not choose: every panel mounts, on the lecture page and in its
 // embed, whatever the browser reports. Chromium on Linux under LANG=C.UTF-8 reports `en-US@posix`
 // (the context's locale reproduces it), other setups `C` or nothing (navigator.language forced
-// before any script runs); then valid tags of other scripts, number systems and directions. Per
-// language one context: the lecture page, then the embeds on three pages, each taking its share
-// in turn (much of a load is waiting, not drawing).
+// before any script runs): there the lecture page, then every embed on three pages, each taking its
+// share in turn (much of a load is waiting, not drawing). Then valid tags of other scripts, number
+// systems and directions, which no Intl call refuses: the lecture page, which loads every panel's
+// module (where uPlot's refusal was) and mounts the hero. Per language one context.
 import { test, expect, openLab } from './fixtures.js';
 import { PANELS } from '../../src/panels/manifest.js';
 
+// A locale of its own per language, and navigator.language forced in its context: pages of their own.
+test.use({ ownPage: true });
+
 const LANGUAGES = [
-  { name: 'en-US@posix (Chromium on Linux under LANG=C.UTF-8)', locale: 'en-US@posix' },
-  { name: 'C', forced: 'C' },
-  { name: 'an empty string', forced: '' },
-  ...['de-DE', 'tr-TR', 'ar-EG', 'zh-CN', 'he'].map((locale) => ({ name: locale, locale })),
+  { name: 'en-US@posix (Chromium on Linux under LANG=C.UTF-8)', locale: 'en-US@posix', embeds: true },
+  { name: 'C', forced: 'C', embeds: true },
+  { name: 'an empty string', forced: '', embeds: true },
+  ...['de-DE', 'tr-TR', 'ar-EG', 'zh-CN', 'he'].map((locale) => ({ name: locale, locale, embeds: false })),
 ];
 const PAGES = 3;
 
@@ -29,11 +33,11 @@ async function watchedPage(context, problems) {
   return page;
 }
 
-for (const { name, locale, forced } of LANGUAGES) {
+for (const { name, locale, forced, embeds } of LANGUAGES) {
   test.describe(`browser language ${name}`, () => {
     if (locale) test.use({ locale });
 
-    test('the lecture page and every panel\'s embed mount', async ({ page }) => {
+    test(embeds ? 'the lecture page and every panel\'s embed mount' : 'the lecture page mounts, every panel\'s module loaded', async ({ page }) => {
       test.setTimeout(90_000);
       const language = locale ?? forced;
       if (forced !== undefined) {
@@ -48,6 +52,11 @@ for (const { name, locale, forced } of LANGUAGES) {
       expect.soft(await errorNotices(page), 'the lecture page').toEqual([]);
       // The hero is on screen: mounted by `ready`.
       expect.soft(await page.evaluate(() => window.fresnelLab.hosts.spheres.mounted), 'the hero mounted').toBe(true);
+      // The other panels' modules arrive once the hero has drawn; a module that failed never loads.
+      await expect.poll(() => page.evaluate(() => Object.values(window.fresnelLab.hosts).filter((h) => !h.loaded).map((h) => h.id)),
+        { message: 'panels whose module did not load', timeout: 60_000 }).toEqual([]);
+      expect.soft(await errorNotices(page), 'the lecture page, every module in').toEqual([]);
+      if (!embeds) return;
 
       const problems = [];
       const pages = [page];

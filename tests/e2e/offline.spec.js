@@ -9,6 +9,9 @@ import { test as plain } from '@playwright/test';
 import { test, expect, labReady } from './fixtures.js';
 import { PANEL_IDS } from '../../src/panels/manifest.js';
 
+// What a page opened from disk asks the network for: a cold page of its own per test.
+test.use({ ownPage: true });
+
 const offline = (file) => pathToFileURL(resolve(import.meta.dirname, '../../dist/offline', file)).href;
 const built = (file) => pathToFileURL(resolve(import.meta.dirname, '../../dist', file)).href;
 

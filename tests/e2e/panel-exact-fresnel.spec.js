@@ -49,6 +49,9 @@ test('the controls move the numbers and the URL; the layout stays put', async ({
   const box = () => page.locator('.xf-panel').boundingBox();
   // Formulas show their TeX source until KaTeX (fetched after the picture) typesets them.
   await expect(page.locator('.xf-panel [aria-busy="true"]')).toHaveCount(0);
+  // and KaTeX's fonts, asked for once the typeset formulas are laid out, change line heights when they arrive.
+  await page.evaluate(() => new Promise((resolve) => { requestAnimationFrame(() => document.fonts.ready.then(resolve)); }));
+  expect(await page.evaluate(() => document.fonts.check('16px KaTeX_Main'))).toBe(true);
   const before = await box();
   const input = page.locator('.lil-gui .lil-controller', { hasText: 'θ, angle' }).locator('input');
   await input.fill('30');

@@ -36,8 +36,8 @@ test('the Fresnel rim turns toward ks; the constant-weight rim does not', async 
   await expect(text).toContainText('0.3877 at 80°'); // fresnelExact(cos 80°, 1, 1.5)
 });
 
-test('the GLSL shown is the GLSL compiled, and Copy GLSL copies it', async ({ page, context }) => {
-  await context.grantPermissions(['clipboard-read', 'clipboard-write']);
+test('the GLSL shown is the GLSL compiled, and Copy GLSL copies it', async ({ page }) => {
+  await page.context().grantPermissions(['clipboard-read', 'clipboard-write']);
   await openLab(page, embed());
   const code = page.locator('.fl-panel pre code');
   await expect(code).toContainText('mix(kd, ks,');

@@ -4,6 +4,9 @@
 // no label and passes the audit there is checked in embeds.spec.js.
 import { test, expect, openLab, settledFrames } from './fixtures.js';
 
+// A phone is a context of its own (isMobile, touch).
+test.use({ ownPage: true });
+
 test.describe('the hero on a phone', () => {
   test.use({ viewport: { width: 390, height: 844 }, isMobile: true, hasTouch: true });
 

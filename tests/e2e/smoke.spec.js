@@ -1,6 +1,7 @@
 // The quick pass of `npm run test:smoke`: the lecture page with every panel mounted, and every
 // panel alone in its embed, each drawn (or plotted) and described, with no error in the console
-// (the fixture fails on one). What it cannot see, the full suite does (`npm test`).
+// (the fixture fails on one). What it cannot see, the full suite does (`npm test`), which leaves this
+// pass out: a11y.spec.js mounts every panel of the lecture page, embeds.spec.js every embed.
 import { test, expect, openLab } from './fixtures.js';
 import { PANEL_IDS } from '../../src/panels/manifest.js';
 
