@@ -5,7 +5,7 @@ import { mountedHeight, reservedHeight } from './layout.js';
 import { pathToFileURL } from 'node:url';
 import { resolve } from 'node:path';
 import { INJECTION_ERRORS, expectInjectionRefused, policyMeta, recordViolations, violations } from './policyCheck.js';
-import { PANEL_IDS } from '../../src/panels/manifest.js';
+import { PANELS, PANEL_IDS } from '../../src/panels/manifest.js';
 
 // What a first visit fetches: a cold page of its own per test, no warm cache.
 test.use({ ownPage: true });
@@ -204,4 +204,24 @@ test('before its first picture the lecture page fetches only what that picture n
   console.log(`[first load] lecture page: ${kb.toFixed(1)} KB of gzipped JS before the hero's first frame (${before.length} files)`);
   // 96.8 KB before the words moved into the message catalogue: English must not cost more than that.
   expect(kb).toBeLessThanOrEqual(96.8);
+});
+
+// What an embed imports before its panel can draw, by the issue's figures of 2026-12-04: a plot
+// embed 78 KB of gzipped JS, a WebGL embed 97 KB. Two carry more, held where they are: the
+// normal-map viewer (its chain builder and its figures) and the shader lab (CodeMirror's editor).
+const EMBED_KB = { plot: 78, webgl: 97, 'normal-mips': 114, 'shader-lab': 199 };
+
+test('each panel\'s embed imports at most its bar of gzipped JS before it can draw', async () => {
+  const { readFileSync } = await import('node:fs');
+  const { gzipSync } = await import('node:zlib');
+  const dist = resolve(import.meta.dirname, '../../dist');
+  const manifest = JSON.parse(readFileSync(resolve(dist, '.vite/manifest.json'), 'utf8'));
+  const over = [];
+  for (const { id, webgl, webglAtTimes } of PANELS) {
+    const files = new Set([...staticClosure(manifest, 'embed.html'), ...staticClosure(manifest, `src/panels/${id}/index.js`)]);
+    const kb = [...files].reduce((sum, file) => sum + gzipSync(readFileSync(resolve(dist, file))).length, 0) / 1024;
+    const bar = EMBED_KB[id] ?? (webgl || webglAtTimes ? EMBED_KB.webgl : EMBED_KB.plot);
+    if (kb > bar) over.push(`${id}: ${kb.toFixed(1)} KB > ${bar}`);
+  }
+  expect(over).toEqual([]);
 });
