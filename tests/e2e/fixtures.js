@@ -48,7 +48,6 @@ export const test = base.extend({
   },
 });
 
-/** Opens a page, waits for its panels, and logs the WebGL renderer once. */
 /**
  * Waits for the page's script to start (a language other than English is fetched first, so
  * window.fresnelLab may not exist yet when a navigation ends) and for everything it loads.
@@ -58,6 +57,7 @@ export async function labReady(page) {
   await page.evaluate(() => window.fresnelLab.ready);
 }
 
+/** Opens a page, waits for its panels, and logs the WebGL renderer once. */
 export async function openLab(page, path = './') {
   await page.goto(path);
   await labReady(page);
