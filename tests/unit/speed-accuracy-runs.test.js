@@ -9,13 +9,12 @@ import {
 } from '../../src/panels/speed-accuracy/words.js';
 import { schema } from '../../src/panels/speed-accuracy/schema.js';
 import { benchResults } from '../../src/methods/benchResults.js';
-import { errorsFromValues } from '../../src/methods/gpuErrors.js';
-import { thetaSamples } from '../../src/methods/errorMetrics.js';
-import { METHODS, methodsOfKind } from '../../src/methods/methods.js';
-import { referenceFor, sceneById } from '../../src/methods/scenes.js';
+import { METHODS } from '../../src/methods/methods.js';
+import { sceneById } from '../../src/methods/scenes.js';
 import { WebGL2Unavailable } from '../../src/gl/webgl2Unavailable.js';
 import { GpuFloatUnavailable } from '../../src/gl/evaluateMethodsGpu.js';
 import { ShaderError } from '../../src/gl/shaderError.js';
+import { offsetErrors } from './standInReadBack.js';
 
 const defaults = () => Object.fromEntries(Object.entries(schema).map(([key, spec]) => [key, spec.default]));
 const flush = () => new Promise((resolve) => { setTimeout(resolve, 0); });
@@ -42,12 +41,7 @@ function timedResults() {
  * reference by a constant of its own (1e-4 × (index + 1)), through the same statistics.
  */
 function readBackOf(scene) {
-  const { cos } = thetaSamples(scene.thetaCount, scene.weighting);
-  const reference = referenceFor(scene.kind);
-  const errors = Object.fromEntries(methodsOfKind(scene.kind).map((method, i) => {
-    const values = new Float64Array(scene.cases.flatMap((args) => Array.from(cos, (c) => reference(c, ...args) + 1e-4 * (i + 1))));
-    return [method.id, errorsFromValues(scene, values)];
-  }));
+  const errors = offsetErrors(scene);
   return { errors, probe: { mediumpIsFullPrecision: true, mediumpBits: 24 }, claimed: null, device: { renderer: 'Stand-in GPU' } };
 }
 

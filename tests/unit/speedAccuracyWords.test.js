@@ -6,14 +6,13 @@ import { describeView, speedAccuracyView, statusText } from '../../src/panels/sp
 import { formatCodes, formatNs } from '../../src/panels/speed-accuracy/formatMeasures.js';
 import { readBackProblem } from '../../src/panels/speed-accuracy/readBackProblem.js';
 import { benchResults } from '../../src/methods/benchResults.js';
-import { errorsFromValues } from '../../src/methods/gpuErrors.js';
-import { thetaSamples } from '../../src/methods/errorMetrics.js';
-import { METHODS, methodsOfKind } from '../../src/methods/methods.js';
-import { referenceFor, sceneById } from '../../src/methods/scenes.js';
+import { METHODS } from '../../src/methods/methods.js';
+import { sceneById } from '../../src/methods/scenes.js';
 import { WALL_TIMER } from '../../src/gl/timeMethodsGpu.js';
 import { GpuFloatUnavailable } from '../../src/gl/evaluateMethodsGpu.js';
 import { ShaderError } from '../../src/gl/shaderError.js';
 import { usePseudoLocale, wordsOutside } from './inPseudoLocale.js';
+import { offsetErrors } from './standInReadBack.js';
 
 /** A run: every method timed on the GPU and the CPU, one of three timings noisy, frames timed, the GPU timing failed. */
 function results() {
@@ -31,12 +30,7 @@ function results() {
 
 /** A read-back: each method off the reference by 1e-4 × (index + 1). */
 function readBackOf(scene) {
-  const { cos } = thetaSamples(scene.thetaCount, scene.weighting);
-  const reference = referenceFor(scene.kind);
-  const errors = Object.fromEntries(methodsOfKind(scene.kind).map((method, i) => {
-    const values = new Float64Array(scene.cases.flatMap((args) => Array.from(cos, (c) => reference(c, ...args) + 1e-4 * (i + 1))));
-    return [method.id, errorsFromValues(scene, values)];
-  }));
+  const errors = offsetErrors(scene);
   return { errors, device: { renderer: 'Stand-in' } };
 }
 
