@@ -1,13 +1,14 @@
 #!/usr/bin/env node
-// npm run places [-- <id> …] [-- --widths 800,1280,1920] [-- --site DIR]
+// npm run places [-- <id> …] [-- --widths 800,1000,1280] [-- --site DIR]
 // The `place` of each panel's manifest entry (all panels when no id is given), measured as the
 // browser tests measure it: the site is built into a private folder (--site DIR serves one built
 // already), served with vite preview, and the lecture page opened in headless Chromium launched as
-// playwright.config.js launches it, at each window width (by default the three the tests use, one per
-// layout). At each width every panel asked for is scrolled to, mounted, and its height taken from the
-// top of its mount to the bottom of its description (tests/e2e/layout.js). Prints per panel the
-// heights, the line to paste into src/panels/manifest.js (placeFromHeights.js), and what the tests
-// would say of the place the entry has now.
+// playwright.config.js launches it, at each window width (by default both edges of each layout and
+// the widths the tests use: within a layout a panel's height does not fall steadily with the width).
+// At each width every panel asked for is scrolled to, mounted, and its height taken from the top of
+// its mount to the bottom of its description (tests/e2e/layout.js). Prints per panel the heights, the
+// line to paste into src/panels/manifest.js (placeFromHeights.js), and what the tests would say of
+// the place the entry has now.
 import { chromium } from '@playwright/test';
 import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -28,7 +29,7 @@ const option = (name, fallback) => {
   args.splice(i, args[i].includes('=') ? 1 : 2);
   return value;
 };
-const widths = option('widths', '800,1280,1920').split(',').map(Number);
+const widths = option('widths', '800,1000,1001,1280,1449,1450,1920,2560').split(',').map(Number);
 const givenSite = option('site', null);
 const ids = args.length ? args : PANELS.map((p) => p.id);
 const log = (text) => process.stderr.write(`[places] ${text}\n`);
