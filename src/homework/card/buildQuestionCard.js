@@ -8,7 +8,8 @@
 import { button, el } from '../../ui/el.js';
 import { angle } from '../../ui/format.js';
 import { setSubscripted } from '../../ui/subscripts.js';
-import { EMBED_KEYS } from '../../host/readEmbedOptions.js';
+import { embedLink } from '../../host/embedLink.js';
+import { panelSchema } from '../../panels/panelSchema.js';
 import { kindName } from '../questions.js';
 import { MAX_TYPED, gradeAnswer, trueOption } from '../gradeAnswer.js';
 import { formatTolerance, formatValue } from '../formatAnswer.js';
@@ -32,16 +33,14 @@ const tq = messages('questions', questionWords);
  */
 
 /**
- * The panel in a frame of the embed page, started from `state` (values the panel checks itself).
+ * The panel in a frame of the embed page, started from `state`: its link written as every embed
+ * link is (embedLink.js), the values through the panel's schema (a sheet's are checked by it).
  * @param {string} panelId
- * @param {Record<string, unknown>} state
+ * @param {import('../questionParts.js').PanelState} state
  */
 function panelFrame(panelId, state) {
-  const url = new URL('./embed.html', window.location.href);
-  for (const [key, value] of Object.entries(state)) if (!EMBED_KEYS.includes(key)) url.searchParams.set(key, String(value));
-  url.searchParams.set('panel', panelId);
   const frame = el('iframe', 'hw-frame');
-  frame.src = url.toString();
+  frame.src = embedLink(new URL('./embed.html', window.location.href).href, { id: panelId, schema: panelSchema(panelId) ?? {} }, state);
   frame.loading = 'lazy';
   frame.title = t('card.frameTitle', { panel: panelTitle(panelId) });
   frame.allow = 'fullscreen; clipboard-write';
