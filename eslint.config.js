@@ -14,6 +14,25 @@ const LOCALE_RULES = [
     selector, message: 'Give Intl its locale through src/ui/safeLocale.js: safeLocale(tag), pageLocale() or FALLBACK_LOCALE.',
   }));
 
+// One of each: outside data is read by its own keys through src/host/own.js (an inherited key such as
+// `constructor` reads as absent), and an embed page's link is written by src/host/embedLink.js alone,
+// so every frame, share link and deck writes the same values the same way.
+const ONE_OF_EACH = [
+  {
+    selector: ':matches(FunctionDeclaration, VariableDeclarator[init.type=/FunctionExpression$/])[id.name=/^(own|isObject|plainObject)$/]',
+    message: 'Import own and isObject from src/host/own.js.',
+  },
+  {
+    selector: "CallExpression[callee.object.name='Reflect'][callee.property.name='get']",
+    message: 'Read a field of outside data with own() of src/host/own.js: an inherited key reads as absent.',
+  },
+  {
+    selector: "CallExpression[callee.property.name='set'][arguments.0.value='panel'], "
+      + "NewExpression[callee.name='URLSearchParams'] > ObjectExpression > Property[key.name='panel']",
+    message: 'Write an embed link with embedLink of src/host/embedLink.js.',
+  },
+];
+
 export default [
   { ignores: ['dist/', 'node_modules/', 'test-results/', 'playwright-report/', 'docs/.vitepress/dist/', 'docs/.vitepress/cache/'] },
   js.configs.recommended,
@@ -31,7 +50,7 @@ export default [
     // that needs no sideways scrolling.
     files: ['src/**/*.js'],
     rules: {
-      'no-restricted-syntax': ['error', ...LOCALE_RULES],
+      'no-restricted-syntax': ['error', ...LOCALE_RULES, ...ONE_OF_EACH],
       'max-len': ['error', { code: 140, tabWidth: 2, ignoreUrls: false, ignoreStrings: false, ignoreTemplateLiterals: false }],
     },
   },
@@ -40,12 +59,17 @@ export default [
     // decimals that column keeps. Markup numbers and TeX have their own helpers there and in tex.js.
     files: ['src/panels/**/*.js'],
     rules: {
-      'no-restricted-syntax': ['error', ...LOCALE_RULES, {
+      'no-restricted-syntax': ['error', ...LOCALE_RULES, ...ONE_OF_EACH, {
         selector: "MemberExpression[property.name='toFixed']",
         message: 'Format numbers with src/ui/format.js: fixed, angle or sci for text, markupNumber for SVG or CSS, '
           + 'rounded for a value; texNumber (src/ui/tex.js) inside TeX.',
       }],
     },
+  },
+  {
+    // The one home of each (ONE_OF_EACH above).
+    files: ['src/host/own.js', 'src/host/embedLink.js'],
+    rules: { 'no-restricted-syntax': ['error', ...LOCALE_RULES] },
   },
   {
     files: ['*.config.js', 'tests/**', 'bench/**', 'scripts/**', '.ci/**', 'docs/.vitepress/**'],

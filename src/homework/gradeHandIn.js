@@ -9,6 +9,7 @@ import { gradeAnswer, questionParams, readAnswer } from './gradeAnswer.js';
 import { SHEET_VERSION, readSheet } from './readSheet.js';
 import { hashSeed } from './seededRandom.js';
 import { rawText } from '../host/params.js';
+import { isObject, own } from '../host/own.js';
 import english from 'virtual:messages/en/homework';
 import { messages } from '../i18n/messages.js';
 
@@ -16,10 +17,6 @@ const t = messages('homework', english);
 
 /** @type {(v: unknown, max: number) => v is string} */
 const text = (v, max) => typeof v === 'string' && v.length > 0 && v.length <= max;
-/** @type {(v: unknown) => v is Record<string, unknown>} */
-const plainObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
-/** @type {(object: object, key: string) => unknown} */
-const own = (object, key) => (Object.hasOwn(object, key) ? Reflect.get(object, key) : undefined);
 
 /** @typedef {import('./readSheet.js').Sheet} Sheet */
 /**
@@ -49,7 +46,7 @@ export const sheetFingerprint = (sheet) => hashSeed(JSON.stringify(sheet)).toStr
  * @returns {GradedHandIn | { ok: false, problems: string[] }}
  */
 export function gradeHandIn(data, { expected = null } = {}) {
-  if (!plainObject(data)) return { ok: false, problems: [t('handIn.notObject')] };
+  if (!isObject(data)) return { ok: false, problems: [t('handIn.notObject')] };
   const field = (/** @type {string} */ key) => own(data, key);
   const read = readSheet(field('sheet'));
   const problems = read.ok ? [] : read.problems.map((problem) => t('handIn.sheet', { problem }));
@@ -74,7 +71,7 @@ export function gradeHandIn(data, { expected = null } = {}) {
     /** @type {unknown} */
     const raw = answers[i];
     const answer = readAnswer(question, params, typeof raw === 'string' || typeof raw === 'number' ? raw
-      : plainObject(raw) ? own(raw, 'value') : undefined);
+      : own(raw, 'value'));
     const tried = attempts[i];
     const tries = typeof tried === 'number' && Number.isInteger(tried) && tried >= 0 ? tried : null;
     return { question: question.id, params, answer, attempts: tries, ...gradeAnswer(question, params, answer) };

@@ -5,6 +5,7 @@
 import { knownQuestion } from '../homework/questions.js';
 import { questionParams } from '../homework/gradeAnswer.js';
 import { buildQuestionCard } from '../homework/card/buildQuestionCard.js';
+import { fitPanelFrames } from '../homework/card/fitPanelFrames.js';
 import { button } from '../ui/el.js';
 import { ROOM_SEED } from './readLecture.js';
 import english from 'virtual:messages/en/lecture';
@@ -17,8 +18,7 @@ const t = messages('lecture', english);
  * @param {import('./mountLecture.js').AskedQuestion[]} questions
  */
 export function askQuestions(questions) {
-  /** @type {Set<HTMLIFrameElement>} the panels' frames, each fitted to the height it reports */
-  const frames = new Set();
+  const frames = fitPanelFrames();
   const cards = questions.map(({ section, item, number }) => {
     const question = knownQuestion(item.question);
     /** @type {import('../homework/card/buildQuestionCard.js').QuestionCard | null} */
@@ -33,7 +33,7 @@ export function askQuestions(questions) {
       // A prediction's panel would give the answer away: it waits for this question's reveal.
       panelsAllowed: () => question.kind !== 'predict' || Boolean(card?.revealed()),
       onAnswer: () => {},
-      onFrame: (frame) => frames.add(frame),
+      onFrame: frames.add,
     });
     card = made;
     const reveal = button(t('reveal'), 'lecture-reveal');
@@ -41,23 +41,6 @@ export function askQuestions(questions) {
     made.element.append(reveal);
     section.append(made.element);
     return made;
-  });
-  window.addEventListener('message', (event) => {
-    // Looked up when the message comes: a card makes its frame before it is on the page, without a window yet.
-    const frame = [...frames].find((f) => f.contentWindow === event.source);
-    /** @type {unknown} a frame's message, data until it is checked */
-    const data = event.data;
-    const field = (/** @type {string} */ key) => (typeof data === 'object' && data !== null ? Reflect.get(data, key) : undefined);
-    if (!frame || field('type') !== 'fresnel-lab:size') return;
-    const height = Number(field('height'));
-    if (Number.isFinite(height)) frame.style.height = `${Math.min(3000, Math.max(160, Math.ceil(height) + 2))}px`;
-  });
-  // The page's theme and projector mode reach the panels in their frames.
-  window.addEventListener('fresnel-lab:theme', ({ detail }) => {
-    for (const frame of frames) {
-      frame.contentWindow?.postMessage({ type: 'fresnel-lab:theme', theme: detail.scheme }, '*');
-      frame.contentWindow?.postMessage({ type: 'fresnel-lab:projector', on: detail.projector }, '*');
-    }
   });
   return cards;
 }

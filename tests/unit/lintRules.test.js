@@ -35,6 +35,22 @@ describe('lint rules', () => {
     }
   });
 
+  it('own, isObject and the embed link have one home each (src/host/own.js, src/host/embedLink.js)', async () => {
+    const code = [
+      'export const own = (o, k) => (Object.hasOwn(o, k) ? o[k] : undefined);',
+      'export function isObject(v) { return typeof v === "object"; }',
+      'export const field = (o, k) => Reflect.get(o, k);',
+      "export const link = (u) => { u.searchParams.set('panel', 'schlick'); return u; };",
+      "export const query = new URLSearchParams({ panel: 'schlick' });",
+      'export const kept = [1, 2].filter((own) => own > 1);',
+      "export const set = (m) => m.set('theme', 'dark');",
+    ].join('\n');
+    for (const filePath of ['src/homework/probe.js', 'src/panels/schlick/probe.js']) {
+      expect(await flagged(code, filePath, 'no-restricted-syntax', /own\.js|embedLink\.js/), filePath).toEqual([1, 2, 3, 4, 5]);
+    }
+    expect(await flagged(code, 'src/host/own.js', 'no-restricted-syntax', /own\.js|embedLink\.js/)).toEqual([]);
+  });
+
   it('no line of src is longer than 140 characters', async () => {
     const code = `export const a = '${'x'.repeat(120)}';\nexport const b = '${'y'.repeat(130)}';\n`;
     expect(await flagged(code, 'src/ui/probe.js', 'max-len')).toEqual([2]);

@@ -8,6 +8,7 @@
 // then { id, view } or { id, error }. Everything posted back is plain data (structured-cloneable).
 import { buildClassView } from './buildClassView.js';
 import { useWorkerLanguage } from './classWorkerLanguage.js';
+import { own } from '../../host/own.js';
 
 /**
  * Answers class-view requests on a worker's global scope (or anything with addEventListener and
@@ -19,7 +20,7 @@ export function serveClassView(scope) {
   scope.addEventListener('message', async (event) => {
     const message = event.data;
     /** @type {(key: string) => unknown} the message's field (the page posts { id, request, lang }) */
-    const field = (key) => (typeof message === 'object' && message !== null ? Reflect.get(message, key) : undefined);
+    const field = (key) => own(message, key);
     const id = field('id');
     const request = field('request');
     const lang = field('lang');

@@ -10,6 +10,7 @@ import { contentKind, fileKind } from './fileKind.js';
 import { findHandIns } from './findHandIns.js';
 import { htmlToText, looksLikeHtml } from './htmlText.js';
 import { unzipBounded } from './unzipBounded.js';
+import { own } from '../../host/own.js';
 import english from 'virtual:messages/en/class';
 import { messages } from '../../i18n/messages.js';
 
@@ -107,13 +108,11 @@ export function readClassHandIns({ files = [], text = '' } = {}, capsGiven = {})
 
   /** @type {unknown[]} */
   const list = Array.isArray(files) ? files : [];
-  // A file's name and bytes, read as properties of whatever was given (a PickedFile, or nothing of the kind).
-  const member = (/** @type {unknown} */ file, /** @type {string} */ key) => (
-    typeof file === 'object' && file !== null ? Reflect.get(file, key) : undefined);
+  // A file's name and bytes, read as own properties of whatever was given (a PickedFile, or nothing of the kind).
   list.forEach((file, i) => {
-    const given = member(file, 'name');
+    const given = own(file, 'name');
     const name = typeof given === 'string' && given ? given : t('source.file', { number: i + 1 });
-    const content = member(file, 'bytes');
+    const content = own(file, 'bytes');
     const bytes = content instanceof Uint8Array ? content : content instanceof ArrayBuffer ? new Uint8Array(content) : null;
     try {
       if (!bytes) refused.push({ source: name, reason: t('file.noContent') });

@@ -3,6 +3,7 @@
 // closing the page loses nothing. Where storage is refused (private mode, a sandboxed frame, a
 // strict policy) the work lives for the visit only, and the page says so.
 import { hashSeed } from '../seededRandom.js';
+import { own } from '../../host/own.js';
 
 const PREFIX = 'fresnel-lab:homework:';
 
@@ -32,8 +33,7 @@ export function openAnswerStore(sheetCode, count, makeSeed) {
     saved = null; // damaged by hand: start again rather than fail
   }
   /** @type {(name: string) => unknown} a field of what was kept, looked up as an own key */
-  const field = (name) => (saved !== null && typeof saved === 'object' && Object.hasOwn(saved, name)
-    ? Reflect.get(saved, name) : undefined);
+  const field = (name) => own(saved, name);
   /** @type {(name: string) => unknown[]} */
   const list = (name) => {
     const kept = field(name);

@@ -15,8 +15,13 @@ import { SUSPEND_LIMIT } from '../readResume.js';
  * @typedef {object} ScormApi
  */
 
-/** @type {(object: unknown, key: string) => unknown} a property of an object from outside, without trusting it to be one */
+/**
+ * A property of the LMS's object, without trusting it to be one. Not own(): a run-time's functions
+ * are often inherited (a class's methods), and a function may be the API.
+ * @type {(object: unknown, key: string) => unknown}
+ */
 const member = (object, key) => ((typeof object === 'object' || typeof object === 'function') && object !== null
+  // eslint-disable-next-line no-restricted-syntax -- see above: the API's methods may be inherited
   ? Reflect.get(object, key) : undefined);
 
 /**

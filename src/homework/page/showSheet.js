@@ -16,6 +16,7 @@ import { scormInteraction } from '../scormInteraction.js';
 import { handInToCode, makeHandIn } from '../sheetCodes.js';
 import { openAnswerStore } from './answerStore.js';
 import { buildQuestionCard } from '../card/buildQuestionCard.js';
+import { fitPanelFrames } from '../card/fitPanelFrames.js';
 import { field, titledSection } from '../../ui/formParts.js';
 import { withElement } from './withElement.js';
 import english from 'virtual:messages/en/homework';
@@ -94,8 +95,7 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
     }
   };
   const lecture = () => lectureBox.checked;
-  /** @type {Map<MessageEventSource | null, HTMLIFrameElement>} a panel frame's window → the frame, to fit each to the size it reports */
-  const frames = new Map();
+  const frames = fitPanelFrames();
   /** @type {{ card: import('../card/buildQuestionCard.js').QuestionCard, reveal: HTMLButtonElement }[]} */
   let cards = [];
   const panelsAllowed = () => cards.every(({ card }, i) => questions[i].kind !== 'predict' || card.revealed()
@@ -121,29 +121,13 @@ export function showSheet(root, { sheet, code, urlSeed, scorm = null }) {
         keep();
         if (questions[i].kind === 'predict') queueMicrotask(refreshAll); // a panel held back may now show
       },
-      onFrame: (frame) => frames.set(frame.contentWindow, frame),
+      onFrame: frames.add,
     });
     const reveal = button(t('student.reveal'), 'hw-reveal');
     reveal.addEventListener('click', () => { card.reveal(); reveal.disabled = true; refreshAll(); });
     card.element.append(reveal);
     root.append(card.element);
     return { card, reveal };
-  });
-  window.addEventListener('message', (event) => {
-    const frame = frames.get(event.source);
-    /** @type {unknown} a frame's message, data until it is checked */
-    const data = event.data;
-    const field = (/** @type {string} */ key) => (typeof data === 'object' && data !== null ? Reflect.get(data, key) : undefined);
-    if (!frame || field('type') !== 'fresnel-lab:size') return;
-    const height = Number(field('height'));
-    if (Number.isFinite(height)) frame.style.height = `${Math.min(3000, Math.max(160, Math.ceil(height) + 2))}px`;
-  });
-  // The page's theme and projector mode reach the panels already open in their frames.
-  window.addEventListener('fresnel-lab:theme', ({ detail }) => {
-    for (const frame of frames.values()) {
-      frame.contentWindow?.postMessage({ type: 'fresnel-lab:theme', theme: detail.scheme }, '*');
-      frame.contentWindow?.postMessage({ type: 'fresnel-lab:projector', on: detail.projector }, '*');
-    }
   });
   const applyLecture = () => {
     root.classList.toggle('hw-lecture-mode', lecture());

@@ -10,6 +10,7 @@
 import ClassWorker from '../../class/classWorker.js?worker';
 import english from 'virtual:messages/en/class';
 import { currentLanguage, messages } from '../../../i18n/messages.js';
+import { own } from '../../../host/own.js';
 
 const t = messages('class', english);
 
@@ -60,7 +61,7 @@ export function createClassRunner({ useWorker = true } = {}) {
         // The worker's replies (classWorker.js): { id, progress }, then { id, view } or { id, error }.
         /** @type {unknown} */
         const data = event.data;
-        const field = (/** @type {string} */ key) => (typeof data === 'object' && data !== null ? Reflect.get(data, key) : undefined);
+        const field = (/** @type {string} */ key) => own(data, key);
         const id = field('id');
         const entry = typeof id === 'number' ? pending.get(id) : undefined;
         if (typeof id !== 'number' || !entry) return;
