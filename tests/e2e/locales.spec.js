@@ -4,7 +4,8 @@
 // before any script runs): there the lecture page, then every embed on three pages, each taking its
 // share in turn (much of a load is waiting, not drawing). Then valid tags of other scripts, number
 // systems and directions, which no Intl call refuses: the lecture page, which loads every panel's
-// module (where uPlot's refusal was) and mounts the hero. Per language one context.
+// module (where uPlot's refusal was) and mounts the hero. In every one, a number typed into the
+// hero's control with a decimal comma is read. Per language one context.
 import { test, expect, openLab } from './fixtures.js';
 import { PANELS } from '../../src/panels/manifest.js';
 
@@ -56,6 +57,12 @@ for (const { name, locale, forced, embeds } of LANGUAGES) {
       await expect.poll(() => page.evaluate(() => Object.values(window.fresnelLab.hosts).filter((h) => !h.loaded).map((h) => h.id)),
         { message: 'panels whose module did not load', timeout: 60_000 }).toEqual([]);
       expect.soft(await errorNotices(page), 'the lecture page, every module in').toEqual([]);
+      // A number typed with a decimal comma is read as one, though the page is in English here.
+      const nT = page.locator('.lil-gui .lil-controller', { hasText: 'n_t (sphere)' }).locator('input');
+      await nT.fill('');
+      await nT.pressSequentially('1,7');
+      await nT.press('Enter');
+      await expect.poll(() => page.evaluate(() => window.fresnelLab.hosts.spheres.values.nT), { message: 'n_t typed as 1,7' }).toBe(1.7);
       if (!embeds) return;
 
       const problems = [];
