@@ -2,6 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { SORT_KEYS, customRow, materialRows, sortMaterialRows } from '../../src/panels/refractive-index/materialRows.js';
 import { SPEED_OF_LIGHT_KM_S } from '../../src/optics/waves.js';
 import { COLUMNS, formatIndex, formatKmS } from '../../src/panels/refractive-index/buildIndexTable.js';
+import { setNumberLocale } from '../../src/ui/format.js';
 
 const rows = materialRows();
 const byId = (id) => rows.find((r) => r.id === id);
@@ -43,10 +44,16 @@ describe('material rows (refractive-index panel)', () => {
     expect(row.r0).toBeCloseTo(1 / 9, 15);
     expect(row.critical).toBeCloseTo(30, 12);
   });
-  it('indices keep the digits the data has', () => {
+  it('indices keep the digits the data has, with the language\'s decimal sign', () => {
     expect(formatIndex(1.000293)).toBe('1.000293');
     expect(formatIndex(1.4)).toBe('1.4000');
     expect(formatIndex(1.3333)).toBe('1.3333');
+    try {
+      setNumberLocale('es');
+      expect([1.000293, 1.4, 1.3333].map(formatIndex)).toEqual(['1,000293', '1,4000', '1,3333']);
+    } finally {
+      setNumberLocale('en');
+    }
   });
 });
 

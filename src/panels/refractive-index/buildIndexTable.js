@@ -23,11 +23,11 @@ export const COLUMNS = [
   { key: 'source' },
 ];
 
-/** n with at least four decimals, and all the data has (air: 1.000293). */
+/** n with at least four decimals, and all the data has (air: 1.000293), in the page's language (es: 1,3333). */
 export function formatIndex(n) {
   const text = String(rounded(n, 6));
   const decimals = text.includes('.') ? text.split('.')[1].length : 0;
-  return decimals >= 4 ? text : fixed(n, 4);
+  return fixed(n, Math.max(4, decimals));
 }
 
 /**
