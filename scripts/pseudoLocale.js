@@ -5,16 +5,11 @@
 // markup tags (<sub>…</sub>) are kept as they are. Parsed with @messageformat/parser and written
 // back in ICU MessageFormat.
 import { parse } from '@messageformat/parser';
+import { accent } from '../src/i18n/pseudoAccent.js';
 
 export const OPEN = '⟦';
 export const CLOSE = '⟧';
-const ACCENTS = Object.fromEntries([...'aáeéiíoóuúyýcçnñAÁEÉIÍOÓUÚYÝCÇNÑ'].reduce((pairs, ch, i, all) => (i % 2 ? pairs : [...pairs, [ch, all[i + 1]]]), []));
 const GROWTH = 0.35;
-
-/** Letters accented, markup tags and entities left alone. */
-function accent(text) {
-  return text.replace(/(<[^>]*>|&[a-z#0-9]+;)|([A-Za-z])/g, (whole, tag, letter) => (tag ? tag : ACCENTS[letter] ?? letter));
-}
 
 /**
  * The words inside a tag of the markup bracketed too (<a …>⟦Hómé⟧</a>): on the page they are an

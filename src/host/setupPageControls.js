@@ -8,6 +8,7 @@ import { dielectrics } from '../optics/materials.js';
 import { languageChoices, rememberLanguage } from '../i18n/language.js';
 import { languageById } from '../i18n/languages.js';
 import { fixed } from '../ui/format.js';
+import { materialName } from '../panels/shared/materialName.js';
 
 const t = messages('host', english);
 
@@ -93,7 +94,7 @@ export function setupPageControls(bar, { onMaterial = null } = {}) {
 
   const material = document.createElement('select');
   material.add(new Option(t('materialKeep'), ''));
-  for (const m of dielectrics) material.add(new Option(t('materialOption', { name: m.name, n: materialIndex(m.n) }), m.id));
+  for (const m of dielectrics) material.add(new Option(t('materialOption', { name: materialName(m.id), n: materialIndex(m.n) }), m.id));
   material.addEventListener('change', () => {
     const chosen = dielectrics.find((m) => m.id === material.value);
     if (chosen) onMaterial?.(chosen);

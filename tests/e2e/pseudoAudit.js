@@ -16,20 +16,32 @@
 const NOT_WORDS = '.katex, code, pre, .cm-editor, script, style, canvas, textarea, time, [lang]:not(html), [data-pseudo-skip]';
 
 /**
+ * (a) also reads inside the brackets: a catalogue's word there is accented, so a word of plain
+ * letters is an argument that never went through the catalogue (a material's English name), unless
+ * it is one of `known`, the words a test brought in from outside.
  * Where (a) looks: every visible text node (read with its element's whole text, since a message's
  * brackets may sit in sibling nodes) and every attribute a reader hears or sees, plus `live`, the
  * texts the page's live regions said so far and the page's title. Needs pseudoAuditScript.
  * Returns findings, each { where, text }.
  */
-export const wordsOutsideCatalogue = (page, { root = 'body', outside = [], live = true } = {}) => page.evaluate(({ within, skip, isLive }) => {
+export const wordsOutsideCatalogue = (page, { root = 'body', outside = [], known = [], live = true } = {}) => page.evaluate(({
+  within, skip, isLive, knownWords,
+}) => {
   const outsideBrackets = (text) => {
     let depth = 0;
     let rest = '';
+    let inside = '';
     for (const ch of text) {
       if (ch === '⟦') depth += 1;
       else if (ch === '⟧') depth = Math.max(0, depth - 1);
       else if (!depth) rest += ch;
+      else inside += ch;
     }
+    // An English word inside the brackets came in as a message's argument, not from the catalogue:
+    // the catalogue's words have every a, c, e, i, n, o, u and y accented (GLSL, km and px have none).
+    const unaccented = inside.match(/(?<![\p{L}\p{N}_])[A-Za-z]*[aceinouyACEINOUY][A-Za-z]*(?![\p{L}\p{N}_])/gu)
+      ?.filter((word) => word.length > 1 && !knownWords.includes(word)) ?? [];
+    if (unaccented.length) rest += ` ${unaccented.join(' ')}`;
     // Two letters in a row are a word; one (θ, n, R) is a symbol.
     return /\p{L}{2,}/u.test(rest) ? rest.replace(/\s+/g, ' ').trim() : null;
   };
@@ -92,7 +104,7 @@ export const wordsOutsideCatalogue = (page, { root = 'body', outside = [], live 
     }
   }
   return [...found.values()];
-}, { within: root, skip: [NOT_WORDS, ...outside].join(', '), isLive: live });
+}, { within: root, skip: [NOT_WORDS, ...outside].join(', '), isLive: live, knownWords: known });
 
 /**
  * The init script every page of a pseudo-locale test needs (context.addInitScript): `where(el)`,

@@ -309,10 +309,10 @@ describe('a whole class view', () => {
     const request = { sheet: synthetic.sheet, files: [{ name: 'class.zip', bytes: synthetic.zip }, { name: 'photo.png', bytes: new Uint8Array(4) }] };
     const last = () => posted[posted.length - 1];
     try {
-      // The pseudo-locale (?lang=en-XA on the page): every word the worker writes is a message, bracketed ⟦…⟧.
+      // The pseudo-locale (?lang=en-XA on the page): every word the worker writes is a message, accented and bracketed ⟦…⟧.
       await listener({ data: { id: 1, request, lang: 'en-XA' } });
       const { view } = last();
-      expect(view.refused).toEqual([{ source: 'photo.png', reason: expect.stringMatching(/^⟦not read: a \.png file is no hand-in .*⟧$/) }]);
+      expect(view.refused).toEqual([{ source: 'photo.png', reason: expect.stringMatching(/^⟦ñót réád: á \.pñg fílé ís ñó háñd-íñ .*⟧$/) }]);
       const options = view.summary.flatMap((s) => s.options ?? []);
       expect(options.length).toBeGreaterThan(0);
       expect(options.every((o) => /^⟦.*⟧$/.test(o.text))).toBe(true);

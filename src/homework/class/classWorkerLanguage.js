@@ -4,8 +4,9 @@
 // words are those of three namespaces (the refusals, flags, summaries and explanations it writes),
 // which travel in the worker for every language (a worker's bundle cannot load a chunk, and each
 // whole catalogue would more than double it). A pseudo-locale is made here from English, each
-// message bracketed ⟦…⟧ and padded as the build's are (scripts/pseudoLocale.js), rather than
-// carried: a word that is not the catalogue's still stands out. Shown numbers take the language's
+// message accented, bracketed ⟦…⟧ and padded as the build's are (scripts/pseudoLocale.js), rather
+// than carried: a word that is not the catalogue's still stands out. Its arguments are accented
+// with it, as the words are written whole. Shown numbers take the language's
 // decimal sign.
 import every from 'virtual:messages/every/class+homework+questions';
 import classWords from 'virtual:messages/en/class';
@@ -14,6 +15,7 @@ import questionWords from 'virtual:messages/en/questions';
 import { LANGUAGES, PSEUDO_LANGUAGES, SOURCE_LANGUAGE, languageById } from '../../i18n/languages.js';
 import { currentLanguage, setCatalogue } from '../../i18n/messages.js';
 import { setNumberLocale } from '../../ui/format.js';
+import { accent } from '../../i18n/pseudoAccent.js';
 
 const ENGLISH = { class: classWords, homework: homeworkWords, questions: questionWords };
 const GROWTH = 0.35; // as scripts/pseudoLocale.js
@@ -29,7 +31,7 @@ const pseudo = (english) => Object.fromEntries(Object.entries(english).map(([key
   /** @type {Message} */
   const padded = (args) => {
     const text = message(args);
-    return `⟦${text} ${'·'.repeat(Math.ceil(GROWTH * text.length))}⟧`;
+    return `⟦${accent(text)} ${'·'.repeat(Math.ceil(GROWTH * text.length))}⟧`;
   };
   return [key, padded];
 }));
