@@ -51,6 +51,7 @@ export function createToolbar(id, make) {
   buttons.poster.addEventListener('click', async () => {
     const url = await make.poster();
     if (url) downloadUrl(`fresnel-lab-${id}-poster.png`, url);
+    else say(t('posterNoCanvas'));
   });
   buttons.csv.addEventListener('click', () => {
     const table = make.csv();

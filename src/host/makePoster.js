@@ -57,7 +57,8 @@ export function wrapText(g, text, width) {
 
 /**
  * picture: a PNG data URL of the panel (or null); title; link: the lecture URL of this view;
- * colours: { background, text, muted }. Resolves a PNG data URL of POSTER.width × POSTER.height.
+ * colours: { background, text, muted }. Resolves a PNG data URL of POSTER.width × POSTER.height, or
+ * null where the browser gives no 2D canvas to draw it on.
  * @param {{ picture: string | null, title: string, link: string, colours: { background: string, text: string, muted: string } }} poster
  */
 export async function makePoster({ picture, title, link, colours }) {
@@ -66,7 +67,7 @@ export async function makePoster({ picture, title, link, colours }) {
   canvas.width = width;
   canvas.height = height;
   const g = canvas.getContext('2d');
-  if (!g) throw new Error('This browser gives no 2D canvas to draw the poster on.');
+  if (!g) return null; // no 2D canvas in this browser: the toolbar says so
   g.fillStyle = colours.background;
   g.fillRect(0, 0, width, height);
   g.fillStyle = colours.text;

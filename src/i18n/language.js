@@ -8,8 +8,11 @@ import loaders from 'virtual:messages/languages';
 import { LANGUAGES, SOURCE_LANGUAGE, languageById, pickLanguage } from './languages.js';
 import { setCatalogue } from './messages.js';
 import { setNumberLocale } from '../ui/format.js';
+import english from 'virtual:messages/en/ui:languageNotCarried';
+import { messages } from './messages.js';
 
 const STORAGE_KEY = 'fresnel-lab:language';
+const t = messages('ui', english);
 
 /** The language this browser's reader chose on a page of the lab, or null. */
 export function storedLanguage() {
@@ -63,7 +66,7 @@ export async function useLanguage(id) {
   const language = languageById(id) ?? LANGUAGES[0]; // the first listed is the source language, English
   // A single-file page carries the listed languages only, not the tests' pseudo-locales.
   const load = language.id === SOURCE_LANGUAGE ? null : loaders[language.id];
-  if (load === undefined) throw new Error(`This page does not carry the language ${language.id}.`);
+  if (load === undefined) throw new Error(t('languageNotCarried', { id: language.id }));
   const compiled = load ? (await load()).default : null;
   setCatalogue(language.id, compiled);
   setNumberLocale(language.numbers);
