@@ -2,7 +2,7 @@
 // never throws, gives text without markup back unchanged and escaped text back as it was; a code
 // inside any HTML (wrapped over <br>s, among tags and entities) is read, as it is from a file
 // without an extension; the student's name and id come back from every path an LMS writes, and
-// no path makes the readers throw.
+// no path makes the readers throw; a participant number is one student, whatever names are given.
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { strToU8 } from 'fflate';
@@ -10,6 +10,9 @@ import { htmlToText, looksLikeHtml } from '../../src/homework/class/htmlText.js'
 import { contentKind, fileKind } from '../../src/homework/class/fileKind.js';
 import { lmsUser } from '../../src/homework/class/lmsName.js';
 import { readClassHandIns } from '../../src/homework/class/readClassHandIns.js';
+import { gradeClassSync } from '../../src/homework/class/gradeClass.js';
+import { buildGradebook } from '../../src/homework/class/buildGradebook.js';
+import { moodleWorksheet } from '../../src/homework/class/lmsGrades.js';
 import { handInToCode, makeHandIn } from '../../src/homework/sheetCodes.js';
 import { anyText } from './fuzzArbitraries.js';
 import { check } from './fuzzConfig.js';
@@ -107,5 +110,32 @@ describe('the student an LMS names', () => {
       if (user.lms === '') expect(user).toEqual({ lms: '', name: '', id: '' });
       else expect(['moodle', 'canvas', 'blackboard']).toContain(user.lms);
     }));
+  });
+});
+
+describe('the students of a Moodle download', () => {
+  // Names from a small pool, so that students share them, as 李伟 or Li Wei do in a real class.
+  const NAMES = ['Li Wei', 'li  wei', '李伟', 'Ada', ''];
+  const entry = fc.record({ id: fc.integer({ min: 1, max: 5 }), name: fc.constantFrom(...NAMES), seed: fc.constantFrom('a', 'b', 'c'),
+    day: fc.integer({ min: 1, max: 9 }) });
+
+  it('each participant number is one student, counted once at its latest hand-in, and goes into the worksheet once', () => {
+    check(fc.property(fc.array(entry, { minLength: 1, maxLength: 8 }), (entries) => {
+      const handIns = entries.map(({ id, name, seed, day }) => ({
+        source: `w.zip/${NAMES[id % 4]}_${100000 + id}_assignsubmission_file_/h.json`,
+        data: makeHandIn({ sheet, seed, name, answers: ['0.05', 'dark'], time: `2026-01-0${day}T00:00:00.000Z` }),
+      }));
+      const grades = gradeClassSync(sheet, handIns);
+      if (!grades.ok) throw new Error(grades.problems.join(' '));
+      const book = buildGradebook(grades);
+      const ids = [...new Set(entries.map((e) => String(100000 + e.id)))].sort();
+      expect(book.students).toBe(ids.length);
+      for (const id of ids) {
+        const own = book.rows.filter((r) => r.lmsId === id);
+        const latest = own.reduce((a, b) => (Date.parse(b.time) >= Date.parse(a.time) ? b : a));
+        expect(own.filter((r) => r.counted)).toEqual([latest]);
+      }
+      expect(moodleWorksheet(book).students.map((s) => s.id).sort()).toEqual(ids);
+    }), 100);
   });
 });

@@ -8,6 +8,7 @@ import { readClassHandIns } from '../../src/homework/class/readClassHandIns.js';
 import { gradeClassSync } from '../../src/homework/class/gradeClass.js';
 import { buildGradebook } from '../../src/homework/class/buildGradebook.js';
 import { lmsUser } from '../../src/homework/class/lmsName.js';
+import { moodleWorksheet } from '../../src/homework/class/lmsGrades.js';
 import { htmlToText } from '../../src/homework/class/htmlText.js';
 import { handInToCode, makeHandIn } from '../../src/homework/sheetCodes.js';
 
@@ -16,8 +17,8 @@ const handIn = (name, seed, time = '2026-01-10T10:00:00.000Z') => makeHandIn({ s
 const json = (data) => strToU8(JSON.stringify(data));
 /** Moodle's online text as its download writes it (assignsubmission_onlinetext: the editor's HTML in a page). */
 const onlineText = (body) => strToU8(`<!DOCTYPE html><html><head><meta charset="UTF-8"></head><body>${body}</body></html>`);
-const graded = (files) => {
-  const read = readClassHandIns({ files });
+const graded = (files, text = '') => {
+  const read = readClassHandIns({ files, text });
   const grades = gradeClassSync(sheet, read.handIns);
   if (!grades.ok) throw new Error(grades.problems.join(' '));
   return { read, book: buildGradebook(grades) };
@@ -52,6 +53,37 @@ describe('a Moodle download', () => {
     });
     const { book } = graded([{ name: 'blind.zip', bytes: zip }]);
     expect(book.rows.map((r) => [r.lmsId, r.counted])).toEqual([['200001', true], ['200002', true]]);
+  });
+});
+
+describe('two students of one name', () => {
+  it('are two students when their participant numbers differ; a pasted hand-in joins the one student of its name, never one of two', () => {
+    const zip = zipSync({
+      'Li Wei_100003_assignsubmission_file_': { handin: json(handIn('Li Wei', 'lw3', '2026-01-10T10:00:00.000Z')) },
+      'Li Wei_100004_assignsubmission_file_': { 'handin.json': json(handIn('Li Wei', 'lw4', '2026-01-11T10:00:00.000Z')) },
+      'Ada Lovelace_100001_assignsubmission_file_': { 'h.json': json(handIn('Ada Lovelace', 'a1', '2026-01-09T10:00:00.000Z')) },
+      // One seed under two participants of one name: one handed in the other's sheet.
+      'Bo Berg_100005_assignsubmission_file_': { 'h.json': json(handIn('Bo Berg', 'bo', '2026-01-09T10:00:00.000Z')) },
+      'Bo Berg_100006_assignsubmission_file_': { 'h.json': json(handIn('Bo Berg', 'bo', '2026-01-09T11:00:00.000Z')) },
+    });
+    // Later, by mail (no path, so no participant number): Ada again, and a Li Wei on 100003's seed.
+    const mail = [handIn('ada lovelace', 'a1', '2026-01-12T10:00:00.000Z'), handIn('Li Wei', 'lw3', '2026-01-12T10:00:00.000Z')];
+    const { book } = graded([{ name: 'Week 3-123.zip', bytes: zip }], mail.map(handInToCode).join('\n'));
+    const rows = book.rows.map((r) => [r.name, r.lmsId, r.counted, r.flags.map((f) => f.kind).filter((k) => k !== 'no-name')]);
+    expect(rows).toEqual([
+      ['Li Wei', '100003', true, ['shared-seed']],
+      ['Li Wei', '100004', true, []],
+      ['Ada Lovelace', '100001', false, ['superseded']],
+      ['Bo Berg', '100005', true, ['shared-seed']],
+      ['Bo Berg', '100006', true, ['shared-seed']],
+      ['ada lovelace', '', true, ['resubmitted']],
+      ['Li Wei', '', true, ['shared-seed']], // could be either Li Wei's: counted on its own, its seed flagged
+    ]);
+    expect([book.students, book.superseded]).toEqual([6, 1]);
+    const sheetFile = moodleWorksheet(book, { now: new Date('2026-02-01T12:00:00Z') });
+    expect(sheetFile.cells.slice(1).map((c) => c[0]).sort()).toEqual(
+      ['Participant 100001', 'Participant 100003', 'Participant 100004', 'Participant 100005', 'Participant 100006']);
+    expect(sheetFile.left.map((l) => [l.row.name, l.why])).toEqual([['Li Wei', 'no-id']]);
   });
 });
 

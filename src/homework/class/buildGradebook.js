@@ -10,9 +10,12 @@
 //   copied                    the same wrong numbers to the same numbers: two students on one seed
 //                             with the same wrong answer to several numeric or predict questions;
 //   no-name                   the hand-in gives no name.
-// A student is their name as the file gives it (spaces and case aside); when the file gives none,
-// their id in the LMS (the participant number in a Moodle folder's name, the user id in a Canvas
-// file's name), or the LMS's folder name; hand-ins with none of them are never taken for one another.
+// A student is their id in the LMS the hand-in came from where its path gives one (the participant
+// number in a Moodle folder's name, the user id in a Canvas file's name, the user name in a
+// Blackboard file's name): two students of one name are two students. A hand-in without one (a code
+// pasted from a mail) is the student's whose LMS hand-ins give its name (spaces and case aside), if
+// they are one student's; else the name alone says who it is. Hand-ins with neither are never taken
+// for one another.
 import { knownQuestion } from '../questions.js';
 import { lmsUser } from './lmsName.js';
 import english from 'virtual:messages/en/class';
@@ -148,6 +151,40 @@ function copiedAnswers(rows, graded, items, identity, atLeast) {
   }
 }
 
+/** A row's student in its LMS: its id there, or a Blackboard user name (unique in Blackboard); null where the path gives neither. */
+const lmsKey = (/** @type {Row} */ row) => (row.lmsId ? `${row.lms}\u0000${row.lmsId}`
+  : row.lms === 'blackboard' && row.lmsName ? `blackboard\u0000${normalName(row.lmsName)}` : null);
+
+/**
+ * Who each row's student is: their LMS key; for a row without one, the LMS key of the one student
+ * whose rows give its name (typed or in the LMS's path), else the name itself.
+ * @param {Row[]} rows
+ * @returns {Identity}
+ */
+function identities(rows) {
+  /** @type {Map<string, Set<string>>} */
+  const byName = new Map();
+  for (const row of rows) {
+    const key = lmsKey(row);
+    if (key === null) continue;
+    for (const name of [row.name, row.lmsName].filter(Boolean).map(normalName)) {
+      const keys = byName.get(name) ?? new Set();
+      byName.set(name, keys);
+      keys.add(key);
+    }
+  }
+  /** @type {Map<Row, string | null>} */
+  const who = new Map();
+  for (const row of rows) {
+    const key = lmsKey(row);
+    const name = row.name ? normalName(row.name) : '';
+    const keys = name ? byName.get(name) : undefined;
+    // Two students of that name in the LMS: the hand-in could be either's, so it is neither's.
+    who.set(row, key ?? (keys?.size === 1 ? [...keys][0] : name ? `name\u0000${name}` : null));
+  }
+  return (row) => who.get(row) ?? null;
+}
+
 /** How many students giving one wrong answer make it a common slip: 5 % of the class, at least 4. */
 const commonSlip = (/** @type {number} */ students) => Math.max(4, Math.ceil(0.05 * students));
 
@@ -174,9 +211,7 @@ export function buildGradebook(grades, { copiedAtLeast = COPIED_AT_LEAST } = {})
       time: result.time, source, counted: true, flags: [],
     };
   });
-  /** @type {Identity} */
-  const identity = (row) => (row.name ? normalName(row.name) : row.lmsId ? `${row.lms}\u0000${row.lmsId}`
-    : row.lmsName ? normalName(row.lmsName) : null);
+  const identity = identities(rows);
   supersede(rows, identity);
   const counted = rows.filter((row) => row.counted);
   if (sheet.seed === undefined) sharedSeeds(counted, identity);
