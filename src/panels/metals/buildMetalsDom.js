@@ -5,7 +5,8 @@ import { linearToHex } from '../../ui/srgb.js';
 import { el } from '../../ui/el.js';
 import { scrollBox } from '../../ui/scrollBox.js';
 import { lectureNote } from '../../ui/lectureNote.js';
-import { angle, fixed, precise } from '../../ui/format.js';
+import { fixed } from '../../ui/format.js';
+import { metalTableRow } from './metalTableRow.js';
 import { indexText } from '../shared/indexText.js';
 import { materialName } from '../shared/materialName.js';
 import english from 'virtual:messages/en/metals';
@@ -19,11 +20,6 @@ export function swatchColor(rgb) {
 }
 
 const CHANNEL_VARS = { red: '--c-red', green: '--c-green', blue: '--c-blue' };
-
-/** How far below F0 a dip goes: four decimals, or two significant digits where those would read 0.0000. */
-export function belowF0(dip) {
-  return t('belowF0', { value: fixed(dip, 4) === fixed(0, 4) ? precise(dip, 2) : fixed(dip, 4) });
-}
 
 /**
  * host: the panel element. metals: [{ id, name, f0 }]. onPick(id) runs when a metal's swatch is
@@ -112,17 +108,11 @@ export function buildMetalsDom(host, metals, onPick) {
       table.caption.textContent = t('caption', { metal: materialName(metal.id) });
       body.replaceChildren(...stats.map((s, ch) => {
         const row = el('tr');
-        const name = el('th', '', t('channelRow', { channel: s.channel, nm: String(metal.rgbNm[ch]) }));
+        const [channel, ...cells] = metalTableRow(metal, s, ch);
+        const name = el('th', '', channel);
         name.scope = 'row';
         name.style.color = `var(${CHANNEL_VARS[s.channel]})`;
-        const dip = s.dip > 0
-          ? t('lowest', { value: fixed(s.minimum.value, 4), angle: angle(s.minimum.theta), below: belowF0(s.dip) })
-          : t('neverBelow');
-        row.append(name, el('td', '', t('complexIndex', { n: fixed(metal.n[ch], 3), k: fixed(metal.k[ch], 3) })),
-          el('td', '', fixed(s.f0, 4)),
-          el('td', '', t('valueAt', { value: fixed(s.maxError.value, 4), angle: angle(s.maxError.theta) })), el('td', '', dip),
-          el('td', '', t('pseudoBrewster', { angle: angle(s.pseudoBrewster.theta), rp: fixed(s.pseudoBrewster.rp, 3) })),
-          el('td', '', angle(s.principal.theta)));
+        row.append(name, ...cells.map((text) => el('td', '', text)));
         return row;
       }));
     },
