@@ -219,3 +219,25 @@ test('a panel’s current view taken from its preview, the exports, and the audi
   await expect(page.locator('html')).toHaveAttribute('data-theme', 'light');
   expect(await seriousViolations(page), 'light').toEqual([]);
 });
+
+test('in one column (800 px wide) the catalogue scrolls away above the lecture, and a card’s controls take a click', async ({ page }) => {
+  await page.setViewportSize({ width: 800, height: 720 });
+  await openEmpty(page);
+  for (const panel of ['schlick', 'metals', 'spheres']) await page.locator(`.cp-catalogue button[data-panel="${panel}"]`).click();
+  await expect(page.locator('.cp-item')).toHaveCount(3);
+  const [catalogue, lecture] = await Promise.all(['.cp-catalogue', '.cp-lecture'].map((s) => page.locator(s).boundingBox()));
+  expect(lecture.y, 'one column: the lecture below the catalogue').toBeGreaterThanOrEqual(catalogue.y + catalogue.height);
+  // A real click: Playwright clicks only where the button itself is hit, so one under the catalogue fails here.
+  const item = page.locator('.cp-item-panel').first();
+  const show = item.getByRole('button', { name: 'Show the panel' });
+  await show.click({ timeout: 5_000 });
+  await expect(item.getByRole('button', { name: 'Hide the panel' })).toHaveAttribute('aria-expanded', 'true');
+  await expect(item.locator('iframe.cp-frame')).toBeVisible();
+  // Nothing of the catalogue lies over the card where the viewport shows it.
+  const covered = await item.evaluate((card) => {
+    const box = card.getBoundingClientRect();
+    const top = Math.max(box.top, 0) + 4;
+    return [0.1, 0.5, 0.9].some((f) => document.elementFromPoint(box.left + f * box.width, top)?.closest('.cp-catalogue'));
+  });
+  expect(covered).toBe(false);
+});
