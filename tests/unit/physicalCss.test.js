@@ -1,28 +1,7 @@
-// Every style sheet of the lab lays out by reading direction, so that a right-to-left language is a
-// catalogue and a line in languages.js, no CSS: no physical left or right unless a comment says it
-// is geometry, no words in CSS, no change of direction without its reason.
-import { readdirSync, readFileSync } from 'node:fs';
-import { join, relative } from 'node:path';
+// The check that every style sheet of the lab lays out by reading direction (scripts/physicalCss.js,
+// which `npm run lint` runs over the sheets through scripts/lintLines.js) finds what it should.
 import { describe, expect, it } from 'vitest';
 import { directionProblems, physicalReason } from '../../scripts/physicalCss.js';
-
-function sheets(dir) {
-  return readdirSync(dir, { withFileTypes: true }).flatMap((entry) => {
-    const path = join(dir, entry.name);
-    if (entry.isDirectory()) return sheets(path);
-    return entry.name.endsWith('.css') ? [relative('.', path).replaceAll('\\', '/')] : [];
-  });
-}
-
-describe('the lab\'s style sheets', () => {
-  it('use logical properties, physical ones only where marked as geometry', () => {
-    const files = sheets('src');
-    expect(files).toEqual(expect.arrayContaining(['src/styles.css', 'src/homework/page/homework.css', 'src/compose/compose.css',
-      'src/homework/page/classView/classView.css', 'src/panels/schlick/styles.css']));
-    const problems = files.flatMap((path) => directionProblems(readFileSync(path, 'utf8')).map((p) => `${path} ${p}`));
-    expect(problems).toEqual([]);
-  });
-});
 
 describe('what the check finds', () => {
   it('names physical sides, keywords and lopsided shorthands', () => {
