@@ -6,15 +6,9 @@ import english from 'virtual:messages/en/speed-accuracy';
 import { messages } from '../../i18n/messages.js';
 import { contextFor } from '../../methods/rounding.js';
 import { emulationGapWords } from '../shared/emulationGapWords.js';
+import { glslOf } from './glslOf.js';
 
 const t = messages('speed-accuracy', english);
-
-const GLSL = Object.freeze({ 'gpu-highp': 'highp', 'gpu-mediump': 'mediump' });
-
-/** The GLSL precision a source reads back in, or null for the JS emulation. */
-export function glslOf(source) {
-  return GLSL[source] ?? null;
-}
 
 /** A scene precision in words ('fp32' → float32 (highp)); anything else as it is. */
 export const precisionWords = (precision) => (precision === 'fp32' || precision === 'fp16' ? contextFor(precision).label : precision);

@@ -9,7 +9,7 @@ import { benchResults } from '../../methods/benchResults.js';
 import { sceneById } from '../../methods/scenes.js';
 import { ShaderError } from '../../gl/shaderError.js';
 import { createRunGate, isStaleRun } from '../shared/createRunGate.js';
-import { glslOf } from './errorSources.js';
+import { glslOf } from './glslOf.js';
 
 /**
  * The GPU read-back as the runs use it (measureGpuErrors.js), so a stand-in can take its place.

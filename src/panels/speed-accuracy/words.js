@@ -16,9 +16,8 @@ import { sceneById } from '../../methods/scenes.js';
 import { toDegrees } from '../../optics/angles.js';
 import { angle, fixed, tickLabel } from '../../ui/format.js';
 import { pageLocale } from '../../ui/safeLocale.js';
-import {
-  glslOf, mediumpNote, precisionWords, sourceWords,
-} from './errorSources.js';
+import { mediumpNote, precisionWords, sourceWords } from './errorSources.js';
+import { glslOf } from './glslOf.js';
 import { formatCodes, formatNs, shortDecimal } from './formatMeasures.js';
 import { readBackProblem } from './readBackProblem.js';
 
