@@ -7,6 +7,14 @@ import { cosTheta } from './errorMetrics.js';
 import { classifyValue, CLASS_NAMES } from './stabilityMap.js';
 import { DEG } from '../optics/angles.js';
 
+/**
+ * A classified map (classify()'s shape): each cell's class (an index of CLASS_NAMES, row-major),
+ * the count of each class, the grid's θ columns and n_i/n_t rows, the tolerance, the largest
+ * error over the finite cells, and what the map is of.
+ * @typedef {{ cells: Uint8Array, counts: Record<'fine' | 'aboveTolerance' | 'outOfRange' | 'notFinite', number>,
+ *   thetaDeg: Float64Array, ratio: Float64Array, width: number, height: number, tolerance: number, maxError: number,
+ *   methodId: string, precision: string }} GridMap
+ */
 
 /** cos θ of a column, exactly as classify() computes it (cos 90° = 0). */
 export function columnCos(thetaDeg) {
@@ -29,6 +37,7 @@ export function gridInputs({ thetaDeg, ratio, width, height }) {
  * Classifies values (one per cell, row-major) on a map's grid against fresnelExact in float64.
  * grid: { thetaDeg, ratio, width, height, tolerance }. Returns classify()'s shape: { cells, counts,
  * thetaDeg, ratio, width, height, tolerance, maxError, ...labels } (labels: e.g. methodId, precision).
+ * @returns {GridMap}
  */
 export function classifyGrid(values, grid, labels = {}) {
   const { thetaDeg, ratio, width, height, tolerance } = grid;

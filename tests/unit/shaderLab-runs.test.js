@@ -94,7 +94,13 @@ describe('the shader lab runs', () => {
     const { runs, state } = setup({ exercise: 'tir', code: ONES });
     runs.update();
     expect(runs.state.results.map((r) => r.pass)).toEqual([false, true, false, true]);
-    expect(runs.state.results[0].reason).toMatch(/^1\.0000 where the exact R is 0\.\d{4} \(off by 0\.\d{4}, more than 0\.00001\) at θ = /);
+    // From air, R = 1 is right only at θ = 90° (once for each of the three index pairs), and farthest
+    // from the exact R where that is smallest: head-on into water, R0 = (0.33 / 2.33)².
+    const [fromAir] = runs.state.results;
+    expect(fromAir).toMatchObject({ id: 'exactFromAir', code: 'aboveTolerance', target: 'exact', tolerance: 1e-5, failed: fromAir.checked - 3 });
+    expect(fromAir.worst).toMatchObject({ kind: 'aboveTolerance', value: 1, channel: null, case: { thetaDeg: 0, nI: 1, nT: Math.fround(1.33) } });
+    expect(fromAir.worst.reference).toBeCloseTo((0.33 / 2.33) ** 2, 6);
+    expect(fromAir.worst.error).toBeCloseTo(1 - (0.33 / 2.33) ** 2, 6);
     expect(describeText(runs)).toContain('2 of 4 criteria pass (failing: The exact R from air at every angle, grazing included; ');
     state.exercise = 'gold';
     state.code = '';
@@ -106,7 +112,9 @@ describe('the shader lab runs', () => {
   it('shows the driver\'s refusal at the student\'s own lines; a loop is refused before the GPU sees it', () => {
     const { runs, state, fake, onRead } = setup({ code: BROKEN });
     runs.update();
-    expect(runs.state.errors).toEqual([{ line: 3, message: "'c' : undeclared identifier" }, { line: 3, message: "'=' : cannot convert" }]);
+    expect(runs.state.errors).toEqual([
+      { line: 3, code: 'driver', text: "'c' : undeclared identifier" }, { line: 3, code: 'driver', text: "'=' : cannot convert" },
+    ]);
     expect(runs.state.results).toEqual([]);
     expect(summaryText(runs)).toBe('Not graded: see what stopped it above.');
     expect(describeText(runs)).toBe("Write the exact c/g form: not graded; line 3: 'c' : undeclared identifier line 3: '=' : cannot convert");
@@ -116,7 +124,7 @@ describe('the shader lab runs', () => {
     state.code = LOOP;
     const before = sourceCalls(fake, '').length;
     runs.update();
-    expect(runs.state.errors[0]).toEqual({ line: 2, message: expect.stringMatching(/^Loops are refused here/) });
+    expect(runs.state.errors).toEqual([{ line: 2, code: 'loop' }]);
     expect(sourceCalls(fake, '').length).toBe(before);
     expect(onRead).toHaveBeenCalledOnce();
   });

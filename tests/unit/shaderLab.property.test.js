@@ -8,6 +8,8 @@ import { deflateSync } from 'fflate';
 import { decodeCode, encodeCode, useDeflate } from '../../src/panels/shader-lab/codeCodec.js';
 import { WRAPPER_LINE, checkStudentCode, studentFragment } from '../../src/panels/shader-lab/studentShader.js';
 import { readStored, writeStored } from '../../src/panels/shader-lab/storedCode.js';
+import { problemText } from '../../src/panels/shader-lab/words.js';
+import { exerciseById } from '../../src/panels/shader-lab/exercises.js';
 import { schema } from '../../src/panels/shader-lab/schema.js';
 import { parseValue } from '../../src/host/params.js';
 import { anyText, anyValue } from './fuzzArbitraries.js';
@@ -36,12 +38,15 @@ describe('the check before the GPU', () => {
     }), 400);
   });
 
-  it('never throws, and each problem has a message and a line of the code or none', () => {
+  it('never throws, and each problem has a code, words for it and a line of the code or none', () => {
+    const exercise = exerciseById('exact');
     check(fc.property(fc.oneof(assembled, anyText, anyValue), (code) => {
       const problems = checkStudentCode(code);
       const lines = typeof code === 'string' ? code.split(/\r\n?|\n/).length : 0;
-      for (const { line, message } of problems) {
-        expect(typeof message === 'string' && message.length > 0).toBe(true);
+      for (const problem of problems) {
+        const { line } = problem;
+        expect(['noCode', 'tooLong', 'loop', 'continuation', 'directive', 'precision']).toContain(problem.code);
+        expect(problemText(problem, exercise)).toMatch(/^\p{Lu}.*\.$/u);
         expect(line === null || (Number.isInteger(line) && line >= 1 && line <= lines)).toBe(true);
       }
     }), 200);

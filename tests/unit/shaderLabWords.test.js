@@ -1,22 +1,94 @@
 // The shader lab's words come from the catalogue ("shader-lab"; the exercises' titles are the
-// exercise control's options): in the pseudo-locale nothing the lab writes has a word outside the
-// brackets, while the driver's log and the student's code are kept as they were.
+// exercise control's options), and say what the runs keep as codes and numbers: in English as the
+// lab means them, and in the pseudo-locale with no word outside the brackets (the driver's log and
+// the student's code kept as they were).
 import { describe, expect, it, vi } from 'vitest';
 import { createShaderLabRuns } from '../../src/panels/shader-lab/runs.js';
 import {
-  codeErrors, criteriaRows, describeText, mapLabel, mapMessage, mapTitle, noteText, readBackWords, spheresLabel, spheresMessage, summaryText,
+  codeErrors, criteriaRows, criterionLabel, describeText, exerciseTitle, mapLabel, mapMessage, mapTitle, noteText,
+  problemText, readBackWords, reasonText, spheresLabel, spheresMessage, summaryText, whereText,
 } from '../../src/panels/shader-lab/words.js';
 import { EXERCISES, criterion, exerciseById, exerciseMetal } from '../../src/panels/shader-lab/exercises.js';
 import { EXERCISE_IDS } from '../../src/panels/shader-lab/exerciseIds.js';
 import { conductorCases, dielectricCases } from '../../src/panels/shader-lab/gradingCases.js';
 import { errorSummary, gradeCriterion } from '../../src/panels/shader-lab/gradeExercise.js';
-import { checkStudentCode, readCompileLog } from '../../src/panels/shader-lab/studentShader.js';
+import { MAX_CODE, checkStudentCode, readCompileLog } from '../../src/panels/shader-lab/studentShader.js';
 import { createReadBackGpu } from '../../src/panels/shared/createReadBackGpu.js';
 import { GpuFloatUnavailable } from '../../src/gl/evaluateMethodsGpu.js';
 import { ShaderError } from '../../src/gl/shaderError.js';
 import { methodsOfKind } from '../../src/methods/methods.js';
 import { fakeGpu, HALF_PRECISION } from './fakeGpu.js';
 import { usePseudoLocale, wordsOutside } from './inPseudoLocale.js';
+
+const f = Math.fround;
+/** A dielectric case as gradingCases.js makes one (the numbers here are written out, not computed by the lab). */
+const dielectric = (cos, nI, nT, thetaDeg, tag = thetaDeg === null ? 'outside' : 'sweep') => ({
+  cos: f(cos), nI: f(nI), nT: f(nT), thetaDeg, family: 'fromAir', tag, critical: null, exact: 0, schlick: 0,
+});
+const WATER_HEAD_ON = dielectric(1, 1, 1.33, 0);
+/** R = 1 everywhere, graded on exactFromAir: head-on into water is farthest from the exact R. */
+const ONES_FROM_AIR = {
+  id: 'exactFromAir', precision: 'highp', target: 'exact', tolerance: 1e-5, code: 'aboveTolerance', pass: false, checked: 546, failed: 543,
+  worst: { kind: 'aboveTolerance', case: WATER_HEAD_ON, channel: null, value: 1, reference: 0.0200593, error: 0.9799407 },
+};
+const EXACT = exerciseById('exact');
+
+describe('shader lab words in English', () => {
+  it('says a criterion\'s result from its code and numbers, naming its worst case', () => {
+    expect(reasonText(ONES_FROM_AIR))
+      .toBe('1.0000 where the exact R is 0.0201 (off by 0.9799, more than 0.00001) at θ = 0.00°, n_i 1 → n_t 1.33; 543 of 546 fail.');
+    const aboveOne = dielectric(1 + 2 ** -23, 1, 1.5, null);
+    const nan = { kind: 'notFinite', case: aboveOne, channel: null, value: NaN, reference: 0.04, error: NaN };
+    expect(reasonText({ ...ONES_FROM_AIR, code: 'notFinite', target: 'schlick', checked: 18, failed: 9, worst: nan }))
+      .toBe('NaN at cos θ = 1.0000001, n_i 1 → n_t 1.5 (9 of 18 fail).');
+    const gold = { cos: f(0.0001745), n: [0.16, 0.43, 1.38], k: [3.6, 2.5, 1.9], thetaDeg: 89.99, family: 'metal', tag: 'grazing', critical: null, exact: [1, 1, 1] };
+    const red = { kind: 'outOfRange', case: gold, channel: 'red', value: 1.5, reference: 0.99, error: 0.51 };
+    expect(reasonText({ ...ONES_FROM_AIR, code: 'outOfRange', tolerance: 1e-4, checked: 561, failed: 3, worst: red }))
+      .toBe('1.5000, outside [0, 1], at θ = 89.99000° (red) (3 of 561 fail).');
+    const close = { kind: 'fine', case: dielectric(0.745, 1.5, 1, 41.81), channel: null, value: 0.5, reference: 0.5, error: 3e-8 };
+    expect(reasonText({ ...ONES_FROM_AIR, code: 'allWithin', pass: true, failed: 0, worst: close }))
+      .toBe('All 546 values within 0.00001 of the exact R; the largest difference 3.0e−8, at θ = 41.81°, n_i 1.5 → n_t 1.');
+    expect(reasonText({ ...ONES_FROM_AIR, code: 'allSane', target: 'sane', tolerance: null, pass: true, failed: 0, worst: close }))
+      .toBe('All 546 values finite and in [0, 1].');
+    expect(reasonText({ ...ONES_FROM_AIR, code: 'noCase', checked: 0, failed: 0, worst: null })).toBe('No case to check.');
+  });
+
+  it('says what stopped the code from its code and line, and keeps the driver\'s words', () => {
+    const error = new ShaderError({ stage: 'fragment', log: 'the driver said no' });
+    const lab = {
+      exercise: () => EXACT,
+      state: {
+        stalled: false,
+        errors: [
+          { line: 2, code: 'loop' }, { line: null, code: 'tooLong', length: 7000, max: MAX_CODE },
+          { line: 3, code: 'driver', text: "'c' : undeclared identifier" }, { line: null, code: 'afterLastLine', text: "'void' : syntax error" },
+          { line: null, code: 'missingFunction', text: "'fresnel' : no matching overloaded function found" },
+          { line: null, code: 'refused', error },
+        ],
+      },
+    };
+    expect(codeErrors(/** @type {any} */ (lab))).toEqual([
+      { line: 2, message: 'Loops are refused here: a Fresnel function needs none, and a loop that never ends would stall the graphics card.' },
+      { line: null, message: `The code is 7000 characters long; a Fresnel function needs far fewer (at most ${MAX_CODE} here).` },
+      { line: 3, message: "'c' : undeclared identifier" },
+      { line: null, message: "After your last line: 'void' : syntax error (a missing } or ;?)." },
+      {
+        line: null,
+        message: "Define float fresnel(float cosTheta, float nI, float nT): the page calls it ('fresnel' : no matching overloaded function found).",
+      },
+      { line: null, message: error.message },
+    ]);
+    expect(problemText({ line: 1, code: 'directive' }, EXACT)).toMatch(/^Preprocessor lines \(#…\) are refused here/);
+    expect(problemText({ line: 1, code: 'continuation' }, EXACT)).toMatch(/^A backslash at the end of a line is refused here/);
+    expect(problemText({ line: 1, code: 'precision' }, EXACT)).toMatch(/^Precision statements are refused here/);
+    expect(problemText({ line: null, code: 'noCode' }, EXACT)).toBe('There is no code to compile.');
+  });
+
+  it('names the exercises and their criteria', () => {
+    expect(exerciseTitle(EXACT)).toBe('Write the exact c/g form');
+    expect(criterionLabel('tir')).toBe('From inside glass, water and diamond: R = 1 past the critical angle (from 0.001° past it)');
+  });
+});
 
 const clean = (text) => expect(wordsOutside(text), text).toBe('');
 
@@ -30,11 +102,11 @@ describe('shader lab words in another language', () => {
   usePseudoLocale();
 
   it('names every exercise and criterion, and gives every grading reason, from the catalogue', () => {
-    const dielectric = dielectricCases();
+    const dielectricAll = dielectricCases();
     const gold = conductorCases(exerciseMetal(exerciseById('gold')));
     for (const exercise of EXERCISES) {
-      clean(exercise.title);
-      const cases = exercise.kind === 'conductor' ? gold : dielectric;
+      clean(exerciseTitle(exercise));
+      const cases = exercise.kind === 'conductor' ? gold : dielectricAll;
       const answers = exercise.kind === 'conductor'
         ? [Float32Array.from(cases.flatMap((c) => c.exact)), Float32Array.from(cases.flatMap((c, i) => c.exact.map((v) => (i % 5 ? v : 1.5))))]
         : [
@@ -42,22 +114,23 @@ describe('shader lab words in another language', () => {
           Float32Array.from(cases, (c) => c.exact), Float32Array.from(cases, (c) => c.schlick),
         ];
       for (const id of exercise.criteria) {
-        clean(criterion(id).label);
-        for (const values of answers) clean(gradeCriterion(criterion(id), cases, values).reason);
+        clean(criterionLabel(id));
+        for (const values of answers) clean(reasonText(gradeCriterion(criterion(id), cases, values)));
       }
-      clean(errorSummary(cases, answers[1]).where);
+      clean(whereText(errorSummary(cases, answers[1]).worst));
     }
-    clean(gradeCriterion({ ...criterion('tir'), select: () => false }, dielectric, new Float32Array(dielectric.length)).reason);
+    clean(reasonText(gradeCriterion({ ...criterion('tir'), select: () => false }, dielectricAll, new Float32Array(dielectricAll.length))));
   });
 
   it('refuses code in the catalogue\'s words, and keeps the driver\'s', () => {
     for (const code of ['', 'for (;;) {}\n#define x\nprecision highp float;\nx \\\n', 'x'.repeat(7000)]) {
-      for (const { message } of checkStudentCode(code)) clean(message);
+      for (const problem of checkStudentCode(code)) clean(problemText(problem, EXACT));
     }
-    const log = readCompileLog("ERROR: 0:3: 'c' : undeclared\nERROR: 0:10005: syntax error\nERROR: 0:10009: 'x' : no match\n", 'float f()');
-    expect(log[0]).toEqual({ line: 3, message: "'c' : undeclared" });
-    for (const { message } of log.slice(1)) clean(message);
-    expect(log[2].message).toContain("'x' : no match");
+    const log = readCompileLog("ERROR: 0:3: 'c' : undeclared\nERROR: 0:10005: syntax error\nERROR: 0:10009: 'x' : no match\n");
+    expect(problemText(log[0], EXACT)).toBe("'c' : undeclared");
+    for (const problem of log.slice(1)) clean(problemText(problem, EXACT));
+    expect(problemText(log[2], EXACT)).toContain("'x' : no match");
+    clean(problemText({ line: null, code: 'refused', error: new ShaderError({ stage: 'fragment', log: '' }) }, EXACT));
   });
 
   it('says the grade, the maps, the spheres and the GPU\'s problems in the catalogue\'s words', () => {

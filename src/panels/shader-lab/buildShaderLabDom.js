@@ -61,17 +61,18 @@ export function buildShaderLabDom(host) {
     },
     student,
     referenceMap,
+    /** The exercise's title and signature, and its criteria: words, and the reason once graded. */
     setTask(exercise, rows) {
       title.textContent = exercise.title;
       // The sentence split where the signature goes, so a language may put the code anywhere in it.
       const [before, after = ''] = t('task', { signature: SIGNATURE_MARK }).split(SIGNATURE_MARK);
       signature.replaceChildren(before, el('code', null, exercise.signature), after);
-      criteria.replaceChildren(...rows.map(({ label, precision, result }) => {
+      criteria.replaceChildren(...rows.map(({ label, precision, result, reason }) => {
         const item = el('li', `sl-criterion${result ? (result.pass ? ' sl-pass' : ' sl-fail') : ''}`);
         const state = t(result ? (result.pass ? 'passed' : 'failed') : 'notGraded');
         const named = precision === 'mediump' ? t('criterionMediump', { criterion: label }) : label;
         item.append(el('span', 'sl-state', state), ' ', el('span', null, named));
-        if (result) item.append(el('span', 'sl-reason', result.reason));
+        if (result) item.append(el('span', 'sl-reason', reason));
         return item;
       }));
     },

@@ -1,21 +1,41 @@
+// @ts-check
 // The exercises, each with its criteria stated before the student starts: which cases a criterion
 // looks at, in which precision, and how close to the float64 core the function must come there.
 // Tolerances are chosen so that a careful float32 implementation passes on any GPU (the lab's own
 // GLSL twin stays within 2e-6 of the core away from the critical angle), and within 1° of the
 // critical angle, where R is ill-conditioned and float32 cannot follow it, only sanity is asked
-// (finite, in [0, 1]), except past it, where R = 1 is exact. A criterion's words are the
-// catalogue's ("shader-lab": criterion.<id>), an exercise's title the exercise control's option.
-import english from 'virtual:messages/en/shader-lab';
-import { messages } from '../../i18n/messages.js';
+// (finite, in [0, 1]), except past it, where R = 1 is exact. Pure data: a criterion's words and an
+// exercise's title are words.js's (the catalogue's "shader-lab": criterion.<id>, and the exercise
+// control's options).
 import { metalById } from '../../optics/materials.js';
-import { optionLabel } from '../panelText.js';
 
-const t = messages('shader-lab', english);
+/** @typedef {import('./gradingCases.js').GradingCase} GradingCase */
+
+/**
+ * A criterion: the precision it is graded in, what it compares with ('exact': the core's exact R,
+ * 'schlick': Schlick's formula, 'sane': only finite and in [0, 1]), how close (none for 'sane'),
+ * and which cases it looks at.
+ * @typedef {object} Criterion
+ * @property {string} id
+ * @property {'highp' | 'mediump'} precision
+ * @property {'exact' | 'schlick' | 'sane'} target
+ * @property {number} [tolerance]
+ * @property {(c: GradingCase) => boolean} select
+ */
+
+/**
+ * An exercise: its kind ('dielectric': fresnel(cos, nI, nT); 'conductor': fresnelConductor(cos, n,
+ * k) for its metal), its criteria's ids, a reference answer, the code it starts from, and the
+ * signature the page calls.
+ * @typedef {{ id: string, kind: 'dielectric' | 'conductor', metal?: string, criteria: string[], reference: string,
+ *   start: string, signature: string }} Exercise
+ */
 
 const awayFromCritical = (c) => c.critical === null || Math.abs(c.thetaDeg - c.critical) >= 1;
 const inRange = (c) => c.tag !== 'outside';
 
 /** Criterion kinds: 'exact' compares with the core's exact R, 'schlick' with Schlick's formula. */
+/** @type {Record<string, Omit<Criterion, 'id'>>} */
 const CRITERIA = {
   schlickFromAir: {
     precision: 'highp', target: 'schlick', tolerance: 1e-5, select: (c) => c.family === 'fromAir' && inRange(c),
@@ -136,14 +156,17 @@ const START = `${DIELECTRIC_SIGNATURE} {
   return 0.0;
 }`;
 
-/** An exercise with its signature, and its title in the page's language (read when it is shown). */
-function withWords(exercise) {
-  const made = { ...exercise, signature: exercise.kind === 'conductor' ? CONDUCTOR_SIGNATURE : DIELECTRIC_SIGNATURE };
-  const title = { get: () => optionLabel('shader-lab', 'exercise', exercise.id), enumerable: true };
-  return Object.freeze(Object.defineProperty(made, 'title', title));
+/**
+ * An exercise with the signature the page calls.
+ * @param {Omit<Exercise, 'signature'>} exercise
+ * @returns {Readonly<Exercise>}
+ */
+function withSignature(exercise) {
+  return Object.freeze({ ...exercise, signature: exercise.kind === 'conductor' ? CONDUCTOR_SIGNATURE : DIELECTRIC_SIGNATURE });
 }
 
-export const EXERCISES = Object.freeze([
+/** @type {ReadonlyArray<Readonly<Exercise>>} */
+export const EXERCISES = Object.freeze(/** @type {Array<Omit<Exercise, 'signature'>>} */ ([
   {
     id: 'schlick', kind: 'dielectric',
     criteria: ['schlickFromAir', 'schlickClamped'], reference: SCHLICK, start: START,
@@ -165,12 +188,16 @@ export const EXERCISES = Object.freeze([
       + '  // n + ik: gold\'s complex index per channel (red 650 nm, green 550 nm, blue 450 nm).\n'
       + '  return vec3(0.0);\n}',
   },
-].map(withWords));
+]).map(withSignature));
 
 export const EXERCISE_IDS = EXERCISES.map((e) => e.id);
-export const exerciseById = (id) => EXERCISES.find((e) => e.id === id);
-/** A criterion with its words (label) in the page's language. */
-export const criterion = (id) => ({ id, label: t(`criterion.${id}`), ...CRITERIA[id] });
+export const exerciseById = (/** @type {string} */ id) => EXERCISES.find((e) => e.id === id);
+/**
+ * A criterion by its id.
+ * @param {string} id
+ * @returns {Criterion}
+ */
+export const criterion = (id) => ({ id, ...CRITERIA[id] });
 /** The exact function for an exercise's kind: what the right-hand sphere is shaded with. */
-export const exactReference = (exercise) => (exercise.kind === 'conductor' ? CONDUCTOR : EXACT);
-export const exerciseMetal = (exercise) => (exercise.metal ? metalById(exercise.metal) : null);
+export const exactReference = (/** @type {Exercise} */ exercise) => (exercise.kind === 'conductor' ? CONDUCTOR : EXACT);
+export const exerciseMetal = (/** @type {Exercise} */ exercise) => (exercise.metal ? metalById(exercise.metal) : null);

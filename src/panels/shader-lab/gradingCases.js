@@ -3,10 +3,28 @@
 // ± tiny steps, grazing up to exactly 90°, cos θ a hair above 1 (interpolated normals) and below 0,
 // and matched or nearly matched indices. Inputs are rounded to float32 first, as a uniform or a
 // texture hands them to the GPU, and the reference is computed at those rounded inputs, so the
-// comparison measures the student's arithmetic, not the rounding of the question.
+// comparison measures the student's arithmetic, not the rounding of the question. A case in words
+// is words.js's (caseText).
 import { DEG, cosDeg } from '../../optics/angles.js';
 import { criticalAngle, fresnelConductor, fresnelExact, fresnelSchlick } from '../../optics/fresnel.js';
-import { fixed, MINUS } from '../../ui/format.js';
+
+/** @typedef {'sweep' | 'grazing' | 'critical' | 'outside'} CaseTag */
+
+/**
+ * A dielectric case: cos θ, the indices, θ in degrees (null for cos outside [0, 1]), its family of
+ * index pairs and its tag, θc in degrees (null without one), and the core's exact R and Schlick's.
+ * @typedef {{ cos: number, nI: number, nT: number, thetaDeg: number | null, family: string, tag: CaseTag,
+ *   critical: number | null, exact: number, schlick: number }} DielectricCase
+ */
+
+/**
+ * A conductor case: cos θ, the metal's n and k per channel (red, green, blue), θ in degrees (null
+ * for cos outside [0, 1]), its tag, no critical angle, and the core's exact R per channel.
+ * @typedef {{ cos: number, n: number[], k: number[], thetaDeg: number | null, family: 'metal', tag: CaseTag,
+ *   critical: null, exact: number[] }} ConductorCase
+ */
+
+/** @typedef {DielectricCase | ConductorCase} GradingCase */
 
 const f = Math.fround;
 const clamp01 = (x) => Math.min(1, Math.max(0, x));
@@ -28,6 +46,7 @@ const OUTSIDE = [1 + 1e-7, 1 + 1e-6, 1 + 1e-3, -1e-7, -1e-6, -1e-3]; // cos θ o
  * critical (θc in degrees or null), exact, schlick }] with tag 'sweep' | 'grazing' | 'critical' |
  * 'outside'. exact and schlick are the float64 core's at the float32 inputs, cos clamped to [0, 1]
  * as the core's contract does.
+ * @returns {DielectricCase[]}
  */
 export function dielectricCases() {
   const cases = [];
@@ -54,7 +73,10 @@ export function dielectricCases() {
   return cases;
 }
 
-/** The conductor cases for one metal ({ n: [r, g, b], k: [r, g, b] }): θ sweep, grazing and cos outside [0, 1]. */
+/**
+ * The conductor cases for one metal ({ n: [r, g, b], k: [r, g, b] }): θ sweep, grazing and cos outside [0, 1].
+ * @returns {ConductorCase[]}
+ */
 export function conductorCases(metal) {
   const n = metal.n.map(f);
   const k = metal.k.map(f);
@@ -65,11 +87,15 @@ export function conductorCases(metal) {
   ];
   return angles.map(([cos, thetaDeg, tag]) => {
     const c = f(cos);
-    return { cos: c, n, k, thetaDeg, tag, family: 'metal', exact: n.map((ni, ch) => fresnelConductor(clamp01(c), ni, k[ch])) };
+    const exact = n.map((ni, ch) => fresnelConductor(clamp01(c), ni, k[ch]));
+    return { cos: c, n, k, thetaDeg, tag, family: 'metal', critical: null, exact };
   });
 }
 
-/** 4 floats per case for the GPU: (cos, nI, nT, 0) or (cos, n.rgb); extra: (k.rgb, 0) for conductors. */
+/**
+ * 4 floats per case for the GPU: (cos, nI, nT, 0) or (cos, n.rgb); extra: (k.rgb, 0) for conductors.
+ * @param {GradingCase[]} cases
+ */
 export function caseInputs(cases) {
   const inputs = new Float32Array(cases.length * 4);
   const extra = new Float32Array(cases.length * 4);
@@ -82,18 +108,4 @@ export function caseInputs(cases) {
     }
   });
   return { inputs, extra };
-}
-
-/** The shortest decimal that reads back as this float32 (1 + 2⁻²³ is 1.0000001). */
-const shortFloat32 = (x) => {
-  for (let p = 1; p < 9; p += 1) if (Math.fround(Number(x.toPrecision(p))) === x) return String(Number(x.toPrecision(p)));
-  return String(x);
-};
-
-/** A case in words, for a reason or a table: "θ = 41.81°, n_i 1.5 → n_t 1" or "cos θ = 1.0000001, …". */
-export function caseText(c) {
-  const angle = c.thetaDeg === null
-    ? `cos θ = ${shortFloat32(c.cos).replace('-', MINUS)}`
-    : `θ = ${fixed(c.thetaDeg, c.tag === 'critical' || c.tag === 'grazing' ? 5 : 2)}°`;
-  return c.n ? angle : `${angle}, n_i ${c.nI.toPrecision(5).replace(/\.?0+$/, '')} → n_t ${c.nT.toPrecision(5).replace(/\.?0+$/, '')}`;
 }

@@ -13,7 +13,7 @@ import { buildShaderLabDom } from './buildShaderLabDom.js';
 import { createCodeEditor } from './createCodeEditor.js';
 import { createShaderLabRuns } from './runs.js';
 import {
-  codeErrors, criteriaRows, describeText, gradeCsv, mapLabel, mapMessage, mapTitle, noteText, readBackWords,
+  codeErrors, criteriaRows, describeText, exerciseTitle, gradeCsv, mapLabel, mapMessage, mapTitle, noteText, readBackWords,
   spheresLabel, spheresMessage, summaryText,
 } from './words.js';
 import { createSpherePainter } from './paintSpheres.js';
@@ -94,7 +94,7 @@ export function mount(root, ctx) {
     const ex = runs.exercise();
     const { state } = runs;
     const errors = codeErrors(runs);
-    dom.setTask(ex, criteriaRows(runs));
+    dom.setTask({ title: exerciseTitle(ex), signature: ex.signature }, criteriaRows(runs));
     editor.setErrors(errors.filter((e) => e.line !== null));
     dom.setErrors(errors);
     showButtons();
@@ -159,7 +159,8 @@ export function mount(root, ctx) {
       ]);
       const parts = sides.filter(({ side }) => state.maps[side])
         .map(({ side, title }) => ({ canvas: figures[side].canvas, title, map: state.maps[side] }));
-      if (parts.length) return composePng(parts, t('pngCaption', { exercise: runs.exercise().title, precision: values.precision }));
+      const caption = t('pngCaption', { exercise: exerciseTitle(runs.exercise()), precision: values.precision });
+      if (parts.length) return composePng(parts, caption);
       return state.summary && !state.spheres ? dom.spheresCanvas.toDataURL('image/png') : null; // the conductor: its spheres
     },
     dispose() {

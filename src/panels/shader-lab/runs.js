@@ -5,7 +5,8 @@
 // and the spheres painted with it. The GPU is a read-back GPU (createReadBackGpu.js) whose prepared
 // part is the sphere painter; in Node a stand-in. The code is only ever compiled by the GPU driver,
 // never run as JavaScript (studentShader.js refuses loops, directives and line continuations
-// first). What the lab says of its grade is words.js's: these runs keep causes as data.
+// first). What the lab says of its grade is words.js's: these runs, and the helpers they import,
+// keep codes and numbers (a problem's code and line, a criterion's result and its worst case).
 import { ShaderError } from '../../gl/shaderError.js';
 import { classifyGrid, gridInputs } from '../../methods/classifyGrid.js';
 import { classify } from '../../methods/stabilityMap.js';
@@ -16,8 +17,10 @@ import { errorSummary, gradeExercise } from './gradeExercise.js';
 import { checkStudentCode, readCompileLog, studentFragment } from './studentShader.js';
 
 /** @typedef {import('../shared/createReadBackGpu.js').ReadBackGpu} ReadBackGpu */
+/** @typedef {import('../../methods/classifyGrid.js').GridMap} GridMap */
+/** @typedef {import('./gradingCases.js').GradingCase} GradingCase */
+/** @typedef {import('./exercises.js').Exercise} Exercise */
 /** @typedef {'student' | 'reference'} MapSide */
-/** @typedef {{ line: number | null, message: string }} CodeError */
 
 /**
  * Why there are no spheres: the code was not graded (it did not compile or run, or the GPU could
@@ -26,6 +29,21 @@ import { checkStudentCode, readCompileLog, studentFragment } from './studentShad
  * @typedef {'notGraded' | ShaderError | null} SpheresStop
  */
 
+/**
+ * The last grade.
+ * @typedef {object} Grade
+ * @property {import('./gradeExercise.js').CriterionResult[]} results  one per criterion of the exercise (gradeExercise)
+ * @property {import('./gradeExercise.js').ErrorSummary | null} summary  the error against the exact R in highp (errorSummary)
+ * @property {import('./studentShader.js').CodeProblem[]} errors  what refused the code (the page's check or the driver), as codes
+ *   at the student's lines
+ * @property {boolean} stalled  the code was held back: the GPU stopped responding while it was graded before
+ * @property {Partial<Record<Precision, Float32Array>>} values  the read-back per precision
+ * @property {Record<MapSide, GridMap | null>} maps  the stability maps (dielectric exercises)
+ * @property {SpheresStop} spheres  why there are no spheres (null: they can be drawn)
+ */
+
+/** @typedef {'highp' | 'mediump'} Precision */
+/** @type {ReadonlyArray<Precision>} */
 export const PRECISIONS = Object.freeze(['highp', 'mediump']);
 const MAP_GRID = { width: 91, height: 54 }; // θ every 1°, n_i/n_t from 0.4 to 2.5
 
@@ -39,8 +57,9 @@ export function createShaderLabRuns({ values, gpu, onRead = () => {} }) {
   const grading = gpu.gate(); // one grading at a time: a newer one, a loss or dispose makes it stale
   const exercise = () => exerciseById(values.exercise);
   const code = () => values.code || exercise().start;
+  /** @type {Map<string, GradingCase[]>} */
   const casesCache = new Map();
-  const casesOf = (ex) => {
+  const casesOf = (/** @type {Exercise} */ ex) => {
     if (!casesCache.has(ex.id)) casesCache.set(ex.id, ex.kind === 'conductor' ? conductorCases(exerciseMetal(ex)) : dielectricCases());
     return casesCache.get(ex.id);
   };
@@ -52,16 +71,6 @@ export function createShaderLabRuns({ values, gpu, onRead = () => {} }) {
   // is not graded again by itself (the Grade button still does).
   let stalled = null;
 
-  /**
-   * @typedef {object} Grade
-   * @property {any[]} results  one per criterion of the exercise (gradeExercise)
-   * @property {any} summary  errorSummary in highp, or null
-   * @property {CodeError[]} errors  what refused the code (the page's check or the driver), by the student's line
-   * @property {boolean} stalled  the code was held back: the GPU stopped responding while it was graded before
-   * @property {Record<string, Float32Array>} values  the read-back per precision
-   * @property {{ student: any, reference: any }} maps  the stability maps (dielectric exercises)
-   * @property {SpheresStop} spheres  why there are no spheres (null: they can be drawn)
-   */
   /** @type {Grade} */
   let state = {
     results: [], summary: null, errors: [], stalled: false, values: {}, maps: { student: null, reference: null }, spheres: null,
@@ -126,8 +135,8 @@ export function createShaderLabRuns({ values, gpu, onRead = () => {} }) {
         return;
       }
       if (error instanceof ShaderError) {
-        next.errors = readCompileLog(error.log, ex.signature);
-        if (!next.errors.length) next.errors = [{ line: null, message: error.message }];
+        next.errors = readCompileLog(error.log);
+        if (!next.errors.length) next.errors = [{ line: null, code: 'refused', error }];
         return;
       }
       throw error;
