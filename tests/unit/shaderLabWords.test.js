@@ -1,11 +1,12 @@
 // The shader lab's words come from the catalogue ("shader-lab"; the exercises' titles are the
 // exercise control's options), and say what the runs keep as codes and numbers: in English as the
-// lab means them, and in the pseudo-locale with no word outside the brackets (the driver's log and
-// the student's code kept as they were).
-import { describe, expect, it, vi } from 'vitest';
+// lab means them, in the pseudo-locale with no word outside the brackets (the driver's log and
+// the student's code kept as they were), and in Spanish with every number's decimal comma.
+import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
+import spanish from 'virtual:messages/es';
 import { createShaderLabRuns } from '../../src/panels/shader-lab/runs.js';
 import {
-  codeErrors, criteriaRows, criterionLabel, describeText, exerciseTitle, mapLabel, mapMessage, mapTitle, noteText,
+  caseText, codeErrors, criteriaRows, criterionLabel, describeText, exerciseTitle, mapLabel, mapMessage, mapTitle, noteText,
   problemText, readBackWords, reasonText, spheresLabel, spheresMessage, summaryText, whereText,
 } from '../../src/panels/shader-lab/words.js';
 import { EXERCISES, criterion, exerciseById, exerciseMetal } from '../../src/panels/shader-lab/exercises.js';
@@ -17,6 +18,8 @@ import { createReadBackGpu } from '../../src/panels/shared/createReadBackGpu.js'
 import { GpuFloatUnavailable } from '../../src/gl/evaluateMethodsGpu.js';
 import { ShaderError } from '../../src/gl/shaderError.js';
 import { methodsOfKind } from '../../src/methods/methods.js';
+import { setCatalogue } from '../../src/i18n/messages.js';
+import { setNumberLocale } from '../../src/ui/format.js';
 import { fakeGpu, HALF_PRECISION } from './fakeGpu.js';
 import { usePseudoLocale, wordsOutside } from './inPseudoLocale.js';
 
@@ -53,6 +56,14 @@ describe('shader lab words in English', () => {
     expect(reasonText({ ...ONES_FROM_AIR, code: 'noCase', checked: 0, failed: 0, worst: null })).toBe('No case to check.');
   });
 
+  it('writes cos θ outside [0, 1] as the shortest decimal of its float32, a tiny one in e-notation', () => {
+    expect(caseText(dielectric(1 + 1e-6, 1, 1.33, null))).toBe('cos θ = 1.000001, n_i 1 → n_t 1.33');
+    expect(caseText(dielectric(-1e-3, 1.5, 1, null))).toBe('cos θ = −0.001, n_i 1.5 → n_t 1');
+    expect(caseText(dielectric(-1e-7, 1.333, 1.3331, null))).toBe('cos θ = −1e−7, n_i 1.333 → n_t 1.3331');
+    expect(caseText(dielectric(0.7454, 1.5, 1, 41.81031, 'critical'))).toBe('θ = 41.81031°, n_i 1.5 → n_t 1');
+    expect(whereText({ case: WATER_HEAD_ON, channel: 'blue' })).toBe('θ = 0.00°, n_i 1 → n_t 1.33 (blue)');
+  });
+
   it('says what stopped the code from its code and line, and keeps the driver\'s words', () => {
     const error = new ShaderError({ stage: 'fragment', log: 'the driver said no' });
     const lab = {
@@ -87,6 +98,31 @@ describe('shader lab words in English', () => {
   it('names the exercises and their criteria', () => {
     expect(exerciseTitle(EXACT)).toBe('Write the exact c/g form');
     expect(criterionLabel('tir')).toBe('From inside glass, water and diamond: R = 1 past the critical angle (from 0.001° past it)');
+  });
+});
+
+describe('shader lab numbers in Spanish', () => {
+  beforeAll(() => {
+    setCatalogue('es', spanish);
+    setNumberLocale('es');
+  });
+  afterAll(() => {
+    setCatalogue('en', null);
+    setNumberLocale('en');
+  });
+
+  it('writes each number of a case with the decimal comma, as the angles beside them', () => {
+    expect(caseText(dielectric(0, 1.5, 1.33, 90))).toBe('θ = 90,00°, n_i 1,5 → n_t 1,33');
+    expect(caseText(dielectric(1 + 2 ** -23, 1, 1.5, null))).toBe('cos θ = 1,0000001, n_i 1 → n_t 1,5');
+    expect(caseText(dielectric(-1e-7, 1.333, 1.3331, null))).toBe('cos θ = −1e−7, n_i 1,333 → n_t 1,3331');
+    for (const c of [...dielectricCases(), ...conductorCases(exerciseMetal(exerciseById('gold')))]) {
+      expect(caseText(c)).not.toMatch(/\d\.\d/);
+    }
+  });
+
+  it('says a reason in Spanish, every number in it with the comma', () => {
+    expect(reasonText(ONES_FROM_AIR))
+      .toBe('1,0000 donde la R exacta da 0,0201 (se desvía 0,9799, más de 0,00001) en θ = 0,00°, n_i 1 → n_t 1,33; fallan 543 de 546.');
   });
 });
 

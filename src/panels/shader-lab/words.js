@@ -3,12 +3,12 @@
 // their reasons, the line under the code, the note on mediump, the words in place of the spheres
 // and the maps, the maps' titles and names, the description and the CSV. Pure functions of the
 // values and of what the runs hold (runs.js keeps codes and numbers). Every sentence is the
-// catalogue's ("shader-lab"), numbers written by src/ui/format.js; the driver's log and the
+// catalogue's ("shader-lab"), every number written by src/ui/format.js; the driver's log and the
 // student's code are kept as they were.
 import english from 'virtual:messages/en/shader-lab';
 import { messages } from '../../i18n/messages.js';
 import { refusalLine, shaderErrorMessage } from '../../gl/shaderError.js';
-import { fixed, MINUS, precise, sci, tickLabel } from '../../ui/format.js';
+import { angle, fixed, precise, rounded, sci, tickLabel } from '../../ui/format.js';
 import { optionLabel } from '../panelText.js';
 import { criterion } from './exercises.js';
 import { PRECISIONS } from './runs.js';
@@ -52,12 +52,17 @@ export const exerciseTitle = (/** @type {Exercise} */ exercise) => optionLabel('
 /** What a criterion asks, by its id. */
 export const criterionLabel = (/** @type {string} */ id) => t(`criterion.${id}`);
 
-/** The shortest decimal that reads back as this float32 (1 + 2⁻²³ is 1.0000001). */
-const shortFloat32 = (/** @type {number} */ x) => {
-  for (let p = 1; p < 9; p += 1) if (Math.fround(Number(x.toPrecision(p))) === x) return String(Number(x.toPrecision(p)));
-  return String(x);
-};
-const indexText = (/** @type {number} */ n) => n.toPrecision(5).replace(/\.?0+$/, '');
+/**
+ * A float32 input as the shortest decimal that gives it back (1 + 2⁻²³ is 1.0000001, fround(1.33)
+ * is 1.33), tiny ones in e-notation (−1e−7): the decimals it needs, found as toFixed rounds.
+ * @param {number} x
+ */
+function float32Text(x) {
+  let decimals = 0;
+  while (decimals < 9 && Math.fround(rounded(x, decimals)) !== x) decimals += 1;
+  if (x === 0 || Math.abs(x) >= 1e-3) return fixed(x, decimals);
+  return sci(x, Math.max(0, decimals + Math.floor(Math.log10(Math.abs(x)))));
+}
 
 /**
  * A case as a reason or the CSV names it: "θ = 41.81°, n_i 1.5 → n_t 1" or "cos θ = 1.0000001, …",
@@ -66,9 +71,9 @@ const indexText = (/** @type {number} */ n) => n.toPrecision(5).replace(/\.?0+$/
  */
 export function caseText(c) {
   const where = c.thetaDeg === null
-    ? `cos θ = ${shortFloat32(c.cos).replace('-', MINUS)}`
-    : `θ = ${fixed(c.thetaDeg, c.tag === 'critical' || c.tag === 'grazing' ? 5 : 2)}°`;
-  return 'n' in c ? where : `${where}, n_i ${indexText(c.nI)} → n_t ${indexText(c.nT)}`;
+    ? `cos θ = ${float32Text(c.cos)}`
+    : `θ = ${angle(c.thetaDeg, c.tag === 'critical' || c.tag === 'grazing' ? 5 : 2)}`;
+  return 'n' in c ? where : `${where}, n_i ${float32Text(c.nI)} → n_t ${float32Text(c.nT)}`;
 }
 
 /**
