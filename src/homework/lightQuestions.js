@@ -24,6 +24,9 @@ const reflectance = (nI, nT) => (t) => fresnelExact(cosDeg(t), nI, nT);
 /** @type {(nT: number) => (thetaDeg: number) => number} */
 const schlickGap = (nT) => (t) => schlickErrorAt(t, 1, nT);
 const ASPHALT_ROUGHNESS = 0.8;
+// Measured with the panel's hover readout (angle to 0.1°, both parts to 3 decimals): where the shown parts
+// are equal lies within 0.48° of the crossing for every parameter set (tests/unit/homeworkGraded.test.js).
+const OUTSHINE_TOLERANCE = 0.5;
 // A sun-ward spot of the asphalt panel's road, seen belowDeg below the horizon: the specular part's
 // share of the light it sends towards the eye (0.5 where specular equals diffuse). On a flat road
 // under a far sun and sky it depends on the direction alone, not on the camera or its framing.
@@ -69,17 +72,18 @@ export const LIGHT_QUESTIONS = [
     state: () => ({ technique: 'toksvig' }),
   }),
   question({
-    id: 'asphalt-outshine', panel: 'asphalt', kind: 'predict', unit: 'deg', tolerance: 2,
-    graded: 'How far below the horizon a sun-ward spot of road is seen when the sun\'s highlight there is as bright as the diffuse '
-      + 'road (lit by sun and sky; the panel, and the question, leave out the sky\'s own mirror image). On a flat road under a far '
-      + 'sun and sky it depends on that direction alone, not on the camera or its field of view; the panel\'s hover readout gives '
-      + 'each spot\'s angle below the horizon with both parts.',
-    axis: () => t('asphalt-outshine.axis'),
-    axisInText: () => t('asphalt-outshine.axisInText'), // the axis as a sentence names it
+    id: 'asphalt-outshine', panel: 'asphalt', kind: 'numeric', unit: 'deg', tolerance: OUTSHINE_TOLERANCE,
+    graded: 'How far below the horizon a sun-ward spot of road is seen where the sun\'s highlight there is as bright as the diffuse '
+      + 'road (lit by sun and sky; the panel leaves out the sky\'s own mirror image), measured with the panel\'s hover readout. '
+      + 'It is a property of the panel\'s scene (its sun and sky light and its road\'s albedo set the diffuse part), which the '
+      + 'prompt names as the panel\'s; on a flat road under a far sun and sky it depends on that direction alone, not on the '
+      + 'camera or its field of view. The readout gives the angle to 0.1° and both parts to 3 decimals: every angle at which it '
+      + 'shows the two parts equal lies within the tolerance of the crossing.',
     params: (rng) => ({ nT: rng.pick([1.5, 1.55, 1.6]), sunEl: rng.pick([10, 15, 20]) }),
-    prompt: (p) => t('asphalt-outshine.prompt', { nT: number(p.nT), roughness: number(ASPHALT_ROUGHNESS), sunEl: number(p.sunEl) }),
+    prompt: (p) => t('asphalt-outshine.prompt', {
+      nT: number(p.nT), roughness: number(ASPHALT_ROUGHNESS), sunEl: number(p.sunEl), tolerance: number(OUTSHINE_TOLERANCE),
+    }),
     expected: (p) => angleWhere(specularShare(p), 0.5, 0.5, 90),
-    curve: (p) => ({ label: t('asphalt-outshine.curve'), f: specularShare(p), level: 0.5 }),
     state: (p) => ({ nT: p.nT, sunEl: p.sunEl, roughness: ASPHALT_ROUGHNESS, camEl: 90, fresnel: true }),
   }),
   question({

@@ -1,3 +1,5 @@
+import { readFileSync } from 'node:fs';
+import { resolve } from 'node:path';
 import { describe, expect, it } from 'vitest';
 import { hashSeed, newSeed, seededRandom } from '../../src/homework/seededRandom.js';
 import { parseAnswer } from '../../src/homework/parseAnswer.js';
@@ -134,6 +136,22 @@ describe('the questions', () => {
     expect(at('snell-angle', { theta: 30, nT: 1.5 })).toBeCloseTo(Math.asin(0.5 / 1.5) / DEG, 12);
     // Toksvig: |N_a| = 0.95, s = 64 gives s/(1 + s(1 − L)/L) = 64/(1 + 64·0.05/0.95).
     expect(at('toksvig-exponent', { L: 0.95, s: 64 })).toBeCloseTo(64 / (1 + (64 * 0.05) / 0.95), 12);
+  });
+  it('no prediction asks the student to use its panel, which stays hidden until every prediction is locked', () => {
+    // buildQuestionCard shows a sheet's panels only once each prediction is committed (homework.card.panelWaits), and a
+    // committed prediction cannot change: a prompt that sends the student to the panel asks for what cannot be done.
+    const usesPanel = /\bhover|\bread-?out|\bdrag|\btap\b|\bslider|\bmeasure|lower the camera|the panel shows|\b(in|on) the panel\b/i;
+    const usesPanelEs = /pasa el cursor|\blectura\b|arrastra|deslizador|\bmide\b|baja la cámara|el panel muestra|\ben el panel\b/i;
+    const spanish = JSON.parse(readFileSync(resolve(import.meta.dirname, '../../locales/es.json'), 'utf8')).questions;
+    const predictions = QUESTIONS.filter((q) => q.kind === 'predict');
+    expect(predictions.length).toBeGreaterThan(0);
+    for (const q of predictions) {
+      for (const p of allParams(q)) expect(q.prompt(p), q.id).not.toMatch(usesPanel);
+      expect(spanish[`${q.id}.prompt`], q.id).not.toMatch(usesPanelEs);
+    }
+    // The words it looks for are the ones such a prompt uses.
+    expect('Lower the camera and hover the road: the readout gives each spot\'s angle').toMatch(usesPanel);
+    expect('Baja la cámara y pasa el cursor por la carretera: la lectura da el ángulo').toMatch(usesPanelEs);
   });
   it('each question\'s start state for its panel is valid there', async () => {
     const { applyParams, defaults } = await import('../../src/host/params.js');
