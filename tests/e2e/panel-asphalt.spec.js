@@ -29,6 +29,24 @@ test('mounts in an embed with a labelled canvas and the key numbers', async ({ p
   await expect(page.locator('.panel-description')).toContainText('less than its diffuse albedo of 9.0 %; that light is concentrated');
 });
 
+test('how concentrated the light is reads the same from every camera; with n_t = 1 no highlight is named', async ({ page }) => {
+  await openLab(page, `${EMBED}&camEl=90`);
+  const description = page.locator('.panel-description');
+  const shape = async () => (await description.textContent()).replace(/^.*that light is /s, '');
+  await expect(description).toContainText('Camera 90° above the road');
+  const overhead = await shape();
+  expect(overhead).toMatch(/^concentrated: seen from its brightest direction, 0\.0° below the horizon, the sun's highlight has 90\.4 times/);
+  await page.evaluate(() => window.fresnelLab.hosts.asphalt.set({ camEl: 6 }));
+  await expect(description).toContainText('Camera 6° above the road');
+  expect(await shape()).toBe(overhead);
+  await page.evaluate(() => window.fresnelLab.hosts.asphalt.set({ nT: 1 }));
+  const entry = (term) => page.locator('.asphalt-summary div', { hasText: term }).locator('dd');
+  await expect(entry('Specular reflection')).toHaveText('none: with n_t = 1 the binder matches air, so F = 0 at every angle');
+  await expect(page.locator('.asphalt-summary')).not.toContainText('Brightest highlight in view');
+  await expect(page.locator('.asphalt-summary')).not.toContainText('Highlight ÷ diffuse');
+  await expect(description).toContainText('so the road has no specular reflection');
+});
+
 test('the highlight is bright near grazing, absent overhead, and weak without Fresnel', async ({ page }) => {
   await openLab(page, `${EMBED}&camEl=90`);
   const overhead = await probeWith(page, {});

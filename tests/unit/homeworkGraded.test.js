@@ -11,6 +11,7 @@ import { columnCos } from '../../src/methods/classifyGrid.js';
 import { fresnelR } from './oracle/rightAnswers.js';
 import { brewsterDegrees, conductorR, cosOfDegrees, criticalDegrees, dielectricR, dielectricSP } from './oracle/fresnelOracle.js';
 import materials from '../../src/optics/materials.json';
+import { roadSpot } from './oracle/roadOracle.js';
 
 const DEG = Math.PI / 180;
 const num = (decimal) => decimal.toNumber();
@@ -49,28 +50,6 @@ const schlickPlain = (thetaDeg, nI, nT) => {
   const r0 = ((nT - nI) / (nT + nI)) ** 2;
   return r0 + (1 - r0) * (1 - Math.cos(thetaDeg * DEG)) ** 5;
 };
-
-// The asphalt scene, shaded from the formulas (not the panel's model): GGX D (Walter et al. 2007, eq. 33),
-// height-correlated Smith G2 (Heitz 2014, eq. 99), Cook–Torrance, Lambert, Rec. 709 luminance.
-// Scene constants as the panel states them: sun and sky light, albedo 0.09.
-const SUN = [3.6, 3.3, 2.9];
-const SKY = [0.16, 0.2, 0.27];
-const Y = (rgb) => 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
-function roadSpot(belowDeg, { sunEl, roughness, nT }) {
-  const a2 = roughness ** 4; // α = roughness²
-  const l = [0, Math.sin(sunEl * DEG), Math.cos(sunEl * DEG)];
-  const v = [0, Math.sin(belowDeg * DEG), -Math.cos(belowDeg * DEG)]; // from the spot back to the eye
-  const hRaw = l.map((x, i) => x + v[i]);
-  const h = hRaw.map((x) => x / Math.hypot(...hRaw));
-  const cosD = l[0] * h[0] + l[1] * h[1] + l[2] * h[2];
-  const D = a2 / (Math.PI * (h[1] * h[1] * (a2 - 1) + 1) ** 2);
-  const lambda = (c) => (Math.sqrt(1 + a2 * (1 / (c * c) - 1)) - 1) / 2;
-  const G2 = 1 / (1 + lambda(l[1]) + lambda(v[1]));
-  const F = fresnelPlain(Math.acos(cosD) / DEG, 1, nT);
-  const specular = ((D * G2 * F) / (4 * l[1] * v[1])) * Y(SUN) * l[1];
-  const diffuse = 0.09 * ((Y(SUN) * l[1]) / Math.PI + Y(SKY));
-  return { specular, diffuse };
-}
 
 /** For each question id: a check of its graded quantity for one parameter set p. */
 const CHECKS = {

@@ -13,10 +13,11 @@ import { DEG } from '../../optics/angles.js';
 import { normalIncidence } from '../../optics/fresnel.js';
 import { startWebGL } from '../shared/startWebGL.js';
 import { readByPointer } from '../../ui/readByPointer.js';
-import { fixed, tickLabel } from '../../ui/format.js';
+import { fixed } from '../../ui/format.js';
 import {
-  SCENE, cameraBasis, highlightInView, lambertianEquivalent, pixelRay, shadeRoad, sheenGrowth, specularAlbedo, sunDirection,
+  SCENE, brightestSightLine, cameraBasis, highlightInView, pixelRay, shadeRoad, sheenGrowth, specularAlbedo, sunDirection,
 } from './physics.js';
+import { describeRoad, readoutText, summaryRows } from './words.js';
 import { buildAsphaltDom } from './buildAsphaltDom.js';
 import fragment from './asphalt.frag.glsl?raw';
 import { schema } from './schema.js';
@@ -24,10 +25,6 @@ import { schema } from './schema.js';
 export { schema };
 
 const t = messages('asphalt', english);
-const f3 = (x) => fixed(x, 3);
-const deg = (x) => `${fixed(x, 1)}°`;
-const percent = (x) => `${fixed(100 * x, 1)} %`;
-const times = (x) => `×${fixed(x, 1)}`;
 
 /** Mean RGB (0–255) of a square of drawing-buffer pixels around CSS (x, y), drawn just now. */
 function readBlock(view, x, y, radius = 3) {
@@ -53,8 +50,6 @@ function readBlock(view, x, y, radius = 3) {
  */
 export function mount(root, ctx) {
   const { values } = ctx;
-  /** A control's value as it is written in a sentence: the decimals of its step, in the page's language. */
-  const shown = (key) => tickLabel(values[key], schema[key].step);
   const dom = buildAsphaltDom(root);
   const view = startWebGL(dom.stage, () => createShaderView(dom.canvas, {
     fragment,
@@ -82,35 +77,21 @@ export function mount(root, ctx) {
   // What the camera does not change is computed once per sun, roughness, index and switch.
   let sunKey = '';
   let albedo = 0;
-  let growth = null;
+  let brightest = { below: 0, specular: 0 };
+  let road = null; // what the words are made of (words.js)
 
   function update() {
     state = highlightInView(values, aspect());
-    const { peak, centre } = state;
     const r0 = normalIncidence(1, values.nT);
     const key = [values.sunEl, values.roughness, values.nT, values.fresnel].join();
     if (key !== sunKey) {
       sunKey = key;
       albedo = specularAlbedo(values);
+      brightest = brightestSightLine(values);
     }
-    growth = sheenGrowth(values, aspect());
-    dom.setBadge(values.fresnel ? t('badgeOn') : t('badgeOff', { r0: f3(r0) }), values.fresnel);
-    dom.setSummary([
-      [t('summary.centre'), t('summary.centreValue', { F: f3(centre.F), thetaD: deg(centre.thetaD) }), true],
-      [t('summary.peak'), t('summary.peakValue', {
-        below: deg(peak.below), specular: f3(peak.specular), thetaD: deg(peak.thetaD), F: f3(peak.F),
-      }), true],
-      [t('summary.diffuse'), f3(peak.diffuse)],
-      [t('summary.ratio'), `${fixed(peak.specular / peak.diffuse, 1)}×`],
-      [t('summary.growth'), Number.isFinite(growth.total)
-        ? t('summary.growthValue', {
-          total: times(growth.total), lobe: times(growth.lobe), fresnel: times(growth.fresnel), overall: times(growth.overall),
-        })
-        : t('summary.growthNone')],
-      [t('summary.albedo', { sunEl: deg(values.sunEl) }),
-        t('summary.albedoValue', { albedo: percent(albedo), diffuse: percent(SCENE.albedo) })],
-      [t('summary.r0'), f3(r0)],
-    ]);
+    road = { values, peak: state.peak, centre: state.centre, growth: sheenGrowth(values, aspect()), albedo, brightest };
+    dom.setBadge(values.fresnel ? t('badgeOn') : t('badgeOff', { r0: fixed(r0, 3) }), values.fresnel);
+    dom.setSummary(summaryRows(road));
     if (!view) return;
     const basis = cameraBasis(values.camEl);
     const u = view.uniforms;
@@ -129,13 +110,7 @@ export function mount(root, ctx) {
     const rect = dom.canvas.getBoundingClientRect();
     const ndcX = (2 * (event.clientX - rect.left)) / rect.width - 1;
     const ndcY = 1 - (2 * (event.clientY - rect.top)) / rect.height;
-    const hit = shadeRoad(pixelRay(values.camEl, ndcX, ndcY, rect.width / rect.height), values);
-    dom.setReadout(hit
-      ? t('readoutRoad', {
-        distance: fixed(hit.distance, 1), below: deg(hit.below), thetaD: deg(hit.thetaD), F: f3(hit.F), specular: f3(hit.specular),
-        diffuse: f3(hit.diffuse),
-      })
-      : t('readoutSky'));
+    dom.setReadout(readoutText(shadeRoad(pixelRay(values.camEl, ndcX, ndcY, rect.width / rect.height), values)));
   };
   const onLeave = () => dom.setReadout(t('hint'));
   // Keyboard: arrows raise or lower the camera (Shift for 5°), Home overhead, End grazing.
@@ -166,33 +141,7 @@ export function mount(root, ctx) {
     },
     update,
     describe() {
-      const { peak, centre } = state;
-      const setting = t('describeSetting', {
-        camEl: shown('camEl'), sunEl: shown('sunEl'), roughness: shown('roughness'), nT: shown('nT'),
-        fresnel: values.fresnel ? 'on' : 'off',
-      });
-      if (values.nT === 1) return `${setting} ${t('describeMatched', { diffuse: f3(peak.diffuse) })}`;
-      // Concentrated: the brightest spot is at least three times as bright as a matte road reflecting the same share.
-      const concentration = peak.specular / lambertianEquivalent(albedo, values.sunEl);
-      const shape = concentration >= 3 ? t('shapeConcentrated', { concentration: fixed(concentration, 1) }) : t('shapeSpread');
-      const ratio = albedo / SCENE.albedo;
-      return `${setting} ${t('describe', {
-        thetaD: deg(centre.thetaD),
-        F: f3(centre.F),
-        below: deg(peak.below),
-        specular: f3(peak.specular),
-        ratio: fixed(peak.specular / peak.diffuse, 1),
-        diffuse: f3(peak.diffuse),
-        total: times(growth.total),
-        lobe: times(growth.lobe),
-        fresnel: times(growth.fresnel),
-        overall: times(growth.overall),
-        albedo: percent(albedo),
-        share: ratio < 0.95 ? 'less' : ratio <= 1.05 ? 'about' : 'more',
-        albedoDiffuse: percent(SCENE.albedo),
-        times: fixed(ratio, 2),
-        shape,
-      })}`;
+      return describeRoad(road);
     },
     csv() {
       const { column } = state;

@@ -165,6 +165,23 @@ function shadeBelow(belowDeg, values) {
   return hit;
 }
 
+/**
+ * The brightest the sun's highlight gets from any direction: the largest specular luminance over every
+ * sight line below the horizon in the sun's vertical plane (belowDeg from 0°, the horizon limit, through
+ * 90°, straight down, to 180°, looking away from the sun), refined off its 0.25° grid. By the plane's
+ * mirror symmetry the lobe peaks in it (tests/unit/asphaltWords.test.js scans the whole hemisphere). It
+ * depends on the sun and the road alone, not on the camera: how concentrated the reflected light is.
+ * @param {RoadValues} values
+ * @returns {{ below: number, specular: number }}
+ */
+export function brightestSightLine(values) {
+  const EDGE = 1e-6; // a sight line along the road misses it; a hair below gives the limit
+  const specularAt = (/** @type {number} */ b) => shadeBelow(Math.min(180 - EDGE, Math.max(EDGE, b)), values).specular;
+  const grid = Array.from({ length: 721 }, (_, i) => i / 4);
+  const best = refinedMax(grid, grid.map(specularAt), specularAt);
+  return { below: Math.min(180 - EDGE, Math.max(EDGE, best.theta)), specular: best.value };
+}
+
 /** How far below the horizon sheenGrowth's reference spot is seen: the road straight below. */
 export const STRAIGHT_DOWN = 90;
 
