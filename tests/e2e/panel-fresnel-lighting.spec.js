@@ -36,6 +36,23 @@ test('the Fresnel rim turns toward ks; the constant-weight rim does not', async 
   await expect(text).toContainText('0.3877 at 80°'); // fresnelExact(cos 80°, 1, 1.5)
 });
 
+test('with n_t = 1 nothing turns toward ks, and the words say so; Schlick\'s form still turns it, and they say why', async ({ page }) => {
+  await openLab(page, embed('&nT=1'));
+  await expect(page.locator('.twin-stage-canvas')).toBeVisible();
+  const text = page.locator('.panel-description');
+  await expect(text).toContainText('F = 0 at every angle, since with n_t = 1 the coat matches air and reflects nothing');
+  await expect(text).not.toContainText('so its rim turns toward ks');
+  const matched = await probes(page);
+  // Exact F = 0: the rim is the base colour kd, as red as the centre.
+  expect(Math.abs(whiteness(matched.rim[0]) - whiteness(matched.centre[0]))).toBeLessThan(0.1);
+  await page.evaluate(() => window.fresnelLab.hosts['fresnel-lighting'].set({ method: 'schlick' }));
+  // Schlick at R0 = 0: (1 − cos 80°)⁵ = 0.3853, a whiter rim the exact F would not give.
+  await expect(text).toContainText('F is 0.0000 at 0° and 0.3853 at 80°, so its rim turns toward ks, although a coat of n_t = 1');
+  await expect(page.locator('.fl-panel .lecture-note')).toContainText('with Schlick\'s form, chosen above, its rim still turns toward ks');
+  const schlick = await probes(page);
+  expect(whiteness(schlick.rim[0])).toBeGreaterThan(2 * whiteness(schlick.centre[0]));
+});
+
 test('the GLSL shown is the GLSL compiled, and Copy GLSL copies it', async ({ page }) => {
   await page.context().grantPermissions(['clipboard-read', 'clipboard-write']);
   await openLab(page, embed());

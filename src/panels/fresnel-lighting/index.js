@@ -7,9 +7,8 @@
 // under the picture is the file the shader includes.
 import { hexToLinear } from '../../ui/srgb.js';
 import { assembleShader } from '../../gl/shaderChunks.js';
-import { cosDeg } from '../../optics/angles.js';
 import { reflectanceCurves } from '../../optics/curves.js';
-import { fresnelExact, fresnelSchlick, normalIncidence } from '../../optics/fresnel.js';
+import { normalIncidence } from '../../optics/fresnel.js';
 import { createLinePlot } from '../../ui/createLinePlot.js';
 import { el } from '../../ui/el.js';
 import { thetaMark } from '../../ui/plotMarks.js';
@@ -25,6 +24,7 @@ import { angle, fixed, rounded } from '../../ui/format.js';
 import { definitionList } from '../../ui/definitionList.js';
 import { coatConstants, diffuseSharesRgb } from './physics.js';
 import { indexText } from '../shared/indexText.js';
+import { RIM_DEG, describeSpheres, weightAt } from './words.js';
 import english from 'virtual:messages/en/fresnel-lighting';
 import { messages } from '../../i18n/messages.js';
 
@@ -37,13 +37,6 @@ export { schema };
 export const MIX_GLSL = mixSource.trimEnd();
 /** The sphere shader with the mix chunk put in: the same lines the panel shows. */
 export const FRAGMENT = assembleShader(fragmentSource, { 'fresnel-lighting-mix': mixSource });
-const RIM_DEG = 80; // the angle quoted for the rim
-
-/** F at θ (degrees) on the Fresnel sphere, from the float64 reference (light from air into the coat). */
-function weightAt(thetaDeg, nT, method) {
-  const c = cosDeg(thetaDeg);
-  return method === 'schlick' ? fresnelSchlick(c, 1, nT) : fresnelExact(c, 1, nT);
-}
 
 /** Copies text; where the clipboard API is refused, selects the code so Ctrl+C works. */
 async function copyCode(text, codeElement) {
@@ -136,7 +129,8 @@ export function mount(root, ctx) {
     const [r, g, b] = shares.layered.map((x) => fixed(x, 2));
     const outcome = shares.layeredLuminance < shares.lecture ? 'darker' : shares.layeredLuminance >= 1 ? 'more' : 'lighter';
     note.set(t('note', {
-      coat: nT === 1 ? 'none' : 'clear', n: indexText(nT), ri: fixed(layers.ri, 2), lecture: fixed(shares.lecture, 2),
+      coat: nT === 1 ? 'none' : 'clear', schlick: method === 'schlick' ? 'yes' : 'no', n: indexText(nT), ri: fixed(layers.ri, 2),
+      lecture: fixed(shares.lecture, 2),
       layered: t('rgb', { r, g, b }), luminance: fixed(shares.layeredLuminance, 2), outcome,
     }), t('noteSource'));
     plot.setData([curves.theta, curves.exact, curves.schlick, curves.theta.map(() => weight)]);
@@ -178,11 +172,7 @@ export function mount(root, ctx) {
     code: MIX_GLSL,
     update,
     describe() {
-      const { nT, method, weight } = values;
-      return t('describe', {
-        method, nT: indexText(nT), ri: fixed(layers.ri, 3), f0: fixed(weightAt(0, nT, method), 4),
-        fRim: fixed(weightAt(RIM_DEG, nT, method), 4), rim: angle(RIM_DEG, 0), w: fixed(weight, 3),
-      });
+      return describeSpheres(values, layers.ri);
     },
     csv() {
       return {
