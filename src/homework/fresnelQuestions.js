@@ -6,7 +6,7 @@
 import { cosDeg, toDegrees as deg } from '../optics/angles.js';
 import { schlickErrorAt } from '../optics/curves.js';
 import { displayCodes } from '../methods/advisor.js';
-import { goldenMax } from '../optics/refinedMax.js';
+import { refinedMax } from '../optics/refinedMax.js';
 import {
   brewsterAngle, criticalAngle, fresnelConductor, fresnelExact, fresnelPolarized, fresnelSchlick, normalIncidence,
 } from '../optics/fresnel.js';
@@ -25,64 +25,79 @@ const t = messages('questions', english);
 /** A hair above 1, as interpolated normals give; it survives rounding to float32 (1 + 2⁻²³). */
 const COS_ABOVE_ONE = 1.0000001;
 /**
- * Schlick's (pow form) largest display error over the plastic scene, in 8-bit codes: the best of a
- * 0.05° grid over each of the scene's indices, refined around it (refinedMax.js). Computed once.
+ * Schlick's (pow form) largest display error in 8-bit codes for each index of the plastic scene, and
+ * the angle of it: the best of a 0.05° grid, refined around it (refinedMax.js). Computed once.
+ * @typedef {{ codes: number, theta: number, nT: number }} WorstCodes
  */
-/** @type {{ codes: number, theta: number, nI: number, nT: number } | null} */
-let worstCodes = null;
-function schlickWorstCodes() {
-  if (worstCodes) return worstCodes;
+/** @type {WorstCodes[] | null} */
+let worstPerIndex = null;
+function schlickWorstPerIndex() {
+  if (worstPerIndex) return worstPerIndex;
   const scene = sceneById('plastic');
   const method = methodById('schlick-pow');
   /** @type {(t: number, nI: number, nT: number) => number} */
   const codesAt = (t, nI, nT) => displayCodes(method.evaluate(scene.precision, cosDeg(t), nI, nT), fresnelExact(cosDeg(t), nI, nT));
-  let best = { codes: -1, theta: 0, nI: 1, nT: 1 };
-  for (const [nI, nT] of scene.cases) {
-    for (let i = 0; i <= 1800; i += 1) {
-      const codes = codesAt(i / 20, nI, nT);
-      if (codes > best.codes) best = { codes, theta: i / 20, nI, nT };
-    }
-  }
-  const { nI, nT } = best;
-  const theta = goldenMax((t) => codesAt(t, nI, nT), Math.max(0, best.theta - 0.05), Math.min(90, best.theta + 0.05));
-  const refined = codesAt(theta, nI, nT);
-  worstCodes = refined > best.codes ? { codes: refined, theta, nI, nT } : best;
-  return worstCodes;
+  worstPerIndex = scene.cases.map(([nI, nT]) => {
+    const theta = Array.from({ length: 1801 }, (_, i) => i / 20);
+    const best = refinedMax(theta, theta.map((t) => codesAt(t, nI, nT)), (t) => codesAt(t, nI, nT));
+    return { codes: best.value, theta: best.theta, nT };
+  });
+  return worstPerIndex;
 }
-/** Schlick's worst error in words' numbers: its codes, their share of the range, where. */
+/** The largest of them: Schlick's worst over the whole scene. */
+const schlickWorstCodes = () => schlickWorstPerIndex().reduce((a, b) => (b.codes > a.codes ? b : a));
+// Where an index's worst error sits below this angle, it is at middle angles rather than near grazing.
+const MIDDLE_BELOW = 70;
+/** Schlick's worst error in words' numbers: its codes, their share of the range, where; and, where the
+ * worst sits at middle angles, from which index up and over which angles. */
 function worstShown() {
   const { codes, theta, nT } = schlickWorstCodes();
-  return { codes: fixed(codes, 1), share: fixed((100 * codes) / 255, 1), theta: fixed(theta, 0), n: fixed(nT, 2) };
+  const all = schlickWorstPerIndex();
+  const middle = all.filter((w) => w.theta < MIDDLE_BELOW);
+  const from = Math.min(...middle.map((w) => w.nT));
+  // The words say "from that index up": every index above it has its worst at middle angles too.
+  if (!middle.length || all.some((w) => w.nT > from && w.theta >= MIDDLE_BELOW)) throw new RangeError('no single band of indices');
+  return {
+    codes: fixed(codes, 1), share: fixed((100 * codes) / 255, 1), theta: fixed(theta, 0), n: fixed(nT, 2),
+    middleFrom: fixed(from, 2), middleLo: fixed(Math.min(...middle.map((w) => w.theta)), 0),
+    middleHi: fixed(Math.max(...middle.map((w) => w.theta)), 0),
+  };
 }
 
+/** The index whose R(0°) is the round 0.04 quoted for glass: ((1.5 − 1)/(1.5 + 1))² = 0.04. */
+const ROUND_GLASS = 1.5;
 /** Indices whose rims the rim-scaling explanation compares. */
 const RIM_INDICES = [1.33, 1.5, 2];
 
 export const FRESNEL_QUESTIONS = [
   question({
     id: 'r0-materials', panel: 'refractive-index', kind: 'choice',
-    graded: 'R(0°) = ((n_t − n_i)/(n_t + n_i))² for water, glass and diamond from air: it grows with the index and is not 0.04 '
-      + 'for all. The panel\'s material table lists R0 per material.',
+    graded: 'R(0°) = ((n_t − n_i)/(n_t + n_i))² for water, N-BK7 crown glass and diamond from air: it grows with the index '
+      + 'contrast (from air, with n_t) and is not 0.04 for all; 0.04 is its value for n = 1.5 exactly. The panel\'s material '
+      + 'table lists n and R0 per material.',
     params: () => ({}),
     prompt: () => t('r0-materials.prompt'),
     options: () => {
       const r0 = (/** @type {string} */ id) => fixed(normalIncidence(1, dielectric(id).n), 3);
+      const n = (/** @type {string} */ id) => fixed(dielectric(id).n, 3);
+      const named = () => ({ water: r0('water'), glass: r0('glass'), diamond: r0('diamond'), nWater: n('water'), nGlass: n('glass'),
+        nDiamond: n('diamond') });
       return [
         {
           id: 'all-004', text: () => t('r0-materials.option.all-004'),
           holds: () => ['water', 'glass', 'diamond'].every((id) => Math.abs(normalIncidence(1, dielectric(id).n) - 0.04) < 0.005),
-          why: () => t('r0-materials.why.all-004', { r0: fixed(normalIncidence(1, 1.5), 3), water: r0('water'), diamond: r0('diamond') }),
+          why: () => t('r0-materials.why.all-004', { ...named(), n: number(ROUND_GLASS), r0: fixed(normalIncidence(1, ROUND_GLASS), 3) }),
         },
         {
           id: 'depends-on-n', text: () => t('r0-materials.option.depends-on-n'),
           holds: () => normalIncidence(1, dielectric('water').n) < normalIncidence(1, dielectric('glass').n)
             && normalIncidence(1, dielectric('glass').n) < normalIncidence(1, dielectric('diamond').n),
-          why: () => t('r0-materials.why.depends-on-n', { water: r0('water'), glass: r0('glass'), diamond: r0('diamond') }),
+          why: () => t('r0-materials.why.depends-on-n', named()),
         },
         {
           id: 'none-head-on', text: () => t('r0-materials.option.none-head-on'),
           holds: () => normalIncidence(1, dielectric('glass').n) === 0,
-          why: () => t('r0-materials.why.none-head-on', { glass: r0('glass') }),
+          why: () => t('r0-materials.why.none-head-on', named()),
         },
       ];
     },
