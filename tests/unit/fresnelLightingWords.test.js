@@ -34,7 +34,11 @@ describe('the Fresnel sphere\'s rim, in words', () => {
   it('with n_t = 1 and Schlick\'s form: the rim turns, and the words say that the coat itself reflects nothing', () => {
     expect(schlick(80, 1)).toBeCloseTo(0.3853, 4); // (1 − cos 80°)⁵
     expect(say(1, 'schlick')).toContain(`F is 0.0000 at 0° and ${schlick(80, 1).toFixed(4)} at 80°, ${TURNS}, although a coat of `
-      + 'n_t = 1 reflects next to nothing (the exact F at 80° is 0.0000): Schlick\'s (1 − cos θ)⁵ term does not vanish with R0');
+      + 'n_t = 1 reflects nothing (the exact F at 80° is 0.0000): Schlick\'s (1 − cos θ)⁵ term does not vanish with R0');
+    // An index a hair above 1: the coat reflects next to nothing, and Schlick's rim is as white.
+    expect(fresnelR(80, 1, 1.0001)).toBeLessThan(0.00005);
+    expect(say(1.0001, 'schlick')).toContain(`F is 0.0000 at 0° and ${schlick(80, 1.0001).toFixed(4)} at 80°, ${TURNS}, although a `
+      + 'coat of n_t = 1.0001 reflects next to nothing (the exact F at 80° is 0.0000)');
   });
   it('near n_t = 1, claims a turn exactly where the F it shows at 80° differs from the F at 0°', () => {
     const indices = [1.00001, 1.0001, 1.0003, 1.0004, 1.0005, 1.001, 1.002, 1.01];

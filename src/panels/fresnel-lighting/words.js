@@ -50,6 +50,6 @@ export function describeSpheres({ nT, method, weight }, ri) {
   return t('describe', {
     method, nT: indexText(nT), ri: fixed(ri, 3), f0: fixed(weightAt(0, nT, method), SHOWN),
     fRim: fixed(weightAt(RIM_DEG, nT, method), SHOWN), rim: angle(RIM_DEG, 0), w: fixed(weight, 3),
-    trend: rimTrend(nT, method), exactRim: fixed(fresnelExact(cosDeg(RIM_DEG), 1, nT), SHOWN),
+    trend: rimTrend(nT, method), exactRim: fixed(fresnelExact(cosDeg(RIM_DEG), 1, nT), SHOWN), matched: nT === 1 ? 'yes' : 'no',
   });
 }
