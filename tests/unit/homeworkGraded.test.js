@@ -69,6 +69,10 @@ const CHECKS = {
     const share = (b) => spot(b).specular / (spot(b).specular + spot(b).diffuse);
     const truth = crossing(share, 0.5, 1, 90);
     expect(Math.abs(q.expected(p) - truth)).toBeLessThan(1e-6);
+    // One answer: from the road straight below to the horizon the two parts are equal once only.
+    let crossings = 0;
+    for (let b = 0.05; b < 90; b += 0.05) if ((share(b) > 0.5) !== (share(b + 0.05) > 0.5)) crossings += 1;
+    expect(crossings).toBe(1);
     // Measured, not predicted: the panel shows its answer only once a prediction is locked.
     expect(q.kind).toBe('numeric');
     // The readout gives the angle to 0.1° and both parts to 3 decimals: wherever it shows them equal, the
@@ -106,6 +110,16 @@ const CHECKS = {
     expect(r0('glass')).toBeLessThan(r0('diamond'));
     expect(Math.abs(r0('diamond') - 0.04)).toBeGreaterThan(0.1);
     expect(holding(q, p)).toEqual(['depends-on-n']);
+    // What the right option says of R0 = ((r − 1)/(r + 1))², r = n_t/n_i: the same for r and 1/r, and larger the
+    // further r lies from 1 on either side.
+    const ofRatio = (r) => ((r - 1) / (r + 1)) ** 2;
+    for (let r = 1.05; r < 4; r += 0.05) {
+      expect(ofRatio(1 / r)).toBeCloseTo(ofRatio(r), 14);
+      expect(ofRatio(r + 0.05)).toBeGreaterThan(ofRatio(r));
+      expect(ofRatio(1 / (r + 0.05))).toBeGreaterThan(ofRatio(1 / r));
+    }
+    const right = q.options(p).find((o) => o.id === 'depends-on-n').text(p);
+    expect(right).toContain('the further n_t/n_i lies from 1 on either side (a ratio and its inverse give the same R(0°))');
   },
   'exact-rp-rs': (q, p) => {
     const { s, p: rp } = dielectricSP(cosOfDegrees(p.theta), 1, p.nT);
