@@ -61,8 +61,14 @@ describe('how concentrated the reflected light is', () => {
     }
     // The default road's light is concentrated, overhead as well as near grazing: 90.4 times at the horizon.
     const text = describeRoad(road({ ...base, camEl: 90 }));
-    expect(text).toContain('that light is concentrated: seen from its brightest direction, 0.0° below the horizon, the sun\'s highlight '
+    expect(text).toContain('that light is concentrated: seen from its brightest direction, towards the horizon (in the limit as the line '
+      + 'of sight grazes the road), the sun\'s highlight '
       + `has ${concentrationByFormula(base).toFixed(1)} times the luminance`);
+    // A smooth road is brightest near the mirror direction, below the horizon: the words name that angle.
+    const smooth = { ...base, roughness: 0.2 };
+    const below = brightestByScan(smooth).below;
+    expect(below).toBeGreaterThan(5);
+    expect(describeRoad(road(smooth))).toContain(`seen from its brightest direction, ${below.toFixed(1)}° below the horizon, `);
   });
   it('its brightest direction is the brightest over the whole sky of sight lines, not only the sun\'s plane', () => {
     for (const values of settings) {

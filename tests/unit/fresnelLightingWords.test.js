@@ -1,6 +1,7 @@
 // What the fresnel-lighting panel says of its Fresnel sphere's rim (src/panels/fresnel-lighting/words.js),
-// held against F from the textbook formulas (tests/unit/oracle): a turn toward ks is claimed only where
-// the weights it shows differ, and a coat that reflects nothing is said to.
+// held against F from the textbook formulas (tests/unit/oracle) and the sRGB curve: a turn toward ks is
+// claimed only where the rim's colour moves by a display code or more, a coat that reflects nothing is
+// said to, and Schlick's rim is said to overstate a coat of an index near 1.
 import { describe, expect, it } from 'vitest';
 import { describeSpheres } from '../../src/panels/fresnel-lighting/words.js';
 import { fresnelR } from './oracle/rightAnswers.js';
@@ -12,7 +13,18 @@ const schlick = (thetaDeg, n) => {
   return r0 + (1 - r0) * (1 - Math.cos(thetaDeg * DEG)) ** 5;
 };
 const weight = (thetaDeg, n, method) => (method === 'schlick' ? schlick(thetaDeg, n) : fresnelR(thetaDeg, 1, n));
-const say = (nT, method) => describeSpheres({ nT, method, weight: 0.04 }, 0);
+const KD = '#a3241c'; // the panel's defaults
+const KS = '#ffffff';
+const say = (nT, method) => describeSpheres({ nT, method, weight: 0.04, kd: KD, ks: KS }, 0);
+// IEC 61966-2-1 sRGB: a byte to linear and back, to count display codes.
+const toLinear = (byte) => { const c = byte / 255; return c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4; };
+const toCode = (c) => 255 * (c <= 0.0031308 ? 12.92 * c : 1.055 * c ** (1 / 2.4) - 0.055);
+const bytes = (hex) => [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16));
+/** The most codes by which mix(kd, ks, F) moves off kd in a channel. */
+const codes = (F) => Math.max(...bytes(KD).map((b, i) => {
+  const [d, s] = [toLinear(b), toLinear(bytes(KS)[i])];
+  return Math.abs(toCode(d + (s - d) * F) - toCode(d));
+}));
 const TURNS = 'so its rim turns toward ks';
 
 describe('the Fresnel sphere\'s rim, in words', () => {
@@ -34,23 +46,34 @@ describe('the Fresnel sphere\'s rim, in words', () => {
   it('with n_t = 1 and Schlick\'s form: the rim turns, and the words say that the coat itself reflects nothing', () => {
     expect(schlick(80, 1)).toBeCloseTo(0.3853, 4); // (1 − cos 80°)⁵
     expect(say(1, 'schlick')).toContain(`F is 0.0000 at 0° and ${schlick(80, 1).toFixed(4)} at 80°, ${TURNS}, although a coat of `
-      + 'n_t = 1 reflects nothing (the exact F at 80° is 0.0000): Schlick\'s (1 − cos θ)⁵ term does not vanish with R0');
-    // An index a hair above 1: the coat reflects next to nothing, and Schlick's rim is as white.
-    expect(fresnelR(80, 1, 1.0001)).toBeLessThan(0.00005);
-    expect(say(1.0001, 'schlick')).toContain(`F is 0.0000 at 0° and ${schlick(80, 1.0001).toFixed(4)} at 80°, ${TURNS}, although a `
-      + 'coat of n_t = 1.0001 reflects next to nothing (the exact F at 80° is 0.0000)');
+      + 'n_t = 1 reflects nothing (the exact F at 80°, 0.0000, would not change the rim\'s colour by one display code): '
+      + 'Schlick\'s (1 − cos θ)⁵ term does not vanish with R0');
+    // The smallest index above 1 the control gives: the exact F moves the rim by under a code, Schlick's turns it.
+    expect(codes(fresnelR(80, 1, 1.001))).toBeLessThan(1);
+    expect(say(1.001, 'schlick')).toContain(`F is 0.0000 at 0° and ${schlick(80, 1.001).toFixed(4)} at 80°, ${TURNS}, although a `
+      + `coat of n_t = 1.001 reflects next to nothing (the exact F at 80°, ${fresnelR(80, 1, 1.001).toFixed(4)}, would not`);
   });
-  it('near n_t = 1, claims a turn exactly where the F it shows at 80° differs from the F at 0°', () => {
-    const indices = [1.00001, 1.0001, 1.0003, 1.0004, 1.0005, 1.001, 1.002, 1.01];
+  it('near n_t = 1, claims a turn exactly where F at 80° moves the rim\'s colour by a display code or more', () => {
+    const indices = [1.00001, 1.0001, 1.0005, 1.001, 1.002, 1.003, 1.005, 1.01];
     const seen = new Set();
     for (const method of ['exact', 'layered']) {
       for (const n of indices) {
-        const differs = weight(80, n, method).toFixed(4) !== weight(0, n, method).toFixed(4);
-        seen.add(differs);
-        expect(say(n, method).includes(TURNS), `${method} ${n}`).toBe(differs);
-        if (!differs) expect(say(n, method)).toContain('to the decimals shown the coat reflects nothing up to 80°');
+        const visible = codes(weight(80, n, method)) >= 1;
+        seen.add(visible);
+        expect(say(n, method).includes(TURNS), `${method} ${n}`).toBe(visible);
+        if (!visible) expect(say(n, method)).toContain('too little to change the rim\'s colour by one display code');
       }
     }
     expect([...seen].sort()).toEqual([false, true]); // both cases are among the indices
+  });
+  it('says where Schlick\'s rim is far whiter than the exact F would make it, an index near 1, and not for glass', () => {
+    for (const n of [1.01, 1.05, 1.1]) {
+      expect(schlick(80, n) / fresnelR(80, 1, n), String(n)).toBeGreaterThan(1.5);
+      expect(say(n, 'schlick'), String(n)).toContain(`${TURNS}, much more than the exact F at 80°, ${fresnelR(80, 1, n).toFixed(4)}, would turn it`);
+    }
+    for (const n of [1.33, 1.5, 2]) {
+      expect(schlick(80, n) / fresnelR(80, 1, n), String(n)).toBeLessThan(1.5);
+      expect(say(n, 'schlick'), String(n)).not.toContain('much more than the exact F');
+    }
   });
 });

@@ -108,6 +108,8 @@ export function describeRoad(road) {
   const factor = concentration(road);
   const shape = t(factor >= CONCENTRATED ? 'shapeConcentrated' : 'shapeSpread', {
     concentration: fixed(factor, 1), below: deg(brightest.below),
+    // Shown as 0.0°, the brightest sight line is the limit at the horizon: a line along the road never meets it.
+    where: deg(brightest.below) === deg(0) ? 'horizon' : 'below',
   });
   const ratio = albedo / SCENE.albedo;
   return `${setting} ${t('describe', {
