@@ -104,6 +104,50 @@ function policyMeta() {
 // disk and in a sandboxed iframe; scripts/buildOffline.js runs both after the ordinary build.
 const singleFile = process.env.FRESNEL_LAB_SINGLE_FILE;
 
+/**
+ * The chunks of the lab's shared layers by the pages that import them statically, known once the
+ * module graph is complete. Of the layers (`shared`, and all that they import), a module goes in the
+ * first chunk of `chunks` whose rule takes it: rule(imports, id), where imports(page) tells whether
+ * that page of `pages` imports the module statically (through any chain of imports).
+ */
+function layerChunks(shared, pages, chunks) {
+  /** @type {Map<string, string>} module id → its chunk's name */
+  const chunkOf = new Map();
+  /** Every module the modules `from` import statically, themselves included. */
+  const closure = (context, from) => {
+    const reached = new Set();
+    const stack = [...from];
+    while (stack.length) {
+      const id = stack.pop();
+      if (reached.has(id)) continue;
+      reached.add(id);
+      stack.push(...(context.getModuleInfo(id)?.importedIds ?? []));
+    }
+    return reached;
+  };
+  return {
+    test: (name) => (id) => chunkOf.get(id) === name,
+    plugin: {
+      name: 'fresnel-lab-layer-chunks',
+      apply: 'build',
+      buildEnd() {
+        const layers = closure(this, [...this.getModuleIds()].filter((id) => shared.some((test) => test.test(id))));
+        const reached = Object.fromEntries(Object.entries(pages).map(([page, entry]) => [page, closure(this, [entry])]));
+        chunkOf.clear();
+        for (const id of layers) {
+          const name = Object.keys(chunks).find((chunk) => chunks[chunk]((page) => reached[page].has(id), id));
+          if (name) chunkOf.set(id, name);
+        }
+      },
+    },
+  };
+}
+
+// The lab's shared layers: the host and the page's parts, the language, the panels' schemas and titles.
+const SHARED_LAYERS = /src[\\/](host|ui|i18n)[\\/]|src[\\/]panels[\\/]([\w-]+[\\/]schema|shared[\\/]indexPair|manifest|panelText|controlText|panelSchema|loadPanel)\.js|virtual:messages[\\/]en[\\/](panels:title\+titleHtml|controls|page|host|ui)$|node_modules[\\/]lil-gui[\\/]/;
+// The shared parts the hero and most panels use, with their words (panelsShared, the materials' names).
+const PANEL_SHARED = /src[\\/]panels[\\/]shared[\\/](indexPresets|startWebGL|dielectricTrace|materialName|indexText)\.js|virtual:messages[\\/]en[\\/](panelsShared|materials)$/;
+
 const pages = {
   index: resolve(root, 'index.html'),
   embed: resolve(root, 'embed.html'),
@@ -117,6 +161,15 @@ const pages = {
   ...(process.env.FRESNEL_LAB_BENCH_PEER === '1'
     ? { peer: resolve(root, 'bench/peer.html'), gpu: resolve(root, 'bench/gpu/gpu.html') } : {}),
 };
+// 'base': what the homework page or the composer imports (every page loads it); 'core': what both the
+// lecture page and an embed add (the panel host, lil-gui, the controls' names, the audio trace). What
+// only one of those two imports stays in that page's own chunk (the lecture mode; the message API),
+// but for the typesetting helper, which the lecture page imports and an embed's formula panels do:
+// a chunk of its own would cost those embeds more than its place in 'core' costs the others.
+const layers = layerChunks([SHARED_LAYERS, PANEL_SHARED], pages, {
+  base: (imports) => imports('homework') || imports('compose'),
+  core: (imports, id) => imports('index') && (imports('embed') || /src[\\/]ui[\\/]tex\.js$/.test(id)),
+});
 
 // Relative base: the built site works from any sub-path (a course page, a USB stick).
 export default defineConfig({
@@ -125,7 +178,7 @@ export default defineConfig({
   // the manifest's sections after them.
   plugins: singleFile
     ? [messagesPlugin({ dir: resolve(root, 'locales'), pseudo: false }), panelManifest(), offlineAssets(), viteSingleFile(), policyMeta()]
-    : [messagesPlugin({ dir: resolve(root, 'locales') }), panelManifest(), policyMeta()],
+    : [messagesPlugin({ dir: resolve(root, 'locales') }), panelManifest(), policyMeta(), layers.plugin],
   // Workers are bundled apart, with these plugins only: the modules they share with the page (the
   // methods and their scenes, the class view's grading) import their words from the catalogue too.
   worker: { plugins: () => [messagesPlugin({ dir: resolve(root, 'locales'), pseudo: !singleFile })] },
@@ -141,22 +194,25 @@ export default defineConfig({
     ...(singleFile ? {} : { manifest: true }),
     rollupOptions: {
       input: singleFile ? pages[singleFile] : pages,
-      // The code every page loads at once (the host, the panels' schemas and words, the physics they
-      // check values with) in one chunk rather than in one per combination of pages that share it:
-      // dozens of small files cost the first load more than their contents (each is compressed
-      // alone). Only what an entry imports statically ($initial), and only the lab's shared layers.
+      // The code the pages load at once in two chunks (layerChunks above) rather than in one per
+      // combination of pages that share it: dozens of small files cost the first load more than
+      // their contents (each is compressed alone); one chunk for all would give the homework page
+      // and the composer the panel host they never use. Only what an entry imports statically ($initial).
       output: singleFile ? {} : {
         codeSplitting: {
           groups: [{
+            name: 'base',
+            tags: ['$initial'],
+            test: layers.test('base'),
+          }, {
             name: 'core',
             tags: ['$initial'],
-            test: (id) => /src[\\/](host|ui|i18n)[\\/]|src[\\/]panels[\\/]([\w-]+[\\/]schema|shared[\\/]indexPair|manifest|panelText|panelSchema|loadPanel)\.js|virtual:messages[\\/]en[\\/](panels:title\+titleHtml|controls|page|host|ui)$|node_modules[\\/]lil-gui[\\/]/.test(id),
+            test: layers.test('core'),
           }, {
             // The shared parts the hero and most panels use, with their words (panelsShared, the
             // materials' names): one chunk, not five small ones each compressed alone.
             name: 'panelShared',
-            test: (id) => /src[\\/]panels[\\/]shared[\\/](indexPresets|startWebGL|dielectricTrace|materialName|indexText)\.js/.test(id)
-              || /virtual:messages[\\/]en[\\/](panelsShared|materials)$/.test(id),
+            test: PANEL_SHARED,
           }],
         },
       },

@@ -17,7 +17,8 @@ import { loadTheme } from '../ui/theme.js';
 import { panelEntry } from '../panels/manifest.js';
 import { panelSchema } from '../panels/panelSchema.js';
 import { readPastedLink } from './pastedLink.js';
-import { controlLabel, optionLabel, panelTitle } from '../panels/panelText.js';
+import { panelTitle } from '../panels/panelText.js';
+import { controlLabel, optionLabel } from '../panels/controlText.js';
 
 const t = messages('compose', english);
 const ANSWER_MS = 5000;

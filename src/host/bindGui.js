@@ -2,10 +2,10 @@
 // lil-gui controls generated from a params schema. The schema is the single source of truth and
 // the host owns the values: a controller edits a draft copy and hands each change to the host
 // (validated there), which then writes the draft back and refreshes the controller.
-// Each control's name and each option's are the panel's words from the catalogue (panelText.js).
+// Each control's name and each option's are the panel's words from the catalogue (controlText.js).
 import GUI from 'lil-gui';
 import { phoneWidth } from '../ui/phoneWidth.js';
-import { controlLabel, optionLabel } from '../panels/panelText.js';
+import { controlLabel, optionLabel } from '../panels/controlText.js';
 import { localNumberInput } from './localNumberInput.js';
 
 /** @typedef {import('lil-gui').Controller} Controller */

@@ -28,7 +28,7 @@
 
 /**
  * @typedef {SpecCommon & { type: 'enum', default: string, options: string[] | Record<string, string> }} EnumSpec
- *   options: the values (their names, and the control's, are the catalogue's: panelText.js); an object's keys are
+ *   options: the values (their names, and the control's, are the catalogue's: controlText.js); an object's keys are
  *   the values too
  */
 

@@ -6,7 +6,7 @@
 // Spec fields: type ('number' | 'enum' | 'color' | 'boolean' | 'text'), default, and
 // for numbers min, max, step and, for an index or a count, integer: true (a whole number only);
 // for enums options (an array of values); the names of a control and of its options are the
-// panel's words, in the catalogue (src/panels/panelText.js);
+// panel's words, in the catalogue (src/panels/controlText.js);
 // for texts maxLength and optionally encode/decode, a compact form for the link (decode also
 // takes the plain text, which messages send; it returns null for a form it cannot read);
 // optionally aliases: older keys that still read (links and decks made before a rename keep working).

@@ -7,7 +7,7 @@ import english from 'virtual:messages/en/normal-mips';
 import { messages } from '../../i18n/messages.js';
 import { createChainBuilder } from '../../normals/createChainBuilder.js';
 import { levelCount } from '../../normals/momentPyramid.js';
-import { optionLabel } from '../panelText.js';
+import { optionLabel } from '../controlText.js';
 import { startWebGL } from '../shared/startWebGL.js';
 import { benchChainBuild, watchLongTasks } from './benchChainBuild.js';
 import { buildNormalMipsDom } from './buildNormalMipsDom.js';

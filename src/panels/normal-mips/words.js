@@ -9,7 +9,7 @@ import { exponentFromAlpha } from '../../normals/lobeFormulas.js';
 import { levelCount } from '../../normals/momentPyramid.js';
 import { TECHNIQUES } from '../../normals/techniqueLayout.js';
 import { normalIncidence } from '../../optics/fresnel.js';
-import { optionLabel } from '../panelText.js';
+import { optionLabel } from '../controlText.js';
 import { fixed, tickLabel } from '../../ui/format.js';
 import { schema } from './schema.js';
 import { IOR } from './sceneSettings.js';

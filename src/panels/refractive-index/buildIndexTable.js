@@ -4,7 +4,7 @@
 import { el } from '../../ui/el.js';
 import { angle, fixed, grouped, rounded } from '../../ui/format.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
-import { optionLabel } from '../panelText.js';
+import { optionLabel } from '../controlText.js';
 import english from 'virtual:messages/en/refractive-index';
 import { messages } from '../../i18n/messages.js';
 

@@ -9,7 +9,7 @@ import english from 'virtual:messages/en/shader-lab';
 import { messages } from '../../i18n/messages.js';
 import { refusalLine, shaderErrorMessage } from '../../gl/shaderError.js';
 import { angle, fixed, precise, rounded, sci, tickLabel } from '../../ui/format.js';
-import { optionLabel } from '../panelText.js';
+import { optionLabel } from '../controlText.js';
 import { criterion } from './exercises.js';
 import { PRECISIONS } from './runs.js';
 
