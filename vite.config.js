@@ -166,8 +166,15 @@ const pages = {
 // only one of those two imports stays in that page's own chunk (the lecture mode; the message API),
 // but for the typesetting helper, which the lecture page imports and an embed's formula panels do:
 // a chunk of its own would cost those embeds more than its place in 'core' costs the others.
-const layers = layerChunks([SHARED_LAYERS, PANEL_SHARED], pages, {
-  base: (imports) => imports('homework') || imports('compose'),
+const layers = layerChunks([SHARED_LAYERS, PANEL_SHARED], {
+  ...pages,
+  // What those two pages fetch at once for their first picture: a student's sheet or the lecturer's
+  // page, and an item's editor (but a panel item's start, which takes the controls' names from 'core').
+  sheet: resolve(root, 'src/homework/page/showSheet.js'),
+  lecturer: resolve(root, 'src/homework/page/lecturerPage.js'),
+  itemEditor: resolve(root, 'src/compose/buildItemEditor.js'),
+}, {
+  base: (imports) => ['homework', 'compose', 'sheet', 'lecturer', 'itemEditor'].some(imports),
   core: (imports, id) => imports('index') && (imports('embed') || /src[\\/]ui[\\/]tex\.js$/.test(id)),
 });
 

@@ -1,24 +1,18 @@
 // homework.html: with ?sheet=CODE (or a sheet written into the page, in a SCORM package), the sheet
 // a student works on (showSheet); without one, the lecturer's page: open a sheet file, compose a
-// sheet, check handed-in files, grade a class. A sheet that cannot be read is refused with its
-// reasons, and the lecturer's page is shown under them. The page speaks the language the sheet was
-// made in (its `lang`), unless the link asks for another (?lang=).
+// sheet, check handed-in files, grade a class (lecturerPage.js). A sheet that cannot be read is
+// refused with its reasons, and the lecturer's page is shown under them. The page speaks the
+// language the sheet was made in (its `lang`), unless the link asks for another (?lang=). Each of
+// the two is a module of its own, fetched while the language loads: a page takes only the one it shows.
 import './styles.css';
 import './homework/page/homework.css';
 import { setupPageControls } from './host/setupPageControls.js';
 import { showNotice } from './host/showNotice.js';
 import { installPageFaults } from './host/panelFaults.js';
 import { own } from './host/own.js';
-import { el } from './ui/el.js';
 import { readSheet, sheetLanguage } from './homework/readSheet.js';
 import { sheetFromCode } from './homework/sheetCodes.js';
-import { showSheet } from './homework/page/showSheet.js';
-import { buildComposer, sheetUrl } from './homework/page/buildComposer.js';
-import { buildChecker } from './homework/page/buildChecker.js';
-import { buildClassSection } from './homework/page/classView/buildClassSection.js';
 import './homework/page/classView/classView.css';
-import { connectScorm } from './homework/page/connectScorm.js';
-import { readTextFile } from './ui/formParts.js';
 import { startPageLanguage } from './i18n/pageLanguage.js';
 import english from 'virtual:messages/en/homework';
 import { messages } from './i18n/messages.js';
@@ -41,6 +35,13 @@ function carriedLanguage(sheetCode) {
   return sheetLanguage(lang) ? lang : null;
 }
 
+const lecturerModule = () => import('./homework/page/lecturerPage.js');
+// Fetched now, while the language loads: the sheet's parts where a link gives one (it is read, and
+// may be refused, once the language is here), else the lecturer's page.
+const sheetModule = code === null ? null : import('./homework/page/showSheet.js');
+const lecturer = code === null ? lecturerModule() : null;
+const scormModule = inPackage ? import('./homework/page/connectScorm.js') : null;
+
 // The language first, so every word below is in it.
 const language = await startPageLanguage({ carried: carriedLanguage(code) });
 setupPageControls(document.querySelector('.page-controls'), {});
@@ -49,50 +50,17 @@ if (language.problem) showNotice(root, t('page.languageProblem'), [language.prob
 installPageFaults((title, lines) => showNotice(root, title, lines, { kind: 'error' }));
 window.fresnelLab = { homework: null };
 
-function lecturerPage() {
-  const intro = el('section', 'hw-intro');
-  intro.append(el('h1', null, t('page.heading')), el('p', null, t('page.intro')));
-  const openLabel = el('label', 'ui-field');
-  const file = el('input');
-  file.type = 'file';
-  file.accept = '.json,application/json';
-  openLabel.append(el('span', null, t('page.openSheet')), file);
-  const openStatus = el('div');
-  intro.append(openLabel, openStatus);
-  file.addEventListener('change', async () => {
-    const chosen = file.files[0];
-    if (!chosen) return;
-    const picked = await readTextFile(chosen);
-    let read = picked;
-    if (picked.ok) {
-      try {
-        read = readSheet(JSON.parse(picked.text));
-      } catch {
-        read = { ok: false, problems: [t('page.notSheetJson')] };
-      }
-    }
-    openStatus.replaceChildren();
-    if (read.ok) window.location.assign(sheetUrl(read.sheet));
-    else showNotice(openStatus, t('page.unusableFile', { file: chosen.name }), read.problems, { kind: 'error' });
-  });
-  root.append(intro);
-  const composer = buildComposer(root);
-  const checker = buildChecker(root);
-  const classView = buildClassSection(root);
-  window.fresnelLab.homework = { composer, checker, classView };
-}
-
 if (code === null) {
-  lecturerPage();
+  window.fresnelLab.homework = (await lecturer).showLecturerPage(root);
 } else {
   const decoded = sheetFromCode(code);
   const read = decoded.ok ? readSheet(decoded.data) : decoded;
   if (read.ok) {
     const seed = inPackage ? null : search.get('seed')?.trim().slice(0, 64) || null;
-    const scorm = inPackage ? connectScorm() : null;
-    window.fresnelLab.homework = showSheet(root, { sheet: read.sheet, code, urlSeed: seed, scorm });
+    const scorm = scormModule ? (await scormModule).connectScorm() : null;
+    window.fresnelLab.homework = (await sheetModule).showSheet(root, { sheet: read.sheet, code, urlSeed: seed, scorm });
   } else {
-    lecturerPage();
+    window.fresnelLab.homework = (await lecturerModule()).showLecturerPage(root);
     showNotice(root, t('page.unusableLink'), [...read.problems, t('page.askAgain')], { kind: 'error' });
   }
 }

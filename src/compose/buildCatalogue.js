@@ -8,7 +8,7 @@ import { button, el } from '../ui/el.js';
 import { setSubscripted } from '../ui/subscripts.js';
 import { field, titledSection } from '../ui/formParts.js';
 import { panelCatalogue } from './catalogue.js';
-import { questionSelect } from './buildItemEditor.js';
+import { questionSelect } from './questionSelect.js';
 
 const t = messages('compose', english);
 

@@ -2,20 +2,41 @@
 // The fields of one item: a panel's heading, text and start (buildPanelStart.js), a text item's
 // heading and text, a question's choice from the bank and its seed. The lecturer's text is the
 // lecture's small Markdown, shown beside the field as the lecture page will show it
-// (lectureTextFragment: elements and text nodes only, math by KaTeX).
+// (lectureTextFragment: elements and text nodes only, math by KaTeX). The composer fetches this
+// module with its first item; the Markdown renderer (markdown-it and KaTeX, more than the rest of
+// the composer together) comes with the first text to show, and a panel's start (the names of its
+// controls, which the panel host's chunk holds) with the first panel item.
 import english from 'virtual:messages/en/compose';
 import { messages } from '../i18n/messages.js';
 import { el } from '../ui/el.js';
 import { setSubscripted } from '../ui/subscripts.js';
 import { field } from '../ui/formParts.js';
-import { lectureTextFragment } from '../lecture/lectureTextDom.js';
 import { LECTURE_CAPS } from '../lecture/readLecture.js';
 import { panelEntry } from '../panels/manifest.js';
 import { questionCatalogue, questionPrompt } from './catalogue.js';
-import { buildPanelStart } from './buildPanelStart.js';
+import { questionSelect } from './questionSelect.js';
 import { panelTitle } from '../panels/panelText.js';
 
 const t = messages('compose', english);
+
+/** @type {Promise<typeof import('../lecture/lectureTextDom.js')> | null} */
+let renderer = null;
+/** The lecture's Markdown renderer, fetched once, when a first text is shown. */
+const lectureText = () => (renderer ??= import('../lecture/lectureTextDom.js'));
+
+/** @type {Promise<typeof import('./buildPanelStart.js')> | null} */
+let panelStarts = null;
+
+/**
+ * A panel item's start and its controls (buildPanelStart.js), in a place of its own until its module is here.
+ * @param {import('./composerModel.js').PanelDraft} item
+ * @param {Patch} patch
+ */
+function panelStart(item, patch) {
+  const place = el('div', 'cp-start');
+  (panelStarts ??= import('./buildPanelStart.js')).then(({ buildPanelStart }) => place.replaceWith(buildPanelStart(item, { patch })));
+  return place;
+}
 
 /** @typedef {import('./composerModel.js').ItemDraft} ItemDraft */
 /** @typedef {(fields: import('./composerModel.js').ItemPatch) => void} Patch */
@@ -53,8 +74,17 @@ function markdownField(item, patch, placeholder) {
   preview.setAttribute('aria-label', t('preview'));
   preview.setAttribute('role', 'region');
   let timer = 0;
+  let shown = 0; // the latest text asked for: a render that arrives after a newer one is dropped
   const show = () => {
-    preview.replaceChildren(area.value.trim() ? lectureTextFragment(area.value) : el('p', 'cp-muted', placeholder || t('noText')));
+    const text = area.value;
+    const asked = ++shown;
+    if (!text.trim()) {
+      preview.replaceChildren(el('p', 'cp-muted', placeholder || t('noText')));
+      return;
+    }
+    lectureText().then(({ lectureTextFragment }) => {
+      if (asked === shown) preview.replaceChildren(lectureTextFragment(text));
+    });
   };
   area.addEventListener('input', () => {
     patch({ text: area.value });
@@ -76,21 +106,6 @@ function headingField(item, patch, placeholder) {
   const heading = textInput(item.heading, LECTURE_CAPS.heading, placeholder);
   heading.addEventListener('input', () => patch({ heading: heading.value }));
   return field(t('headingField'), heading);
-}
-
-/** A select of the bank's questions, grouped by panel, each by its kind and prompt (cut at 110 characters). */
-export function questionSelect() {
-  const select = /** @type {HTMLSelectElement} */ (el('select'));
-  for (const group of questionCatalogue()) {
-    const optgroup = /** @type {HTMLOptGroupElement} */ (el('optgroup'));
-    optgroup.label = group.title;
-    for (const q of group.questions) {
-      const prompt = q.prompt.length > 110 ? `${q.prompt.slice(0, 110)}…` : q.prompt;
-      optgroup.append(new Option(t('questionOption', { kind: q.kind, prompt }), q.id));
-    }
-    select.append(optgroup);
-  }
-  return select;
 }
 
 /**
@@ -128,7 +143,7 @@ export function buildItemEditor(item, { patch }) {
     const entry = panelEntry(item.panel);
     // The lecture page shows the panel's own title and paragraph always; these come above them.
     box.append(headingField(item, patch, t('panelHeadingPlaceholder', { title: entry ? panelTitle(item.panel) : item.panel })),
-      markdownField(item, patch, t('panelTextPlaceholder')), buildPanelStart(item, { patch }));
+      markdownField(item, patch, t('panelTextPlaceholder')), panelStart(item, patch));
   } else if (item.type === 'question') {
     box.append(...questionFields(item, patch), headingField(item, patch, t('optional')),
       markdownField(item, patch, t('questionTextPlaceholder')));

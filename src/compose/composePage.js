@@ -22,7 +22,6 @@ import {
 import { clearDraft, loadDraft, saveDraft } from './draftStore.js';
 import { buildCatalogue } from './buildCatalogue.js';
 import { buildLectureList } from './buildLectureList.js';
-import { buildItemEditor } from './buildItemEditor.js';
 import { buildShare } from './buildShare.js';
 import english from 'virtual:messages/en/compose';
 import { messages } from '../i18n/messages.js';
@@ -113,8 +112,24 @@ const list = buildLectureList({
       list.announce(t('removed', { name, count: draft.items.length, n: fixed(draft.items.length, 0) }));
     },
   },
-  editor: (item) => buildItemEditor(item, { patch: (fields) => commit(updateItem(draft, item.key, fields)) }),
+  editor: itemEditor,
 });
+
+/** @type {Promise<typeof import('./buildItemEditor.js')> | null} */
+let editors = null;
+/**
+ * An item's editor, in a place of its own until its module is here: the editors (a panel's start
+ * state, the controls' words, the Markdown preview) are fetched with the first item, so an empty
+ * composer draws without them.
+ * @param {import('./composerModel.js').ItemDraft} item
+ */
+function itemEditor(item) {
+  const place = el('div', 'cp-item-body');
+  (editors ??= import('./buildItemEditor.js')).then(({ buildItemEditor }) => {
+    place.replaceWith(buildItemEditor(item, { patch: (fields) => commit(updateItem(draft, item.key, fields)) }));
+  });
+  return place;
+}
 
 /**
  * @param {string} key

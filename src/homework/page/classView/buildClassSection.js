@@ -5,7 +5,8 @@
 // what cannot be used is listed with its name and reason. Out come a gradebook (a row per student,
 // sortable; files for a spreadsheet and for the LMS's grade import: exportTools.js), what the class
 // got wrong per question (a card each, one of which can be shown to the class with no name in it),
-// and each student's report on demand.
+// and each student's report on demand. Those results' own code (the gradebook, the cards, the
+// exports) is fetched when a class is first given: the section's first picture is its fields.
 // Nothing leaves the browser.
 import { button, el } from '../../../ui/el.js';
 import { fixed, seconds } from '../../../ui/format.js';
@@ -14,13 +15,17 @@ import { readSetSheet } from '../readSetSheet.js';
 import { gradedReport, problemBox } from '../gradedReport.js';
 import { createClassRunner } from './runClassView.js';
 import { fromDrop, fromInput, readPicked } from './pickedFiles.js';
-import { createGradebookTable, shownName } from './gradebookTable.js';
-import { questionSummaries } from './questionSummaries.js';
-import { buildExportTools } from './exportTools.js';
 import english from 'virtual:messages/en/class';
 import { messages } from '../../../i18n/messages.js';
 
 const t = messages('class', english);
+
+/** @typedef {[typeof import('./gradebookTable.js'), typeof import('./questionSummaries.js'), typeof import('./exportTools.js')]} Results */
+/** @type {Promise<Results> | null} */
+let resultModules = null;
+/** The gradebook's, the cards' and the exports' modules, fetched once. */
+const results = () => (resultModules ??= Promise.all([
+  import('./gradebookTable.js'), import('./questionSummaries.js'), import('./exportTools.js')]));
 /** What the status line says while a phase without counts runs (section.<phase>). */
 const PHASES = ['reading', 'summarising'];
 
@@ -111,10 +116,12 @@ export function buildClassSection(root) {
   const runner = createClassRunner();
   /** @type {{ file: File, path: string }[]} */
   let dropped = [];
-  /** @type {{ runs: number, busy: boolean, view: ClassView | null, table: ReturnType<typeof createGradebookTable> | null }} */
+  /** @type {{ runs: number, busy: boolean, view: ClassView | null,
+   *   table: ReturnType<typeof import('./gradebookTable.js').createGradebookTable> | null }} */
   const state = { runs: 0, busy: false, view: null, table: null };
 
   async function run() {
+    results(); // fetched while the class is read and graded
     const file = saved.files?.[0];
     const classFile = file ? new Uint8Array(await file.arrayBuffer()) : undefined;
     const expected = readSetSheet(sheet.value);
@@ -159,6 +166,7 @@ export function buildClassSection(root) {
    * @param {number} ms  how long reading and grading took
    */
   async function showView(v, ms) {
+    const [{ createGradebookTable, shownName }, { questionSummaries }, { buildExportTools }] = await results();
     const { gradebook } = v;
     const took = seconds(ms / 1000);
     const counts = {
