@@ -22,12 +22,22 @@ import { panelTitle } from './panels/panelText.js';
 import { startPageLanguage } from './i18n/pageLanguage.js';
 import { messages } from './i18n/messages.js';
 
-// The page's language first: every word below is written in it. An offline lecture carries its own
-// (its data element's "lang"), which the reader's choice and the link's ?lang= still beat.
-const language = await startPageLanguage({ carried: carriedLectureLanguage() });
+// The page's language first: every word below is written in it. A composed lecture carries its own
+// (the "lang" of its link's code, or of the data element of an offline lecture), which the link's
+// ?lang= still beats, as a homework sheet's does.
+const language = await startPageLanguage({ carried: await carriedLectureLanguage() });
 
-/** The language of a lecture written into the page (offline/index.html), read without reading the rest. */
-function carriedLectureLanguage() {
+/**
+ * The language of the lecture the page shows, given by ?lecture= or written into the page
+ * (offline/index.html), the link first as openLecture.js takes it; read without reading the rest
+ * (the code's decoder comes only with a lecture link).
+ */
+async function carriedLectureLanguage() {
+  const code = new URLSearchParams(window.location.search).get('lecture');
+  if (code !== null) {
+    // A decoder that cannot load leaves the choice to the rest (the lecture's own loading says why).
+    return import('./lecture/lectureCode.js').then(({ lectureCodeLanguage }) => lectureCodeLanguage(code), () => null);
+  }
   const data = document.getElementById(LECTURE_ELEMENT_ID);
   if (!(data instanceof HTMLScriptElement) || data.type !== 'application/json') return null;
   try {
@@ -153,7 +163,10 @@ window.fresnelLab.ready = (async () => {
   }) : null;
   window.fresnelLab.lecture = { source: opened?.source ?? 'default', title: opened?.title ?? null, code: opened?.code ?? null };
   const composeLink = document.querySelector('.compose-offer a');
-  if (composeLink instanceof HTMLAnchorElement && opened?.code) composeLink.href = `./compose.html?lecture=${opened.code}`;
+  // The composer opens it in this page's language (the lecture's own, unless the reader chose another).
+  if (composeLink instanceof HTMLAnchorElement && opened?.code) {
+    composeLink.href = `./compose.html?lecture=${opened.code}&lang=${encodeURIComponent(language.id)}`;
+  }
   const composed = opened?.composed ?? null;
   main.classList.remove('lecture-pending');
   const { sections, panels } = composed ?? ownPanels();

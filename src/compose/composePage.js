@@ -2,7 +2,9 @@
 // compose.html: the lecture composer. A catalogue to add from, the lecture as an ordered list of
 // items to edit, and the lecture's link, file and exports. It opens with the lecture of
 // ?lecture=CODE (to edit a shared lecture), else the work kept in this browser, else an empty
-// lecture; whatever cannot be read is named above it, never a blank page.
+// lecture; whatever cannot be read is named above it, never a blank page. A lecture keeps its own
+// language, shown and changed beside its title; a link's lecture opens the page in it (unless the
+// link asks for another with ?lang=), as the lecture page does.
 import '../styles.css';
 import './compose.css';
 import { setupPageControls } from '../host/setupPageControls.js';
@@ -13,11 +15,13 @@ import { button, el } from '../ui/el.js';
 import { fixed } from '../ui/format.js';
 import { field } from '../ui/formParts.js';
 import { lectureFromCode } from '../lecture/lectureLink.js';
+import { lectureCodeLanguage } from '../lecture/lectureCode.js';
+import { LANGUAGES, languageById } from '../i18n/languages.js';
 import { defaultLecture } from '../lecture/defaultLecture.js';
 import { LECTURE_CAPS } from '../lecture/readLecture.js';
 import {
   addItem, draftData, draftFromLecture, draftToLecture, duplicateItem, emptyDraft, itemIndex, itemName, moveItem, moveItemTo,
-  panelItem, questionItem, removeItem, setTitle, textItem, updateItem,
+  panelItem, questionItem, removeItem, setLanguage, setTitle, textItem, updateItem,
 } from './composerModel.js';
 import { clearDraft, loadDraft, saveDraft } from './draftStore.js';
 import { buildCatalogue } from './buildCatalogue.js';
@@ -38,8 +42,9 @@ function pageElement(selector) {
   return found;
 }
 
-// The language first, so every word below is in it.
-const language = await startPageLanguage();
+const search = new URLSearchParams(window.location.search);
+// The language first, so every word below is in it: a link's lecture carries its own.
+const language = await startPageLanguage({ carried: search.has('lecture') ? lectureCodeLanguage(search.get('lecture')) : null });
 setupPageControls(pageElement('.page-controls'), {});
 const root = pageElement('#composer');
 const notices = el('div', 'cp-notices');
@@ -56,7 +61,6 @@ intro.append(starts, notices);
 root.append(intro); // first, so that a fault while the rest is built is said on the page
 
 // The draft, where it comes from: the link, else what this browser kept.
-const search = new URLSearchParams(window.location.search);
 let draft = emptyDraft();
 let kept = true;
 /** @type {import('../lecture/readLecture.js').Lecture | null} what this browser kept, when a link's lecture is shown instead */
@@ -82,6 +86,18 @@ if (!search.has('lecture') || !kept) {
 const title = /** @type {HTMLInputElement} */ (el('input', 'cp-title'));
 title.type = 'text';
 title.maxLength = LECTURE_CAPS.title;
+// The lecture's language: its own, whatever this page's (a pseudo-locale is listed while a lecture has it).
+const languageSelect = /** @type {HTMLSelectElement} */ (el('select', 'cp-language'));
+const languageHint = el('p', 'cp-hint', t('languageHint'));
+languageHint.id = 'cp-language-hint';
+languageSelect.setAttribute('aria-describedby', languageHint.id);
+/** @param {string} lang */
+function showLanguage(lang) {
+  const own = languageById(lang);
+  const choices = own && !LANGUAGES.includes(own) ? [...LANGUAGES, own] : LANGUAGES;
+  languageSelect.replaceChildren(...choices.map((l) => Object.assign(new Option(l.name, l.id), { lang: l.id }))); // each named in itself
+  languageSelect.value = lang;
+}
 const lectureSection = el('section', 'cp-lecture');
 lectureSection.setAttribute('aria-labelledby', 'cp-lecture-title');
 const lectureHeading = el('h2', null, t('yourLecture'));
@@ -169,6 +185,7 @@ function commit(next) {
 function replace(next) {
   draft = next;
   title.value = draft.title;
+  showLanguage(draft.lang);
   list.reset(draft);
   commit(draft);
 }
@@ -192,7 +209,8 @@ const catalogue = buildCatalogue({
 });
 
 title.addEventListener('input', () => commit(setTitle(draft, title.value)));
-lectureSection.append(lectureHeading, field(t('titleField'), title), list.element);
+languageSelect.addEventListener('change', () => commit(setLanguage(draft, languageSelect.value)));
+lectureSection.append(lectureHeading, field(t('titleField'), title), field(t('languageField'), languageSelect), languageHint, list.element);
 const columns = el('div', 'cp-columns');
 columns.append(catalogue, lectureSection);
 root.append(columns, share.element);

@@ -1,5 +1,5 @@
 // @ts-check
-// The composer's lecture while it is written: a title and an ordered list of items, each with a
+// The composer's lecture while it is written: a title, its language and an ordered list of items, each with a
 // key of its own (so the page can keep an item's editor and its focus while the list is reordered)
 // and every field present, empty or not. Pure functions that return a new draft; the lecture a
 // draft gives is read back by readLecture, so what the composer offers as a link or a file is
@@ -21,7 +21,7 @@ const t = messages('compose', english);
  * @typedef {{ key: string, type: 'text', heading: string, text: string }} TextDraft
  * @typedef {{ key: string, type: 'question', question: string, seed: string, heading: string, text: string }} QuestionDraft
  * @typedef {PanelDraft | TextDraft | QuestionDraft} ItemDraft
- * @typedef {{ title: string, items: ItemDraft[], nextKey: number }} Draft
+ * @typedef {{ title: string, lang: string, items: ItemDraft[], nextKey: number }} Draft  lang: the lecture's language
  * @typedef {Omit<PanelDraft, 'key'> | Omit<TextDraft, 'key'> | Omit<QuestionDraft, 'key'>} NewItem  an item before addItem keys it
  * @typedef {Partial<Omit<PanelDraft, 'key' | 'type'> & Omit<QuestionDraft, 'key' | 'type'>>} ItemPatch  fields an editor changes
  */
@@ -29,9 +29,12 @@ const t = messages('compose', english);
 /** The title of a new lecture ("My lecture"), in the page's language. */
 export const defaultTitle = () => t('defaultTitle');
 
-/** @returns {Draft} */
-export function emptyDraft(title = defaultTitle()) {
-  return { title, items: [], nextKey: 1 };
+/**
+ * A lecture with no items, in `lang` (by default the page's: a new lecture's words are written on it).
+ * @returns {Draft}
+ */
+export function emptyDraft(title = defaultTitle(), lang = currentLanguage()) {
+  return { title, lang, items: [], nextKey: 1 };
 }
 
 /**
@@ -129,13 +132,15 @@ export function updateItem(draft, key, patch) {
 /** @type {(draft: Draft, title: string) => Draft} */
 export const setTitle = (draft, title) => ({ ...draft, title });
 
+/** @type {(draft: Draft, lang: string) => Draft} The lecturer's choice of the lecture's language. */
+export const setLanguage = (draft, lang) => ({ ...draft, lang });
+
 /** @type {(draft: Draft, key: string) => number} The position (0-based) of item `key`, or −1. */
 export const itemIndex = (draft, key) => at(draft, key);
 
 /**
- * The lecture's data as the draft holds it, before it is read: empty fields left out, and the page's
- * language as the lecture's (its words are the lecturer's, written on this page), so that the
- * lecture page, the deck and the offline lecture open in it. @param {Draft} draft
+ * The lecture's data as the draft holds it, before it is read: empty fields left out, and its
+ * language, so that the lecture page, the deck and the offline lecture open in it. @param {Draft} draft
  */
 export function draftData(draft) {
   const items = draft.items.map((item) => {
@@ -149,7 +154,7 @@ export function draftData(draft) {
     }
     return out;
   });
-  return { kind: LECTURE_KIND, version: LECTURE_VERSION, title: draft.title, lang: currentLanguage(), items };
+  return { kind: LECTURE_KIND, version: LECTURE_VERSION, title: draft.title, lang: draft.lang, items };
 }
 
 /**
@@ -165,12 +170,14 @@ export function draftToLecture(draft) {
 }
 
 /**
- * A draft to edit a lecture (as readLecture gives it).
- * @param {{ title: string, items: readonly import('../lecture/readLecture.js').LectureItem[] }} lecture
+ * A draft to edit a lecture (as readLecture gives it), in the lecture's language: opening a lecture
+ * on a page in another language does not make it that language's. One that carries none takes the
+ * page's, as a new one does.
+ * @param {{ title: string, lang?: string, items: readonly import('../lecture/readLecture.js').LectureItem[] }} lecture
  * @returns {Draft}
  */
 export function draftFromLecture(lecture) {
-  let draft = emptyDraft(lecture.title);
+  let draft = emptyDraft(lecture.title, lecture.lang ?? currentLanguage());
   for (const item of lecture.items) {
     const full = item.type === 'panel' ? { ...panelItem(item.panel), ...item }
       : item.type === 'question' ? { ...questionItem(item.question), ...item } : { ...textItem(), ...item };

@@ -1,20 +1,15 @@
 // @ts-check
-// A lecture in a link: ?lecture=L1.<base64url of the raw DEFLATE of its JSON> (RFC 1951, RFC 4648
-// §5), a fraction of the JSON's length, and "." and base64url's characters survive any link. Reading
-// it is bounded twice: the code's length before anything is done, and the inflated size (a small code
-// that inflates to a book is refused), so a link from anyone costs little. What the code holds is
-// then read as untrusted data (readLecture.js).
-import { deflateSync, inflateSync } from 'fflate';
+// A lecture in a link: ?lecture=L1.<base64url of the raw DEFLATE of its JSON> (lectureCode.js reads
+// a code into data, bounded). What the code holds is then read as untrusted data (readLecture.js),
+// and what could not be decoded is said in the page's language.
+import { deflateSync } from 'fflate';
 import english from 'virtual:messages/en/lecture';
 import { messages } from '../i18n/messages.js';
 import { readLecture } from './readLecture.js';
 import { fixed } from '../ui/format.js';
+import { LECTURE_CODE_PREFIX, MAX_CODE, MAX_JSON, lectureCodeData } from './lectureCode.js';
 
 const t = messages('lecture', english);
-
-export const LECTURE_CODE_PREFIX = 'L1.';
-const MAX_CODE = 100_000; // characters; a full lecture with text on every item is a few kilobytes
-const MAX_JSON = 400_000; // bytes inflated
 
 const toBase64Url = (/** @type {Uint8Array} */ bytes) => {
   let binary = '';
@@ -36,37 +31,9 @@ export function lectureToCode(lecture) {
  * @returns {import('./readLecture.js').ReadLecture}
  */
 export function lectureFromCode(text) {
-  if (typeof text !== 'string') return { ok: false, problems: [t('codeNotText')] };
-  let code = text.trim();
-  const inLink = /[?&]lecture=([^&#\s]*)/.exec(code);
-  if (inLink) {
-    try {
-      code = decodeURIComponent(inLink[1]);
-    } catch {
-      return { ok: false, problems: [t('codeBadPercent')] };
-    }
-  }
-  code = code.replace(/\s+/g, ''); // mail wraps long links
-  if (!code.startsWith(LECTURE_CODE_PREFIX)) {
-    return { ok: false, problems: [t('codeNoPrefix', { prefix: LECTURE_CODE_PREFIX })] };
-  }
-  if (code.length > MAX_CODE) {
-    return { ok: false, problems: [t('codeTooLong', { length: fixed(code.length, 0), max: fixed(MAX_CODE, 0) })] };
-  }
-  const body = code.slice(LECTURE_CODE_PREFIX.length);
-  if (!/^[A-Za-z0-9_-]*$/.test(body)) {
-    return { ok: false, problems: [t('codeBadCharacters')] };
-  }
-  /** @type {unknown} */
-  let json;
-  try {
-    const bytes = Uint8Array.from(atob(body.replace(/-/g, '+').replace(/_/g, '/')), (c) => c.charCodeAt(0));
-    // One byte of room: a stream that runs past the cap is refused, not cut.
-    const out = inflateSync(bytes, { out: new Uint8Array(MAX_JSON + 1) });
-    if (out.length > MAX_JSON) return { ok: false, problems: [t('codeTooBig', { max: fixed(MAX_JSON, 0) })] };
-    json = JSON.parse(new TextDecoder('utf-8', { fatal: true }).decode(out));
-  } catch {
-    return { ok: false, problems: [t('codeDamaged')] };
-  }
-  return readLecture(json);
+  const decoded = lectureCodeData(text);
+  if (decoded.ok) return readLecture(decoded.data);
+  const max = decoded.problem === 'codeTooBig' ? MAX_JSON : MAX_CODE;
+  const args = { prefix: LECTURE_CODE_PREFIX, length: fixed(decoded.length ?? 0, 0), max: fixed(max, 0) };
+  return { ok: false, problems: [t(decoded.problem, args)] };
 }

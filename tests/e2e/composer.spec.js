@@ -142,6 +142,44 @@ test('a lecture composed in a language carries it: in its data and its link, and
   await expect(page.locator('section[data-panel="schlick"] .toolbar button').first()).toHaveText(/^⟦.+⟧$/);
 });
 
+test('a lecture opens in its own language on the lecture page and in the composer, which keeps it; ?lang= still wins', async ({ page }) => {
+  const spanish = JSON.parse(readFileSync(resolve(import.meta.dirname, '../../locales/es.json'), 'utf8'));
+  const lecture = { kind: 'fresnel-lab-lecture', version: 1, title: 'Óptica', lang: 'es', items: [{ type: 'panel', panel: 'schlick' }] };
+  const code = `L1.${deflateRawSync(Buffer.from(JSON.stringify(lecture))).toString('base64url')}`;
+  // A reader whose browser speaks English and who chose English here before: a lecture's language
+  // still wins, as a homework sheet's does (docs/student/language.md).
+  await page.goto('./');
+  await page.evaluate(() => localStorage.setItem('fresnel-lab:language', 'en'));
+  await page.goto(`index.html?lecture=${code}`);
+  await labReady(page);
+  await expect(page.locator('html')).toHaveAttribute('lang', 'es');
+  await expect(page.locator('section[data-panel="schlick"] h2')).toHaveText(spanish.panels['schlick.title']);
+  // Its Edit link goes on in the page's language, with the lecture.
+  const edit = new URL(await page.locator('.compose-offer a').getAttribute('href'), page.url());
+  expect(edit.searchParams.get('lang')).toBe('es');
+  expect(lectureOf(edit.href).lang).toBe('es');
+  // The reader's ?lang= wins, and the Edit link carries it.
+  await page.goto(`index.html?lecture=${code}&lang=en`);
+  await labReady(page);
+  await expect(page.locator('html')).toHaveAttribute('lang', 'en');
+  await page.goto(await page.locator('.compose-offer a').getAttribute('href'));
+  // The composer in English keeps the lecture Spanish: shown, and written into its link and data.
+  await expect(page.locator('html')).toHaveAttribute('lang', 'en');
+  await expect(page.getByLabel('Language of the lecture')).toHaveValue('es');
+  await page.getByLabel('Title of the lecture').fill('Óptica, segunda parte');
+  const link = await page.getByLabel('Lecture link').inputValue();
+  expect(new URL(link).searchParams.get('lang')).toBe('es');
+  expect(lectureOf(link)).toMatchObject({ title: 'Óptica, segunda parte', lang: 'es' });
+  // Changed only by the lecturer's choice.
+  await page.getByLabel('Language of the lecture').selectOption('en');
+  await expect.poll(async () => lectureOf(await page.getByLabel('Lecture link').inputValue()).lang).toBe('en');
+  // Opened for editing without ?lang=, the composer speaks the lecture's language.
+  await page.goto(`compose.html?lecture=${code}`);
+  await expect(page.locator('html')).toHaveAttribute('lang', 'es');
+  await expect(page.getByRole('heading', { level: 1 })).toHaveText(spanish.compose.heading);
+  await expect(page.getByLabel(spanish.compose.languageField)).toHaveValue('es');
+});
+
 test('a lecture link opens for editing; a damaged link and a file that is no lecture are refused in words', async ({ page }) => {
   const shared = { kind: 'fresnel-lab-lecture', version: 1, title: 'Shared', items: [{ type: 'panel', panel: 'metals' }, { type: 'panel', panel: 'bogus' }] };
   const code = `L1.${deflateRawSync(Buffer.from(JSON.stringify(shared))).toString('base64url')}`;

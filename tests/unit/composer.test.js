@@ -4,7 +4,7 @@
 import { describe, expect, it } from 'vitest';
 import {
   addItem, draftData, draftFromLecture, draftToLecture, duplicateItem, emptyDraft, itemName, moveItem, moveItemTo,
-  panelItem, questionItem, removeItem, setTitle, textItem, updateItem,
+  panelItem, questionItem, removeItem, setLanguage, setTitle, textItem, updateItem,
 } from '../../src/compose/composerModel.js';
 import { readPastedLink } from '../../src/compose/pastedLink.js';
 import { panelCatalogue, plainText, questionCatalogue, shortText } from '../../src/compose/catalogue.js';
@@ -113,11 +113,24 @@ describe('the lecture a draft gives', () => {
     expect(problems.join('\n')).toMatch(/Item 3: no-such-question is no question/);
   });
 
-  it('leaves empty fields out of the data it keeps, and writes the page’s language into it', () => {
+  it('leaves empty fields out of the data it keeps, and writes a new lecture in the page’s language', () => {
     const { draft } = build(panelItem('schlick'));
     expect(draftData(draft)).toEqual({
       kind: 'fresnel-lab-lecture', version: 1, title: 'Optics, my way', lang: 'en', items: [{ type: 'panel', panel: 'schlick' }],
     });
+  });
+
+  it('keeps an opened lecture’s language on a page in another, until the lecturer changes it', () => {
+    // The page speaks English here (Node has no other catalogue loaded): a Spanish lecture stays Spanish.
+    const spanish = { kind: 'fresnel-lab-lecture', version: 1, title: 'Óptica', lang: 'es', items: [{ type: 'panel', panel: 'schlick' }] };
+    const draft = draftFromLecture(spanish);
+    expect(draft.lang).toBe('es');
+    expect(draftData(draft).lang).toBe('es');
+    expect(draftToLecture(updateItem(draft, draft.items[0].key, { heading: 'Schlick' })).lecture.lang).toBe('es');
+    expect(lectureFromCode(lectureToCode(draftToLecture(draft).lecture)).lecture.lang).toBe('es');
+    // Changed only by the lecturer's choice; a lecture that carries none takes the page's.
+    expect(draftToLecture(setLanguage(draft, 'en')).lecture.lang).toBe('en');
+    expect(draftFromLecture({ ...spanish, lang: undefined }).lang).toBe('en');
   });
 });
 

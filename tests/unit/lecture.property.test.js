@@ -5,6 +5,7 @@ import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { readLecture, LECTURE_CAPS, LECTURE_KIND } from '../../src/lecture/readLecture.js';
 import { lectureFromCode, lectureToCode } from '../../src/lecture/lectureLink.js';
+import { lectureCodeLanguage } from '../../src/lecture/lectureCode.js';
 import { lectureTextTree } from '../../src/lecture/lectureText.js';
 import { defaultLecture } from '../../src/lecture/defaultLecture.js';
 import { PANELS } from '../../src/panels/manifest.js';
@@ -99,6 +100,20 @@ describe('the language a lecture was written in', () => {
       expect(read.problems[0]).toMatch(/^The language .* is not one the lab speaks \(en, es\), so it is left out\.$/);
     }
     expect(readLecture(lecture('xx')).problems[0]).toContain('xx');
+  });
+
+  it('is read from a code or a link before the lecture is, as readLecture would keep it', () => {
+    const code = (lang) => lectureToCode(lecture(lang));
+    for (const lang of ['en', 'es', 'en-XA', 'ar-XB']) {
+      expect(lectureCodeLanguage(code(lang)), lang).toBe(lang);
+      expect(lectureCodeLanguage(`https://lab.example/index.html?lecture=${encodeURIComponent(code(lang))}&x=1`)).toBe(lang);
+    }
+    for (const lang of ['xx', 'es-MX', 42, undefined]) expect(lectureCodeLanguage(code(lang)), String(lang)).toBeNull();
+    // Whatever the text, a language the lab speaks or null, never a throw.
+    check(fc.property(fc.oneof(anyText, anyText.map((t) => `L1.${t}`), anyValue), (text) => {
+      const lang = lectureCodeLanguage(text);
+      expect(lang === null || ['en', 'es', 'en-XA', 'ar-XB'].includes(lang)).toBe(true);
+    }), 200);
   });
 });
 
