@@ -1,13 +1,14 @@
 // The page's language, chosen once as the page starts (languages.js says which, from the link, what
 // the page carries, the reader's choice kept in this browser and the browser's languages): its
 // catalogue loaded (English ships with the page; another language is one chunk, fetched only when
-// chosen), <html lang dir> set, and shown numbers given its decimal separator. A reader's change
-// of language is kept in this browser and reloads the page, which then starts in it: every word on
-// the page is written once, in one language.
+// chosen), <html lang dir> set, shown numbers given its decimal separator and dates its form. A
+// reader's change of language is kept in this browser and reloads the page, which then starts in
+// it: every word on the page is written once, in one language.
 import loaders from 'virtual:messages/languages';
 import { LANGUAGES, SOURCE_LANGUAGE, languageById, pickLanguage } from './languages.js';
 import { setCatalogue } from './messages.js';
 import { setNumberLocale } from '../ui/format.js';
+import { setPageLanguage } from '../ui/safeLocale.js';
 import english from 'virtual:messages/en/ui:languageNotCarried';
 import { messages } from './messages.js';
 
@@ -59,7 +60,7 @@ export async function startLanguage({ carried = null, stored = true } = {}) {
 }
 
 /**
- * Loads `id`'s catalogue and makes it the page's (lang, dir, numbers).
+ * Loads `id`'s catalogue and makes it the page's (lang, dir, numbers, dates and sorting).
  * @param {string} id
  */
 export async function useLanguage(id) {
@@ -70,6 +71,7 @@ export async function useLanguage(id) {
   const compiled = load ? (await load()).default : null;
   setCatalogue(language.id, compiled);
   setNumberLocale(language.numbers);
+  setPageLanguage(language.numbers); // a pseudo-locale writes dates as its numbers, in English
   document.documentElement.lang = language.id;
   document.documentElement.dir = language.dir;
   return language;

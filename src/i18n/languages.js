@@ -5,7 +5,10 @@
 // only asked for by name (?lang=en-XA), for the tests.
 import { safeLocale } from '../ui/safeLocale.js';
 
-/** @typedef {{ id: string, name: string, dir: 'ltr' | 'rtl', numbers: string }} Language */
+/**
+ * numbers: the locale its shown numbers and its dates are written in.
+ * @typedef {{ id: string, name: string, dir: 'ltr' | 'rtl', numbers: string }} Language
+ */
 
 /** @type {readonly Language[]} */
 export const LANGUAGES = Object.freeze([

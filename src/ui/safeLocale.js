@@ -5,6 +5,8 @@
 // nothing, and Intl throws "Invalid language tag" on each. Those are POSIX locale names,
 // language[_territory][.codeset][@modifier] (POSIX.1-2017, section 8.2), where C and POSIX name the
 // portable locale, whose messages are English. A tag that still does not read falls back to English.
+// Dates, times and sorting follow the page's language (setPageLanguage, from src/i18n/language.js),
+// in the browser's own regional form of it where the browser speaks it (en-GB writes 05/12/2026).
 
 /** The locale when nothing usable was reported: the language the lab is written in. */
 export const FALLBACK_LOCALE = 'en';
@@ -47,13 +49,44 @@ export function safeLocale(reported) {
   return FALLBACK_LOCALE;
 }
 
+/** The page's language as a tag (setPageLanguage), or null before a page chooses one. */
+let pageLanguage = /** @type {string | null} */ (null);
+
 /**
- * The reader's locale: the browser's languages in order of preference, made safe; English where
- * there is no browser (Node).
+ * Dates, times and sorting follow `language` from now on (made safe here); null: the browser's
+ * languages, as before a page chose one.
+ * @param {unknown} language
+ */
+export function setPageLanguage(language) {
+  pageLanguage = language === null || language === undefined ? null : safeLocale(language);
+}
+
+/**
+ * The locale that writes `language` for a reader whose browser reports `reported` (a tag or a
+ * list): the first reported tag in that language, with its region (English in a British browser:
+ * en-GB), else the language itself. Made safe: an invalid tag gives English, never a throw.
+ * @param {unknown} language
+ * @param {unknown} reported
+ * @returns {string}
+ */
+export function localeFor(language, reported) {
+  const tag = safeLocale(language);
+  const primary = tag.split('-')[0];
+  for (const item of Array.isArray(reported) ? reported.slice(0, MAX_TAGS) : [reported]) {
+    const own = readTag(item);
+    if (own && own.split('-')[0] === primary) return own;
+  }
+  return tag;
+}
+
+/**
+ * The reader's locale: the page's language (setPageLanguage) in the browser's form of it, else the
+ * browser's languages in order of preference; made safe. English where there is neither (Node).
  * @returns {string}
  */
 export function pageLocale() {
   const nav = globalThis.navigator;
-  if (!nav) return FALLBACK_LOCALE;
-  return safeLocale([...(Array.isArray(nav.languages) ? nav.languages.slice(0, MAX_TAGS) : []), nav.language]);
+  const reported = nav ? [...(Array.isArray(nav.languages) ? nav.languages.slice(0, MAX_TAGS) : []), nav.language] : [];
+  if (pageLanguage) return localeFor(pageLanguage, reported);
+  return safeLocale(reported);
 }

@@ -1,8 +1,10 @@
 // safeLocale: what browsers report on real systems, as ECMA-402 needs it; and for any input at
-// all, never a throw and always a tag that every Intl constructor takes.
-import { describe, expect, it } from 'vitest';
+// all, never a throw and always a tag that every Intl constructor takes. pageLocale: dates follow
+// the page's language, not the browser's, in the browser's own form of it where it speaks it.
+import { afterEach, describe, expect, it, vi } from 'vitest';
 import fc from 'fast-check';
-import { FALLBACK_LOCALE, pageLocale, safeLocale } from '../../src/ui/safeLocale.js';
+import { FALLBACK_LOCALE, localeFor, pageLocale, safeLocale, setPageLanguage } from '../../src/ui/safeLocale.js';
+import { useLanguage } from '../../src/i18n/language.js';
 import { check } from './fuzzConfig.js';
 
 /** The tag is canonical and each constructor the lab uses takes it. */
@@ -86,5 +88,51 @@ describe('safeLocale: any input', () => {
       }
       if (canonical) expect(safeLocale(canonical)).toBe(canonical === 'posix' ? 'en' : canonical);
     }), 300);
+  });
+});
+
+describe('the locale of dates and times: the page\'s language', () => {
+  afterEach(() => {
+    setPageLanguage(null);
+    vi.unstubAllGlobals();
+  });
+
+  it.each([
+    ['es', ['en-US'], 'es'], // a Spanish page in an American browser writes Spanish dates
+    ['es', ['en-US', 'es-MX'], 'es-MX'], // in the browser's own form of Spanish where it has one
+    ['en', ['en-GB', 'en-US'], 'en-GB'],
+    ['en', ['de-DE', 'en-US@posix'], 'en-US'],
+    ['es', ['es_ES.UTF-8'], 'es-ES'],
+    ['en', ['C'], 'en'],
+    ['es', [], 'es'],
+    ['es', 'not a language', 'es'],
+    ['not a language', ['de-DE'], 'en'], // a language that is no tag is English, never a throw
+    [undefined, undefined, 'en'],
+  ])('%j in a browser reporting %j is written %j', (language, reported, expected) => {
+    expect(localeFor(language, reported)).toBe(expected);
+    accepted(localeFor(language, reported));
+  });
+
+  it('any language and anything reported give a tag every Intl constructor takes', () => {
+    check(fc.property(reported, fc.oneof(reported, fc.array(reported, { maxLength: 20 })), (language, browser) => {
+      accepted(localeFor(language, browser));
+    }), 300);
+  });
+
+  it('follows the language the page chose, not the browser\'s, once the page has one', async () => {
+    vi.stubGlobal('navigator', { languages: ['en-US'], language: 'en-US' });
+    vi.stubGlobal('document', { documentElement: {} });
+    const december = (locale) => new Intl.DateTimeFormat(locale, { month: 'long', timeZone: 'UTC' }).format(new Date('2026-12-05T12:00:00Z'));
+    expect(pageLocale()).toBe('en-US');
+    try {
+      await useLanguage('es'); // as a page in Spanish starts (src/i18n/language.js)
+      expect(pageLocale()).toBe('es');
+      expect(december(pageLocale())).toBe('diciembre');
+      await useLanguage('en-XA'); // a pseudo-locale writes its dates as its numbers: English
+      expect(pageLocale()).toBe('en-US');
+    } finally {
+      await useLanguage('en');
+    }
+    expect(december(pageLocale())).toBe('December');
   });
 });
