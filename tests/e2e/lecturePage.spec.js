@@ -5,6 +5,7 @@
 import { deflateSync } from 'fflate';
 import { test, expect, openLab } from './fixtures.js';
 import { seriousViolations } from './audit.js';
+import { panelEntry } from '../../src/panels/manifest.js';
 
 /** A lecture's link code, made here as the format says (raw DEFLATE, base64url), not by the page's own writer. */
 const code = (lecture) => `L1.${Buffer.from(deflateSync(Buffer.from(JSON.stringify(lecture)), { level: 9 })).toString('base64url')}`;
@@ -50,9 +51,9 @@ test('a composed lecture opens from its link as composed, steps item by item, an
   await expect(page.locator('#text--2 ol > li')).toHaveText(['Into the glass', 'Out of it']);
   await expect(page.locator('#question--4 .hw-prompt')).toContainText('predict the angle');
   await expect(page.locator('#polarization .lecture-text')).toHaveText('Where does R_p vanish?');
-  // A panel's later item keeps the place the build keeps for the panel (760 px at this width), before it mounts.
+  // A panel's later item keeps the place the build keeps for the panel (its entry's, two columns at 1280 px), before it mounts.
   expect(await page.evaluate(() => window.fresnelLab.hosts['spheres--2'].mounted)).toBe(false);
-  await expect(page.locator('#spheres--2 > .panel-mount')).toHaveCSS('min-height', '760px');
+  await expect(page.locator('#spheres--2 > .panel-mount')).toHaveCSS('min-height', `${panelEntry('spheres').place.wide}px`);
 
   // Lecture mode: the clicker keys step over every item, text and question too.
   await page.locator('.site-title h1').click();
