@@ -5,6 +5,7 @@
 // the s/p Fresnel equations), from the numbers each student's page prints.
 import { readFileSync, writeFileSync } from 'node:fs';
 import { test, expect } from './fixtures.js';
+import { schema as polarizationSchema } from '../../src/panels/polarization/schema.js';
 import { seriousViolations } from './audit.js';
 
 const DEG = Math.PI / 180;
@@ -61,7 +62,9 @@ test('a student predicts, answers right and wrong, hands in, and the file is che
   await expect(card(page, 1).locator('.hw-result')).toHaveText(new RegExp(`^Right\\. The computed answer is ${brewster.toFixed(2)}°`));
   await expect(card(page, 1).locator('.predict-true')).toHaveCount(1);
   await expect(card(page, 1).locator('.predict-marker text')).toHaveText(`yours: ${Math.round(brewster).toFixed(1)}°`);
-  await expect(card(page, 1).locator('iframe')).toHaveAttribute('src', new RegExp(`embed\\.html\\?panel=polarization&nT=${nT}$`)); // as every embed link is written
+  // As every embed link is written: the panel, then the values that differ from its defaults.
+  const nTInLink = nT === polarizationSchema.nT.default ? '' : `&nT=${nT}`;
+  await expect(card(page, 1).locator('iframe')).toHaveAttribute('src', new RegExp(`embed\\.html\\?panel=polarization${nTInLink}$`));
   await expect(page.locator('iframe')).toHaveCount(3);
   await expect(card(page, 1).locator('.hw-result')).toBeFocused(); // the keyboard is left at the result, not on <body>
 
