@@ -55,6 +55,21 @@
 /** A panel's values, by schema key. @typedef {Record<string, Value>} Values */
 
 /**
+ * The value a spec gives: a number, a boolean, or text (an enum's option, a colour, a text).
+ * Distributes over a union, so ValueOf<ParamSpec> is Value.
+ * @template {ParamSpec} P
+ * @typedef {P extends { type: 'number' } ? number : P extends { type: 'boolean' } ? boolean : string} ValueOf
+ */
+
+/**
+ * A panel's values typed from its schema: { nI: number, exercise: string, … }. The schema keeps
+ * each `type` as a literal when it is declared with `@satisfies {Schema}` (schema.js); of the plain
+ * `Schema` it is Readonly<Values>.
+ * @template {Schema} S
+ * @typedef {{ readonly [K in keyof S]: ValueOf<S[K]> }} ValuesOf
+ */
+
+/**
  * What a set did. applied: the values taken, by key; rejected: the names and values refused, and
  * why; changed: the keys whose value is now different; refused: the change touched a control a deck
  * has locked, and nothing of it was applied.
@@ -68,10 +83,10 @@
  */
 
 /**
- * What mount() gets.
+ * What mount() gets. S: the panel's schema (`PanelContext<typeof schema>`), which types `values`.
+ * @template {Schema} [S=Schema]
  * @typedef {object} PanelContext
- * @property {any} values  the current values, read-only (writing one throws): the host owns them. Typed by each
- *   panel (its functions take { nI: number, … }), since their types come from that panel's schema
+ * @property {ValuesOf<S>} values  the current values, read-only (writing one throws): the host owns them
  * @property {(update: Record<string, unknown>, options?: { source?: ChangeSource }) => SetResult} set
  *   change values: validated, then controls, URL, picture and messages follow (update(keys) runs).
  *   Called inside update, the host runs update again with those keys once this one returns;
@@ -142,8 +157,9 @@
  * names its own hooks), with whatever else they drive (a GPU, a chain builder, a benchmark) as a
  * stand-in in Node.
  * @template [Hooks=object]
+ * @template {Readonly<Values>} [V=Readonly<Values>]  the panel's values: ValuesOf<typeof schema>
  * @typedef {object} RunsOptions
- * @property {any} values  the host's live values, read at each call (never written: ctx.set is the view's)
+ * @property {V} values  the host's live values, read at each call (never written: ctx.set is the view's)
  * @property {Hooks} [hooks]  what the view does when the state changes (a result arrived, a run started)
  */
 

@@ -1,7 +1,9 @@
+// @ts-check
 // Parameters of the `angle-ratio` panel: controls, URL keys and messages all use them. Pure data
 // (no DOM), loaded with the page so the panel's link and state work before its module arrives.
 import { indexPair } from '../shared/indexPair.js';
 
+/** @satisfies {import('../../host/panelContract.js').Schema} */
 export const schema = {
   theta: { type: 'number', default: 45, min: 0, max: 90, step: 0.1 },
   ...indexPair({ aliases: { nI: ['n1'], nT: ['n2'] } }),

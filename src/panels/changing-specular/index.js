@@ -26,7 +26,7 @@ const SCENE = { fovY: 40, cameraDist: 4, light: 6, exposure: 1 };
 
 /**
  * @param {HTMLElement} root
- * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @param {import('../../host/panelContract.js').PanelContext<typeof schema>} ctx
  * @returns {import('../../host/panelContract.js').PanelInstance}
  */
 export function mount(root, ctx) {

@@ -1,7 +1,9 @@
+// @ts-check
 // Parameters of the `changing-specular` panel: controls, URL keys and messages all use them. Pure data
 // (no DOM), loaded with the page so the panel's link and state work before its module arrives.
 import { transmittedIndex } from '../shared/indexPair.js';
 
+/** @satisfies {import('../../host/panelContract.js').Schema} */
 export const schema = {
   lightEl: { type: 'number', default: 30, min: 1, max: 90, step: 0.5 },
   viewEl: { type: 'number', default: 30, min: 1, max: 90, step: 0.5 },

@@ -55,7 +55,7 @@ async function copyCode(text, codeElement) {
 
 /**
  * @param {HTMLElement} root
- * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @param {import('../../host/panelContract.js').PanelContext<typeof schema>} ctx
  * @returns {import('../../host/panelContract.js').PanelInstance}
  */
 export function mount(root, ctx) {

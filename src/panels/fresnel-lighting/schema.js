@@ -1,7 +1,9 @@
+// @ts-check
 // Parameters of the `fresnel-lighting` panel: controls, URL keys and messages all use them. Pure data
 // (no DOM), loaded with the page so the panel's link and state work before its module arrives.
 import { transmittedIndex } from '../shared/indexPair.js';
 
+/** @satisfies {import('../../host/panelContract.js').Schema} */
 export const schema = {
   ...transmittedIndex({ aliases: ['n'] }),
   method: {

@@ -46,7 +46,8 @@ import {
  */
 
 /**
- * @param {{ values: any, builder: { build: (request: any) => Promise<any>, workers: number, problem: any, dispose: () => void },
+ * @param {{ values: import('../../host/panelContract.js').ValuesOf<typeof import('./schema.js').schema>,
+ *   builder: { build: (request: any) => Promise<any>, workers: number, problem: any, dispose: () => void },
  *   scene: NormalMipsScene | null, hooks: NormalMipsHooks }} options
  *   values: the host's live values; builder: createChainBuilder(); scene: null without WebGL2
  */

@@ -1,7 +1,9 @@
+// @ts-check
 // Parameters of the `normal-mips` panel: controls, URL keys and messages all use them. Pure data
 // (no DOM), loaded with the page so the panel's link and state work before its module arrives.
 import { TECHNIQUES } from '../../normals/techniques.js';
 
+/** @satisfies {import('../../host/panelContract.js').Schema} */
 export const schema = {
   map: {
     type: 'enum', default: 'bumps',

@@ -26,7 +26,7 @@ const tiny = (value) => (value === 0 ? t('identical') : sci(value, 1));
 
 /**
  * @param {HTMLElement} root
- * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @param {import('../../host/panelContract.js').PanelContext<typeof schema>} ctx
  * @returns {import('../../host/panelContract.js').PanelInstance}
  */
 export function mount(root, ctx) {

@@ -1,5 +1,7 @@
+// @ts-check
 // Parameters of the `r0-derivation` panel: controls, URL keys and messages all use them. Pure data
 // (no DOM), loaded with the page so the panel's link and state work before its module arrives.
 import { indexPair } from '../shared/indexPair.js';
 
+/** @satisfies {import('../../host/panelContract.js').Schema} */
 export const schema = indexPair();

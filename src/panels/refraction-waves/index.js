@@ -29,7 +29,7 @@ const RAY_LENGTH = 2.4;
 
 /**
  * @param {HTMLElement} root
- * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @param {import('../../host/panelContract.js').PanelContext<typeof schema>} ctx
  * @returns {import('../../host/panelContract.js').PanelInstance}
  */
 export function mount(root, ctx) {

@@ -1,8 +1,10 @@
+// @ts-check
 // Parameters of the `shader-lab` panel: controls, URL keys and messages all use them. Pure data
 // (no DOM), loaded with the page so the panel's link and state work before its module arrives.
 import { EXERCISE_IDS, MAX_CODE } from './exerciseIds.js';
 import { decodeCode, encodeCode } from './codeCodec.js';
 
+/** @satisfies {import('../../host/panelContract.js').Schema} */
 export const schema = {
   exercise: { type: 'enum', default: 'schlick', options: [...EXERCISE_IDS] },
   // Empty: the exercise's starting code. The editor shows the code; the link keeps it compact.

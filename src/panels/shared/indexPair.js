@@ -5,12 +5,14 @@
 
 const INDEX_RANGE = { min: 1, max: 3 };
 
+/** @typedef {import('../../host/panelContract.js').NumberSpec} NumberSpec */
+
 /**
  * { nI, nT } schema entries. aliases: older URL keys of each ({ nI: ['n1'], nT: ['n2'] }), so
  * links shared before the rename still open the same view.
  * Their labels are the panel's words (the catalogue's "controls" namespace, `<panel>.nI`).
  * @param {{ nI?: number, nT?: number, step?: number, aliases?: { nI?: string[], nT?: string[] } }} [options]
- * @returns {import('../../host/panelContract.js').Schema}
+ * @returns {{ nI: NumberSpec, nT: NumberSpec }}
  */
 export function indexPair({ nI = 1, nT = 1.5, step = 0.0001, aliases = {} } = {}) {
   return {
@@ -22,7 +24,7 @@ export function indexPair({ nI = 1, nT = 1.5, step = 0.0001, aliases = {} } = {}
 /**
  * { nT } for a medium lit from air (n_i = 1): a coat, a road, a pool. aliases: older keys (['n']).
  * @param {{ nT?: number, step?: number, aliases?: string[] }} options
- * @returns {import('../../host/panelContract.js').Schema}
+ * @returns {{ nT: NumberSpec }}
  */
 export function transmittedIndex({ nT = 1.5, step = 0.001, aliases }) {
   return { nT: { type: 'number', default: nT, ...INDEX_RANGE, step, aliases } };
@@ -32,7 +34,7 @@ export function transmittedIndex({ nT = 1.5, step = 0.001, aliases }) {
  * A button that swaps n_i and n_t (light leaving the denser side), named by the panel in the page's
  * language (the catalogue's panelsShared.swap: "Swap n_i ↔ n_t", or words of its own). No words here:
  * the schemas that import this module come with every page and its workers.
- * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @param {import('../../host/panelContract.js').PanelContext<{ nI: NumberSpec, nT: NumberSpec }>} ctx
  * @param {import('lil-gui').default} folder
  * @param {string} name
  */

@@ -45,7 +45,7 @@ import { glslOf } from './glslOf.js';
 
 /**
  * @param {{
- *   values: any,
+ *   values: import('../../host/panelContract.js').ValuesOf<typeof import('./schema.js').schema>,
  *   readBack: ReadBack,
  *   benchmark: (options: { size: string, signal: AbortSignal, onProgress: (fraction: number, label: string) => void }) => Promise<any>,
  *   storage: { load: () => any, save: (results: any) => void },

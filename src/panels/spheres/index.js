@@ -30,7 +30,7 @@ const VIEW_KEYS = ['viewAz', 'viewEl', 'viewDist'];
 
 /**
  * @param {HTMLElement} root
- * @param {import('../../host/panelContract.js').PanelContext} ctx
+ * @param {import('../../host/panelContract.js').PanelContext<typeof schema>} ctx
  * @returns {import('../../host/panelContract.js').PanelInstance}
  */
 const NARROW_PX = 820; // the width of the page or frame: phones, and tablets held upright

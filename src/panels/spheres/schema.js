@@ -1,9 +1,11 @@
+// @ts-check
 // Parameters of the `spheres` panel: controls, URL keys (?nI=1&nT=1.5&...) and messages all use them.
 // Pure data, so Node tests can check URL parsing without a browser.
 import { indexPair } from '../shared/indexPair.js';
 
 const ERROR_SCALES = ['auto', '0.005', '0.01', '0.02', '0.05', '0.1', '0.2', '0.5', '1'];
 
+/** @satisfies {import('../../host/panelContract.js').Schema} */
 export const schema = {
   ...indexPair(),
   kd: { type: 'color', default: '#a3241c' },
