@@ -83,7 +83,11 @@ export function timingDomain(kind) {
   return { lo: args(gold), hi: args(aluminium) };
 }
 
-/** The renderer and vendor strings (unmasked where the browser masks gl.RENDERER). */
+/**
+ * The renderer and vendor strings (unmasked where the browser masks gl.RENDERER).
+ * @param {WebGL2RenderingContext} gl
+ * @returns {{ renderer: string, vendor: string, version: string }}
+ */
 export function deviceInfo(gl) {
   let renderer = gl.getParameter(gl.RENDERER);
   let vendor = gl.getParameter(gl.VENDOR);
@@ -108,6 +112,12 @@ const pause = () => new Promise((resolve) => { setTimeout(resolve, 0); });
  * run pauses while its panel is off screen), chunks (shader chunks, for tests), now (ms clock).
  * Resolves to { timer, device, size, loops, passes, bestOf, repeats, evaluationsPerPass,
  * results: { highp: { id: { nsPerEval, samples } }, mediump: … }, baselineMs }.
+ * @param {WebGL2RenderingContext} gl
+ * @param {{ methods?: readonly import('../methods/methods.js').Method[], precisions?: readonly string[], size?: number,
+ *   loops?: number, targetMs?: number, passes?: number, bestOf?: number, repeats?: number, maxLoops?: number,
+ *   onProgress?: (done: number, total: number, label?: string) => void, signal?: AbortSignal,
+ *   whenVisible?: () => Promise<void>, chunks?: Record<string, string>, now?: () => number }} [options]
+ * @returns {Promise<import('../methods/benchResults.js').GpuTimings>}
  */
 export async function timeMethodsGpu(gl, {
   methods = METHODS, precisions = GPU_PRECISIONS, size = 128, loops = 16, targetMs = 5, passes = 2, bestOf = 3, repeats = 5,

@@ -15,6 +15,80 @@ import { messages } from '../i18n/messages.js';
 
 const t = messages('methods', english);
 
+/** A timing's median and spread. @typedef {{ median: number, min: number, max: number }} Spread */
+/** One method's timing: ns per evaluation, and the samples. @typedef {{ nsPerEval: Spread, samples: number[] }} Timing */
+/**
+ * An error as the results keep it (summary()): θ of the largest in degrees.
+ * @typedef {{ max: number, mean: number, rms: number, maxCodes: number, thetaAtMaxDeg: number | null, nanCount: number }} ErrorSummary
+ */
+/**
+ * A method's errors over its kind's default domain (methodErrors()).
+ * @typedef {{ scene: string, weighting: string, fp64: ErrorSummary, fp32: ErrorSummary, fp16: ErrorSummary,
+ *   gpuHighp: ErrorSummary | null, gpuMediump: ErrorSummary | null }} MethodErrors
+ */
+/** A part of the frame timing: ms per frame and the pixels drawn. @typedef {{ msPerFrame: Spread, pixels: number }} FramePart */
+/**
+ * The frame timing (timeFrames.js) as the results keep it: the hero after a change of n (spheres) and the clear-coated
+ * peer (threePhysical) always; the other parts in results measured since the frame was timed in parts.
+ * @typedef {{ width: number, height: number, timer: string | null, ratio: number, plainRatio?: number,
+ *   spheres: FramePart, threePhysical: FramePart, spheresView?: FramePart, spheresOnePass?: FramePart, copy?: FramePart,
+ *   threePlain?: FramePart }} FrameResults
+ */
+/**
+ * One method's row of the results.
+ * @typedef {{ id: string, label: string, kind: 'dielectric' | 'conductor', staticCost: number,
+ *   gpu: { precision: 'highp', nsPerEval: Spread | null, samples: number[], mediump: Timing | null } | null,
+ *   cpu: { context: 'fp64', where: string, nsPerEval: Spread, samples: number[] } | null,
+ *   error: MethodErrors }} MethodResults
+ */
+/** @typedef {{ methodId: string, invisible: boolean, budgetCodes: number, reason: string }} Pick */
+/**
+ * The results object (bench/results.json, the panel's JSON export and its session store).
+ * @typedef {object} BenchResults
+ * @property {number} version  RESULTS_VERSION
+ * @property {string | null} date  ISO 8601
+ * @property {{ renderer: string | null, vendor: string | null, webgl: string | null, timer: string | null,
+ *   gpuError: string | null, gpuReadbackError: string | null, userAgent: string | null }} device
+ * @property {{ size?: string | null, gpu: GpuRunConfig | null }} config
+ * @property {MethodResults[]} methods  one per method of METHODS, in its order
+ * @property {FrameResults | null} frames
+ * @property {Record<string, { costSource: string, invisible: Pick, acceptable: Pick }>} recommendations  by scene id
+ */
+/**
+ * How the GPU was timed. @typedef {{ size: number | null, loops: number | null, passes: number | null, bestOf: number | null,
+ *   repeats: number | null, evaluationsPerPass: number | null }} GpuRunConfig
+ */
+/**
+ * The errors read back on the GPU, by scene, GLSL precision and method: errorsFromValues(), of which the results keep
+ * these fields.
+ * @typedef {Record<string, Record<string, Record<string, Pick<import('./advisor.js').MethodError,
+ *   'max' | 'mean' | 'rms' | 'maxCodes' | 'thetaAtMax' | 'nanCount'>>>>} GpuErrors
+ */
+/**
+ * timeMethodsGpu's result: how it timed, the device, each method's timing by GLSL precision, the empty pass's time.
+ * @typedef {{ timer: string, device: Device, size: number, loops: number, passes: number, bestOf: number, repeats: number,
+ *   evaluationsPerPass: number, results: { highp: Record<string, Timing>, mediump: Record<string, Timing> },
+ *   baselineMs: Spread }} GpuTimings
+ */
+/**
+ * timeFrames' result: each part's time, the ratios of the hero to its peers, the size.
+ * @typedef {{ width: number, height: number, ratio: number, plainRatio: number, spheres: FramePart & { timer: string | null },
+ *   spheresView: FramePart, spheresOnePass: FramePart, copy: FramePart, threePhysical: FramePart, threePlain: FramePart }} FrameTimings
+ */
+/** The device's strings (deviceInfo). @typedef {{ renderer: string | null, vendor: string | null, version: string | null }} Device */
+/**
+ * What benchResults() is given. gpu: timeMethodsGpu's result; cpu: timeMethodsCpu's; frames: timeFrames'; gpuErrors:
+ * the errors read back on the GPU (see methodErrors); meta.device: deviceInfo, for when the GPU timing failed.
+ * @typedef {object} BenchRun
+ * @property {(GpuRunConfig & { timer: string | null, device: Device,
+ *   results: { highp: Record<string, Timing>, mediump: Record<string, Timing> } }) | null} [gpu]
+ * @property {{ where?: string, methods: Record<string, Timing> } | null} [cpu]
+ * @property {Omit<FrameResults, 'timer' | 'spheres'> & { spheres: FramePart & { timer?: string | null } } | null} [frames]
+ * @property {GpuErrors | null} [gpuErrors]
+ * @property {{ date?: string | null, userAgent?: string | null, config?: { size?: string | null }, gpuError?: string | null,
+ *   gpuReadbackError?: string | null, device?: Device | null }} [meta]
+ */
+
 export const RESULTS_VERSION = 1;
 export const DEFAULT_DOMAIN = Object.freeze({ dielectric: 'plastic', conductor: 'metal' });
 
@@ -96,6 +170,8 @@ function framesOf(frames) {
  * frames: timeFrames' (or null), gpuErrors: the errors read back on the GPU (see methodErrors; or
  * null); meta: { date, userAgent, config, gpuError, gpuReadbackError, device (deviceInfo, for
  * when the GPU timing failed) }.
+ * @param {BenchRun} [run]
+ * @returns {BenchResults}
  */
 export function benchResults({ gpu = null, cpu = null, frames = null, gpuErrors = null, meta = {} } = {}) {
   const methods = METHODS.map((m) => {

@@ -12,13 +12,17 @@ const t = messages('ui', english);
 export const LOW_HZ = 220;
 export const OCTAVES = 2;
 
-/** The pitch of a value in [0, 1] (clamped), or null for a value that is not a number. */
+/**
+ * The pitch of a value in [0, 1] (clamped), or null for a value that is not a number.
+ * @param {number} value
+ */
 export function pitchHz(value) {
   if (!Number.isFinite(value)) return null;
   return LOW_HZ * 2 ** (OCTAVES * Math.min(1, Math.max(0, value)));
 }
 
 /** Keys of the cursor: arrows 1° (with Shift 0.1°), Page Up/Down 10°, Home/End the ends. */
+/** @type {Readonly<Record<string, number>>} */
 const STEPS = { ArrowRight: 1, ArrowUp: 1, ArrowLeft: -1, ArrowDown: -1, PageUp: 10, PageDown: -10 };
 
 /**
@@ -33,7 +37,7 @@ export function stepCursor(deg, key, fine = false, [lo, hi] = [0, 90]) {
   let next;
   if (key === 'Home') next = lo;
   else if (key === 'End') next = hi;
-  else if (key in STEPS) next = deg + STEPS[key] * (fine && Math.abs(STEPS[key]) === 1 ? 0.1 : 1);
+  else if (Object.hasOwn(STEPS, key)) next = deg + STEPS[key] * (fine && Math.abs(STEPS[key]) === 1 ? 0.1 : 1);
   else return null;
   return Math.min(hi, Math.max(lo, Math.round(next * 10) / 10));
 }
@@ -55,11 +59,16 @@ export function stepCursor(deg, key, fine = false, [lo, hi] = [0, 90]) {
 export function cuesBetween(from, to, { brewster, critical }) {
   const lo = Math.min(from, to);
   const hi = Math.max(from, to);
+  /** @param {number | null} x */
   const met = (x) => x != null && Number.isFinite(x) && (from === to ? Math.abs(x - to) < 1e-9 : x >= lo && x <= hi && x !== from);
   return /** @type {('brewster' | 'critical')[]} */ ([met(brewster) && 'brewster', met(critical) && 'critical'].filter(Boolean));
 }
 
-/** Past the critical angle all light is reflected (R = 1): the total-internal-reflection range. */
+/**
+ * Past the critical angle all light is reflected (R = 1): the total-internal-reflection range.
+ * @param {number} deg
+ * @param {number | null} critical
+ */
 export const inTir = (deg, critical) => critical != null && deg >= critical;
 
 /**
@@ -72,8 +81,8 @@ export const inTir = (deg, critical) => critical != null && deg >= critical;
 export function traceReadout(deg, values, { brewster, critical, cues = [] }) {
   const list = values.map((v) => t('traceValue', { curve: v.label, value: fixed(v.value, 4) })).join(', ');
   const parts = [t('traceReadout', { theta: angle(deg, 1), values: list })];
-  if (cues.includes('brewster')) parts.push(t('tracePassedBrewster', { angle: angle(brewster) }));
-  if (cues.includes('critical')) parts.push(t('tracePassedCritical', { angle: angle(critical) }));
+  if (cues.includes('brewster') && brewster != null) parts.push(t('tracePassedBrewster', { angle: angle(brewster) }));
+  if (cues.includes('critical') && critical != null) parts.push(t('tracePassedCritical', { angle: angle(critical) }));
   else if (inTir(deg, critical)) parts.push(t('traceInTir'));
   return parts.join(' ');
 }
@@ -88,13 +97,13 @@ export function traceReadout(deg, values, { brewster, critical, cues = [] }) {
 export function sweepPlan(at, { brewster, critical }, { from = 0, to = 90, seconds = 3, step = 0.5 } = {}) {
   const points = [];
   const count = Math.round((to - from) / step);
+  /** @param {number} deg */
   const time = (deg) => ((deg - from) / (to - from)) * seconds;
   for (let i = 0; i <= count; i += 1) {
     const deg = from + i * step;
     points.push({ deg, t: time(deg), hz: pitchHz(at(deg)), tir: inTir(deg, critical) });
   }
   const cues = [{ kind: 'brewster', deg: brewster }, { kind: 'critical', deg: critical }]
-    .filter(({ deg }) => deg != null && deg >= from && deg <= to)
-    .map(({ kind, deg }) => ({ kind, deg, t: time(deg) }));
+    .flatMap(({ kind, deg }) => (deg != null && deg >= from && deg <= to ? [{ kind, deg, t: time(deg) }] : []));
   return { points, cues, seconds };
 }

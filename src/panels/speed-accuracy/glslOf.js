@@ -2,6 +2,7 @@
 // Which error source reads values back from this GPU, and in which GLSL precision: the runs
 // choose what to measure by it, the words say it. No words here, so the runs may import it.
 
+/** @type {Readonly<Record<string, 'highp' | 'mediump'>>} */
 const GLSL = Object.freeze({ 'gpu-highp': 'highp', 'gpu-mediump': 'mediump' });
 
 /**
@@ -10,5 +11,5 @@ const GLSL = Object.freeze({ 'gpu-highp': 'highp', 'gpu-mediump': 'mediump' });
  * @returns {'highp' | 'mediump' | null}
  */
 export function glslOf(source) {
-  return Object.hasOwn(GLSL, source) ? /** @type {'highp' | 'mediump'} */ (GLSL[source]) : null;
+  return Object.hasOwn(GLSL, source) ? GLSL[source] : null;
 }

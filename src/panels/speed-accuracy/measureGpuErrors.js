@@ -21,10 +21,16 @@ const yieldToPage = () => new Promise((resolve) => { setTimeout(resolve, 0); });
  * Resolves to { errors: { [sceneId]: { [precision]: { [methodId]: stats } } }, probe
  * (probePrecision: what mediump really is here), claimed (gpuPrecisionInfo: what the driver says),
  * device (deviceInfo) }. Throws GpuFloatUnavailable without float render targets.
+ * @param {WebGL2RenderingContext} gl
+ * @param {readonly import('../../methods/scenes.js').Scene[]} scenes
+ * @param {readonly string[]} precisions
+ * @param {{ signal?: AbortSignal, onProgress?: (done: number, total: number, label?: string) => void,
+ *   whenVisible?: () => Promise<void> }} [options]
  */
 export async function gpuErrorsOn(gl, scenes, precisions, { signal, onProgress, whenVisible } = {}) {
   const gpu = createMethodsGpu(gl);
   try {
+    /** @type {Record<string, Record<string, Record<string, import('../../methods/advisor.js').MethodError>>>} */
     const errors = {};
     const total = scenes.reduce((n, s) => n + methodsOfKind(s.kind).length * precisions.length, 0);
     let done = 0;

@@ -1,3 +1,4 @@
+// @ts-check
 // "Run benchmark": GPU cost per method (timeMethodsGpu), the GPU's own errors over the default
 // domains in highp and mediump (read back, measureGpuErrors.js), CPU cost per method
 // (timeMethodsCpu, in a worker: timeCpu.js), and the hero's frame cost against three.js MeshPhysicalMaterial, one after the
@@ -31,10 +32,24 @@ export const BENCH_SIZES = Object.freeze({
   },
 });
 
-const PHASES = { gpu: [0, 0.5], errors: [0.5, 0.6], cpu: [0.6, 0.8], frames: [0.8, 1] }; // share of the progress bar
+/** @typedef {'gpu' | 'errors' | 'cpu' | 'frames'} Phase */
+/** @type {Record<Phase, [number, number]>} share of the progress bar */
+const PHASES = { gpu: [0, 0.5], errors: [0.5, 0.6], cpu: [0.6, 0.8], frames: [0.8, 1] };
 // What the progress line says during a phase whose steps carry no label of their own.
 const PHASE_WORDS = { gpu: 'phaseGpu', errors: 'phaseErrors', cpu: 'phaseCpu', frames: 'phaseFrames' };
 const CACHE_KEY = 'fresnel-lab:speed-accuracy:results';
+
+/** @typedef {import('../../methods/benchResults.js').BenchRun} BenchRun */
+/** @typedef {import('../../methods/benchResults.js').BenchResults} BenchResults */
+
+// What was thrown, read with `in`: an Error's or a DOMException's name and message are its prototype's.
+/** @param {unknown} error */
+const isAbort = (error) => typeof error === 'object' && error !== null && 'name' in error && error.name === 'AbortError';
+/** What a failure says: its message, else itself in words. @param {unknown} error */
+const messageOf = (error) => String((typeof error === 'object' && error !== null && 'message' in error ? error.message : null) ?? error);
+
+/** @type {(size: string) => size is keyof typeof BENCH_SIZES} */
+export const isBenchSize = (size) => Object.hasOwn(BENCH_SIZES, size);
 
 /**
  * Runs every measurement. host: a laid-out element for the frame-timing canvases. Options:
@@ -48,18 +63,26 @@ const CACHE_KEY = 'fresnel-lab:speed-accuracy:results';
  *   whenVisible?: () => Promise<void> }} [options]
  */
 export async function runBenchmark(host, { size = 'normal', onProgress, signal, whenVisible } = {}) {
+  if (!isBenchSize(size)) throw new RangeError(`unknown benchmark size ${size}`);
   const config = BENCH_SIZES[size];
-  if (!config) throw new RangeError(`unknown benchmark size ${size}`);
+  /** @type {(phase: Phase) => (done: number, total: number, label?: string) => void} */
   const report = (phase) => (done, total, label) => {
     const [a, b] = PHASES[phase];
     onProgress?.(a + ((b - a) * done) / Math.max(1, total), label ?? t(PHASE_WORDS[phase]));
   };
+  /** @type {BenchRun['gpu']} */
   let gpu = null;
+  /** @type {string | null} */
   let gpuError = null;
+  /** @type {BenchRun['gpuErrors']} */
   let gpuErrors = null;
+  /** @type {string | null} */
   let gpuReadbackError = null;
+  /** @type {BenchRun['frames']} */
   let frames = null;
+  /** @type {ReturnType<typeof createContext> | null} */
   let context = null;
+  /** @type {ReturnType<typeof deviceInfo> | null} */
   let device = null;
   try {
     context = createContext(document.createElement('canvas'));
@@ -74,8 +97,8 @@ export async function runBenchmark(host, { size = 'normal', onProgress, signal, 
         gpu = await timeMethodsGpu(context.gl, { ...config.gpu, signal, whenVisible, onProgress: report('gpu') });
       } catch (error) {
         // A shader this GPU cannot compile must not hide the other numbers: say so instead.
-        if (error?.name === 'AbortError') throw error;
-        gpuError = error?.message ?? String(error);
+        if (isAbort(error)) throw error;
+        gpuError = messageOf(error);
       }
       try {
         // The errors the GPU itself makes over the default domains, on the same context.
@@ -85,8 +108,8 @@ export async function runBenchmark(host, { size = 'normal', onProgress, signal, 
         gpuErrors = readBack.errors;
         rememberGpuErrors(readBack); // the panel's "Error measured by" needs no second read-back
       } catch (error) {
-        if (error?.name === 'AbortError') throw error;
-        gpuReadbackError = error?.message ?? String(error);
+        if (isAbort(error)) throw error;
+        gpuReadbackError = messageOf(error);
       }
     }
   } finally {
@@ -102,7 +125,10 @@ export async function runBenchmark(host, { size = 'normal', onProgress, signal, 
   });
 }
 
-/** The results saved this session, or null (read as untrusted text: cachedResults.js). */
+/**
+ * The results saved this session, or null (read as untrusted text: cachedResults.js).
+ * @returns {BenchResults | null}
+ */
 export function loadCachedResults() {
   try {
     return readCachedResults(sessionStorage.getItem(CACHE_KEY));
@@ -111,6 +137,7 @@ export function loadCachedResults() {
   }
 }
 
+/** @param {BenchResults} results */
 export function saveCachedResults(results) {
   try {
     sessionStorage.setItem(CACHE_KEY, JSON.stringify(results));

@@ -11,12 +11,34 @@ import { ShaderError } from '../../gl/shaderError.js';
 import { createRunGate, isStaleRun } from '../shared/createRunGate.js';
 import { glslOf } from './glslOf.js';
 
+/** @typedef {import('../../methods/scenes.js').Scene} Scene */
+/** @typedef {import('../../methods/benchResults.js').BenchResults} BenchResults */
+
+/**
+ * What mediump and highp are on this GPU: the bits each keeps, measured (evaluateMethodsGpu probePrecision), what the
+ * driver claims (gpuPrecisionInfo), and the device (deviceInfo).
+ * @typedef {{ probe: { highpBits: number, mediumpBits: number, mediumpIsFullPrecision: boolean },
+ *   claimed: Record<'highp' | 'mediump', { rangeMin: number, rangeMax: number, precision: number } | null>,
+ *   device: { renderer: string, vendor: string, version: string } }} GpuProbe
+ */
+
+/**
+ * A scene's errors read back from the GPU in one GLSL precision, by method id (gpuErrors.errorsFromValues), with the probe.
+ * @typedef {GpuProbe & { errors: Record<string, import('../../methods/advisor.js').MethodError> }} GpuMeasurement
+ */
+
 /**
  * The GPU read-back as the runs use it (measureGpuErrors.js), so a stand-in can take its place.
  * @typedef {object} ReadBack
- * @property {(scene: any, precision: string) => any} cached  the session's measurement, or null
- * @property {(scene: any, precision: string) => Promise<any>} measure  measures (once per session)
- * @property {() => any} probe  what mediump is on this GPU, once anything was measured (or null)
+ * @property {(scene: Scene, precision: string) => GpuMeasurement | null} cached  the session's measurement, or null
+ * @property {(scene: Scene, precision: string) => Promise<GpuMeasurement>} measure  measures (once per session)
+ * @property {() => GpuProbe | null} probe  what mediump is on this GPU, once anything was measured (or null)
+ */
+
+/**
+ * The errors to plot: the source chosen ('js', 'gpu-highp', 'gpu-mediump'), the GLSL precision of the read-back (null for
+ * the JS emulation), the GPU's errors (null for the JS emulation) and the precision being read back (or null).
+ * @typedef {{ source: string, glsl: string | null, measured: GpuMeasurement | null, waiting: string | null }} ErrorSource
  */
 
 /**
@@ -29,8 +51,7 @@ import { glslOf } from './glslOf.js';
  * What the words need of the runs, at each update: the errors to plot ({ source, glsl, measured,
  * waiting }), the benchmark's results (or null), why the GPU read-back failed (the error, or null)
  * and what mediump is on this GPU (or null).
- * @typedef {{ source: { source: string, glsl: string | null, measured: any, waiting: string | null },
- *   results: any, readBackError: unknown, probe: any }} SpeedAccuracyState
+ * @typedef {{ source: ErrorSource, results: BenchResults | null, readBackError: unknown, probe: GpuProbe | null }} SpeedAccuracyState
  */
 
 /**
@@ -47,8 +68,9 @@ import { glslOf } from './glslOf.js';
  * @param {{
  *   values: import('../../host/panelContract.js').ValuesOf<typeof import('./schema.js').schema>,
  *   readBack: ReadBack,
- *   benchmark: (options: { size: string, signal: AbortSignal, onProgress: (fraction: number, label: string) => void }) => Promise<any>,
- *   storage: { load: () => any, save: (results: any) => void },
+ *   benchmark: (options: { size: string, signal: AbortSignal, onProgress: (fraction: number, label: string) => void }) =>
+ *     Promise<BenchResults>,
+ *   storage: { load: () => BenchResults | null, save: (results: BenchResults) => void },
  *   hooks: SpeedAccuracyHooks,
  *   now?: () => number,
  * }} options  values: the host's live values; benchmark: runBenchmark on the panel's stage; storage: the session's results
@@ -59,7 +81,7 @@ export function createSpeedAccuracyRuns({
   const benchGate = createRunGate();
   const readGate = createRunGate();
   let results = storage.load();
-  /** @type {Promise<any> | null} */
+  /** @type {Promise<BenchResults> | null} */
   let running = null;
   /** @type {{ key: string, promise: Promise<void> } | null} the GPU read-back under way */
   let measuring = null;
@@ -67,7 +89,11 @@ export function createSpeedAccuracyRuns({
   let readBackError = null;
   let disposed = false;
 
-  /** Starts reading a scene's errors back from the GPU (once per scene and precision per session). */
+  /**
+   * Starts reading a scene's errors back from the GPU (once per scene and precision per session).
+   * @param {Scene} scene
+   * @param {string} glsl
+   */
   function startMeasuring(scene, glsl) {
     const key = `${scene.id}|${glsl}`;
     if (measuring?.key === key) return;
@@ -88,7 +114,11 @@ export function createSpeedAccuracyRuns({
     measuring = { key, promise };
   }
 
-  /** The errors to plot: { source, glsl, measured (the GPU's, or null for JS), waiting }. */
+  /**
+   * The errors to plot: { source, glsl, measured (the GPU's, or null for JS), waiting }.
+   * @param {Scene} scene
+   * @returns {ErrorSource}
+   */
   function errorSource(scene) {
     const glsl = glslOf(values.errors);
     if (!glsl) return { source: 'js', glsl: null, measured: null, waiting: null };

@@ -163,6 +163,11 @@ const STEPS = ['frameHero', 'frameHeroView', 'frameHeroOnePass', 'frameCopy', 'f
  * threePlain (none): each { msPerFrame: { median, min, max }, samples, pixels, timer }; ratio:
  * spheres / threePhysical and plainRatio: spheres / threePlain (medians; below 1: the hero is
  * cheaper), width, height }.
+ * @param {HTMLElement} host
+ * @param {{ width?: number, height?: number, frames?: number, warmup?: number, signal?: AbortSignal,
+ *   onProgress?: (done: number, total: number, label?: string) => void, whenVisible?: () => Promise<void>,
+ *   now?: () => number }} [options]
+ * @returns {Promise<import('../../methods/benchResults.js').FrameTimings>}
  */
 export async function timeFrames(host, {
   width = 900, height = 300, frames = 12, warmup = 3, signal, onProgress, whenVisible, now = () => performance.now(),

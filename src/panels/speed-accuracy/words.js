@@ -24,9 +24,24 @@ import { readBackProblem } from './readBackProblem.js';
 const t = messages('speed-accuracy', english);
 const METHOD_MARK = '\u0001'; // where the method's name goes in the pick's sentence
 
-/** A number as short as it is (1.3725, 0.5, 12.75), with the page's decimal separator. */
-const plain = (v) => tickLabel(v, 1e-6);
+/** @typedef {import('../../methods/benchResults.js').BenchResults} BenchResults */
+/** @typedef {ReturnType<typeof recommendWithin>} Recommendation */
+/** @typedef {ReturnType<typeof speedAccuracyView>} SpeedAccuracyView */
+/**
+ * A method's row: its error and cost as recommend() tables them, its cost as plotted (x, with the spread when measured:
+ * absent for a cost not measured) and in words, the case of its largest error, whether it is the pick and on the front.
+ * @typedef {import('../../methods/advisor.js').Row & { x?: number, xMin?: number, xMax?: number, text?: string,
+ *   costText: string, caseText: string, recommended: boolean, onFront: boolean }} ViewRow
+ */
 
+/** A number as short as it is (1.3725, 0.5, 12.75), with the page's decimal separator. */
+const plain = (/** @type {number} */ v) => tickLabel(v, 1e-6);
+
+/**
+ * The case of a scene where a method's error is largest: its indices, or its metal's n and k.
+ * @param {string} kind
+ * @param {readonly number[] | null} args
+ */
 function caseText(kind, args) {
   if (!args) return '';
   return kind === 'dielectric' ? `n ${plain(args[0])} → ${shortDecimal(args[1])}` : `n ${plain(args[0])}, k ${plain(args[1])}`;
@@ -36,23 +51,38 @@ function caseText(kind, args) {
  * The cheaper pick under the "acceptable" budget (5 % of the range, a round figure just above the
  * worst error on plastics of the Schlick that Filament, Godot, three.js and UE4 ship; see
  * displayBudgets.js), when it differs from the strict one, with its measured cost in error.
+ * @param {Recommendation | null} alt
+ * @param {Recommendation} rec
+ * @param {ViewRow[]} rows
  */
 function practicalNote(alt, rec, rows) {
   if (!alt?.invisible || alt.methodId === rec.methodId) return '';
   const row = rows.find((r) => r.methodId === alt.methodId);
+  if (!row) return ''; // a pick is always one of the rows
   const args = { method: row.label, worst: formatCodes(row.maxCodes), mean: formatCodes(row.meanCodes) };
   // The worst codes need not lie where |ΔR| is largest (sRGB is steeper for dark values): that angle is said apart.
   if (row.thetaAtMax === null) return ` ${t('practicalNoAngle', args)}`;
   return ` ${t('practical', { ...args, angle: angle(toDegrees(row.thetaAtMax), 1) })}`;
 }
 
-/** A warning when timings overlap so much that their order is not to be trusted. */
+/**
+ * A warning when timings overlap so much that their order is not to be trusted.
+ * @param {ViewRow[]} rows
+ */
 function noiseNote(rows) {
-  const noisy = rows.filter((r) => Number.isFinite(r.xMin) && (r.xMax - r.xMin > Math.abs(r.x) || r.x <= 0));
+  const noisy = rows.filter((r) => r.xMin !== undefined && r.xMax !== undefined && r.x !== undefined && Number.isFinite(r.xMin)
+    && (r.xMax - r.xMin > Math.abs(r.x) || r.x <= 0));
   return noisy.length ? ` ${t('noisy', { count: noisy.length, noisy: String(noisy.length), all: String(rows.length) })}` : '';
 }
 
-/** A method's cost: the static count, or the measured median with its spread (null when it was not measured). */
+/**
+ * A method's cost: the static count, or the measured median with its spread (null when it was not measured).
+ * @param {BenchResults | null} results
+ * @param {import('../../methods/methods.js').Method} method
+ * @param {string} glsl
+ * @param {string} mode  'static', 'cpu' or 'gpu'
+ * @returns {{ x: number, xMin?: number, xMax?: number, text: string } | null}
+ */
 function costOf(results, method, glsl, mode) {
   if (mode === 'static' || !results) return { x: method.cost.static, text: `${method.cost.static}` };
   const row = results.methods.find((m) => m.id === method.id);
@@ -61,7 +91,10 @@ function costOf(results, method, glsl, mode) {
   return { x: spread.median, xMin: spread.min, xMax: spread.max, text: formatNs(spread) };
 }
 
-/** The device line under the benchmark bar. */
+/**
+ * The device line under the benchmark bar.
+ * @param {BenchResults | null} results
+ */
 export function deviceText(results) {
   if (!results) return t('noRunYet');
   const f = results.frames;
@@ -71,10 +104,11 @@ export function deviceText(results) {
     timer: results.device.timer ? timerName(results.device.timer) : '–',
   })];
   if (f?.spheresView) {
-    const ms = (side) => formatNs(side.msPerFrame, 'ms');
+    const ms = (/** @type {import('../../methods/benchResults.js').FramePart | undefined} */ side) => formatNs(side?.msPerFrame, 'ms');
     sentences.push(t('frameCostParts', {
       width: String(f.width), height: String(f.height), hero: ms(f.spheres), view: ms(f.spheresView), onePass: ms(f.spheresOnePass),
-      peer: ms(f.threePhysical), plain: ms(f.threePlain), ratio: fixed(f.ratio, 2), plainRatio: fixed(f.plainRatio, 2), copy: ms(f.copy),
+      peer: ms(f.threePhysical), plain: ms(f.threePlain), ratio: fixed(f.ratio, 2), plainRatio: fixed(f.plainRatio ?? NaN, 2),
+      copy: ms(f.copy),
     }));
   } else if (f) { // results kept from before the frame was measured in parts
     sentences.push(t('frameCost', {
@@ -96,6 +130,7 @@ export function deviceText(results) {
  * mediump over all of them in highp (a sum, so that one method's timing noise near zero does not
  * swing it), or null without both or when highp's sum is not above zero. Whether mediump is cheaper
  * is the GPU's to say: on an NVIDIA H200 it was slower for every method.
+ * @param {BenchResults | null} results
  */
 export function mediumpCostRatio(results) {
   let highp = 0;
@@ -103,7 +138,7 @@ export function mediumpCostRatio(results) {
   for (const row of results?.methods ?? []) {
     const h = row.gpu?.nsPerEval?.median;
     const m = row.gpu?.mediump?.nsPerEval?.median;
-    if (!Number.isFinite(h) || !Number.isFinite(m)) return null;
+    if (h === undefined || m === undefined || !Number.isFinite(h) || !Number.isFinite(m)) return null;
     highp += h;
     mediump += m;
   }
@@ -128,7 +163,7 @@ export function statusText(end) {
  * the JS emulation; waiting: the precision being read back); results: the benchmark's, or null;
  * readBackError: why the GPU read-back failed (null if it did not); probe: what mediump is on this
  * GPU, once measured (or null).
- * @param {any} values
+ * @param {import('../../host/panelContract.js').ValuesOf<typeof import('./schema.js').schema>} values
  * @param {import('./runs.js').SpeedAccuracyState} state
  */
 export function speedAccuracyView(values, { source: src, results, readBackError, probe }) {
@@ -140,10 +175,12 @@ export function speedAccuracyView(values, { source: src, results, readBackError,
   const costs = wanted === 'static' ? {} : measuredCosts(results, scene, wanted, glsl);
   const mode = Object.keys(costs).length > 0 ? wanted : 'static';
   const words = sourceWords(src.source, scene, src.measured?.device?.renderer);
-  const recommendFor = (b) => (src.measured
+  const { measured, glsl: measuredIn } = src;
+  /** @type {(b: ReturnType<typeof displayBudget>) => Recommendation} */
+  const recommendFor = (b) => (measured && measuredIn
     ? {
-      ...recommendWithErrors(scene, src.measured.errors, costs, {
-        budgetCodes: b.codes, where: t('gpuWhere', { scene: scene.label, precision: src.glsl }), precision: src.glsl,
+      ...recommendWithErrors(scene, measured.errors, costs, {
+        budgetCodes: b.codes, where: t('gpuWhere', { scene: scene.label, precision: measuredIn }), precision: measuredIn,
       }),
       budget: b,
       criterion: criterionText(),
@@ -153,11 +190,12 @@ export function speedAccuracyView(values, { source: src, results, readBackError,
   // Under a stricter budget, say what the "acceptable" judgement (what engines ship) would pick.
   const lenient = displayBudget('acceptable');
   const alt = budget.codes < lenient.codes ? recommendFor(lenient) : null;
+  /** @type {ViewRow[]} */
   const rows = rec.table.map((r) => {
     const method = methodById(r.methodId);
-    const cost = costOf(results, method, glsl, mode);
+    const cost = costOf(results, method, glsl, mode); // measured for every method, or none (then mode is 'static')
     return {
-      ...r, ...cost, costText: cost.text,
+      ...r, ...cost, costText: cost ? cost.text : '–',
       caseText: caseText(scene.kind, r.caseAtMax), recommended: r.methodId === rec.methodId, onFront: false,
     };
   });
@@ -168,6 +206,7 @@ export function speedAccuracyView(values, { source: src, results, readBackError,
   const front = paretoFront(points.map((p) => ({ x: p.x, y: p.nan ? Infinity : p.y })));
   rows.forEach((r, i) => { r.onFront = front.includes(i); });
   const chosen = rows.find((r) => r.recommended);
+  if (!chosen) throw new Error(`the pick ${rec.methodId} is not among the rows`); // recommend() picks from its table
   const costNote = mode === 'static'
     ? t(wanted === 'static' ? 'costsStatic' : 'costsStaticUntilRun')
     : `${mode === 'cpu' ? t('costsMeasuredCpu') : t('costsMeasuredGpu', { precision: glsl })}${noiseNote(rows)}`;
@@ -207,21 +246,28 @@ export function speedAccuracyView(values, { source: src, results, readBackError,
   };
 }
 
-/** The key numbers in words (the panel's description); probe: what mediump is on this GPU, once measured (or null). */
+/**
+ * The key numbers in words (the panel's description); probe: what mediump is on this GPU, once measured (or null).
+ * @param {SpeedAccuracyView} view
+ * @param {import('./runs.js').GpuProbe | null} probe
+ */
 export function describeView(view, probe) {
   const { scene, budget, chosen, rows, mode, words, glsl } = view;
-  const worst = rows.filter((r) => r.methodId !== chosen.methodId).sort((a, b) => b.maxCodes - a.maxCodes)[0];
+  const worst = rows.filter((r) => r.methodId !== chosen.methodId).sort((a, b) => b.maxCodes - a.maxCodes).at(0);
   const text = t('describe', {
     scene: scene.inText, phrase: words.phrase, count: budget.codes, codes: plain(budget.codes), method: chosen.label,
     worst: formatCodes(chosen.maxCodes), cost: chosen.costText, static: mode === 'static' ? 'yes' : 'no',
     passing: String(rows.filter((r) => r.passes).length), all: String(rows.length),
-    worstMethod: worst?.label ?? '–', worstCodes: formatCodes(worst?.maxCodes),
+    worstMethod: worst?.label ?? '–', worstCodes: worst ? formatCodes(worst.maxCodes) : '–',
   });
   const full = glsl === 'mediump' && probe?.probe.mediumpIsFullPrecision;
   return full ? `${text} ${t('describeFullMediump')}` : text;
 }
 
-/** The plotted rows as CSV columns. */
+/**
+ * The plotted rows as CSV columns.
+ * @param {SpeedAccuracyView} view
+ */
 export function viewCsv(view) {
   const { rows, scene, mode, source } = view;
   return {

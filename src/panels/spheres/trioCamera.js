@@ -9,8 +9,13 @@ import { DEG } from '../../optics/angles.js';
 export const FOV_DEG = 28; // vertical field of view of each view
 export const VIEW_COUNT = 3;
 
+/** @typedef {number[]} Vec3  [x, y, z] */
+
+/** @type {(a: Vec3, b: Vec3) => number} */
 const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+/** @type {(a: Vec3, b: Vec3) => Vec3} */
 const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+/** @type {(a: Vec3) => Vec3} */
 const unit = (a) => { const l = Math.hypot(...a); return a.map((x) => x / l); };
 
 /**
@@ -28,6 +33,10 @@ export function trioCamera(view) {
 /**
  * The unit ray through a point of one view, in that view's normalized coordinates (x, y in
  * [−1, 1], y up), for a view of the given width/height aspect.
+ * @param {{ forward: Vec3, right: Vec3, up: Vec3, tanHalfFov: number }} camera  trioCamera()'s
+ * @param {number} x
+ * @param {number} y
+ * @param {number} aspect
  */
 export function rayThrough(camera, x, y, aspect) {
   const { forward, right, up, tanHalfFov } = camera;
@@ -40,6 +49,8 @@ export function rayThrough(camera, x, y, aspect) {
  * Where a unit ray from the eye meets the unit sphere: |eye + t·d|² = 1 gives
  * t² + 2bt + c = 0 with b = eye·d and c = |eye|² − 1; the nearer root t = −b − √(b² − c).
  * Returns { normal, cosTheta } (cos θ between the normal and the direction to the eye), or null on a miss.
+ * @param {Vec3} eye
+ * @param {Vec3} dir  a unit vector
  */
 export function hitSphere(eye, dir) {
   const b = dot(eye, dir);
@@ -66,6 +77,7 @@ export function sphereSquares({ distance, tanHalfFov }, width, height, count, ma
   const radius = (Math.tan(Math.asin(Math.min(1, 1 / distance))) / tanHalfFov) * (height / 2) + margin;
   const viewWidth = width / count;
   // Pixel x has its centre x + 0.5 in view floor((x + 0.5) / viewWidth) (the last view takes the rest).
+  /** @param {number} slot */
   const firstPixel = (slot) => (slot >= count ? width : Math.max(0, Math.ceil(slot * viewWidth - 0.5)));
   const squares = [];
   for (let slot = 0; slot < count; slot += 1) {
