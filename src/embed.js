@@ -1,3 +1,4 @@
+// @ts-check
 // embed.html?panel=ID&<params>&<embed options>: one panel alone, no page chrome, sized to its
 // frame, driven by its URL and by the message API (src/host/messageApi.js). The embed options
 // (readEmbedOptions.js) set the theme, projector mode, reduced motion, locked or hidden controls
@@ -23,20 +24,31 @@ import { panelTitle } from './panels/panelText.js';
 import { labTitle } from './host/shareLinks.js';
 import english from 'virtual:messages/en/embed';
 import { messages } from './i18n/messages.js';
+import { pageElement } from './ui/pageElement.js';
 
 const t = messages('embed', english);
 
 // The language first (?lang=, a deck's option, read by language.js from the link): every word below is in it.
 const language = await startPageLanguage();
-const root = document.getElementById('embed');
+const root = pageElement('#embed');
 installPageFaults((title, lines) => showNotice(root, title, lines, { kind: 'error' }));
 const search = new URLSearchParams(window.location.search);
 const id = search.get('panel');
+/** @typedef {import('./host/createPanelHost.js').PanelHost} PanelHost */
+/** @type {Record<string, PanelHost>} */
 const hosts = {};
-window.fresnelLab = {
-  hosts, contexts: contextStats, panels: new Proxy({}, { get: (_t, key) => hosts[key]?.instance ?? null }), ready: null,
+/**
+ * The page's hook for the browser tests and decks' scripts.
+ * @type {{ hosts: typeof hosts, contexts: typeof contextStats, panels: object, ready: Promise<PanelHost | null> | null, audio: object }}
+ */
+const lab = {
+  hosts,
+  contexts: contextStats,
+  panels: new Proxy({}, { get: (_t, key) => (typeof key === 'string' && Object.hasOwn(hosts, key) ? hosts[key].instance : null) }),
+  ready: null,
   audio: { get on() { return audioTraceOn(); }, log: traceLog },
 };
+window.fresnelLab = lab;
 const { options, problems } = readEmbedOptions(search);
 // Said at once, before the panel's module arrives: a page that frames this one learns that its frame
 // holds the lab's embed page, not the browser's error page (src/ui/watchPanelFrame.js).
@@ -57,7 +69,7 @@ installAudioKey();
 // A deck may leave the slide before the panel's module is here (reveal.js posts 'slide:stop' to
 // the frames of the slide it leaves): remember it, and do not start drawing until it resumes.
 let stoppedEarly = false;
-const early = (event) => {
+const early = (/** @type {MessageEvent} */ event) => {
   const { parentOrigin } = options;
   if (parentOrigin === 'none' || (parentOrigin && event.origin !== parentOrigin)) return;
   const kind = parseMessage(event.data)?.kind;
@@ -69,13 +81,15 @@ window.addEventListener('message', early);
 /**
  * The embed again in `lang` (a deck's message), as it is now: its values and its locked and hidden
  * controls written into its link (the link's own copy of the values follows changes a moment late).
+ * @param {string} lang
+ * @param {PanelHost} host
  */
 function restartIn(lang, host) {
   const id = matchLanguage(lang);
   if (!id || id === currentLanguage()) return;
   const url = new URL(window.location.href);
   writeParams(host.panel.schema, host.values, url.searchParams);
-  for (const [key, keys] of [['lock', host.locked], ['hide', host.hiddenControls]]) {
+  for (const [key, keys] of Object.entries({ lock: host.locked, hide: host.hiddenControls })) {
     if (keys.length) url.searchParams.set(key, keys.join(','));
     else url.searchParams.delete(key);
   }
@@ -83,7 +97,7 @@ function restartIn(lang, host) {
   window.location.replace(url.toString());
 }
 
-window.fresnelLab.ready = (async () => {
+lab.ready = (async () => {
   const entry = id ? panelEntry(id) : undefined;
   if (!entry) {
     showNotice(root, id ? t('noSuchPanel', { id }) : t('noPanel'), [t('panelIds', { ids: PANEL_IDS.join(', ') })], { kind: 'error' });
@@ -96,18 +110,20 @@ window.fresnelLab.ready = (async () => {
   root.append(heading);
   let panel;
   try {
-    panel = await loadPanel(id);
+    panel = await loadPanel(entry.id);
   } catch (error) {
-    showNotice(root, t('panelLoadFailed', { title: panelTitle(entry.id) }), [error.message], { kind: 'error' });
+    showNotice(root, t('panelLoadFailed', { title: panelTitle(entry.id) }), [error instanceof Error ? error.message : String(error)],
+      { kind: 'error' });
     return null;
   }
+  /** @type {ReturnType<typeof connectMessages> | null} */
   let messages = null;
   const host = createPanelHost(root, panel, {
     titleLevel: 1, // the embed's title is its h1
     applyMaterial: (material) => panel.material && host.set({ [panel.material]: material.n }, { source: 'page' }),
     onFrame: (frame) => messages?.rendered(frame),
   });
-  hosts[id] = host;
+  hosts[entry.id] = host;
   if (options.reducedMotion !== null) host.setReducedMotion(options.reducedMotion);
   const unknown = [...host.controls('lock', options.lock), ...host.controls('hide', options.hide)];
   if (!options.controls) host.controls('hide', null);
@@ -127,7 +143,7 @@ window.fresnelLab.ready = (async () => {
   let leaving = 0;
   if (typeof IntersectionObserver === 'function') new IntersectionObserver((entries) => {
     clearTimeout(leaving);
-    if (entries.at(-1).isIntersecting) {
+    if (entries.at(-1)?.isIntersecting) {
       onScreen = true;
       show();
     } else {
@@ -147,7 +163,7 @@ window.fresnelLab.ready = (async () => {
     },
   });
   window.removeEventListener('message', early);
-  onAudioTrace((on, source) => { if (source !== 'api') messages.audio(on); }); // the reader's switch, told to the deck
+  onAudioTrace((on, source) => { if (source !== 'api') messages?.audio(on); }); // the reader's switch, told to the deck
   show();
   messages.ready();
   // The content's height, whenever it changes (a panel mounting, projector mode, a notice), so a
@@ -155,7 +171,7 @@ window.fresnelLab.ready = (async () => {
   let lastHeight = 0;
   if (typeof ResizeObserver === 'function') new ResizeObserver(() => {
     const height = Math.ceil(document.body.scrollHeight);
-    if (height !== lastHeight) messages.size((lastHeight = height));
+    if (height !== lastHeight) messages?.size((lastHeight = height));
   }).observe(document.body);
   return host;
 })();

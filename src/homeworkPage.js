@@ -1,3 +1,4 @@
+// @ts-check
 // homework.html: with ?sheet=CODE (or a sheet written into the page, in a SCORM package), the sheet
 // a student works on (showSheet); without one, the lecturer's page: open a sheet file, compose a
 // sheet, check handed-in files, grade a class (lecturerPage.js). A sheet that cannot be read is
@@ -16,6 +17,7 @@ import './homework/page/classView/classView.css';
 import { startPageLanguage } from './i18n/pageLanguage.js';
 import english from 'virtual:messages/en/homework';
 import { messages } from './i18n/messages.js';
+import { pageElement } from './ui/pageElement.js';
 
 const t = messages('homework', english);
 
@@ -27,7 +29,10 @@ const carried = document.getElementById('fresnel-lab-sheet');
 const inPackage = carried?.dataset.scorm === '1';
 const code = inPackage ? carried.textContent.trim() : search.get('sheet');
 
-/** The language a sheet's code carries, where it is one of the lab's (the rest of the sheet is read later). */
+/**
+ * The language a sheet's code carries, where it is one of the lab's (the rest of the sheet is read later).
+ * @param {string | null} sheetCode
+ */
 function carriedLanguage(sheetCode) {
   if (sheetCode === null) return null;
   const decoded = sheetFromCode(sheetCode);
@@ -44,23 +49,27 @@ const scormModule = inPackage ? import('./homework/page/connectScorm.js') : null
 
 // The language first, so every word below is in it.
 const language = await startPageLanguage({ carried: carriedLanguage(code) });
-setupPageControls(document.querySelector('.page-controls'), {});
-const root = document.getElementById('homework');
+setupPageControls(pageElement('.page-controls'), {});
+const root = pageElement('#homework');
 if (language.problem) showNotice(root, t('page.languageProblem'), [language.problem]);
 installPageFaults((title, lines) => showNotice(root, title, lines, { kind: 'error' }));
-window.fresnelLab = { homework: null };
+/** @type {{ homework: object | null }} the page's hook for the browser tests: the sheet's view, or the lecturer's parts */
+const lab = { homework: null };
+window.fresnelLab = lab;
 
 if (code === null) {
-  window.fresnelLab.homework = (await lecturer).showLecturerPage(root);
+  lab.homework = (await (lecturer ?? lecturerModule())).showLecturerPage(root); // fetched above: code is null
 } else {
   const decoded = sheetFromCode(code);
-  const read = decoded.ok ? readSheet(decoded.data) : decoded;
+  /** @type {import('./homework/readSheet.js').ReadSheet} */
+  const read = decoded.ok ? readSheet(decoded.data) : { ok: false, problems: decoded.problems ?? [] };
   if (read.ok) {
     const seed = inPackage ? null : search.get('seed')?.trim().slice(0, 64) || null;
     const scorm = scormModule ? (await scormModule).connectScorm() : null;
-    window.fresnelLab.homework = (await sheetModule).showSheet(root, { sheet: read.sheet, code, urlSeed: seed, scorm });
+    const { showSheet } = await (sheetModule ?? import('./homework/page/showSheet.js')); // fetched above: code is not null
+    lab.homework = showSheet(root, { sheet: read.sheet, code, urlSeed: seed, scorm });
   } else {
-    window.fresnelLab.homework = (await lecturerModule()).showLecturerPage(root);
+    lab.homework = (await lecturerModule()).showLecturerPage(root);
     showNotice(root, t('page.unusableLink'), [...read.problems, t('page.askAgain')], { kind: 'error' });
   }
 }

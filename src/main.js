@@ -1,3 +1,4 @@
+// @ts-check
 // The lecture page: one section per panel of the manifest, in lecture order (vite.config.js
 // writes them into index.html), each mounted as it approaches the screen; the page controls and
 // lecture-mode keys. A composed lecture (?lecture=CODE, or a data element in the page) takes the
@@ -21,6 +22,7 @@ import { audioTraceOn, installAudioKey, onAudioTrace, setAudioTrace, traceLog } 
 import { panelTitle } from './panels/panelText.js';
 import { startPageLanguage } from './i18n/pageLanguage.js';
 import { messages } from './i18n/messages.js';
+import { pageElement } from './ui/pageElement.js';
 
 // The page's language first: every word below is written in it. A composed lecture carries its own
 // (the "lang" of its link's code, or of the data element of an offline lecture), which the link's
@@ -52,6 +54,10 @@ async function carriedLectureLanguage() {
  * A notice titled in the page's own words (the catalogue's "page" namespace). Only a problem shows
  * one, so those words are fetched then: the first load carries none of them. lines: the notice's
  * lines, or a function of t that makes them in those words.
+ * @param {HTMLElement} host
+ * @param {string} key
+ * @param {string[] | ((t: (key: string, args?: Record<string, unknown>) => string) => string[])} lines
+ * @param {{ args?: Record<string, unknown>, kind?: 'warning' | 'error' }} [options]
  */
 async function pageNotice(host, key, lines, { args, kind } = {}) {
   const { default: english } = await import('virtual:messages/en/page');
@@ -59,18 +65,27 @@ async function pageNotice(host, key, lines, { args, kind } = {}) {
   return showNotice(host, t(key, args), typeof lines === 'function' ? lines(t) : lines, { kind });
 }
 
+/** @type {Record<string, import('./host/createPanelHost.js').PanelHost>} */
 const hosts = {};
-window.fresnelLab = {
+/**
+ * @type {{ hosts: typeof hosts, contexts: typeof contextStats, panels: object, audio: object, ready: Promise<void> | null,
+ *   applyMaterial?: typeof applyMaterial, lecture?: { source: string, title: string | null, code: string | null } }}
+ */
+const lab = {
   hosts,
   contexts: contextStats,
   /** Each mounted panel's view (null while it is away), for scripts and tests. */
-  panels: new Proxy({}, { get: (_t, id) => hosts[id]?.instance ?? null }),
+  panels: new Proxy({}, { get: (_t, id) => (typeof id === 'string' && Object.hasOwn(hosts, id) ? hosts[id].instance : null) }),
   /** The audio trace: on or off, and every sound it made (createAudioTrace.js). */
   audio: { get on() { return audioTraceOn(); }, log: traceLog },
   ready: null,
 };
+window.fresnelLab = lab;
 
-/** Page-wide material: every panel that has an index parameter takes it (a table marks its row). */
+/**
+ * Page-wide material: every panel that has an index parameter takes it (a table marks its row).
+ * @param {{ id?: string, n: number }} material
+ */
 function applyMaterial(material) {
   for (const host of Object.values(hosts)) {
     const { material: key, materialSelect } = host.panel;
@@ -79,16 +94,17 @@ function applyMaterial(material) {
   }
 }
 
-const controls = setupPageControls(document.querySelector('.page-controls'), { onMaterial: applyMaterial });
-window.fresnelLab.applyMaterial = applyMaterial;
+const controls = setupPageControls(pageElement('.page-controls'), { onMaterial: applyMaterial });
+lab.applyMaterial = applyMaterial;
 
 // ?maxContexts=N holds fewer WebGL panels at once, for a weak laptop (at most 8, the default).
+/** @satisfies {import('./host/panelContract.js').Schema} */
 const pageSchema = {
-  maxContexts: { type: 'number', default: MAX_LIVE_CONTEXTS, min: 1, max: MAX_LIVE_CONTEXTS, step: 1, label: 'Live WebGL panels' },
-  audio: { type: 'boolean', default: false, label: 'Audio trace of the R(θ) plots' },
+  maxContexts: { type: 'number', default: MAX_LIVE_CONTEXTS, min: 1, max: MAX_LIVE_CONTEXTS, step: 1 },
+  audio: { type: 'boolean', default: false },
 };
 const page = readParams(pageSchema, new URLSearchParams(window.location.search));
-const main = document.querySelector('main');
+const main = pageElement('main');
 // An error nobody caught is said in its panel, or once at the top of the page (panelFaults.js).
 installPageFaults((title, lines) => showNotice(main, title, lines, { kind: 'error' }));
 if (page.problems.length) pageNotice(main, 'settingsProblem', page.problems.map(describeProblem));
@@ -122,8 +138,8 @@ if (window.location.protocol === 'file:') document.querySelector('.compose-offer
 function ownPanels() {
   // The page and the manifest must agree: a section without a panel, or a panel without its section
   // or its module, is said on the page (and fails the tests), never dropped in silence.
-  const sections = [...document.querySelectorAll('section[data-panel]')];
-  const onPage = sections.map((s) => s.dataset.panel);
+  const sections = [...document.querySelectorAll('section[data-panel]')].filter((s) => s instanceof HTMLElement);
+  const onPage = sections.map((s) => s.dataset.panel ?? '');
   const strays = onPage.filter((id) => !panelEntry(id));
   const unplaced = PANEL_IDS.filter((id) => !onPage.includes(id));
   if (strays.length || unplaced.length || missingFiles.length) {
@@ -131,7 +147,7 @@ function ownPanels() {
       ...unplaced.map((id) => t('panelWithoutSection', { id })), ...missingFiles], { kind: 'error' });
   }
   const panels = sections.map((section) => {
-    const id = section.dataset.panel;
+    const id = section.dataset.panel ?? '';
     return { section, key: id, item: null, prefix: lecturePrefix(id) };
   });
   return { sections, panels };
@@ -141,27 +157,31 @@ function ownPanels() {
  * A panel item's host options: it starts from the item's state, its link keeps the lecture (its
  * code, or this page where the page holds it) with this item's state, and its embed code the
  * item's locks and hidden controls.
+ * @param {{ item: import('./lecture/readLecture.js').PanelItem | null, key: string, prefix: string }} placed
+ * @param {import('./host/panelContract.js').Schema} schema
+ * @param {Awaited<ReturnType<typeof import('./lecture/composedLecture.js').showComposedLecture>> | null} opened
  */
 function itemOptions({ item, key, prefix }, schema, opened) {
-  if (!item) return {};
+  if (!item || !opened) return {}; // an item comes with an opened lecture
   const start = item.state ?? {};
   const page = opened.source === 'data' ? window.location.href : './index.html';
   const code = opened.source === 'data' ? null : opened.code;
   const lang = code ? search.get('lang') : null; // a lecture link's language goes with it
   return {
     start,
-    lectureLink: (values) => itemLectureUrl({ page, code, lang, schema: withDefaults(schema, start), prefix, key }, values),
+    lectureLink: (/** @type {Readonly<import('./host/panelContract.js').Values>} */ values) =>
+      itemLectureUrl({ page, code, lang, schema: withDefaults(schema, start), prefix, key }, values),
     embedOptions: { lock: item.lock ?? [], hide: item.hide ?? [] },
   };
 }
 
 // Every panel's host (values, link, messages) at once; each panel's module when it comes near.
-window.fresnelLab.ready = (async () => {
+lab.ready = (async () => {
   const opened = given ? await given.catch((error) => {
     pageNotice(main, 'lectureLoadFailed', [error.message], { kind: 'error' });
     return null;
   }) : null;
-  window.fresnelLab.lecture = { source: opened?.source ?? 'default', title: opened?.title ?? null, code: opened?.code ?? null };
+  lab.lecture = { source: opened?.source ?? 'default', title: opened?.title ?? null, code: opened?.code ?? null };
   const composeLink = document.querySelector('.compose-offer a');
   // The composer opens it in this page's language (the lecture's own, unless the reader chose another).
   if (composeLink instanceof HTMLAnchorElement && opened?.code) {
@@ -172,22 +192,24 @@ window.fresnelLab.ready = (async () => {
   const { sections, panels } = composed ?? ownPanels();
   const entries = panels.map((placed) => {
     const { section, key } = placed;
-    const id = section.dataset.panel;
+    const id = section.dataset.panel ?? '';
     try {
       const definition = panelDefinition(id);
-      hosts[key] = createPanelHost(section.querySelector('.panel-mount'), definition, {
+      hosts[key] = createPanelHost(pageElement('.panel-mount', section), definition, {
         prefix: placed.prefix, noticeHost: section, applyMaterial, ...itemOptions(placed, definition.schema, opened),
       });
       if (placed.item?.lock) hosts[key].controls('lock', placed.item.lock);
       if (placed.item?.hide) hosts[key].controls('hide', placed.item.hide);
       return { section, host: hosts[key] };
     } catch (error) {
-      pageNotice(section, 'panelLoadFailed', [error.message], { kind: 'error', args: { title: panelEntry(id) ? panelTitle(id) : id } });
+      const said = error instanceof Error ? error.message : String(error);
+      pageNotice(section, 'panelLoadFailed', [said], { kind: 'error', args: { title: panelEntry(id) ? panelTitle(id) : id } });
       return null;
     }
   });
   const lecture = setupLectureMode(sections, { onHideControls: controls.toggleControls });
-  const manager = managePanels(entries.filter(Boolean), { maxLive });
+  const hosted = entries.filter((entry) => entry !== null);
+  const manager = managePanels(hosted, { maxLive });
   lecture.holdHashTarget(manager.first);
   await manager.first; // the panels on screen are mounted
   // Once the first picture is up, the other panels' modules are fetched (small chunks, in
@@ -197,5 +219,5 @@ window.fresnelLab.ready = (async () => {
   // KaTeX too: the page's formulas are typeset as their panels mount, not after (which would
   // change their height under the reader).
   // A failure is shown in its panel (a question's, in its section).
-  await Promise.allSettled([texReady(), composed?.ready, ...entries.filter(Boolean).map((e) => e.host.load())]);
+  await Promise.allSettled([texReady(), composed?.ready, ...hosted.map((e) => e.host.load())]);
 })();

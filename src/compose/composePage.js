@@ -29,18 +29,9 @@ import { buildLectureList } from './buildLectureList.js';
 import { buildShare } from './buildShare.js';
 import english from 'virtual:messages/en/compose';
 import { messages } from '../i18n/messages.js';
+import { pageElement } from '../ui/pageElement.js';
 
 const t = messages('compose', english);
-
-/**
- * An element of compose.html's own markup.
- * @param {string} selector
- */
-function pageElement(selector) {
-  const found = document.querySelector(selector);
-  if (!(found instanceof HTMLElement)) throw new Error(`compose.html has no ${selector}.`);
-  return found;
-}
 
 const search = new URLSearchParams(window.location.search);
 // The language first, so every word below is in it: a link's lecture carries its own.

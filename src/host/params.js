@@ -196,10 +196,12 @@ export function resolveKey(schema, name) {
  * Reads values for a schema from URLSearchParams (or any object with get/has).
  * Keys may carry a prefix (`spheres.nT`) and may be written by an alias (`n2` for `nT`); the key
  * itself wins over an alias. Absent keys take the default silently, bad ones take the default
- * and are listed in `problems`.
- * @param {Schema} schema
+ * and are listed in `problems`. The values are typed from the schema (ValuesOf): each is its spec's
+ * default or passed parseValue for that spec.
+ * @template {Schema} S
+ * @param {S} schema
  * @param {{ get(name: string): string | null, has(name: string): boolean }} search
- * @returns {{ values: Values, problems: Problem[] }}
+ * @returns {{ values: import('./panelContract.js').ValuesOf<S>, problems: Problem[] }}
  */
 export function readParams(schema, search, prefix = '') {
   const values = defaults(schema);
@@ -218,7 +220,8 @@ export function readParams(schema, search, prefix = '') {
       problems.push({ key: name, raw, reason: result.reason, fallback });
     }
   }
-  return { values, problems };
+  // Each value is of its spec's type (the default, or parsed for the spec), which is what ValuesOf says.
+  return { values: /** @type {import('./panelContract.js').ValuesOf<S>} */ (values), problems };
 }
 
 /**

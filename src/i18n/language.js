@@ -1,3 +1,4 @@
+// @ts-check
 // The page's language, chosen once as the page starts (languages.js says which, from the link, what
 // the page carries, the reader's choice kept in this browser and the browser's languages): its
 // catalogue loaded (English ships with the page; another language is one chunk, fetched only when

@@ -18,7 +18,7 @@ const t = messages('lecture', english);
 /** @typedef {import('./readLecture.js').LectureItem} LectureItem */
 /** @typedef {import('./readLecture.js').PanelItem} PanelItem */
 /** @typedef {import('./readLecture.js').QuestionItem} QuestionItem */
-/** @typedef {{ section: HTMLElement, item: PanelItem, key: string, prefix: string | null }} MountedPanel */
+/** @typedef {{ section: HTMLElement, item: PanelItem, key: string, prefix: string }} MountedPanel */
 /** @typedef {{ section: HTMLElement, item: QuestionItem, number: number }} AskedQuestion */
 
 /**
@@ -116,6 +116,7 @@ export function mountLecture(main, lecture, keys) {
     const { key, prefix } = keys[i];
     let section;
     if (item.type === 'panel') {
+      if (prefix === null) throw new Error(`The panel item ${key} has no URL prefix.`); // itemKeys gives every panel one
       section = panelSection(item, key);
       panels.push({ section, item, key, prefix });
     } else if (item.type === 'question') {

@@ -12,6 +12,7 @@ import { panelSchema } from './panelSchema.js';
  * }} PanelModule
  */
 const modules = /** @type {Record<string, () => Promise<PanelModule>>} */ (import.meta.glob('./*/index.js'));
+/** @param {string} id */
 const moduleOf = (id) => (Object.hasOwn(modules, `./${id}/index.js`) ? modules[`./${id}/index.js`] : undefined);
 
 /** What the manifest's panels lack, in words (the build stops on the same): said on the page, never a silent omission. */
@@ -20,10 +21,14 @@ export const missingFiles = PANELS.flatMap(({ id }) => [
   ...(panelSchema(id) ? [] : [`The panel “${id}” has no schema: src/panels/${id}/schema.js must export it.`]),
 ]);
 
-/** The module's mount(), checked: the module must keep the contract and export the same schema. */
+/**
+ * The module's mount(), checked: the module must keep the contract and export the same schema.
+ * @param {string} id
+ */
 async function loadMount(id) {
-  const module = await moduleOf(id)();
-  if (typeof module.mount !== 'function' || module.schema !== panelSchema(id)) {
+  const load = moduleOf(id);
+  const module = load ? await load() : undefined;
+  if (typeof module?.mount !== 'function' || module.schema !== panelSchema(id)) {
     throw new Error(`src/panels/${id}/index.js must export mount() and the schema of its schema.js.`);
   }
   return module.mount;
@@ -32,6 +37,7 @@ async function loadMount(id) {
 /**
  * The panel `id` without its module yet: its manifest entry, its schema, and load(), which
  * resolves to its mount(). Throws, naming the panel, when the id is unknown.
+ * @param {string} id
  * @returns {import('../host/panelContract.js').PanelDefinition}
  */
 export function panelDefinition(id) {
@@ -40,16 +46,18 @@ export function panelDefinition(id) {
   if (!entry) throw new Error(`There is no panel “${id}” in the manifest.`);
   if (!moduleOf(id)) throw new Error(`The panel “${id}” has no module src/panels/${id}/index.js.`);
   if (!schema || typeof schema !== 'object') throw new Error(`The panel “${id}” has no schema: src/panels/${id}/schema.js must export it.`);
+  /** @type {ReturnType<typeof loadMount> | null} */
   let loading = null;
   return Object.freeze({ ...entry, schema, load: () => (loading ??= loadMount(id)) });
 }
 
 /**
  * The panel `id` with its module loaded: the definition the host runs at once (the embed page).
+ * @param {string} id
  * @returns {Promise<import('../host/panelContract.js').PanelDefinition>}
  */
 export async function loadPanel(id) {
   const definition = panelDefinition(id);
-  const mount = await definition.load();
+  const mount = await loadMount(id);
   return Object.freeze({ ...definition, mount });
 }

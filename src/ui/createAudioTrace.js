@@ -21,7 +21,11 @@ const sharedSound = () => (sound ??= createTraceSound());
 /** Whether the trace is on (page-wide). */
 export const audioTraceOn = () => on;
 
-/** Turns the trace on or off for the page; listeners hear (on, source). */
+/**
+ * Turns the trace on or off for the page; listeners hear (on, source).
+ * @param {unknown} next  on when truthy
+ * @param {string} [source]  who switched it: 'page' (a key, a button), 'url', 'api' (a message)
+ */
 export function setAudioTrace(next, source = 'page') {
   if (Boolean(next) === on) return;
   on = Boolean(next);
@@ -29,7 +33,10 @@ export function setAudioTrace(next, source = 'page') {
   for (const listener of switches) listener(on, source);
 }
 
-/** listener(on, source) on every switch; returns a function that removes it. */
+/**
+ * listener(on, source) on every switch; returns a function that removes it.
+ * @param {(on: boolean, source: string) => void} listener
+ */
 export function onAudioTrace(listener) {
   switches.add(listener);
   return () => switches.delete(listener);

@@ -1,3 +1,4 @@
+// @ts-check
 // Form pieces the lab's pages share (the homework page, the composer, a question's card): a
 // labelled field, a titled section, and a file read with a size limit. Text only (textContent),
 // never markup. Styles: formParts.css (.ui-field).

@@ -1,12 +1,19 @@
+// @ts-check
 // Theme: dark or light, and a projector mode (larger type, thicker lines, stronger contrast).
 // Remembered in localStorage; a change fires `fresnel-lab:theme` so plots can redraw.
+import { own } from '../host/own.js';
+
 const KEY = 'fresnel-lab:theme';
 
-/** @returns {Theme} */
+/**
+ * The theme this browser keeps (anything stored is read as untrusted text: the defaults where it is not one).
+ * @returns {Theme}
+ */
 export function loadTheme() {
   try {
+    /** @type {unknown} */
     const saved = JSON.parse(localStorage.getItem(KEY) ?? '{}');
-    return { scheme: saved.scheme === 'light' ? 'light' : 'dark', projector: saved.projector === true };
+    return { scheme: own(saved, 'scheme') === 'light' ? 'light' : 'dark', projector: own(saved, 'projector') === true };
   } catch {
     return { scheme: 'dark', projector: false };
   }

@@ -1,3 +1,4 @@
+// @ts-check
 // A panel's frame holds the lab's embed page, which says so at once (fresnel-lab:loading, before
 // its panel's module arrives; src/embed.js). A frame that has loaded and said nothing holds
 // something else: the browser's own error page, when embed.html is not beside the file that frames
@@ -21,9 +22,11 @@ export function watchPanelFrame(frame, onMissing, { grace = FRAME_GRACE_MS } = {
     window.removeEventListener('message', onMessage);
     frame.removeEventListener('load', onLoad);
   };
-  /** @param {MessageEvent} event */
+  /** @param {MessageEvent<unknown>} event */
   function onMessage(event) {
-    if (event.source !== frame.contentWindow || typeof event.data?.type !== 'string' || !event.data.type.startsWith('fresnel-lab:')) return;
+    const { data } = event;
+    const type = typeof data === 'object' && data !== null && 'type' in data ? data.type : undefined;
+    if (event.source !== frame.contentWindow || typeof type !== 'string' || !type.startsWith('fresnel-lab:')) return;
     heard = true;
     stop();
   }
