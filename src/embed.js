@@ -39,13 +39,15 @@ const id = search.get('panel');
 const hosts = {};
 /**
  * The page's hook for the browser tests and decks' scripts.
- * @type {{ hosts: typeof hosts, contexts: typeof contextStats, panels: object, ready: Promise<PanelHost | null> | null, audio: object }}
+ * @type {{ hosts: typeof hosts, contexts: typeof contextStats, panels: object, ready: Promise<PanelHost | null> | null, audio: object,
+ *   fit: ReturnType<typeof fitToFrame> | null }}
  */
 const lab = {
   hosts,
   contexts: contextStats,
   panels: new Proxy({}, { get: (_t, key) => (typeof key === 'string' && Object.hasOwn(hosts, key) ? hosts[key].instance : null) }),
   ready: null,
+  fit: null, // with fit=1, the layout fitted to the frame (fitToFrame.js)
   audio: { get on() { return audioTraceOn(); }, log: traceLog },
 };
 window.fresnelLab = lab;
@@ -127,7 +129,7 @@ lab.ready = (async () => {
   if (options.reducedMotion !== null) host.setReducedMotion(options.reducedMotion);
   const unknown = [...host.controls('lock', options.lock), ...host.controls('hide', options.hide)];
   if (!options.controls) host.controls('hide', null);
-  if (options.fit) fitToFrame(root);
+  if (options.fit) lab.fit = fitToFrame(root, { moreBelow: t('fitMoreBelow') });
   showNotice(root, t('controlsProblem'), unknown.map((k) => t('notAControl', { key: k })));
   // The view is shown while the deck has not paused it and the frame is on screen. Paused (a
   // deck's hidden slide) or off screen for a second (a slide reveal.js preloaded ahead, a page

@@ -3,7 +3,7 @@
 //   theme=light|dark, projector=1|0, reducedMotion=1|0   override what the browser remembers
 //   audio=1|0                                             the audio trace of the R(θ) plots on or off (off by default)
 //   lock=nI,nT  hide=nI,nT  controls=0                    controls shown but fixed, hidden, or none
-//   fit=1                                                 scaled down to show whole in its frame (a slide)
+//   fit=1                                                 laid out to show whole in its frame (a slide; fitToFrame.js)
 //   lang=es                                               the language (else the reader's, else the browser's)
 //   parentOrigin=https://deck.example                     the only origin messages go to and come from
 // A value that cannot be used is named in `problems` and left out, but for parentOrigin: an

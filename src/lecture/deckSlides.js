@@ -77,7 +77,7 @@ const textHtml = (text) => (text ? `\n  <div class="fl-text">${lectureTextHtml(t
 function panelSlide(item, n, frame) {
   // Without a heading of the lecturer's the slide has none: the embed shows the panel's title itself.
   const heading = item.heading ? `<h2>${escapeHtml(item.heading)}</h2>` : '';
-  // fit: the panel shows whole on its slide, scaled down as far as it must be (src/host/fitToFrame.js).
+  // fit: the panel laid out to show whole on its slide, type kept legible (src/host/fitToFrame.js).
   const { theme, projector, lang } = frame;
   const { state, lock, hide } = item;
   const src = embedSource(frame.embedUrl, item.panel, { state, lock, hide, theme, projector, fit: true, lang });
