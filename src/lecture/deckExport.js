@@ -26,6 +26,7 @@ import { katexDeckCss } from './katexDeckCss.js';
 import english from 'virtual:messages/en/lecture';
 import { currentLanguage, messages } from '../i18n/messages.js';
 import { LANGUAGES, languageById } from '../i18n/languages.js';
+import { FRAME_GRACE_MS } from '../ui/watchPanelFrame.js';
 
 const t = messages('lecture', english);
 
@@ -49,6 +50,9 @@ const DECK_CSS = `
 .reveal .fl-options, .reveal .fl-why { font-size: 0.6em; }
 .reveal ol.fl-options { list-style-type: upper-alpha; }
 .reveal .lecture-math-display { text-align: center; margin: 0.4em 0; }
+.reveal .fl-missing { flex: 1 1 auto; min-height: 45%; box-sizing: border-box; padding: 0.6em 0.9em; font-size: 0.6em;
+  border: 2px solid #ff6b7a; border-radius: 8px; background: color-mix(in srgb, var(--r-background-color) 80%, #ff6b7a 20%); }
+.reveal .fl-missing p { margin: 0 0 0.5em; }
 `;
 
 // With light panels the deck is light too: dracula's colours, overridden.
@@ -63,9 +67,49 @@ const LIGHT_CSS = `
 // (fresnel-lab:key, docs/deck/reveal.md), heard only from the deck's own frames (from disk
 // every origin is "null", so the origin tells nothing). Linear navigation: → and Space step through
 // a question's answer too, as a clicker does.
-const DECK_SCRIPT = `
+// A panel's frame holds the lab's embed page, which says so at once (fresnel-lab:loading, before its
+// panel's module arrives; src/embed.js). A frame that has loaded an address and said nothing within
+// FRAME_GRACE_MS holds something else: the browser's error page, where embed.html is not where the
+// deck looks for it (a deck moved without its offline folder, or offline from the site). It is
+// replaced by a notice in the lab's words, as the lecture page does (src/ui/watchPanelFrame.js).
+// reveal.js unloads a frame by taking its src away (a load of about:blank), which is not watched.
+const deckScript = (/** @type {{ title: string, why: string }} */ missing) => `
 (function () {
   'use strict';
+  var MISSING = ${JSON.stringify(missing)};
+  var heard = [];
+  var watched = document.querySelectorAll('.reveal iframe.fl-embed');
+  function replace(frame) {
+    var box = document.createElement('div');
+    box.className = 'fl-missing';
+    box.setAttribute('role', 'alert');
+    var title = document.createElement('p');
+    var strong = document.createElement('strong');
+    strong.textContent = MISSING.title;
+    title.appendChild(strong);
+    var why = document.createElement('p');
+    why.textContent = MISSING.why;
+    box.appendChild(title);
+    box.appendChild(why);
+    frame.parentNode.replaceChild(box, frame);
+  }
+  Array.prototype.forEach.call(watched, function (frame) {
+    var timer = 0;
+    frame.addEventListener('load', function () {
+      clearTimeout(timer);
+      if (!frame.getAttribute('src') || heard.indexOf(frame) >= 0) return;
+      timer = setTimeout(function () {
+        if (heard.indexOf(frame) < 0 && frame.isConnected && frame.getAttribute('src')) replace(frame);
+      }, ${FRAME_GRACE_MS});
+    });
+  });
+  window.addEventListener('message', function (event) {
+    var data = event.data;
+    if (!data || typeof data.type !== 'string' || data.type.indexOf('fresnel-lab:') !== 0) return;
+    Array.prototype.forEach.call(watched, function (frame) {
+      if (frame.contentWindow === event.source && heard.indexOf(frame) < 0) heard.push(frame);
+    });
+  });
   var deck = new Reveal({
     hash: true, center: false, display: 'flex', width: 1280, height: 720, margin: 0.04,
     viewDistance: 2, navigationMode: 'linear', transition: 'slide'
@@ -89,6 +133,15 @@ const DECK_SCRIPT = `
   });
 })();
 `;
+
+/**
+ * The notice that takes the place of a panel whose page did not load, for panels from `embedUrl`.
+ * @param {string} embedUrl
+ */
+function missingWords(embedUrl) {
+  const where = /^\s*https?:/i.test(embedUrl) ? 'site' : 'file';
+  return { title: t('deckFrameMissing'), why: t('deckFrameMissingWhy', { where, url: embedUrl }) };
+}
 
 /** Inline script text that cannot end its element early (</script) or open a comment state (<!--). */
 const scriptText = (/** @type {string} */ text) => String(text).replace(/<\/(script)/gi, '<\\/$1').replace(/<!--/g, '<\\!--');
@@ -151,7 +204,7 @@ ${slides}
 </div>
 </div>
 <script>${scriptText(revealJs)}</script>
-<script>${DECK_SCRIPT}</script>
+<script>${scriptText(deckScript(missingWords(embedUrl)))}</script>
 </body>
 </html>
 `;

@@ -4,7 +4,8 @@
 // offline lecture shows the composed items with their states and the lecturer's words, markup in
 // them as text; the deck is stepped through in the real reveal.js with the keys a lecturer presses,
 // its panels start from their items' states, a panel left gets 'slide:stop', a key handed back by
-// a panel moves the deck, and no more than two WebGL contexts are live at any moment.
+// a panel moves the deck, and no more than two WebGL contexts are live at any moment. The lecture
+// file and the deck opened apart from their folders say in the lab's words where a panel could not load.
 // Needs the built site (npm run build). The export modules are loaded through vite (ssrLoadModule),
 // since they import reveal.js and the schemas as vite does.
 import { cpSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
@@ -61,6 +62,7 @@ test.beforeAll(async () => {
     }
     mkdirSync(join(dir, 'alone'));
     writeFileSync(join(dir, 'alone/lecture.html'), offlineLectureHtml(page, lecture));
+    writeFileSync(join(dir, 'alone/my-deck.html'), lectureDeckHtml(lecture, { embedUrl: 'offline/embed.html' })); // no offline/ beside it
   } finally {
     await server.close();
   }
@@ -111,6 +113,26 @@ test.describe('the lecture file alone, apart from its folder', () => {
     await expect(question.locator('.notice')).toContainText('The panel could not be shown here.', { timeout: 30_000 });
     await expect(question.locator('.notice')).toContainText('embed.html');
     await expect(question.locator('iframe')).toHaveCount(0);
+  });
+});
+
+test.describe('the deck alone, without the offline folder beside it', () => {
+  test.use({ allowedErrors: /ERR_FILE_NOT_FOUND|Failed to load resource|Not allowed to load local resource/ });
+  test('says in each panel\'s place, in the lab\'s words, that its page did not load', async ({ page }) => {
+    test.setTimeout(60_000);
+    await page.goto(`${fileUrl('alone/my-deck.html')}#/2`); // Schlick, preloaded with its neighbours
+    await page.waitForFunction(() => window.deck?.isReady());
+    const slide = page.locator('.reveal .slides > section[data-item="2"]');
+    const notice = slide.locator('.fl-missing[role="alert"]');
+    await expect(notice).toContainText('The panel could not be shown here.', { timeout: 30_000 });
+    await expect(notice).toContainText('Its page, offline/embed.html, did not load');
+    await expect(slide.locator('iframe')).toHaveCount(0);
+    await expect(slide.locator('h2')).toHaveText(lecture.items[1].heading); // the slide's own words stay
+    // A WebGL panel's frame, loaded when its slide is shown, likewise.
+    await page.keyboard.press('ArrowRight');
+    const hero = page.locator('.reveal .slides > section[data-item="3"]');
+    await expect(hero.locator('.fl-missing')).toContainText('The panel could not be shown here.', { timeout: 30_000 });
+    await expect(hero.locator('iframe')).toHaveCount(0);
   });
 });
 

@@ -19,6 +19,8 @@ import { QUESTIONS } from '../../src/homework/questions.js';
 import { expectedValue, questionParams, trueOption } from '../../src/homework/gradeAnswer.js';
 import { formatValue } from '../../src/homework/formatAnswer.js';
 import { check } from './fuzzConfig.js';
+import spanish from 'virtual:messages/es';
+import { setCatalogue } from '../../src/i18n/messages.js';
 
 const XSS = ['</script><script>alert(1)</script>', '<img src=x onerror=alert(1)>', '"><svg onload=alert(1)>', "'><svg/onload=alert(1)>",
   '[x](javascript:alert(1))', '[x]( JAVASCRIPT:alert(1))', '[x](data:text/html,<script>alert(1)</script>)',
@@ -252,6 +254,28 @@ describe('the reveal.js deck of a lecture', () => {
     expect(real).toMatch(/<script>\/\*!\n \* reveal\.js/);
     expect(real.length).toBeGreaterThan(100_000);
     expect(real).not.toMatch(/https?:\/\/(?!revealjs\.com|hakim\.se)[^\s"')]*\.(js|css)/); // nothing fetched from a CDN
+  });
+
+  it('a panel whose page did not load: the deck carries the lab\'s notice for it, in the page\'s language', () => {
+    // The words the deck's script puts in a frame's place (its JSON), where the panels are and what to do.
+    const missing = (html) => JSON.parse(/var MISSING = (\{.*\});/.exec(html)[1]);
+    expect(missing(deck(composed))).toEqual({
+      title: 'The panel could not be shown here.',
+      why: expect.stringMatching(/^Its page, offline\/embed\.html, did not load: .*offline folder \(dist\/offline/),
+    });
+    expect(missing(deck(composed, { embedUrl: 'https://lab.example/embed.html' })).why)
+      .toMatch(/^Its page, https:\/\/lab\.example\/embed\.html, did not load: .*needs the network\.$/);
+    // An address that could end the script stays inside its string.
+    const odd = deck(composed, { embedUrl: 'x</script><script>alert(1)</script>' });
+    expect(odd.match(/<\/script>/g)).toHaveLength(2);
+    expect(missing(odd).why).toContain('x</script><script>alert(1)</script>');
+    try {
+      setCatalogue('es', spanish);
+      expect(missing(deck(composed)).title).toBe('El panel no se ha podido mostrar aquí.');
+      expect(missing(deck(composed)).why).toMatch(/^Su página, offline\/embed\.html, no se ha cargado/);
+    } finally {
+      setCatalogue('en', null);
+    }
   });
 
   it('embedSource writes what differs from the defaults, as a share link does', () => {
