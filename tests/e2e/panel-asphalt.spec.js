@@ -23,7 +23,7 @@ test('mounts in an embed with a labelled canvas and the key numbers', async ({ p
   expect(centre.F).toBeGreaterThan(0.4); // default camera 6° above the road: near grazing
   // The two causes and how little is reflected (physics.js, tests/unit/asphalt.test.js): the lede's figures.
   // At the default view the brightest spot is at the horizon; it is compared with the road seen straight down.
-  await expect(entry('Brightest highlight in view')).toContainText('seen 0.0° below the horizon');
+  await expect(entry('Brightest highlight in view')).toContainText('seen at the horizon');
   await expect(entry('Highlight against the road straight below')).toHaveText(/^×21\d\.\d: lobe ×18\.5, F ×11\.7 \(diffuse counted too: ×3\d\.\d\)$/);
   await expect(entry('Sunlight reflected specularly')).toHaveText('7.3 % (diffuse albedo 9.0 %)');
   await expect(page.locator('.panel-description')).toContainText('less than its diffuse albedo of 9.0 %; that light is concentrated');

@@ -64,6 +64,9 @@ describe('how concentrated the reflected light is', () => {
     expect(text).toContain('that light is concentrated: seen from its brightest direction, towards the horizon (in the limit as the line '
       + 'of sight grazes the road), the sun\'s highlight '
       + `has ${concentrationByFormula(base).toFixed(1)} times the luminance`);
+    // Low over the road the brightest spot in view is the horizon's, a limit no sight line along the road reaches.
+    expect(describeRoad(road(base))).toContain('the brightest highlight in view, seen at the horizon, has specular luminance');
+    expect(describeRoad(road({ ...base, camEl: 90 }))).toMatch(/the brightest highlight in view, seen \d+\.\d° below the horizon,/);
     // A smooth road is brightest near the mirror direction, below the horizon: the words name that angle.
     const smooth = { ...base, roughness: 0.2 };
     const below = brightestByScan(smooth).below;

@@ -46,7 +46,7 @@ describe('the Fresnel sphere\'s rim, in words', () => {
   it('with n_t = 1 and Schlick\'s form: the rim turns, and the words say that the coat itself reflects nothing', () => {
     expect(schlick(80, 1)).toBeCloseTo(0.3853, 4); // (1 − cos 80°)⁵
     expect(say(1, 'schlick')).toContain(`F is 0.0000 at 0° and ${schlick(80, 1).toFixed(4)} at 80°, ${TURNS}, although a coat of `
-      + 'n_t = 1 reflects nothing (the exact F at 80°, 0.0000, would not change the rim\'s colour by one display code): '
+      + 'n_t = 1 reflects nothing (the exact F at 80°, 0.0000, would not move the rim\'s mix of the kd and ks colours by one display code): '
       + 'Schlick\'s (1 − cos θ)⁵ term does not vanish with R0');
     // The smallest index above 1 the control gives: the exact F moves the rim by under a code, Schlick's turns it.
     expect(codes(fresnelR(80, 1, 1.001))).toBeLessThan(1);
@@ -61,7 +61,7 @@ describe('the Fresnel sphere\'s rim, in words', () => {
         const visible = codes(weight(80, n, method)) >= 1;
         seen.add(visible);
         expect(say(n, method).includes(TURNS), `${method} ${n}`).toBe(visible);
-        if (!visible) expect(say(n, method)).toContain('too little to change the rim\'s colour by one display code');
+        if (!visible) expect(say(n, method)).toContain('too little to move the rim\'s mix of the kd and ks colours by one display code');
       }
     }
     expect([...seen].sort()).toEqual([false, true]); // both cases are among the indices

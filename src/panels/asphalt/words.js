@@ -20,6 +20,13 @@ const times = (/** @type {number} */ x) => `×${fixed(x, 1)}`;
 // times as bright as a matte road reflecting the same share of the sunlight.
 const CONCENTRATED = 3;
 
+/**
+ * 'horizon' where a spot `below` degrees below the horizon shows as 0.0°: the sight line grazes the
+ * road towards the horizon (a line along the road never meets it; the spot is the limit there).
+ * @param {number} below
+ */
+const whereBelow = (below) => (deg(below) === deg(0) ? 'horizon' : 'below');
+
 /** @typedef {import('./physics.js').RoadValues & { camEl: number }} Values */
 /** @typedef {import('./physics.js').Shade} Shade */
 /**
@@ -81,7 +88,7 @@ export function summaryRows(road) {
   return [
     ...head,
     [t('summary.peak'), t('summary.peakValue', {
-      below: deg(peak.below), specular: f3(peak.specular), thetaD: deg(peak.thetaD), F: f3(peak.F),
+      below: deg(peak.below), where: whereBelow(peak.below), specular: f3(peak.specular), thetaD: deg(peak.thetaD), F: f3(peak.F),
     }), true],
     [t('summary.diffuse'), f3(peak.diffuse)],
     [t('summary.ratio'), `${fixed(peak.specular / peak.diffuse, 1)}×`],
@@ -108,14 +115,14 @@ export function describeRoad(road) {
   const factor = concentration(road);
   const shape = t(factor >= CONCENTRATED ? 'shapeConcentrated' : 'shapeSpread', {
     concentration: fixed(factor, 1), below: deg(brightest.below),
-    // Shown as 0.0°, the brightest sight line is the limit at the horizon: a line along the road never meets it.
-    where: deg(brightest.below) === deg(0) ? 'horizon' : 'below',
+    where: whereBelow(brightest.below),
   });
   const ratio = albedo / SCENE.albedo;
   return `${setting} ${t('describe', {
     thetaD: deg(centre.thetaD),
     F: f3(centre.F),
     below: deg(peak.below),
+    where: whereBelow(peak.below),
     specular: f3(peak.specular),
     ratio: fixed(peak.specular / peak.diffuse, 1),
     diffuse: f3(peak.diffuse),
