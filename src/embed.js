@@ -9,7 +9,6 @@ import { loadPanel } from './panels/loadPanel.js';
 import { createPanelHost } from './host/createPanelHost.js';
 import { connectMessages, parseMessage } from './host/messageApi.js';
 import { readEmbedOptions } from './host/readEmbedOptions.js';
-import { fitToFrame } from './host/fitToFrame.js';
 import { startPageLanguage } from './i18n/pageLanguage.js';
 import { matchLanguage } from './i18n/languages.js';
 import { currentLanguage } from './i18n/messages.js';
@@ -40,14 +39,14 @@ const hosts = {};
 /**
  * The page's hook for the browser tests and decks' scripts.
  * @type {{ hosts: typeof hosts, contexts: typeof contextStats, panels: object, ready: Promise<PanelHost | null> | null, audio: object,
- *   fit: ReturnType<typeof fitToFrame> | null }}
+ *   fit: ReturnType<typeof import('./host/fitToFrame.js').fitToFrame> | null }}
  */
 const lab = {
   hosts,
   contexts: contextStats,
   panels: new Proxy({}, { get: (_t, key) => (typeof key === 'string' && Object.hasOwn(hosts, key) ? hosts[key].instance : null) }),
   ready: null,
-  fit: null, // with fit=1, the layout fitted to the frame (fitToFrame.js)
+  fit: null, // with fit=1, the layout fitted to the frame (fitToFrame.js), once that module is here
   audio: { get on() { return audioTraceOn(); }, log: traceLog },
 };
 window.fresnelLab = lab;
@@ -129,7 +128,10 @@ lab.ready = (async () => {
   if (options.reducedMotion !== null) host.setReducedMotion(options.reducedMotion);
   const unknown = [...host.controls('lock', options.lock), ...host.controls('hide', options.hide)];
   if (!options.controls) host.controls('hide', null);
-  if (options.fit) lab.fit = fitToFrame(root, { moreBelow: t('fitMoreBelow') });
+  // Only a slide's frame asks to be fitted: the layout search comes with fit=1, not with every embed.
+  if (options.fit) {
+    import('./host/fitToFrame.js').then(({ fitToFrame }) => { lab.fit = fitToFrame(root, { moreBelow: t('fitMoreBelow') }); });
+  }
   showNotice(root, t('controlsProblem'), unknown.map((k) => t('notAControl', { key: k })));
   // The view is shown while the deck has not paused it and the frame is on screen. Paused (a
   // deck's hidden slide) or off screen for a second (a slide reveal.js preloaded ahead, a page

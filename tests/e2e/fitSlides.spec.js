@@ -30,7 +30,7 @@ const HOST = `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>
  * 30 animation frames (its content and the layout chosen for it settled), then reads it.
  */
 async function settledLayout(frame, id) {
-  await frame.waitForFunction((pid) => window.fresnelLab?.hosts?.[pid]?.mounted, id, { timeout: 60_000 });
+  await frame.waitForFunction((pid) => window.fresnelLab?.hosts?.[pid]?.mounted && window.fresnelLab.fit, id, { timeout: 60_000 });
   return frame.evaluate(() => new Promise((resolveLayout) => {
     let last = '';
     let still = 0;
