@@ -20,6 +20,9 @@ vi.mock('../../src/panels/speed-accuracy/measureGpuErrors.js', () => ({ gpuError
 vi.mock('../../src/panels/speed-accuracy/timeCpu.js', () => ({ timeCpu: parts.cpu }));
 vi.mock('../../src/panels/speed-accuracy/timeFrames.js', () => ({ timeFrames: parts.frames }));
 
+// The unit tests share their workers' modules (isolate: false in vite.config.js): a file run before
+// this one may have imported runBenchmark.js with its real parts, so it is imported again here.
+vi.resetModules();
 const { runBenchmark } = await import('../../src/panels/speed-accuracy/runBenchmark.js');
 
 beforeEach(() => {
