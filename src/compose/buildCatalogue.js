@@ -7,7 +7,7 @@ import { messages } from '../i18n/messages.js';
 import { button, el } from '../ui/el.js';
 import { setSubscripted } from '../ui/subscripts.js';
 import { field, titledSection } from '../ui/formParts.js';
-import { panelCatalogue } from './catalogue.js';
+import { panelCatalogue, questionPrompt } from './catalogue.js';
 import { questionSelect } from './questionSelect.js';
 
 const t = messages('compose', english);
@@ -28,7 +28,15 @@ export function buildCatalogue(onAdd) {
   const select = questionSelect();
   const addQuestion = button(t('addQuestion'));
   addQuestion.addEventListener('click', () => onAdd.question(select.value));
-  questionBox.append(field(t('questionField'), select), addQuestion);
+  // An option holds the prompt's start only (a select is one line wide): the whole prompt, with
+  // the room's numbers, is shown below it and read out with the select.
+  const preview = el('p', 'cp-prompt cp-question-preview');
+  preview.id = 'cp-question-preview';
+  select.setAttribute('aria-describedby', preview.id);
+  const showPrompt = () => setSubscripted(preview, questionPrompt(select.value));
+  select.addEventListener('change', showPrompt);
+  showPrompt();
+  questionBox.append(field(t('questionField'), select), preview, addQuestion);
 
   const panelsHeading = el('h3', 'cp-sub', t('panelsHeading'));
   panelsHeading.id = 'cp-panels-title';

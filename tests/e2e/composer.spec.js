@@ -52,6 +52,12 @@ test('a lecture composed by keyboard alone gives a link that holds it, in order'
   await page.keyboard.press('Home');
   await page.keyboard.press('ArrowDown');
   const question = await page.getByLabel('A question to the room, from the homework bank').inputValue();
+  // An option shows a prompt's first 110 characters; the whole prompt, with the room's numbers, is below the select.
+  await page.getByLabel('A question to the room, from the homework bank').selectOption('exact-r');
+  await expect(page.locator('.cp-question-preview')).toHaveText(
+    /^Light meets a surface from air at θ = \d+°, into nt = [\d.]+\. What fraction R is reflected \(unpolarised\)\? To 3 decimals\.$/);
+  await page.getByLabel('A question to the room, from the homework bank').selectOption(question);
+  await page.getByLabel('A question to the room, from the homework bank').focus();
   await page.keyboard.press('Tab');
   await page.keyboard.press('Enter');
   await expect(status).toHaveText(/as item 4 of 4/);
