@@ -48,6 +48,11 @@ function inline(tokens) {
       /** @type {ElementNode} */
       const node = { tag: INLINE[token.type], children: [] };
       if (node.tag === 'a') node.href = String(token.attrGet('href') ?? ''); // a link token always has its href
+      // markdown-it validates no empty target ("[x]()"): such a link's words stay plain text.
+      if (node.tag === 'a' && !LINK.test(node.href?.trim() ?? '')) {
+        stack.push(top());
+        continue;
+      }
       top().children.push(node);
       stack.push(node);
     } else if (token.type.endsWith('_close')) {

@@ -156,7 +156,8 @@ describe('the lecturer\'s Markdown', () => {
   const XSS = ['<img src=x onerror=alert(1)>', '<svg onload=alert(1)>', '[x](javascript:alert(1))', '[x](JAVASCRIPT:alert(1))', '[x]( javascript:alert(1))',
     '[x](data:text/html,<script>alert(1)</script>)', '[x](vbscript:msgbox)', '<a href="javascript:alert(1)">x</a>', '![x](https://evil.example/t.png)',
     '<script>alert(1)</script>', '</textarea><script>alert(1)</script>', '"><img src=x onerror=alert(1)>', '[x](//evil.example)', '[x](/relative)',
-    '$\\href{javascript:alert(1)}{x}$', '<style>*{display:none}</style>', '<iframe src="https://evil.example"></iframe>'];
+    '$\\href{javascript:alert(1)}{x}$', '<style>*{display:none}</style>', '<iframe src="https://evil.example"></iframe>',
+    '[x]()', '[]()', '[x]( )', '[x](<>)'];
 
   /** Every node in the tree: only allowed tags, links only to http(s) and mailto, text as text. */
   function expectSafe(nodes) {
@@ -176,6 +177,8 @@ describe('the lecturer\'s Markdown', () => {
       expect(JSON.stringify(tree)).not.toMatch(/"href":"(?!https?:|mailto:)/i);
     }
     expect(lectureTextTree('<img src=x onerror=alert(1)>')).toEqual([{ tag: 'p', children: [{ text: '<img src=x onerror=alert(1)>' }] }]);
+    // A link with no target (markdown-it checks none) keeps its words, as text.
+    expect(lectureTextTree('see [x]() here')).toEqual([{ tag: 'p', children: [{ text: 'see ' }, { text: 'x' }, { text: ' here' }] }]);
   });
 
   it('what it is for: paragraphs, emphasis, lists, links and math', () => {

@@ -28,7 +28,7 @@ const XSS = ['</script><script>alert(1)</script>', '<img src=x onerror=alert(1)>
   '<iframe src="https://evil.example"></iframe>', '<!--', '-->', '$\\href{javascript:alert(1)}{x}$', '$\\htmlClass{x}{y}$',
   '$$\\url{javascript:alert(1)}$$', '[x](https://a.example/"onmouseover="alert(1))', '&lt;script&gt;', '&#60;script&#62;',
   '$\\fcolorbox{red}{blue}{x}$', '$\\color{#f00"onload}x$', '</section></div><script>alert(1)</script>', '{{7*7}}', '\u2028',
-  'n_t <b>bold</b>'];
+  'n_t <b>bold</b>', '[x]()', '[]()', '[x]( )', '[x](<>)'];
 const MARKDOWN_BITS = ['*', '_', '`', '$', '$$', '[', '](', ')', '\n\n', '- ', 'https://x.example', 'mailto:a@b.c', '<', '"', "'", '&'];
 
 const STAND_IN = { revealJs: 'window.Reveal = function () { return { initialize() {} }; };', revealCss: '.reveal{}' };
