@@ -274,6 +274,7 @@ test('in one column (800 px wide) the catalogue scrolls away above the lecture, 
   // A real click: Playwright clicks only where the button itself is hit, so one under the catalogue fails here.
   const item = page.locator('.cp-item-panel').first();
   const show = item.getByRole('button', { name: 'Show the panel' });
+  await expect(show).toBeVisible(); // the card's editor arrives with its module; then a covered button fails fast
   await show.click({ timeout: 5_000 });
   await expect(item.getByRole('button', { name: 'Hide the panel' })).toHaveAttribute('aria-expanded', 'true');
   await expect(item.locator('iframe.cp-frame')).toBeVisible();

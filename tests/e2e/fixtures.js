@@ -132,6 +132,20 @@ export const nextFrames = (page) => page.evaluate(() => new Promise((resolve) =>
   requestAnimationFrame(() => requestAnimationFrame(resolve));
 }));
 
+/**
+ * The formulas in `scope` typeset and laid out in KaTeX's fonts: each shows its TeX source until
+ * KaTeX (fetched after the picture) typesets it, and the fonts, asked for once the typeset formulas
+ * are laid out, change line heights when they arrive. A layout measured before this may move.
+ */
+export async function typesetSettled(page, scope) {
+  await expect(page.locator(`${scope} [aria-busy="true"]`)).toHaveCount(0);
+  await expect.poll(() => page.evaluate(async () => {
+    await new Promise((resolve) => { requestAnimationFrame(() => requestAnimationFrame(resolve)); });
+    await document.fonts.ready;
+    return document.fonts.check('16px KaTeX_Main');
+  }), { message: 'KaTeX\'s fonts loaded' }).toBe(true);
+}
+
 /** A stand-in slide deck on the lab's own origin (served by the test, not part of the site), opened in page. */
 export async function openDeck(page) {
   await page.route('**/deck-under-test.html', (route) => route.fulfill({

@@ -1,4 +1,4 @@
-import { test, expect, openLab } from './fixtures.js';
+import { test, expect, openLab, typesetSettled } from './fixtures.js';
 import { fresnelExact } from '../../src/optics/fresnel.js';
 
 const DEG = Math.PI / 180;
@@ -47,11 +47,7 @@ test('glass to air at 50° (from the URL): g² < 0, g imaginary, R = 1', async (
 test('the controls move the numbers and the URL; the layout stays put', async ({ page }) => {
   await openLab(page, './embed.html?panel=exact-fresnel');
   const box = () => page.locator('.xf-panel').boundingBox();
-  // Formulas show their TeX source until KaTeX (fetched after the picture) typesets them.
-  await expect(page.locator('.xf-panel [aria-busy="true"]')).toHaveCount(0);
-  // and KaTeX's fonts, asked for once the typeset formulas are laid out, change line heights when they arrive.
-  await page.evaluate(() => new Promise((resolve) => { requestAnimationFrame(() => document.fonts.ready.then(resolve)); }));
-  expect(await page.evaluate(() => document.fonts.check('16px KaTeX_Main'))).toBe(true);
+  await typesetSettled(page, '.xf-panel');
   const before = await box();
   const input = page.locator('.lil-gui .lil-controller', { hasText: 'θ, angle' }).locator('input');
   await input.fill('30');

@@ -1,4 +1,4 @@
-import { test, expect, openLab } from './fixtures.js';
+import { test, expect, openLab, typesetSettled } from './fixtures.js';
 import { fresnelExact, fresnelSchlick } from '../../src/optics/fresnel.js';
 
 const DEG = Math.PI / 180;
@@ -42,6 +42,7 @@ test('the θ and index controls change the readout, the plot and the URL', async
   const plot = page.locator('.sk-plot canvas');
   const before = await plot.screenshot();
   const height = async () => (await page.locator('.sk-panel').boundingBox()).height;
+  await typesetSettled(page, '.sk-panel'); // the formulas' typesetting moves the layout once, before any change
   const h0 = await height();
   const theta = page.locator('.lil-gui .lil-controller', { hasText: 'θ for the readout' }).locator('input');
   await theta.fill('80');
