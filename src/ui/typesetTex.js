@@ -2,6 +2,31 @@
 import katex from 'katex';
 import 'katex/dist/katex.min.css';
 import { patchTree } from './patchTree.js';
+import english from 'virtual:messages/en/ui';
+import { messages } from '../i18n/messages.js';
+
+const t = messages('ui', english);
+
+/**
+ * The page language's names of the functions a formula uses (Spanish writes sen, arcsen): TeX's
+ * own command where the catalogue keeps TeX's name, or gives no plain word (as a pseudo-locale does).
+ */
+function functionNames() {
+  /** @type {Record<string, string>} */
+  const macros = {};
+  for (const [command, key] of [['sin', 'math.sine'], ['arcsin', 'math.arcsine']]) {
+    const name = t(key);
+    if (name !== command && /^\p{L}+$/u.test(name)) macros[`\\${command}`] = `\\operatorname{${name}}`;
+  }
+  return macros;
+}
+
+/**
+ * KaTeX warns of a character it has no metrics for, as a word in another script inside \text{}
+ * is: the browser's fonts draw it, which is what the page wants.
+ * @param {string} code
+ */
+const strict = (code) => (code === 'unknownSymbol' || code === 'symbolNotInFont' ? 'ignore' : 'warn');
 
 /**
  * Typesets TeX into an element. Errors show as red source text, never throw. A formula whose
@@ -13,7 +38,7 @@ import { patchTree } from './patchTree.js';
  */
 export function typesetTex(element, tex, display) {
   /** @type {import('katex').KatexOptions} */
-  const options = { displayMode: display, throwOnError: false, output: 'htmlAndMathml' };
+  const options = { displayMode: display, throwOnError: false, output: 'htmlAndMathml', macros: functionNames(), strict };
   if (element.firstElementChild?.classList.contains('katex') || element.firstElementChild?.classList.contains('katex-display')) {
     const fresh = document.createElement(element.tagName);
     katex.render(tex, fresh, options);

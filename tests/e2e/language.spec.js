@@ -2,7 +2,7 @@
 // controls (named from the catalogue; a choice reloads the page in it and is kept in this browser),
 // an embed's lang= option, and a deck's fresnel-lab:language message, which starts the panel again
 // in that language as it was. The pseudo-locale en-XA shows every catalogue message ⟦bracketed⟧.
-import { test, expect, labReady } from './fixtures.js';
+import { test, expect, labReady, typesetSettled } from './fixtures.js';
 import { english, englishPanelTitle } from './englishText.js';
 
 const BRACKETED = /^⟦[^⟦⟧]+⟧$/;
@@ -88,4 +88,23 @@ test('a deck\'s language message starts the embed again in that language, as it 
   expect(await page.evaluate(() => window.fresnelLab.hosts.schlick.values.nT)).toBe(2.2);
   expect(await page.evaluate(() => window.fresnelLab.hosts.schlick.locked)).toEqual(['nI']);
   expect(new URL(page.url()).searchParams.get('theme')).toBe('light'); // the embed's own options stay
+});
+
+test('a formula speaks the page\'s language: its words from the catalogue, and Spanish writes sen', async ({ page }) => {
+  // What KaTeX draws (its HTML; the MathML beside it keeps the TeX source as an annotation).
+  const drawn = async (selector) => {
+    await typesetSettled(page, selector);
+    return (await page.locator(`${selector} .katex-html`).first().textContent()).replace(/\s+/g, ' ');
+  };
+  await openLab(page, './embed.html?panel=refraction-waves&lang=es&nI=1.5&nT=1&angle=60&play=false'); // past the critical angle
+  const snell = await drawn('.rw-snell');
+  expect(snell).toContain('sen');
+  expect(snell).not.toMatch(/sin/);
+  expect(snell).toContain('no hay rayo refractado');
+  await openLab(page, './embed.html?panel=reflect-refract&lang=es');
+  for (const word of ['color', 'cielo', 'reflejado', 'suelo', 'refractado']) expect(await drawn('.rr-formula')).toContain(word);
+  await openLab(page, './embed.html?panel=asphalt&lang=es');
+  expect(await drawn('.asphalt-formula')).toMatch(/Lesp.*Esol/);
+  await openLab(page, './embed.html?panel=refraction-waves&nI=1.5&nT=1&angle=60&play=false');
+  expect(await drawn('.rw-snell')).toMatch(/sin.*no refracted ray/);
 });

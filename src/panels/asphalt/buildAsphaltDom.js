@@ -2,7 +2,7 @@
 // readout, the key numbers and the formula. Styled by styles.css under .asphalt-panel.
 import english from 'virtual:messages/en/asphalt';
 import { messages } from '../../i18n/messages.js';
-import { texElement } from '../../ui/tex.js';
+import { texElement, texText } from '../../ui/tex.js';
 import './styles.css';
 import { el } from '../../ui/el.js';
 import { definitionList } from '../../ui/definitionList.js';
@@ -24,7 +24,8 @@ export function buildAsphaltDom(host) {
   readout.setAttribute('aria-live', 'polite');
   const summary = definitionList('asphalt-summary');
   const formula = texElement(
-    'L_\\text{spec} = \\frac{D(\\mathbf h)\\,G_2(\\mathbf l,\\mathbf v)\\,F(\\theta_d)}{4\\,\\cos\\theta_v}\\,E_\\text{sun},'
+    `L_\\text{${texText(t('formula.specular'))}} = \\frac{D(\\mathbf h)\\,G_2(\\mathbf l,\\mathbf v)\\,F(\\theta_d)}{4\\,\\cos\\theta_v}\\,`
+    + `E_\\text{${texText(t('formula.sun'))}},`
     + '\\qquad \\cos\\theta_d = \\mathbf l\\cdot\\mathbf h',
     { className: 'asphalt-formula' },
   );

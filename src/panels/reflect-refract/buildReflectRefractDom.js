@@ -3,7 +3,7 @@
 // the blend formula with live values. Styles: styles.css (all under .rr-panel).
 import english from 'virtual:messages/en/reflect-refract';
 import { messages } from '../../i18n/messages.js';
-import { renderTex, texNumber } from '../../ui/tex.js';
+import { renderTex, texNumber, texText } from '../../ui/tex.js';
 import { REFLECTION_BANDS } from './physics.js';
 import { bandLabel } from './words.js';
 import { el } from '../../ui/el.js';
@@ -76,10 +76,11 @@ export function buildReflectRefractDom(host) {
         [t('summary.floor'), `T/n_t² = ${fixed(ray.floorWeight, 4)}`],
         [t('summary.transmitted'), t('summary.transmittedValue', { theta: angle(ray.thetaTDeg) })],
       ]);
-      renderTex(formula, '\\begin{aligned}\\text{colour} &= R\\,\\text{sky}_{\\text{reflect}} '
-        + '+ \\tfrac{T}{n_t^2}\\,\\text{floor}_{\\text{refract}}'
-        + `\\\\ &= ${texNumber(ray.R)}\\,\\text{sky}_{\\text{reflect}} + ${texNumber(ray.floorWeight)}\\,\\text{floor}_{\\text{refract}}`
-        + '\\end{aligned}');
+      const w = (/** @type {string} */ key) => `\\text{${texText(t(key))}}`;
+      const sky = `${w('formula.sky')}_{${w('formula.reflected')}}`;
+      const floor = `${w('formula.floor')}_{${w('formula.refracted')}}`;
+      renderTex(formula, `\\begin{aligned}${w('formula.colour')} &= R\\,${sky} + \\tfrac{T}{n_t^2}\\,${floor}`
+        + `\\\\ &= ${texNumber(ray.R)}\\,${sky} + ${texNumber(ray.floorWeight)}\\,${floor}\\end{aligned}`);
     },
     /** The note on the lecture's "No reflection" caption, for a surface of index n with head-on reflectance r0. */
     setNote(n, r0) {

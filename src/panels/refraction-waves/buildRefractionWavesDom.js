@@ -6,7 +6,7 @@ import { messages } from '../../i18n/messages.js';
 import { DEG, toDegrees } from '../../optics/angles.js';
 import { angle, fixed, grouped } from '../../ui/format.js';
 import { setSubscripted } from '../../ui/subscripts.js';
-import { renderTex, texNumber } from '../../ui/tex.js';
+import { renderTex, texNumber, texText } from '../../ui/tex.js';
 import { el } from '../../ui/el.js';
 import { definitionList } from '../../ui/definitionList.js';
 import { makeScrollBox } from '../../ui/scrollBox.js';
@@ -79,7 +79,7 @@ export function buildRefractionWavesDom(host, { onPlayToggle }) {
       const lhs = `n_i \\sin\\theta_i = ${texNumber(s.nI, 3)} \\sin ${texNumber(s.thetaI, 2)}^\\circ`
         + ` = ${texNumber(s.nI * Math.sin(s.thetaI * DEG), 4)}`;
       renderTex(snell, s.thetaT === null
-        ? `${lhs} > n_t = ${texNumber(s.nT, 3)} \\;\\Rightarrow\\; \\text{no } \\theta_t`
+        ? `${lhs} > n_t = ${texNumber(s.nT, 3)} \\;\\Rightarrow\\; \\text{${texText(t('formula.noRefracted'))}}`
         : `${lhs} = n_t \\sin\\theta_t = ${texNumber(s.nT, 3)} \\sin ${texNumber(s.thetaT, 2)}^\\circ`);
     },
   };
