@@ -102,7 +102,7 @@ test('a formula speaks the page\'s language: its words from the catalogue, and S
   expect(snell).not.toMatch(/sin/);
   expect(snell).toContain('no hay rayo refractado');
   await openLab(page, './embed.html?panel=reflect-refract&lang=es');
-  for (const word of ['color', 'cielo', 'reflejado', 'suelo', 'refractado']) expect(await drawn('.rr-formula')).toContain(word);
+  for (const word of ['color', 'cielo', 'reflejado', 'fondo', 'refractado']) expect(await drawn('.rr-formula')).toContain(word);
   await openLab(page, './embed.html?panel=asphalt&lang=es');
   expect(await drawn('.asphalt-formula')).toMatch(/Lesp.*Esol/);
   await openLab(page, './embed.html?panel=refraction-waves&nI=1.5&nT=1&angle=60&play=false');
