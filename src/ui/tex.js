@@ -61,19 +61,6 @@ export function texElement(tex, { display = true, tag = 'div', className = 'tex'
   return renderTex(element, tex, { display });
 }
 
-/** TeX's text-mode spelling of the characters TeX reads as commands (KaTeX reads ⟦ ⟧ as math-only ones). */
-const TEXT_ESCAPES = /** @type {Readonly<Record<string, string>>} */ ({
-  '\\': '\\textbackslash{}', '{': '\\{', '}': '\\}', $: '\\$', '&': '\\&', '#': '\\#', _: '\\_', '%': '\\%',
-  '^': '\\textasciicircum{}', '~': '\\textasciitilde{}', '⟦': '$\\llbracket$', '⟧': '$\\rrbracket$',
-});
-
-/**
- * Words for a formula's \text{…} (a catalogue's, in the page's language), each character TeX
- * would read as a command spelled as text.
- * @param {string} words
- */
-export const texText = (words) => words.replace(/[\\{}$&#_%^~⟦⟧]/g, (c) => TEXT_ESCAPES[c]);
-
 /**
  * A number for TeX with fixed decimals (in TeX's math mode a hyphen is typeset as the minus sign),
  * its decimal separator the page's: a comma as {,}, which TeX sets with no space after it.

@@ -2,10 +2,10 @@
 import katex from 'katex';
 import 'katex/dist/katex.min.css';
 import { patchTree } from './patchTree.js';
-import english from 'virtual:messages/en/ui';
+import english from 'virtual:messages/en/math';
 import { messages } from '../i18n/messages.js';
 
-const t = messages('ui', english);
+const t = messages('math', english); // a namespace of its own: the first load carries none of it
 
 /**
  * The page language's names of the functions a formula uses (Spanish writes sen, arcsen): TeX's
@@ -14,7 +14,7 @@ const t = messages('ui', english);
 function functionNames() {
   /** @type {Record<string, string>} */
   const macros = {};
-  for (const [command, key] of [['sin', 'math.sine'], ['arcsin', 'math.arcsine']]) {
+  for (const [command, key] of [['sin', 'sine'], ['arcsin', 'arcsine']]) {
     const name = t(key);
     if (name !== command && /^\p{L}+$/u.test(name)) macros[`\\${command}`] = `\\operatorname{${name}}`;
   }

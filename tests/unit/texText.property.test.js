@@ -3,7 +3,7 @@
 import { describe, it, expect } from 'vitest';
 import fc from 'fast-check';
 import katex from 'katex';
-import { texText } from '../../src/ui/tex.js';
+import { texText } from '../../src/ui/texText.js';
 import { check } from './fuzzConfig.js';
 
 /**

@@ -2,7 +2,8 @@
 // readout, the key numbers and the formula. Styled by styles.css under .asphalt-panel.
 import english from 'virtual:messages/en/asphalt';
 import { messages } from '../../i18n/messages.js';
-import { texElement, texText } from '../../ui/tex.js';
+import { texElement } from '../../ui/tex.js';
+import { texText } from '../../ui/texText.js';
 import './styles.css';
 import { el } from '../../ui/el.js';
 import { definitionList } from '../../ui/definitionList.js';

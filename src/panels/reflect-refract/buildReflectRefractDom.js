@@ -3,7 +3,8 @@
 // the blend formula with live values. Styles: styles.css (all under .rr-panel).
 import english from 'virtual:messages/en/reflect-refract';
 import { messages } from '../../i18n/messages.js';
-import { renderTex, texNumber, texText } from '../../ui/tex.js';
+import { renderTex, texNumber } from '../../ui/tex.js';
+import { texText } from '../../ui/texText.js';
 import { REFLECTION_BANDS } from './physics.js';
 import { bandLabel } from './words.js';
 import { el } from '../../ui/el.js';
