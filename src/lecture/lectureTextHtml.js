@@ -10,6 +10,7 @@
 import katex from 'katex';
 import { lectureTextTree } from './lectureText.js';
 import { escapeHtml } from '../ui/escapeHtml.js';
+import { texMacros } from '../ui/texMacros.js';
 
 // The lecture's notation, as ui/subscripts.js writes it on the page: n_t is n with a subscript t.
 const SUBSCRIPT = /([A-Za-zθλv])_([A-Za-z0-9]+)/g;
@@ -38,7 +39,9 @@ export function subscriptedHtml(text) {
 export function mathHtml(tex, display, math = 'mathml') {
   const output = math === 'html' ? 'htmlAndMathml' : 'mathml';
   try {
-    return katex.renderToString(tex, { displayMode: display, output, throwOnError: true, trust: false, strict: 'ignore' });
+    /** @type {import('katex').KatexOptions} */
+    const options = { displayMode: display, output, throwOnError: true, trust: false, strict: 'ignore', macros: texMacros() };
+    return katex.renderToString(tex, options);
   } catch {
     return `<code class="lecture-math-error">${escapeHtml(tex)}</code>`;
   }

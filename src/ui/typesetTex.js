@@ -2,24 +2,7 @@
 import katex from 'katex';
 import 'katex/dist/katex.min.css';
 import { patchTree } from './patchTree.js';
-import english from 'virtual:messages/en/math';
-import { messages } from '../i18n/messages.js';
-
-const t = messages('math', english); // a namespace of its own: the first load carries none of it
-
-/**
- * The page language's names of the functions a formula uses (Spanish writes sen, arcsen): TeX's
- * own command where the catalogue keeps TeX's name, or gives no plain word (as a pseudo-locale does).
- */
-function functionNames() {
-  /** @type {Record<string, string>} */
-  const macros = {};
-  for (const [command, key] of [['sin', 'sine'], ['arcsin', 'arcsine']]) {
-    const name = t(key);
-    if (name !== command && /^\p{L}+$/u.test(name)) macros[`\\${command}`] = `\\operatorname{${name}}`;
-  }
-  return macros;
-}
+import { texMacros } from './texMacros.js';
 
 /**
  * KaTeX warns of a character it has no metrics for, as a word in another script inside \text{}
@@ -38,7 +21,7 @@ const strict = (code) => (code === 'unknownSymbol' || code === 'symbolNotInFont'
  */
 export function typesetTex(element, tex, display) {
   /** @type {import('katex').KatexOptions} */
-  const options = { displayMode: display, throwOnError: false, output: 'htmlAndMathml', macros: functionNames(), strict };
+  const options = { displayMode: display, throwOnError: false, output: 'htmlAndMathml', macros: texMacros(), strict };
   if (element.firstElementChild?.classList.contains('katex') || element.firstElementChild?.classList.contains('katex-display')) {
     const fresh = document.createElement(element.tagName);
     katex.render(tex, fresh, options);

@@ -1,9 +1,15 @@
 // Words from a catalogue inside a formula's \text{…}: KaTeX reads them as the words, whatever they
-// hold (TeX's special characters, the pseudo-locale's brackets, another script).
+// hold (TeX's special characters, the pseudo-locale's brackets, another script); and the names of
+// the functions, as the page's language writes them.
 import { describe, it, expect } from 'vitest';
 import fc from 'fast-check';
 import katex from 'katex';
 import { texText } from '../../src/ui/texText.js';
+import { texMacros } from '../../src/ui/texMacros.js';
+import { mathHtml } from '../../src/lecture/lectureTextHtml.js';
+import { setCatalogue } from '../../src/i18n/messages.js';
+import spanish from 'virtual:messages/es';
+import pseudo from 'virtual:messages/en-XA';
 import { check } from './fuzzConfig.js';
 
 /**
@@ -31,5 +37,27 @@ describe('texText: catalogue words in a formula', () => {
     check(fc.property(words, (text) => {
       expect(drawnText(`\\text{${texText(text)}}`)).toBe(text.replace(/\s+/g, ' ').trim());
     }));
+  });
+});
+
+describe('texMacros: the functions\' names in the page\'s language', () => {
+  const typeset = (tex, macros) => katex.renderToString(tex, { throwOnError: true, output: 'html', macros })
+    .replace(/<[^>]*>/g, '').replace(/[\s\u00a0\u200b]+/g, '');
+
+  it('English keeps TeX\'s sin; Spanish writes sen and arcsen; the pseudo-locale keeps TeX\'s', () => {
+    expect(texMacros()).toEqual({});
+    expect(drawnText('n_1 \\sin\\theta')).toMatch(/sin/);
+    try {
+      setCatalogue('es', spanish);
+      expect(texMacros()).toEqual({ '\\sin': '\\operatorname{sen}', '\\arcsin': '\\operatorname{arcsen}' });
+      expect(typeset('n_1 \\sin\\theta_1 = \\arcsin x', texMacros())).toBe('n1senθ1=arcsenx');
+      // The lecturer's own math in a deck the lab writes, as on the page.
+      expect(mathHtml('\\sin\\theta', false, 'html')).toContain('sen');
+      setCatalogue('en-XA', pseudo);
+      expect(texMacros()).toEqual({});
+    } finally {
+      setCatalogue('en', null);
+    }
+    expect(mathHtml('\\sin\\theta', false, 'html')).not.toContain('sen');
   });
 });
