@@ -4,6 +4,9 @@ import { test, expect, openDeck, openLab, labReady } from './fixtures.js';
 import { mountedHeight, reservedHeight } from './layout.js';
 import { pathToFileURL } from 'node:url';
 import { resolve } from 'node:path';
+import { readFileSync } from 'node:fs';
+import { gzipSync } from 'node:zlib';
+import { createHash } from 'node:crypto';
 import { INJECTION_ERRORS, expectInjectionRefused, policyMeta, recordViolations, violations } from './policyCheck.js';
 import { PANELS, PANEL_IDS } from '../../src/panels/manifest.js';
 
@@ -169,6 +172,10 @@ test.describe('the built pages\' Content-Security-Policy meta', () => {
   });
 });
 
+const DIST = resolve(import.meta.dirname, '../../dist');
+/** The built site's chunk manifest (vite's build.manifest). */
+const builtManifest = () => JSON.parse(readFileSync(resolve(DIST, '.vite/manifest.json'), 'utf8'));
+
 /** The chunks a manifest key imports statically, itself included, as dist paths (dist/.vite/manifest.json). */
 function staticClosure(manifest, key, seen = new Set()) {
   const entry = manifest[key];
@@ -184,21 +191,15 @@ function staticClosure(manifest, key, seen = new Set()) {
  * with a hash made from the chunk's name alone, as random as the real one: a bar then moves with
  * the code, not with the hashes (they moved a closure by tens of bytes from one build to the next).
  */
-async function gzippedKb(files) {
-  const { readFileSync } = await import('node:fs');
-  const { gzipSync } = await import('node:zlib');
-  const { createHash } = await import('node:crypto');
-  const dist = resolve(import.meta.dirname, '../../dist');
+function gzippedKb(files) {
   const stable = (name) => createHash('sha256').update(name).digest('base64url').slice(0, 8);
-  const text = (file) => readFileSync(resolve(dist, file), 'utf8')
+  const text = (file) => readFileSync(resolve(DIST, file), 'utf8')
     .replace(/([\w.]+)-[\w-]{8}\.(js|css)\b/g, (_, name, ext) => `${name}-${stable(name)}.${ext}`);
   return [...files].reduce((sum, file) => sum + gzipSync(text(file)).length, 0) / 1024;
 }
 
 test('before its first picture the lecture page fetches only what that picture needs, at most 96.8 KB of gzipped JS', async ({ page }) => {
-  const { readFileSync } = await import('node:fs');
-  const dist = resolve(import.meta.dirname, '../../dist');
-  const manifest = JSON.parse(readFileSync(resolve(dist, '.vite/manifest.json'), 'utf8'));
+  const manifest = builtManifest();
   // Needed: the page's module and what it imports, the hero's module and what it imports, and the
   // worker that compiles the hero's shaders ahead (gl/warmGpu.js). Nothing else may come first:
   // not the Markdown renderer or KaTeX (no lecturer text on the lab's own lecture), not the
@@ -216,7 +217,7 @@ test('before its first picture the lecture page fetches only what that picture n
   // And what the lab's own lecture never needs is not imported by the page either, statically or not.
   const lectureOnly = /\/(lectureTextDom|composedLecture|openLecture|mountLecture|questions|katex|typesetTex)-[\w-]+\.js$/;
   expect(before.filter((file) => lectureOnly.test(`/${file}`)), 'the lecture reader, Markdown or KaTeX before the first picture').toEqual([]);
-  const kb = await gzippedKb(before);
+  const kb = gzippedKb(before);
   console.log(`[first load] lecture page: ${kb.toFixed(1)} KB of gzipped JS before the hero's first frame (${before.length} files)`);
   // 96.8 KB before the words moved into the message catalogue: English must not cost more than that.
   expect(kb).toBeLessThanOrEqual(96.8);
@@ -228,13 +229,11 @@ test('before its first picture the lecture page fetches only what that picture n
 const EMBED_KB = { plot: 78, webgl: 97, 'normal-mips': 115, 'shader-lab': 199 };
 
 test('each panel\'s embed imports at most its bar of gzipped JS before it can draw', async () => {
-  const { readFileSync } = await import('node:fs');
-  const dist = resolve(import.meta.dirname, '../../dist');
-  const manifest = JSON.parse(readFileSync(resolve(dist, '.vite/manifest.json'), 'utf8'));
+  const manifest = builtManifest();
   const over = [];
   for (const { id, webgl, webglAtTimes } of PANELS) {
     const files = new Set([...staticClosure(manifest, 'embed.html'), ...staticClosure(manifest, `src/panels/${id}/index.js`)]);
-    const kb = await gzippedKb(files);
+    const kb = gzippedKb(files);
     const bar = EMBED_KB[id] ?? (webgl || webglAtTimes ? EMBED_KB.webgl : EMBED_KB.plot);
     if (kb > bar) over.push(`${id}: ${kb.toFixed(2)} KB > ${bar}`);
   }
@@ -255,13 +254,11 @@ const PAGE_KB = [
 ];
 
 test('the homework page and the composer import at most their bars of gzipped JS before they can draw', async () => {
-  const { readFileSync } = await import('node:fs');
-  const dist = resolve(import.meta.dirname, '../../dist');
-  const manifest = JSON.parse(readFileSync(resolve(dist, '.vite/manifest.json'), 'utf8'));
+  const manifest = builtManifest();
   const sizes = [];
   for (const { page, keys, bar } of PAGE_KB) {
     for (const key of keys) expect.soft(manifest[key], `${key} is a chunk of its own`).toBeDefined();
-    const kb = await gzippedKb(new Set(keys.flatMap((key) => [...staticClosure(manifest, key)])));
+    const kb = gzippedKb(new Set(keys.flatMap((key) => [...staticClosure(manifest, key)])));
     console.log(`[first load] ${page}: ${kb.toFixed(2)} KB of gzipped JS (bar ${bar})`);
     sizes.push({ page, kb, bar });
   }

@@ -5,7 +5,7 @@
 // name (float32, log2, N-BK7), 0 and 1, and the literal notation each question lists.
 import { describe, expect, it } from 'vitest';
 import { QUESTIONS } from '../../src/homework/questions.js';
-import { seededRandom } from '../../src/homework/seededRandom.js';
+import { allParams } from './questionParamSets.js';
 import { conductorR, cosOfDegrees } from './oracle/fresnelOracle.js';
 import { fresnelR } from './oracle/rightAnswers.js';
 import materials from '../../src/optics/materials.json';
@@ -23,16 +23,6 @@ const codes = (x) => {
   const v = Math.min(1, Math.max(0, x));
   return 255 * (v <= 0.0031308 ? 12.92 * v : 1.055 * v ** (1 / 2.4) - 0.055);
 };
-
-/** Every distinct parameter set the question's generator gives over many seeds. */
-function allParams(q) {
-  const seen = new Map();
-  for (let seed = 0; seed < 400; seed += 1) {
-    const p = q.params(seededRandom(`why-${seed}`));
-    seen.set(JSON.stringify(p), p);
-  }
-  return [...seen.values()];
-}
 
 /** The numbers left once the phrases, the notation and names with digits are taken out (0 and 1 are notation). */
 function unaccounted(text, phrases) {
@@ -176,7 +166,7 @@ describe('the numbers in choice explanations are computed again here', () => {
   for (const q of QUESTIONS.filter((x) => x.kind === 'choice')) {
     it(`${q.id}: each phrase with its number, and no other number`, () => {
       expect(PHRASES[q.id], `${q.id} has its phrases here`).toBeTypeOf('function');
-      for (const p of allParams(q)) {
+      for (const p of allParams(q, 'why')) {
         const expected = PHRASES[q.id](p);
         const options = q.options(p);
         expect(options.map((o) => o.id).sort()).toEqual(Object.keys(expected).sort());

@@ -6,7 +6,7 @@
 // check here fails the last test.
 import { describe, expect, it } from 'vitest';
 import { QUESTIONS, questionById } from '../../src/homework/questions.js';
-import { seededRandom } from '../../src/homework/seededRandom.js';
+import { allParams } from './questionParamSets.js';
 import { columnCos } from '../../src/methods/classifyGrid.js';
 import { fresnelR } from './oracle/rightAnswers.js';
 import { brewsterDegrees, conductorR, cosOfDegrees, criticalDegrees, dielectricR, dielectricSP } from './oracle/fresnelOracle.js';
@@ -18,16 +18,6 @@ const num = (decimal) => decimal.toNumber();
 const R = (thetaDeg, nI, nT) => num(dielectricR(cosOfDegrees(thetaDeg), nI, nT));
 const metal = (id) => materials.metals.find((m) => m.id === id);
 const dielectricN = (id) => materials.dielectrics.find((m) => m.id === id).n['589'];
-
-/** Every distinct parameter set the question's generator gives over many seeds. */
-function allParams(q) {
-  const seen = new Map();
-  for (let seed = 0; seed < 400; seed += 1) {
-    const p = q.params(seededRandom(`graded-${seed}`));
-    seen.set(JSON.stringify(p), p);
-  }
-  return [...seen.values()];
-}
 
 /** θ in [lo, hi] where the increasing or decreasing f crosses level, by bisection. */
 function crossing(f, level, lo, hi) {
@@ -199,7 +189,7 @@ describe('every question grades the physical quantity it declares', () => {
       expect(typeof q.graded === 'string' && q.graded.length > 40, `${q.id} declares what it grades`).toBe(true);
       const check = CHECKS[q.id];
       expect(check, `${q.id} has an independent check here`).toBeTypeOf('function');
-      for (const p of allParams(q)) check(q, p);
+      for (const p of allParams(q, 'graded')) check(q, p);
     });
   }
   it('checks no question that is gone', () => {
