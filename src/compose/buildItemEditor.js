@@ -13,7 +13,7 @@ import { setSubscripted } from '../ui/subscripts.js';
 import { field } from '../ui/formParts.js';
 import { LECTURE_CAPS } from '../lecture/readLecture.js';
 import { panelEntry } from '../panels/manifest.js';
-import { questionCatalogue, questionPrompt } from './catalogue.js';
+import { questionPanelTitle, questionPrompt } from './catalogue.js';
 import { questionSelect } from './questionSelect.js';
 import { panelTitle } from '../panels/panelText.js';
 
@@ -121,10 +121,8 @@ function questionFields(item, patch) {
   const where = el('p', 'cp-muted');
   const show = () => {
     setSubscripted(prompt, questionPrompt(select.value, seed.value));
-    const { panel } = questionCatalogue()
-      .flatMap((g) => g.questions.map((q) => ({ ...q, panel: g.panel })))
-      .find((q) => q.id === select.value) ?? {};
-    where.textContent = panel ? t('questionWhere', { title: panelTitle(panel) }) : '';
+    const title = questionPanelTitle(select.value);
+    where.textContent = title ? t('questionWhere', { title }) : '';
   };
   select.addEventListener('change', () => { patch({ question: select.value }); show(); });
   seed.addEventListener('input', () => { patch({ seed: seed.value }); show(); });

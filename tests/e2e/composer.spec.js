@@ -61,6 +61,10 @@ test('a lecture composed by keyboard alone gives a link that holds it, in order'
   await page.keyboard.press('Tab');
   await page.keyboard.press('Enter');
   await expect(status).toHaveText(/as item 4 of 4/);
+  // The question's card names the panel it is asked on: the one whose group the catalogue lists it in.
+  const group = await page.locator('.cp-catalogue select option:checked').evaluate((o) => o.parentElement.label);
+  await expect(page.locator('.cp-item').nth(3).locator('p.cp-muted', { hasText: 'On the panel' }))
+    .toHaveText(`On the panel “${group}”; the room predicts or answers, then you reveal.`);
   // A text item, written in its own fields.
   await page.getByRole('button', { name: 'Add a text (an agenda, references)' }).focus();
   await page.keyboard.press('Enter');
