@@ -114,6 +114,19 @@ describe('a road that reflects nothing specularly is said to', () => {
     expect(brightestByScan(step).specular).toBeGreaterThan(0.0005);
     expect(terms(summaryRows(road(step)))).toContain('Brightest highlight in view');
   });
+  it('with Fresnel off, blames the switch and not the index: the same binder with Fresnel on has a highlight', () => {
+    const off = { ...base, nT: 1.03, fresnel: false };
+    expect(brightestByScan(off).specular).toBeLessThan(0.0005); // F held at R0 = (0.03 / 2.03)² ≈ 2.2e−4
+    expect(brightestByScan({ ...off, fresnel: true }).specular).toBeGreaterThan(0.1); // F rising towards grazing
+    const r0 = '2.2e\u22124';
+    expect(summaryRows(road(off))).toContainEqual(['Specular reflection', `none to be seen: with Fresnel off, F is held at R0 = ${r0} `
+      + '(n_t = 1.03), so small that the sun\'s highlight reads 0.000 from every direction', true]);
+    const text = describeRoad(road(off));
+    expect(text).toContain(`With Fresnel off, F is held at its head-on value R0 = ${r0} (n_t = 1.03)`);
+    expect(text).toContain('with Fresnel on, F would rise towards 1 as the light grazes the microfacets');
+    expect(text).not.toContain('so nearly matches air');
+    expect(terms(summaryRows(road({ ...off, fresnel: true })))).toContain('Brightest highlight in view');
+  });
 });
 
 describe('the hover readout', () => {

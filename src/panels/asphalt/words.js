@@ -4,7 +4,7 @@
 // reads every sentence the panel can show.
 import english from 'virtual:messages/en/asphalt';
 import { messages } from '../../i18n/messages.js';
-import { fixed, rounded, tickLabel } from '../../ui/format.js';
+import { fixed, rounded, sci, tickLabel } from '../../ui/format.js';
 import { normalIncidence } from '../../optics/fresnel.js';
 import { SCENE, lambertianEquivalent } from './physics.js';
 import { schema } from './schema.js';
@@ -62,10 +62,17 @@ export function readoutText(hit) {
   });
 }
 
-/** Why there is no specular reflection, as a clause: n_t = 1 matches air; a near-1 index rounds to nothing. */
-const noneClause = (/** @type {Road} */ road) => ({
-  matched: road.values.nT === 1 ? 'yes' : 'no', nT: indexText(road.values.nT), zero: f3(0),
-});
+/**
+ * Why there is no specular reflection, as a clause: n_t = 1 matches air; with Fresnel off, F held at
+ * a near-0 R0 (the switch, not the index, keeps the grazing rise away); else a near-1 index that
+ * rounds to nothing even at grazing.
+ */
+const noneClause = (/** @type {Road} */ road) => {
+  const { nT, fresnel } = road.values;
+  return {
+    matched: nT === 1 ? 'yes' : fresnel ? 'no' : 'off', nT: indexText(nT), zero: f3(0), r0: sci(normalIncidence(1, nT), 1),
+  };
+};
 
 /**
  * The key numbers: [term, value, key?] rows.
