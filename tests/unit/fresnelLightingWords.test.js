@@ -66,6 +66,17 @@ describe('the Fresnel sphere\'s rim, in words', () => {
     }
     expect([...seen].sort()).toEqual([false, true]); // both cases are among the indices
   });
+  it('with kd and ks one colour: no claim that the rim turns, or that F is too small to turn it; the lighting named', () => {
+    for (const method of ['exact', 'schlick', 'layered']) {
+      const text = describeSpheres({ nT: 1.5, method, weight: 0.04, kd: '#ffffff', ks: '#ffffff' }, 0);
+      expect(text).toContain('but kd and ks are the same colour, so the weight moves the rim only through their lighting');
+      expect(text).not.toContain(TURNS);
+      expect(text).not.toContain('too little');
+      expect(text).toContain(`and ${weight(80, 1.5, method === 'schlick' ? 'schlick' : 'exact').toFixed(4)} at 80°`);
+    }
+    // Two display codes apart is a colour of its own again.
+    expect(describeSpheres({ nT: 1.5, method: 'exact', weight: 0.04, kd: '#fdfdfd', ks: '#ffffff' }, 0)).not.toContain('same colour');
+  });
   it('says where Schlick\'s rim is far whiter than the exact F would make it, an index near 1, and not for glass', () => {
     for (const n of [1.01, 1.05, 1.1]) {
       expect(schlick(80, n) / fresnelR(80, 1, n), String(n)).toBeGreaterThan(1.5);

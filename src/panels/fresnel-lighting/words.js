@@ -43,7 +43,8 @@ export function weightAt(thetaDeg, nT, method) {
 }
 
 /**
- * What the Fresnel sphere's rim does: 'matched' where n_t = 1 and F = 0 at every angle; 'none' where
+ * What the Fresnel sphere's rim does: 'matched' where n_t = 1 and F = 0 at every angle; 'sameColour'
+ * where kd and ks are one colour (within a display code), so the words cannot say the mix turns; 'none' where
  * F at the rim changes its colour by less than a display code (an index that near 1), so nothing
  * visibly turns; 'schlickNone' where Schlick's form turns the rim of a coat whose exact F would not
  * (its (1 − cos θ)⁵ does not vanish with R0); 'schlickOver' where it turns it much more than the exact
@@ -52,6 +53,8 @@ export function weightAt(thetaDeg, nT, method) {
  */
 export function rimTrend({ nT, method, kd, ks }) {
   if (method !== 'schlick' && nT === 1) return 'matched';
+  // kd and ks the same colour: no weight moves the mix of the two, only how each is lit does.
+  if (rimCodes(1, kd, ks) < 1) return 'sameColour';
   const rim = weightAt(RIM_DEG, nT, method);
   if (rimCodes(rim, kd, ks) < 1) return 'none';
   if (method !== 'schlick') return 'turns';
