@@ -69,7 +69,10 @@ describe('the Fresnel sphere\'s rim, in words', () => {
   it('with kd and ks one colour: no claim that the rim turns, or that F is too small to turn it; the lighting named', () => {
     for (const method of ['exact', 'schlick', 'layered']) {
       const text = describeSpheres({ nT: 1.5, method, weight: 0.04, kd: '#ffffff', ks: '#ffffff' }, 0);
-      expect(text).toContain('but kd and ks are the same colour, so the weight moves the rim only through their lighting');
+      expect(text).toContain(method === 'layered'
+        ? 'but kd and ks are the same colour, so the weight moves the rim toward the coat\'s mirror image of its surroundings, away from '
+          + 'the base lit by the sun and sky; that base differs from ks in colour too, unless it is grey'
+        : 'but kd and ks are the same colour, so the weight moves the rim only through their lighting');
       expect(text).not.toContain(TURNS);
       expect(text).not.toContain('too little');
       expect(text).toContain(`and ${weight(80, 1.5, method === 'schlick' ? 'schlick' : 'exact').toFixed(4)} at 80°`);
