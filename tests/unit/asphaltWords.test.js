@@ -123,7 +123,8 @@ describe('a road that reflects nothing specularly is said to', () => {
       + '(n_t = 1.03), so small that the sun\'s highlight reads 0.000 from every direction', true]);
     const text = describeRoad(road(off));
     expect(text).toContain(`With Fresnel off, F is held at its head-on value R0 = ${r0} (n_t = 1.03)`);
-    expect(text).toContain('with Fresnel on, F would rise towards 1 as the light grazes the microfacets');
+    expect(text).toContain('reads 0.000 from every direction (with Fresnel on, F would rise towards 1 as the light grazes the microfacets), '
+      + `so the road shows only its diffuse part, ${roadSpot(30, off).diffuse.toFixed(3)} everywhere on the road`);
     expect(text).not.toContain('so nearly matches air');
     expect(terms(summaryRows(road({ ...off, fresnel: true })))).toContain('Brightest highlight in view');
   });
